@@ -1,0 +1,51 @@
+#include "apps/cli.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "util/error.hpp"
+
+namespace lfd::apps {
+
+std::optional<int> parse(CLI::App& app, int argc, char** argv) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::CallForAllHelp& e) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "lfd " << app.get_name() << ": " << e.what() << " (see --help)\n";
+    return 2;
+  }
+  return std::nullopt;
+}
+
+std::vector<double> parse_numbers(const std::string& text, char sep, size_t count,
+                                  const std::string& option) {
+  std::vector<double> values;
+  size_t start = 0;
+  while (start <= text.size()) {
+    const size_t end = text.find(sep, start);
+    const std::string part = text.substr(start, end == std::string::npos ? std::string::npos
+                                                                          : end - start);
+    try {
+      size_t used = 0;
+      const double v = std::stod(part, &used);
+      if (used != part.size() || !std::isfinite(v)) throw std::invalid_argument(part);
+      values.push_back(v);
+    } catch (const std::exception&) {
+      throw_input_error("{}: '{}' is not a list of {} numbers separated by '{}'", option, text,
+                        count, sep);
+    }
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  if (values.size() != count)
+    throw_input_error("{}: '{}' has {} values, expected {}", option, text, values.size(), count);
+  return values;
+}
+
+}  // namespace lfd::apps

@@ -1,0 +1,61 @@
+// The `lfd` program: a table of subcommands, each in its own file (apps/<name>.cpp).
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <iostream>
+#include <string_view>
+#include <vector>
+
+#include "apps/commands.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+struct Command {
+  const char* name;
+  int (*run)(int, char**);
+  const char* summary;
+};
+
+const std::vector<Command>& commands() {
+  using namespace lfd::apps;
+  static const std::vector<Command> table = {
+      {"demo", RunDemo, "run the whole pipeline on the bundled data and write a report"},
+      {"info", RunInfo, "print the figures derived from a calibration"},
+      {"interlace", RunInterlace, "interlace a quilt into a panel image for a display"},
+      {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
+      {"validate", RunValidate, "measure crosstalk and view separation of a display"},
+  };
+  return table;
+}
+
+void print_usage() {
+  std::cout << "lfd: light field display toolkit\n\nUsage: lfd <command> [options]\n\n"
+               "Commands:\n";
+  for (const auto& c : commands()) std::printf("  %-11s %s\n", c.name, c.summary);
+  std::cout << "\nRun 'lfd <command> --help' for a command's options and examples.\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    print_usage();
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string_view name = argv[1];
+  for (const auto& c : commands()) {
+    if (name != c.name) continue;
+    try {
+      return c.run(argc - 1, argv + 1);
+    } catch (const lfd::InputError& e) {
+      std::cerr << "lfd " << name << ": error: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "lfd " << name << ": failed: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "lfd: unknown command '" << name << "' (see lfd --help)\n";
+  return 2;
+}

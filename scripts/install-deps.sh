@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package lfd needs to build, test and run.
+# Idempotent: quiet and fast when everything is already installed.
+set -euo pipefail
+
+PACKAGES=(
+  # toolchain
+  build-essential cmake ninja-build pkg-config git clang
+  # math, vision, optimisation
+  libeigen3-dev libopencv-dev libopencv-contrib-dev libceres-dev
+  # device access
+  libhidapi-dev libusb-1.0-0-dev
+  # graphics: GL loading, headless EGL on Mesa, windows, UI
+  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev libimgui-dev
+  xvfb xauth
+  # formats and utilities
+  nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libzstd-dev zlib1g-dev
+  libtbb-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+  # plots in validation reports
+  gnuplot-nox
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+echo "install-deps: installing ${#missing[@]} package(s): ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

@@ -1,0 +1,26 @@
+#pragma once
+// A text progress bar on stderr for long work; silent when stderr is not a terminal
+// (CI logs, pipes) so logs stay readable.
+#include <atomic>
+#include <string>
+
+namespace lfd {
+
+class Progress {
+ public:
+  Progress(std::string label, long total);
+  ~Progress();
+  void advance(long n = 1);  // thread-safe
+  void finish();
+
+ private:
+  void draw(long done);
+  std::string label_;
+  long total_;
+  std::atomic<long> done_{0};
+  std::atomic<int> last_percent_{-1};
+  bool enabled_;
+  bool finished_ = false;
+};
+
+}  // namespace lfd
