@@ -1,0 +1,38 @@
+#pragma once
+// Quilt conventions (reference/looking-glass.md section 5, DESIGN section 3): V views in a
+// C x R grid of tiles, view 0 (leftmost camera) in the bottom-left tile, views row-major
+// upward; integer tile size floor(W/C) x floor(H/R) anchored at the bottom-left corner
+// (the rest is the "viewPortion" margin); file names carry `_qs{C}x{R}a{aspect}`.
+#include <optional>
+#include <string>
+
+namespace lfd::render {
+
+struct QuiltLayout {
+  int cols = 5;
+  int rows = 9;
+  int views = 45;        // <= cols * rows
+  double aspect = 1.0;   // width / height of the content of one tile
+  int width = 0;         // texture size in pixels
+  int height = 0;
+
+  int tile_width() const { return cols > 0 ? width / cols : 0; }
+  int tile_height() const { return rows > 0 ? height / rows : 0; }
+  // Top-left pixel of view k's tile in a top-down image (row 0 = top).
+  int tile_x(int view) const { return (view % cols) * tile_width(); }
+  int tile_y_top_down(int view) const { return height - (view / cols + 1) * tile_height(); }
+  // Fraction of the texture covered by whole tiles (Looking Glass "viewPortion").
+  double portion_x() const { return width > 0 ? double(cols * tile_width()) / width : 1.0; }
+  double portion_y() const { return height > 0 ? double(rows * tile_height()) / height : 1.0; }
+  // Throws lfd::InputError naming `what` if the layout is unusable.
+  void check(const std::string& what) const;
+};
+
+// The tiling in a file name such as `scene_qs5x9a1.6.png` (first number = columns).
+// Returns nullopt when the name carries none. Sets cols, rows, views = cols*rows, aspect.
+std::optional<QuiltLayout> parse_quilt_name(const std::string& filename);
+
+// `_qs{C}x{R}a{aspect}` with the aspect written with up to 4 decimals, trailing zeros dropped.
+std::string quilt_suffix(int cols, int rows, double aspect);
+
+}  // namespace lfd::render

@@ -1,0 +1,17 @@
+#pragma once
+// Loading and saving Gaussian scenes. Formats are recognised by content and extension:
+// standard 3DGS PLY (binary little-endian or ASCII, SH degree 0-3), PlayCanvas compressed PLY,
+// antimatter15 .splat, Niantic SPZ v1-v4 (gzip or zstd). Properties are found by name.
+// Bad files throw lfd::InputError("<file>: <problem>"), never crash or exhaust memory.
+#include <filesystem>
+
+#include "render/gaussian_scene.hpp"
+
+namespace lfd::render {
+
+GaussianScene load_scene(const std::filesystem::path& path);
+
+// Writes a standard 3DGS binary little-endian PLY (stored, pre-activation values), atomically.
+void save_ply(const std::filesystem::path& path, const GaussianScene& scene);
+
+}  // namespace lfd::render
