@@ -1,0 +1,136 @@
+#include "calib/calibration_file.hpp"
+
+#include <cmath>
+#include <iostream>
+
+#include "calib/visual_json.hpp"
+#include "util/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace lfd::calib {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+std::optional<double> optional_number(const ojson& root, const char* key,
+                                      const std::string& name) {
+  auto it = root.find(key);
+  if (it == root.end() || it->is_null()) return std::nullopt;
+  require_field(it->is_number() && std::isfinite(it->get<double>()), name, key,
+                "is not a finite number");
+  return it->get<double>();
+}
+
+}  // namespace
+
+Calibration parse_calibration(const std::string& text, const std::string& name) {
+  ojson root;
+  try {
+    root = ojson::parse(text);
+  } catch (const std::exception& e) {
+    throw_input_error("{}: not valid JSON ({})", name, e.what());
+  }
+  if (!root.is_object()) throw_input_error("{}: not a JSON object", name);
+
+  Calibration c;
+  if (!root.contains("format")) {  // a plain Looking Glass visual.json
+    c.display = parse_visual_json(text, name);
+    return c;
+  }
+  require_field(root["format"] == "lfd-calibration", name, "format",
+                "is not \"lfd-calibration\"");
+  require_field(root.contains("version") && root["version"].is_number_integer(), name, "version",
+                "must be an integer");
+  const int version = root["version"].get<int>();
+  require_field(version >= 1 && version <= kCalibrationFormatVersion, name, "version",
+                "unsupported calibration format version " + std::to_string(version) +
+                    " (this lfd reads up to " + std::to_string(kCalibrationFormatVersion) + ")");
+  require_field(root.contains("display") && root["display"].is_object(), name, "display",
+                "is missing");
+  c.display = parse_visual_json(root["display"].dump(), name + ": display");
+  if (root.contains("correction") && !root["correction"].is_null())
+    c.correction = CorrectionField::from_json(root["correction"], name);
+  c.view_cone_measured_deg = optional_number(root, "view_cone_measured_deg", name);
+  c.phase_blur_sigma = optional_number(root, "phase_blur_sigma", name);
+  if (c.phase_blur_sigma)
+    require_field(*c.phase_blur_sigma >= 0 && *c.phase_blur_sigma < 0.5, name,
+                  "phase_blur_sigma", "must be in [0, 0.5) lens periods");
+  if (root.contains("uncertainty")) {
+    require_field(root["uncertainty"].is_object(), name, "uncertainty", "is not an object");
+    for (auto& [k, v] : root["uncertainty"].items()) {
+      require_field(v.is_number() && std::isfinite(v.get<double>()) && v.get<double>() >= 0,
+                    name, "uncertainty." + k, "must be a non-negative number");
+      c.uncertainty[k] = v.get<double>();
+    }
+  }
+  if (root.contains("residuals")) {
+    const auto& r = root["residuals"];
+    require_field(r.is_object(), name, "residuals", "is not an object");
+    ResidualStats s;
+    s.rms_periods = optional_number(r, "rms_periods", name + ": residuals").value_or(0);
+    s.median_abs_periods = optional_number(r, "median_abs_periods", name + ": residuals").value_or(0);
+    s.inlier_fraction = optional_number(r, "inlier_fraction", name + ": residuals").value_or(1);
+    s.count = long(optional_number(r, "count", name + ": residuals").value_or(0));
+    c.residuals = s;
+  }
+  if (auto v = optional_number(root, "recommended_views", name)) {
+    require_field(*v >= 1 && *v <= 1000 && *v == std::floor(*v), name, "recommended_views",
+                  "must be a whole number of views between 1 and 1000");
+    c.recommended_views = int(*v);
+  }
+  if (root.contains("view_count_rule") && root["view_count_rule"].is_string())
+    c.view_count_rule = root["view_count_rule"];
+  if (root.contains("provenance")) c.provenance = root["provenance"];
+  return c;
+}
+
+Calibration read_calibration(const std::filesystem::path& path) {
+  return parse_calibration(read_text_file(path), path.string());
+}
+
+nlohmann::ordered_json to_json(const Calibration& c) {
+  ojson root;
+  root["format"] = "lfd-calibration";
+  root["version"] = kCalibrationFormatVersion;
+  root["display"] = to_visual_json(c.display);
+  if (!c.correction.empty()) root["correction"] = c.correction.to_json();
+  if (c.view_cone_measured_deg) root["view_cone_measured_deg"] = *c.view_cone_measured_deg;
+  if (c.phase_blur_sigma) root["phase_blur_sigma"] = *c.phase_blur_sigma;
+  if (!c.uncertainty.empty()) {
+    ojson u = ojson::object();
+    for (const auto& [k, v] : c.uncertainty) u[k] = v;
+    root["uncertainty"] = u;
+  }
+  if (c.residuals) {
+    root["residuals"] = {{"rms_periods", c.residuals->rms_periods},
+                         {"median_abs_periods", c.residuals->median_abs_periods},
+                         {"inlier_fraction", c.residuals->inlier_fraction},
+                         {"count", c.residuals->count}};
+  }
+  if (c.recommended_views) root["recommended_views"] = *c.recommended_views;
+  if (!c.view_count_rule.empty()) root["view_count_rule"] = c.view_count_rule;
+  if (!c.provenance.empty()) root["provenance"] = c.provenance;
+  return root;
+}
+
+void write_calibration(const std::filesystem::path& path, const Calibration& c, bool force) {
+  guard_overwrite(path, force);
+  write_text_atomic(path, to_json(c).dump(2) + "\n");
+}
+
+void export_visual_json(const std::filesystem::path& path, const Calibration& c, bool force) {
+  guard_overwrite(path, force);
+  if (!c.correction.empty()) {
+    const auto r = c.correction.range();
+    std::cerr << "warning: " << path.string()
+              << ": visual.json cannot hold the correction field (range " << r[0] << " .. "
+              << r[1] << " lens periods); it is dropped\n";
+  }
+  if (c.view_cone_measured_deg)
+    std::cerr << "warning: " << path.string()
+              << ": the measured view cone is kept only in calibration.json\n";
+  write_visual_json(path, c.display);
+}
+
+}  // namespace lfd::calib

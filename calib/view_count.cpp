@@ -1,0 +1,64 @@
+#include "calib/view_count.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace lfd::calib {
+
+namespace {
+
+struct QuiltGrid {
+  int views, cols, rows;
+};
+
+// Quilt-friendly view counts (whole tile grids, as Looking Glass software uses).
+constexpr std::array<QuiltGrid, 14> kGrids = {{{16, 4, 4}, {24, 4, 6}, {32, 4, 8}, {40, 5, 8},
+                                               {45, 5, 9}, {48, 8, 6}, {54, 6, 9}, {60, 6, 10},
+                                               {66, 11, 6}, {72, 8, 9}, {80, 8, 10}, {88, 8, 11},
+                                               {96, 8, 12}, {100, 10, 10}}};
+
+}  // namespace
+
+ViewCountAdvice recommend_view_count(const Calibration& calibration) {
+  const LensModel lens(calibration.display, calibration.correction);
+  ViewCountAdvice a;
+  // A subpixel covers 1/(subpixels per lens) of the phase: seen through the lens it emits a
+  // box of that width in phase, blurred by the lens point spread sigma_A. Views narrower than
+  // twice the combined spread cannot be told apart; they only add crosstalk and render cost.
+  const double subpixel_phase_width = 1.0 / lens.subpixels_per_lens();
+  const double sigma_a = calibration.phase_blur_sigma.value_or(kDefaultPhaseBlurSigma);
+  const double sigma_eff = std::sqrt(sigma_a * sigma_a + subpixel_phase_width *
+                                                             subpixel_phase_width / 12.0);
+  a.sampling_limit = lens.subpixels_per_lens() * std::max(1.0, std::abs(calibration.display.slope));
+  a.blur_limit = 1.0 / (2.0 * sigma_eff);
+  // A phase error (calibration uncertainty or an uncorrected warp) shifts every view; keep it
+  // under a quarter of a view.
+  double phase_error = 0.0;
+  if (auto it = calibration.uncertainty.find("correction_rms_periods");
+      it != calibration.uncertainty.end())
+    phase_error = std::max(phase_error, it->second);
+  if (calibration.residuals) phase_error = std::max(phase_error, calibration.residuals->rms_periods);
+  a.accuracy_limit = phase_error > 0 ? 1.0 / (4.0 * phase_error) : 1e9;
+
+  const double limit = std::min({a.sampling_limit, a.blur_limit, a.accuracy_limit});
+  QuiltGrid best = kGrids.front();
+  for (const auto& g : kGrids)
+    if (g.views <= limit + 1e-9) best = g;
+  a.views = best.views;
+  a.cols = best.cols;
+  a.rows = best.rows;
+  a.rule = fmt::format(
+      "views = largest quilt grid <= min(sampling {:.0f}, blur 1/(2*sigma_eff) = {:.1f}, "
+      "accuracy 1/(4*phase error) = {}) with sigma_eff = sqrt(sigma_A^2 + w_sub^2/12) = "
+      "{:.4f} periods (sigma_A {:.4f}{}, subpixel phase width w_sub {:.4f})",
+      a.sampling_limit, a.blur_limit,
+      a.accuracy_limit > 1e8 ? std::string("unlimited") : fmt::format("{:.1f}", a.accuracy_limit),
+      sigma_eff, sigma_a, calibration.phase_blur_sigma ? " measured" : " default",
+      subpixel_phase_width);
+  return a;
+}
+
+}  // namespace lfd::calib

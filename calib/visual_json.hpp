@@ -1,0 +1,21 @@
+#pragma once
+// Reading and writing Looking Glass visual.json exactly as devices store it: numbers wrapped
+// as {"value": x} (unwrapped numbers accepted on read), configVersion/serial as strings,
+// Gen3 CellPatternMode (or the cellPatternMode spelling) + subpixelCells, unknown fields kept.
+#include <filesystem>
+#include <string>
+
+#include "calib/display_calibration.hpp"
+
+namespace lfd::calib {
+
+// Parses visual.json text. `name` (usually the file path) prefixes every error message.
+DisplayCalibration parse_visual_json(const std::string& text, const std::string& name);
+DisplayCalibration read_visual_json(const std::filesystem::path& path);
+
+// The visual.json object: the source object with the modelled fields updated in place
+// (unchanged values keep their original form, so an untouched calibration writes back as read).
+nlohmann::ordered_json to_visual_json(const DisplayCalibration& calibration);
+void write_visual_json(const std::filesystem::path& path, const DisplayCalibration& calibration);
+
+}  // namespace lfd::calib
