@@ -1,0 +1,69 @@
+// Format dispatch for load_scene (by content, see scene_parsers.hpp) and save_ply.
+#include "render/scene_io.hpp"
+
+#include <fstream>
+#include <iterator>
+
+#include "render/ply_header.hpp"
+#include "render/ply_writer.hpp"
+#include "render/scene_parsers.hpp"
+#include "util/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace lfd::render {
+
+namespace {
+
+std::string lower_extension(const std::string& name) {
+  std::string ext = std::filesystem::path(name).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string read_binary_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw_input_error("{}: no such file", path.string());
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw_input_error("{}: cannot open for reading", path.string());
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw_input_error("{}: read error", path.string());
+  return bytes;
+}
+
+}  // namespace
+
+GaussianScene read_scene_bytes(std::string_view bytes, const std::string& name) {
+  if (bytes.empty()) throw_input_error("{}: empty file", name);
+  if (looks_like_ply(bytes)) {
+    // A compressed PLY is a PLY with a `chunk` element (reference 7.4). The header is parsed
+    // twice (here and in the reader); it is small.
+    const PlyFile header = parse_ply(bytes, name);
+    return header.find("chunk") ? read_compressed_ply(bytes, name)
+                                : read_standard_ply(bytes, name);
+  }
+  const auto b0 = uint8_t(bytes[0]);
+  if ((bytes.size() >= 2 && b0 == 0x1f && uint8_t(bytes[1]) == 0x8b) ||
+      (bytes.size() >= 4 && bytes.substr(0, 4) == "NGSP"))
+    return read_spz(bytes, name);
+  if (lower_extension(name) == ".splat") return read_splat(bytes, name);
+  throw_input_error("{}: unrecognised scene format (expected PLY, compressed PLY, .splat or SPZ)",
+                    name);
+}
+
+GaussianScene load_scene(const std::filesystem::path& path) {
+  const std::string bytes = read_binary_file(path);
+  return read_scene_bytes(bytes, path.string());
+}
+
+void save_ply(const std::filesystem::path& path, const GaussianScene& scene) {
+  const std::string bytes = encode_ply(scene, PlyEncoding::BinaryLittleEndian);
+  write_file_atomic(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary);
+    out.write(bytes.data(), std::streamsize(bytes.size()));
+    out.close();
+    if (!out) throw_input_error("{}: cannot write", path.string());
+  });
+}
+
+}  // namespace lfd::render
