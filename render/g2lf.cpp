@@ -1,0 +1,56 @@
+#include "render/g2lf.hpp"
+
+#include <chrono>
+
+#include "util/error.hpp"
+
+namespace lfd::render {
+
+void G2lfOptions::check() const {
+  if (chunks < 1 || chunks > 4096) throw_input_error("--chunks: {} is outside 1..4096", chunks);
+  if (plane_scale < 1 || plane_scale > 8) throw_input_error("--plane-scale: {} is outside 1..8", plane_scale);
+  if (!std::isfinite(d_shift) || d_shift < 0.0f) throw_input_error("--shift: must be finite and >= 0");
+}
+
+PlaneFilter parse_plane_filter(const std::string& name) {
+  if (name == "nearest") return PlaneFilter::kNearest;
+  if (name == "bilinear") return PlaneFilter::kBilinear;
+  throw_input_error("--filter: '{}' is not nearest or bilinear", name);
+}
+
+PlanePrecision parse_plane_precision(const std::string& name) {
+  if (name == "u8") return PlanePrecision::kU8;
+  if (name == "f32") return PlanePrecision::kF32;
+  throw_input_error("--precision: '{}' is not u8 or f32", name);
+}
+
+ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
+                         const QuiltLayout& layout, const G2lfOptions& options,
+                         const RasterSettings& settings, G2lfStats* stats) {
+  options.check();
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double>(b - a).count();
+  };
+  const auto t0 = Clock::now();
+  const ReferenceCamera ref = make_reference_camera(geometry, options.d_shift, options.plane_scale);
+  const DepthChunks chunks = bin_by_depth(scene, geometry, ref, options.chunks);
+  const auto t1 = Clock::now();
+  const SweepingPlanes planes = render_sweeping_planes(scene, geometry, ref, chunks, options, settings);
+  const auto t2 = Clock::now();
+  ImageF quilt(layout.width, layout.height, 3, 0.0f);
+  swizzle_blend(planes, geometry, ref, layout, options.filter, settings.background, quilt);
+  const auto t3 = Clock::now();
+  if (stats) {
+    stats->gaussians_in_frustum = 0;
+    for (const auto& m : chunks.members) stats->gaussians_in_frustum += m.size();
+    stats->planes = planes.count;
+    stats->plane_bytes = planes.bytes();
+    stats->seconds_binning = seconds(t0, t1);
+    stats->seconds_planes = seconds(t1, t2);
+    stats->seconds_swizzle = seconds(t2, t3);
+  }
+  return quilt;
+}
+
+}  // namespace lfd::render

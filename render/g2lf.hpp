@@ -1,0 +1,81 @@
+#pragma once
+// G2LF on the CPU (paper section "G2LF" and Alg. 1): cull to the reference frustum, quantile-bin
+// by reference-camera depth into N_chunk chunks, rasterise each chunk into its sweeping plane
+// (premultiplied colour + transmittance, P_s x the view resolution, adaptive filter Eq.
+// gs_prefilter_fix), then swizzle-blend the planes front to back into the quilt (Eq. u_prime,
+// Eq. alpha_blend). The reference for the GL implementation.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/gaussian_scene.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/quilt_layout.hpp"
+#include "render/rasterizer_cpu.hpp"
+#include "util/image.hpp"
+
+namespace lfd::render {
+
+enum class PlaneFilter { kNearest, kBilinear };
+enum class PlanePrecision { kU8, kF32 };
+
+struct G2lfOptions {
+  int chunks = 64;            // N_chunk
+  int plane_scale = 1;        // P_s
+  float d_shift = 0.0f;       // D_shift, scene units (reference camera moved back)
+  PlaneFilter filter = PlaneFilter::kNearest;
+  PlanePrecision precision = PlanePrecision::kU8;  // the paper's default
+  bool adaptive_filter = true;  // Eq. gs_prefilter_fix; false: the constant 0.3 px^2
+  void check() const;           // throws InputError naming the bad option
+};
+
+PlaneFilter parse_plane_filter(const std::string& name);        // "nearest" | "bilinear"
+PlanePrecision parse_plane_precision(const std::string& name);  // "u8" | "f32"
+
+// Stage 1 (depth_binning.cpp): Gaussians whose centre lies in the reference frustum (z > 0.2,
+// |ndc| <= 1.3 as the rasterizer's guard band), sorted by reference depth and split into
+// `chunks` runs of equal size; each plane sits at the median depth of its chunk.
+struct DepthChunks {
+  std::vector<std::vector<uint32_t>> members;  // non-empty chunks, front to back
+  std::vector<float> plane_depth;              // d_k: depth from the *base* camera (Eq. u_prime)
+};
+DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geometry,
+                         const ReferenceCamera& ref, int chunks);
+
+// Stage 2 (sweeping_planes.cpp): the planes C (premultiplied RGB) and T, RGBA per texel,
+// either 8-bit (value * 255 rounded, colour clamped to [0, 1]) or float.
+struct SweepingPlanes {
+  int count = 0, width = 0, height = 0;
+  PlanePrecision precision = PlanePrecision::kU8;
+  std::vector<uint8_t> texels_u8;  // [plane][row][col][rgbT]
+  std::vector<float> texels_f32;
+  std::vector<float> plane_depth;  // d_k
+  // Per plane and row: the first and last non-empty column (first > last: empty row). Lets the
+  // swizzle skip empty space, which dominates sparse planes.
+  std::vector<int32_t> row_first, row_last;
+  size_t bytes() const;
+};
+SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
+                                      const ReferenceCamera& ref, const DepthChunks& chunks,
+                                      const G2lfOptions& options, const RasterSettings& settings);
+
+// Stage 3 (swizzle_blend.cpp): writes every view's tile of `quilt` (top-down RGB float image of
+// the layout's size): C = sum_k (prod_{m<k} T_m) c_k + (prod T) background.
+void swizzle_blend(const SweepingPlanes& planes, const QuiltGeometry& geometry,
+                   const ReferenceCamera& ref, const QuiltLayout& layout, PlaneFilter filter,
+                   const glm::vec3& background, ImageF& quilt);
+
+struct G2lfStats {
+  size_t gaussians_in_frustum = 0;
+  int planes = 0;
+  size_t plane_bytes = 0;
+  double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;
+};
+
+// Alg. 1 end to end. `settings.background` is the background; SH colours are evaluated from the
+// base camera centre (the planes are shared by all views: paper, view-dependent trade-off).
+ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
+                         const QuiltLayout& layout, const G2lfOptions& options,
+                         const RasterSettings& settings = {}, G2lfStats* stats = nullptr);
+
+}  // namespace lfd::render

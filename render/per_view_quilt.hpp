@@ -1,0 +1,28 @@
+#pragma once
+// The baseline: every quilt view rendered on its own with the reference rasterizer through its
+// off-axis camera (paper: "conventional" quilt rendering, the ground truth of Table 1).
+#include "render/gaussian_scene.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/quilt_layout.hpp"
+#include "render/rasterizer_cpu.hpp"
+#include "util/image.hpp"
+
+namespace lfd::render {
+
+// A quilt layout of `cols` x `rows` tiles of the base camera's size for `geometry.views` views.
+QuiltLayout make_quilt_layout(const QuiltGeometry& geometry, int cols, int rows);
+
+// Copies an RGB raster (row 0 = top) into view `view`'s tile of a top-down quilt image.
+void place_view(ImageF& quilt, const QuiltLayout& layout, int view, const RasterImage& image);
+
+// Cuts view `view` out of a quilt image.
+ImageF extract_view(const ImageF& quilt, const QuiltLayout& layout, int view);
+
+// Renders view `view` alone (what `lfd render --view J` writes).
+RasterImage render_view(const GaussianScene& scene, const QuiltGeometry& geometry, int view,
+                        const RasterSettings& settings = {});
+
+ImageF render_quilt_per_view(const GaussianScene& scene, const QuiltGeometry& geometry,
+                             const QuiltLayout& layout, const RasterSettings& settings = {});
+
+}  // namespace lfd::render

@@ -1,0 +1,12 @@
+#pragma once
+// View-dependent colour from real SH of degree 0-3 (reference/gaussian-splatting.md section 6,
+// forward.cu computeColorFromSH): constants and signs of the reference, +0.5, clamped at 0 only.
+#include <glm/glm.hpp>
+
+namespace lfd::render {
+
+// `sh`: (degree+1)^2 RGB triples, coefficient-major. `dir`: unit vector from the camera centre
+// to the Gaussian mean in world space.
+glm::vec3 eval_sh_color(int degree, const float* sh, const glm::vec3& dir);
+
+}  // namespace lfd::render
