@@ -32,6 +32,14 @@ constexpr uint64_t kMaxDecompressedBytes = uint64_t(4) << 30;
 constexpr uint64_t kMaxPoints = uint64_t(1) << 28;
 constexpr float kColourScale = 0.15f;  // load-spz.cc colorScale
 
+// SPZ stores the RUB axes (x right, y up, z back); 3DGS PLY, .splat and compressed PLY use
+// COLMAP's RDF. RUB -> RDF is a 180-degree turn about x: position (x, -y, -z), quaternion
+// vector part (x, -y, -z), and each SH basis function odd in (y, z) changes sign. The signs
+// below are those basis functions' parities in the order of reference section 6:
+// y, z, x | xy, yz, 2z^2-x^2-y^2, xz, x^2-y^2 | y(3x^2-y^2), xyz, y(4z^2-..), z(2z^2-..),
+// x(4z^2-..), z(x^2-y^2), x(x^2-3y^2). This makes all formats agree (three-points fixture).
+constexpr float kRubToRdfSh[15] = {-1, -1, 1, -1, 1, 1, -1, 1, -1, 1, -1, -1, 1, -1, 1};
+
 struct SpzHeader {
   uint32_t version = 0;
   uint32_t num_points = 0;
@@ -175,6 +183,7 @@ GaussianScene decode(const SpzHeader& h, const Arrays& a, const std::string& nam
         if (fixed & 0x800000) fixed -= 0x1000000;  // sign-extend the 24-bit value
         scene.positions[i][k] = float(fixed) * fixed_scale;
       }
+      if (k > 0) scene.positions[i][k] = -scene.positions[i][k];  // RUB -> RDF
       scene.scales[i][k] = std::exp(float(scale[i * 3 + k]) / 16.0f - 10.0f);
     }
     // Alpha bytes are round(sigmoid(logit) * 255): keep the activated value, which stays
@@ -187,12 +196,15 @@ GaussianScene decode(const SpzHeader& h, const Arrays& a, const std::string& nam
       const float x = r[0] / 127.5f - 1.0f, y = r[1] / 127.5f - 1.0f, z = r[2] / 127.5f - 1.0f;
       scene.rotations[i] = {std::sqrt(std::max(0.0f, 1.0f - x * x - y * y - z * z)), x, y, z};
     }
+    scene.rotations[i][2] = -scene.rotations[i][2];  // RUB -> RDF
+    scene.rotations[i][3] = -scene.rotations[i][3];
     float* sh = scene.sh.data() + i * coeffs * 3;
     for (int c = 0; c < 3; ++c) sh[c] = (float(colour[i * 3 + c]) / 255.0f - 0.5f) / kColourScale;
     // SPZ SH is coefficient-major with RGB innermost, like ours; (b - 128) / 128.
     const unsigned char* src = shb + i * file_sh_dim * 3;
     for (size_t k = 0; k + 1 < coeffs; ++k)
-      for (int c = 0; c < 3; ++c) sh[(k + 1) * 3 + c] = (float(src[k * 3 + c]) - 128.0f) / 128.0f;
+      for (int c = 0; c < 3; ++c)
+        sh[(k + 1) * 3 + c] = kRubToRdfSh[k] * (float(src[k * 3 + c]) - 128.0f) / 128.0f;
   }
   finalize_scene(scene, name);
   return scene;

@@ -1,0 +1,29 @@
+#pragma once
+// A robust axis-aligned box around a scene: per-axis quantiles of the Gaussian centres, so a
+// few far-away floaters (common in trained scenes) or a background shell do not decide how a
+// default camera frames the scene.
+#include <array>
+
+#include "render/gaussian_scene.hpp"
+
+namespace lfd::render {
+
+struct SceneBounds {
+  std::array<float, 3> min{0, 0, 0};
+  std::array<float, 3> max{0, 0, 0};
+
+  std::array<float, 3> center() const;
+  std::array<float, 3> extent() const;  // max - min per axis
+  float radius() const;                 // half the diagonal
+};
+
+// Per-axis [lower_quantile, upper_quantile] of the positions (defaults: 1st-99th percentile).
+// Large scenes are subsampled deterministically (at most ~1M centres). An empty scene gives
+// an all-zero box.
+SceneBounds robust_bounds(const GaussianScene& scene, double lower_quantile = 0.01,
+                          double upper_quantile = 0.99);
+
+// The exact min/max of all centres (not subsampled).
+SceneBounds exact_bounds(const GaussianScene& scene);
+
+}  // namespace lfd::render
