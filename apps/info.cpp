@@ -1,0 +1,92 @@
+// lfd info: the figures a person wants to know about a display's calibration.
+#include <cmath>
+#include <iostream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "calib/calibration_file.hpp"
+#include "calib/lens_model.hpp"
+#include "calib/view_count.hpp"
+
+namespace lfd::apps {
+
+int RunInfo(int argc, char** argv) {
+  CLI::App app{"Print the figures derived from a calibration: lenses across the screen, "
+               "subpixels per lens, slant, view cone, recommended view count and its rule.\n"
+               "\nExamples:\n"
+               "  lfd info --calibration visual.json\n"
+               "  lfd info --calibration calibration.json --json",
+               "info"};
+  std::string path;
+  bool json = false;
+  app.add_option("--calibration", path, "calibration.json or visual.json")->required();
+  app.add_flag("--json", json, "machine-readable output");
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  const calib::Calibration cal = calib::read_calibration(path);
+  const auto& d = cal.display;
+  const calib::LensModel lens(d, cal.correction);
+  const calib::ViewCountAdvice views = calib::recommend_view_count(cal);
+  const double width_mm = d.width_m() * 1000, height_mm = d.height_m() * 1000;
+  const double diagonal_in = std::hypot(d.width_m(), d.height_m()) / 0.0254;
+  const double lens_period_mm = 25.4 / d.pitch_lpi;
+  const auto range = cal.correction.range();
+
+  nlohmann::ordered_json j;
+  j["file"] = path;
+  j["serial"] = d.serial;
+  j["panel"] = {{"width_px", d.screen_w}, {"height_px", d.screen_h}, {"dpi", d.dpi},
+                {"width_mm", width_mm}, {"height_mm", height_mm}, {"diagonal_in", diagonal_in}};
+  j["lens"] = {{"pitch_lpi", d.pitch_lpi},
+               {"lens_period_mm", lens_period_mm},
+               {"lenses_across_screen", lens.pitch_periods()},
+               {"pixels_per_lens", d.screen_w / lens.pitch_periods()},
+               {"subpixels_per_lens", lens.subpixels_per_lens()},
+               {"slope", d.slope},
+               {"slant_deg", lens.slant_deg()},
+               {"tilt", lens.tilt()},
+               {"center_periods", d.center_periods},
+               {"inv_view", d.inv_view},
+               {"subpixel_layout", d.has_cells() ? fmt::format("Gen3 cells (mode {}, {} cells)",
+                                                               d.cell_pattern_mode,
+                                                               d.subpixel_cells.size())
+                                                 : (d.flip_subp ? "BGR stripes" : "RGB stripes")}};
+  j["view_cone_deg"] = d.view_cone_deg;
+  if (cal.view_cone_measured_deg) j["view_cone_measured_deg"] = *cal.view_cone_measured_deg;
+  if (!cal.correction.empty())
+    j["correction"] = {{"grid", fmt::format("{}x{}", cal.correction.nx(), cal.correction.ny())},
+                       {"min_periods", range[0]}, {"max_periods", range[1]}};
+  j["recommended_views"] = {{"views", views.views}, {"cols", views.cols}, {"rows", views.rows},
+                            {"rule", views.rule}};
+  if (json) {
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  fmt::print("{}{}\n", path, d.serial.empty() ? "" : "  (serial " + d.serial + ")");
+  fmt::print("  panel            {} x {} px, {} DPI, {:.1f} x {:.1f} mm ({:.1f}\" diagonal)\n",
+             d.screen_w, d.screen_h, d.dpi, width_mm, height_mm, diagonal_in);
+  fmt::print("  lens pitch       {:.6f} lenticules/inch ({:.4f} mm period)\n", d.pitch_lpi,
+             lens_period_mm);
+  fmt::print("  lenses across    {:.4f} (horizontally, over the screen width)\n",
+             lens.pitch_periods());
+  fmt::print("  per lens         {:.3f} pixels = {:.3f} subpixels along a row\n",
+             d.screen_w / lens.pitch_periods(), lens.subpixels_per_lens());
+  fmt::print("  slant            {:.5f} deg from vertical (slope {})\n", lens.slant_deg(), d.slope);
+  fmt::print("  center           {:.6f} lens periods{}\n", d.center_periods,
+             d.inv_view ? ", views inverted (invView)" : "");
+  fmt::print("  subpixels        {}\n", j["lens"]["subpixel_layout"].get<std::string>());
+  fmt::print("  view cone        {} deg{}\n", d.view_cone_deg,
+             cal.view_cone_measured_deg ? fmt::format(" (measured {:.2f})", *cal.view_cone_measured_deg)
+                                        : "");
+  if (!cal.correction.empty())
+    fmt::print("  correction       {}x{} B-spline, {:.4f} .. {:.4f} lens periods\n",
+               cal.correction.nx(), cal.correction.ny(), range[0], range[1]);
+  fmt::print("  recommended      {} views ({} x {} quilt)\n", views.views, views.cols, views.rows);
+  fmt::print("  rule             {}\n", views.rule);
+  return 0;
+}
+
+}  // namespace lfd::apps

@@ -1,0 +1,55 @@
+// lfd interlace: quilt -> panel image for one display.
+#include <iostream>
+
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "calib/calibration_file.hpp"
+#include "interlace/interlacer.hpp"
+#include "interlace/quilt_file.hpp"
+#include "util/error.hpp"
+#include "util/image.hpp"
+
+namespace lfd::apps {
+
+int RunInterlace(int argc, char** argv) {
+  CLI::App app{"Interlace a quilt into a panel image of exactly screenW x screenH for a display.\n"
+               "\nExamples:\n"
+               "  lfd interlace --calibration visual.json --quilt scene_qs5x9a1.6.png --out panel.png\n"
+               "  lfd interlace --calibration calibration.json --quilt q.png --cols 8 --rows 6 "
+               "--blend linear --out panel.png",
+               "interlace"};
+  std::string calibration_path, quilt_path, out_path, blend = "nearest";
+  interlace::QuiltOverrides overrides;
+  bool overscan = false, invert = false;
+  app.add_option("--calibration", calibration_path, "calibration.json or visual.json")
+      ->required();
+  app.add_option("--quilt", quilt_path, "quilt image (tiling from its _qsCxRaA name)")->required();
+  app.add_option("--cols", overrides.cols, "quilt columns (overrides the name)");
+  app.add_option("--rows", overrides.rows, "quilt rows (overrides the name)");
+  app.add_option("--views", overrides.views, "number of views (default cols*rows)");
+  app.add_option("--aspect", overrides.aspect, "aspect of one tile's content");
+  app.add_option("--blend", blend, "view selection: nearest or linear")
+      ->check(CLI::IsMember({"nearest", "linear"}));
+  app.add_flag("--overscan", overscan, "fill the panel and crop instead of black bars");
+  app.add_flag("--invert", invert, "read the views in reverse order");
+  app.add_option("--out", out_path, "panel image to write (PNG)")->required();
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  const calib::Calibration cal = calib::read_calibration(calibration_path);
+  const Image8 quilt8 = read_image(quilt_path, 3);
+  const render::QuiltLayout layout = interlace::resolve_quilt_layout(
+      quilt_path, quilt8.width, quilt8.height, overrides,
+      double(cal.display.screen_w) / cal.display.screen_h);
+  const calib::LensModel lens(cal.display, cal.correction);
+  interlace::InterlaceOptions options;
+  options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
+  options.overscan = overscan;
+  options.invert_views = invert;
+  const ImageF panel = interlace::interlace(to_float(quilt8), layout, lens, options);
+  write_png(out_path, to_uint8(panel));
+  std::cout << "wrote " << out_path << " (" << panel.width << "x" << panel.height << ", "
+            << layout.views << " views in " << layout.cols << "x" << layout.rows << " tiles)\n";
+  return 0;
+}
+
+}  // namespace lfd::apps

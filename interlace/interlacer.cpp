@@ -1,0 +1,107 @@
+#include "interlace/interlacer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "util/error.hpp"
+
+namespace lfd::interlace {
+
+Interlacer::Interlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+                       InterlaceOptions options)
+    : lens_(lens), layout_(layout), options_(options) {
+  layout_.check("quilt");
+}
+
+SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
+  const auto& cal = lens_.calibration();
+  SubpixelSample s;
+  // Aspect fit (looking-glass.md 3.8): the phase uses the unscaled (u, v); only the tile
+  // lookup uses the aspect-corrected coordinate.
+  const calib::ScreenUV p = lens_.pixel_uv(x, row);
+  const double display_aspect = double(cal.screen_w) / cal.screen_h;
+  const double quilt_aspect = layout_.aspect;
+  const bool fit_x = (display_aspect >= quilt_aspect && !options_.overscan) ||
+                     (display_aspect <= quilt_aspect && options_.overscan);
+  double nu = p.u - 0.5, nv = p.v - 0.5;
+  if (fit_x)
+    nu *= display_aspect / quilt_aspect;
+  else
+    nv *= quilt_aspect / display_aspect;
+  s.tile_u = nu + 0.5;
+  s.tile_v = nv + 0.5;
+  if (s.tile_u < 0 || s.tile_u > 1 || s.tile_v < 0 || s.tile_v > 1) {
+    s.inside = false;
+    return s;
+  }
+
+  const int views = layout_.views;
+  double f = lens_.subpixel_view_fraction(x, row, channel);
+  if (options_.invert_views) f = 1.0 - f;
+  if (options_.blend == ViewBlend::kNearest) {
+    s.view_a = s.view_b = calib::LensModel::view_index(f, views);
+    return s;
+  }
+  // Linear: blend the two views whose centres (k + 0.5)/V bracket f; clamp at the cone edges
+  // rather than wrapping, since the first and last views are the farthest apart in content.
+  const double t = std::clamp(f * views - 0.5, 0.0, double(views - 1));
+  s.view_a = std::min(int(std::floor(t)), views - 1);
+  s.view_b = std::min(s.view_a + 1, views - 1);
+  s.weight_b = float(t - s.view_a);
+  return s;
+}
+
+float Interlacer::sample_tile(const ImageF& quilt, int view, double u, double v,
+                              int channel) const {
+  const int tw = layout_.tile_width(), th = layout_.tile_height();
+  // Texel centres at (i + 0.5)/tw; bottom-up texel coordinates within the tile.
+  const double tx = std::clamp(u * tw - 0.5, 0.0, double(tw - 1));
+  const double ty = std::clamp(v * th - 0.5, 0.0, double(th - 1));
+  const int x0 = int(tx), y0 = int(ty);
+  const int x1 = std::min(x0 + 1, tw - 1), y1 = std::min(y0 + 1, th - 1);
+  const float ax = float(tx - x0), ay = float(ty - y0);
+  const int ox = layout_.tile_x(view);
+  const int oy = layout_.tile_y_top_down(view) + th - 1;  // image row of tile texel row 0
+  auto at = [&](int ix, int iy) { return quilt.at(ox + ix, oy - iy, channel); };
+  const float top = at(x0, y0) * (1 - ax) + at(x1, y0) * ax;
+  const float bottom = at(x0, y1) * (1 - ax) + at(x1, y1) * ax;
+  return top * (1 - ay) + bottom * ay;
+}
+
+ImageF Interlacer::interlace(const ImageF& quilt) const {
+  if (quilt.width != layout_.width || quilt.height != layout_.height)
+    throw_input_error("quilt: image is {}x{} but the layout says {}x{}", quilt.width,
+                      quilt.height, layout_.width, layout_.height);
+  const auto& cal = lens_.calibration();
+  ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
+  const int channels = quilt.channels;
+  // Fringe correction (looking-glass.md 3.11): every other row darkened by |fringe|.
+  const double fringe = cal.fringe;
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int row = 0; row < cal.screen_h; ++row) {
+    const int j = cal.screen_h - 1 - row;
+    const double fringe_gain =
+        1.0 - std::abs(fringe) * std::floor(std::fmod(j + 0.5 + std::ceil(fringe / 2), 2.0));
+    for (int x = 0; x < cal.screen_w; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        const SubpixelSample s = sample_for(x, row, c);
+        if (!s.inside) continue;
+        const int qc = channels >= 3 ? c : 0;
+        float value = sample_tile(quilt, s.view_a, s.tile_u, s.tile_v, qc);
+        if (s.weight_b > 0) {
+          const float b = sample_tile(quilt, s.view_b, s.tile_u, s.tile_v, qc);
+          value += (b - value) * s.weight_b;
+        }
+        panel.at(x, row, c) = float(value * fringe_gain);
+      }
+    }
+  }
+  return panel;
+}
+
+ImageF interlace(const ImageF& quilt, const render::QuiltLayout& layout,
+                 const calib::LensModel& lens, const InterlaceOptions& options) {
+  return Interlacer(lens, layout, options).interlace(quilt);
+}
+
+}  // namespace lfd::interlace

@@ -1,0 +1,54 @@
+#pragma once
+// The CPU reference interlacer (DESIGN section 6, reference/looking-glass.md 3.12): for each
+// panel subpixel, its view fraction from the lens model (correction field and Gen3 cells
+// included), a view index (nearest, or a linear blend of the two nearest view centres), and a
+// bilinear lookup inside that view's quilt tile (aspect/overscan and viewPortion handled as
+// Looking Glass software does). The GLSL interlacer must match this function.
+#include "calib/lens_model.hpp"
+#include "render/quilt_layout.hpp"
+#include "util/image.hpp"
+
+namespace lfd::interlace {
+
+enum class ViewBlend { kNearest, kLinear };
+
+struct InterlaceOptions {
+  ViewBlend blend = ViewBlend::kNearest;
+  bool overscan = false;      // fill the panel and crop instead of fitting with black bars
+  bool invert_views = false;  // user "quilt invert": read views in reverse order
+};
+
+// Where in the quilt one panel subpixel reads from: tile `view_a` (and `view_b` with weight
+// `weight_b` when blending), at tile coordinates (tile_u, tile_v) in [0, 1] (v up).
+struct SubpixelSample {
+  bool inside = true;  // false: outside the fitted quilt area (black)
+  int view_a = 0;
+  int view_b = 0;
+  float weight_b = 0.f;
+  double tile_u = 0, tile_v = 0;
+};
+
+class Interlacer {
+ public:
+  Interlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+             InterlaceOptions options = {});
+
+  // Throws InputError if the quilt image does not match the layout's size.
+  ImageF interlace(const ImageF& quilt) const;
+
+  SubpixelSample sample_for(int x, int row_top_down, int channel) const;
+  // Bilinear lookup of channel c of view `view` at tile coordinates (u, v), clamped inside
+  // the tile so no neighbouring view bleeds in.
+  float sample_tile(const ImageF& quilt, int view, double u, double v, int channel) const;
+
+ private:
+  const calib::LensModel& lens_;
+  render::QuiltLayout layout_;
+  InterlaceOptions options_;
+};
+
+// Convenience: interlace a quilt image for a display.
+ImageF interlace(const ImageF& quilt, const render::QuiltLayout& layout,
+                 const calib::LensModel& lens, const InterlaceOptions& options = {});
+
+}  // namespace lfd::interlace

@@ -1,0 +1,116 @@
+#include "calib/lens_model.hpp"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "calib/visual_json.hpp"
+#include "tests/test_data.hpp"
+
+namespace lfd::calib {
+namespace {
+
+DisplayCalibration load(const char* name) {
+  return read_visual_json(test::shared_data() / "calibrations" / name);
+}
+
+double frac(double x) { return x - std::floor(x); }
+
+// Published processed shader values (reference/looking-glass.md 2.5 "Test vector").
+TEST(LensModel, ReproducesThePublishedShaderUniforms) {
+  LFD_REQUIRE_SHARED_DATA();
+  const LensModel gen2(load("LKG-APW92011.visual.json"));
+  EXPECT_NEAR(gen2.pitch_periods(), 673.46088569750157, 1e-9);
+  EXPECT_NEAR(gen2.tilt(), -0.074780801514116493, 1e-15);
+  const LensModel gen1(load("LKG-2K-04409.visual.json"));
+  EXPECT_NEAR(gen1.pitch_periods(), 354.39586, 1e-5);
+  EXPECT_NEAR(gen1.tilt(), -0.11405109, 1e-8);
+}
+
+TEST(LensModel, ClassicSubpixelPhaseMatchesTheVendorFormula) {
+  LFD_REQUIRE_SHARED_DATA();
+  const DisplayCalibration c = load("LKG-2K-04409.visual.json");
+  const LensModel lens(c);
+  const double P = lens.pitch_periods(), T = lens.tilt(), s = 1.0 / (3.0 * c.screen_w);
+  for (int x : {0, 17, 1280, 2559})
+    for (int row : {0, 5, 800, 1599})
+      for (int ch = 0; ch < 3; ++ch) {
+        // looking-glass.md 3.2 with j bottom-up: v = (j + 0.5)/H, j = H - 1 - row.
+        const double u = (x + 0.5) / c.screen_w, v = (c.screen_h - 1 - row + 0.5) / c.screen_h;
+        const double a = (u + ch * s + v * T) * P - c.center_periods;
+        const double f = std::clamp(1.0 - frac(a), 1e-5, 0.999999);  // invView = 1
+        EXPECT_NEAR(lens.subpixel_view_fraction(x, row, ch), f, 1e-9);
+      }
+}
+
+TEST(LensModel, FlipSubpSwapsRedAndBluePositions) {
+  LFD_REQUIRE_SHARED_DATA();
+  DisplayCalibration c = load("LKG-2K-04409.visual.json");
+  const LensModel rgb(c);
+  c.flip_subp = true;
+  const LensModel bgr(c);
+  EXPECT_DOUBLE_EQ(bgr.subpixel_uv(10, 10, 0).u, rgb.subpixel_uv(10, 10, 2).u);
+  EXPECT_DOUBLE_EQ(bgr.subpixel_uv(10, 10, 2).u, rgb.subpixel_uv(10, 10, 0).u);
+  EXPECT_DOUBLE_EQ(bgr.subpixel_uv(10, 10, 1).u, rgb.subpixel_uv(10, 10, 1).u);
+}
+
+TEST(LensModel, FlipImageXNegatesTilt) {
+  LFD_REQUIRE_SHARED_DATA();
+  DisplayCalibration c = load("LKG-2K-04409.visual.json");
+  const double t = LensModel(c).tilt();
+  c.flip_image_x = true;
+  EXPECT_DOUBLE_EQ(LensModel(c).tilt(), -t);
+}
+
+TEST(LensModel, Gen3CellsUseBottomUpRowParity) {
+  LFD_REQUIRE_SHARED_DATA();
+  const DisplayCalibration c = load("template-16in-portrait-gen3.visual.json");
+  const LensModel lens(c);
+  // Mode 4 = row parity of the bottom-up row j. The bottom image row (row H-1) has j = 0:
+  // cell 0, red at (-0.25, -0.31) pixels from the pixel centre.
+  const int bottom = c.screen_h - 1;
+  const ScreenUV centre = lens.pixel_uv(7, bottom);
+  const ScreenUV red = lens.subpixel_uv(7, bottom, 0);
+  EXPECT_NEAR((red.u - centre.u) * c.screen_w, -0.25, 1e-9);
+  EXPECT_NEAR((red.v - centre.v) * c.screen_h, -0.31, 1e-9);
+  const ScreenUV red1 = lens.subpixel_uv(7, bottom - 1, 0);  // j = 1: cell 1
+  EXPECT_NEAR((red1.u - lens.pixel_uv(7, bottom - 1).u) * c.screen_w, 0.25, 1e-9);
+  const ScreenUV blue = lens.subpixel_uv(7, bottom, 2);
+  EXPECT_NEAR((blue.u - centre.u) * c.screen_w, 0.25, 1e-9);
+  EXPECT_NEAR((blue.v - centre.v) * c.screen_h, 0.0, 1e-9);
+}
+
+TEST(LensModel, CorrectionFieldShiftsThePhase) {
+  LFD_REQUIRE_SHARED_DATA();
+  const DisplayCalibration c = load("LKG-APW92011.visual.json");
+  std::vector<double> coeffs(5 * 4, 0.125);  // a constant B-spline is that constant
+  const LensModel plain(c), corrected(c, CorrectionField(5, 4, coeffs));
+  for (double u : {0.0, 0.3, 1.0})
+    for (double v : {0.0, 0.77, 1.0})
+      EXPECT_NEAR(corrected.phase(u, v) - plain.phase(u, v), 0.125, 1e-12);
+}
+
+TEST(LensModel, PhaseForFractionInvertsViewFraction) {
+  LFD_REQUIRE_SHARED_DATA();
+  for (bool inv : {true, false}) {
+    DisplayCalibration c = load("LKG-APW92011.visual.json");
+    c.inv_view = inv;
+    const LensModel lens(c);
+    for (double f : {0.01, 0.3, 0.5, 0.97}) {
+      const double a = lens.phase_for_fraction(f, 12.0);
+      EXPECT_GE(a, 12.0);
+      EXPECT_LT(a, 13.0);
+      EXPECT_NEAR(lens.view_fraction(a), f, 1e-12);
+    }
+  }
+}
+
+TEST(LensModel, ViewIndexClampsToTheLastView) {
+  EXPECT_EQ(LensModel::view_index(0.999999, 45), 44);
+  EXPECT_EQ(LensModel::view_index(1.0, 45), 44);
+  EXPECT_EQ(LensModel::view_index(1e-5, 45), 0);
+  EXPECT_EQ(LensModel::view_index(0.5, 45), 22);
+}
+
+}  // namespace
+}  // namespace lfd::calib
