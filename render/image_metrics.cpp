@@ -57,7 +57,7 @@ double psnr(const ImageF& a, const ImageF& b) {
 double ssim(const ImageF& a, const ImageF& b) {
   check_same(a, b);
   const int n = std::min({11, a.width, a.height});
-  std::vector<double> k(size_t(n));
+  std::vector<double> k(static_cast<size_t>(n));
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {
     const double x = i - (n - 1) / 2.0;
