@@ -219,7 +219,7 @@ void add_objects(std::vector<Component>& out, std::mt19937_64& rng,
       const Shape shape = std::array{Shape::Sphere, Shape::Box, Shape::Torus}[rng() % 3];
       const Paint paint = random_paint(rng, U(rng) < 0.5f ? 0.0f : 0.1f + 0.1f * U(rng));
       if (shape == Shape::Sphere) {
-        const float r = 0.3f + 0.3f * U(rng);
+        const float r = 0.25f + 0.3f * U(rng);
         out.push_back(object(shape, {x, -1 + r, zz}, {r, r, r}, paint));
       } else if (shape == Shape::Box) {
         const Vec3 h{0.2f + 0.25f * U(rng), 0.2f + 0.4f * U(rng), 0.2f + 0.25f * U(rng)};
@@ -236,7 +236,7 @@ std::vector<Component> tabletop(std::mt19937_64& rng) {
   std::vector<Component> c;
   Paint ground{{0.55f, 0.5f, 0.45f}, {0.35f, 0.32f, 0.3f}, 0.5f, {0.05f, 0.05f, 0.05f}, 0.9f};
   c.push_back(plane({0, -1, 0}, {1, 0, 0}, {0, 0, 1}, 4.5f, 4.5f, {0, 1, 0}, ground, 0));
-  add_objects(c, rng, {-2.2f, -0.6f, 0.9f}, 2.2f, 3);
+  add_objects(c, rng, {-2.5f, -0.5f, 1.5f}, 2.2f, 3);
   Paint sky{{0.55f, 0.7f, 0.9f}, {0.85f, 0.85f, 0.9f}, 3.0f, {0, 0, 0}, 0.95f};
   Component dome;
   dome.shape = Shape::Dome, dome.center = {0, -1, 0}, dome.size = {12, 0, 0}, dome.paint = sky;
