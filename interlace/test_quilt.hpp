@@ -1,0 +1,16 @@
+#pragma once
+// A test quilt in which every view shows its own number on a colour that changes with the
+// view index: photographed through the display, the number read tells which view a camera
+// position sees, so a scrambled calibration is obvious at a glance.
+#include "render/quilt_layout.hpp"
+#include "util/image.hpp"
+
+namespace lfd::interlace {
+
+// `layout` must have width/height set. Values in [0, 1], row 0 = top.
+ImageF make_numbered_quilt(const render::QuiltLayout& layout);
+
+// A quilt layout of tile size `tile_w` x `tile_h` for `cols` x `rows` views.
+render::QuiltLayout layout_for_tiles(int cols, int rows, int tile_w, int tile_h, double aspect);
+
+}  // namespace lfd::interlace
