@@ -1,0 +1,111 @@
+// G2LF against the per-view baseline on a small random scene (45 views of 128x128).
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "render/g2lf.hpp"
+#include "render/image_metrics.hpp"
+#include "render/per_view_quilt.hpp"
+#include "render_test_scenes.hpp"
+#include "util/error.hpp"
+
+namespace lfd::render {
+namespace {
+
+struct Fixture {
+  GaussianScene scene = testing::random_cloud(4000, 2.5f, 5.0f, 7);
+  QuiltGeometry geometry;
+  QuiltLayout layout;
+  ImageF baseline;
+  Fixture() {
+    const Camera base = make_look_at_camera({0, 0, 0}, {0, 0, 3.5f}, {0, 1, 0}, 0.6f, 128, 128);
+    geometry = make_quilt_geometry(base, 3.5f, 40.0f, 45);
+    layout = make_quilt_layout(geometry, 5, 9);
+    baseline = render_quilt_per_view(scene, geometry, layout);
+  }
+};
+
+const Fixture& fixture() {
+  static const Fixture f;
+  return f;
+}
+
+double g2lf_psnr(const G2lfOptions& o) {
+  const Fixture& f = fixture();
+  return psnr(render_quilt_g2lf(f.scene, f.geometry, f.layout, o), f.baseline);
+}
+
+TEST(G2lf, ManyChunksFinePlanesBilinearMatchThePerViewQuilt) {
+  G2lfOptions o;
+  o.chunks = 256;
+  o.plane_scale = 2;
+  o.filter = PlaneFilter::kBilinear;
+  // Moving the reference camera back covers the near field the outer views see (paper D_shift).
+  o.d_shift = 1.5f;
+  const double p_u8 = g2lf_psnr(o);
+  o.precision = PlanePrecision::kF32;
+  const double p_f32 = g2lf_psnr(o);
+  RecordProperty("psnr_u8", std::to_string(p_u8));
+  RecordProperty("psnr_f32", std::to_string(p_f32));
+  std::printf("G2LF 256 chunks, P_s 2, bilinear: PSNR u8 %.2f dB, f32 %.2f dB\n", p_u8, p_f32);
+  EXPECT_GT(p_u8, 30.0);
+  EXPECT_GT(p_f32, 30.0);
+}
+
+TEST(G2lf, FewerChunksLoseQuality) {
+  G2lfOptions many, few;
+  many.chunks = 128;
+  few.chunks = 4;
+  many.d_shift = few.d_shift = 0.5f;
+  const double p_many = g2lf_psnr(many), p_few = g2lf_psnr(few);
+  std::printf("G2LF nearest P_s 1: 128 chunks %.2f dB, 4 chunks %.2f dB\n", p_many, p_few);
+  EXPECT_GT(p_many, p_few + 1.0);
+}
+
+TEST(G2lf, DepthChunksAreQuantilesWithMedianPlanes) {
+  const Fixture& f = fixture();
+  const ReferenceCamera ref = make_reference_camera(f.geometry, 0.5f, 1);
+  const DepthChunks c = bin_by_depth(f.scene, f.geometry, ref, 10);
+  ASSERT_EQ(c.members.size(), 10u);
+  size_t total = 0;
+  for (size_t k = 0; k < c.members.size(); ++k) {
+    total += c.members[k].size();
+    if (k > 0) EXPECT_GT(c.plane_depth[k], c.plane_depth[k - 1]);
+    EXPECT_LE(c.members[k].size(), c.members[0].size() + 1);
+    EXPECT_GE(c.members[k].size() + 1, c.members[0].size());
+  }
+  EXPECT_GT(total, f.scene.size() / 2);
+  EXPECT_LE(total, f.scene.size());
+}
+
+TEST(G2lf, SingleGaussianOnTheFocalPlaneLandsOnTheSamePixelInEveryView) {
+  GaussianScene s;
+  testing::add_gaussian(s, {0, 0, 3.5f}, {0.02f, 0.02f, 0.02f}, 0.9f, {1, 1, 1});
+  const Fixture& f = fixture();
+  G2lfOptions o;
+  o.chunks = 1;
+  const ImageF q = render_quilt_g2lf(s, f.geometry, f.layout, o);
+  for (int j : {0, 22, 44}) {
+    const ImageF v = extract_view(q, f.layout, j);
+    EXPECT_GT(v.at(64, 64, 0) + v.at(63, 63, 0), 0.5f) << j;
+    EXPECT_LT(v.at(40, 64, 0), 0.01f) << j;
+  }
+}
+
+TEST(G2lf, OptionsAreChecked) {
+  G2lfOptions o;
+  o.chunks = 0;
+  EXPECT_THROW(o.check(), InputError);
+  o = {};
+  o.plane_scale = 0;
+  EXPECT_THROW(o.check(), InputError);
+  o = {};
+  o.d_shift = -1.0f;
+  EXPECT_THROW(o.check(), InputError);
+  EXPECT_THROW(parse_plane_filter("cubic"), InputError);
+  EXPECT_THROW(parse_plane_precision("f16"), InputError);
+}
+
+}  // namespace
+}  // namespace lfd::render
