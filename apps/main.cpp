@@ -23,7 +23,9 @@ const std::vector<Command>& commands() {
       {"demo", RunDemo, "run the whole pipeline on the bundled data and write a report"},
       {"info", RunInfo, "print the figures derived from a calibration"},
       {"interlace", RunInterlace, "interlace a quilt into a panel image for a display"},
-      {"scene", RunScene, "generate procedural Gaussian scenes; print a scene file's counts and bounds"},
+      {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
+      {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
+      {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
   };

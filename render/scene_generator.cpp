@@ -1,5 +1,8 @@
-// Procedural scenes (scene_generator.hpp). World frame: y up, metres-like units, objects within
-// ~3 units of the origin, ground plane at y = -1, a far background (dome or end wall). Every
+// Procedural scenes (scene_generator.hpp). Metres-like units, objects within ~3 units of the
+// origin on a ground plane, a far background (dome or end wall). Layouts are built y-up and
+// then turned 180 degrees about x into the frame of trained 3DGS scenes (COLMAP: y down, camera
+// looking along +z), so the same default camera suits generated and real scenes: ground at
+// y = +1, "up" is -y, the front row of objects at z < 0 faces a camera at z ~ -5. Every
 // Gaussian lies on a surface: flat along the surface normal, anisotropic in the tangent plane,
 // with per-object colours and small view-dependent SH terms (degree >= 1) so renderers see
 // realistic occlusion, depth layers and colour that varies per view.
@@ -268,11 +271,12 @@ std::vector<Component> corridor(std::mt19937_64& rng) {
 }
 
 // Splits `total` Gaussians over the components: ground/walls and objects by area, the far
-// background a fixed share (it covers much of the image but needs little detail).
+// dome a fixed 2% (a smooth backdrop of large splats needs little detail). Keeping it under
+// the 1% tails per side of robust_bounds() lets the default framing follow the objects.
 void assign_counts(std::vector<Component>& comps, size_t total) {
   const bool has_dome =
       std::any_of(comps.begin(), comps.end(), [](const auto& c) { return c.shape == Shape::Dome; });
-  const double surface_share = has_dome ? 0.85 : 1.0;
+  const double surface_share = has_dome ? 0.98 : 1.0;
   size_t assigned = 0;
   for (auto& c : comps) {
     // Objects get 3x their area share: they carry the detail a viewer looks at.
@@ -305,7 +309,9 @@ uint64_t splitmix64(uint64_t x) {
 void fill_gaussian(GaussianScene& scene, size_t i, const Component& c, std::mt19937_64& rng) {
   std::uniform_real_distribution<float> U(0.0f, 1.0f);
   std::normal_distribution<float> N(0.0f, 1.0f);
-  const Sample s = sample(c, rng);
+  Sample s = sample(c, rng);
+  // y-up layout -> COLMAP frame: a proper rotation (180 degrees about x), handedness kept.
+  for (Vec3* v : {&s.position, &s.normal, &s.tangent}) *v = {(*v)[0], -(*v)[1], -(*v)[2]};
   // Spacing of a uniform cover of the surface by c.count discs; tangent scales slightly larger
   // so neighbours overlap (no holes), normal scale thin (surfaces, not blobs).
   const float spacing = float(std::sqrt(c.area / double(std::max<size_t>(c.count, 1))));
