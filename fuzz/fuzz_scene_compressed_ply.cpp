@@ -1,0 +1,18 @@
+// libFuzzer target: the PlayCanvas compressed PLY reader.
+// Any input must either parse or throw lfd::InputError; anything else (a crash, a sanitizer
+// report, another exception, an allocation beyond -rss_limit_mb) is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "render/scene_parsers.hpp"
+#include "util/error.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  try {
+    lfd::render::read_compressed_ply(bytes, "fuzz.compressed.ply");
+  } catch (const lfd::InputError&) {
+  }
+  return 0;
+}
