@@ -1,0 +1,74 @@
+#pragma once
+// The lens solver (DESIGN section 5 step 4): ONE non-linear least-squares problem over all
+// camera positions. At a panel point X (whose content the camera sees, from registration) the
+// decoded phase is (DESIGN section 5 step 2)
+//   psi(X) = f_seen(P) + s (A_true(X) - A_nom(X))   (mod 1),  s = +1 with invView, -1 without
+//   f_seen(P) = 0.5 + ((Cx - Px) / Cz) / (2 tan(viewCone / 2)),  P = X - delta
+// where delta (< half a lens, horizontal) is the mean offset between the point the camera looks
+// at and the content the lens shows it there (see lens_solver.cpp). Unknowns: pitch, slope,
+// center, viewCone, the B-spline correction field w (smoothness prior; gauge: zero mean and
+// zero linear trend, so it cannot absorb center, pitch or slope) and per-position camera
+// positions (priors from the registration). Residuals are wrap-aware
+// (wrap_to_[-0.5, 0.5](psi_obs - psi_model)) under a robust loss; uncertainties come from
+// ceres::Covariance scaled by the residual variance.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "calib/calibration_file.hpp"
+#include "calib/phase_decoding.hpp"
+
+namespace lfd::calib {
+
+struct PositionData {
+  std::string name;
+  std::vector<PhaseSample> samples;
+  Eigen::Vector3d camera_m{0, 0, 0.6};  // from registration (display frame)
+  double lateral_sigma_m = 0.001;        // prior on the registration's camera position
+  double depth_sigma_m = 0.003;
+};
+
+struct LensEstimate {
+  double pitch_lpi = 50, slope = -7, center_periods = 0, view_cone_deg = 40;
+};
+
+struct SolverOptions {
+  int grid_nx = 8, grid_ny = 8;  // correction control points (0: no correction field)
+  double smoothness = 1.0;       // weight of the second differences of the control points
+  double obs_sigma = 0.02;       // assumed phase noise per sample, lens periods
+  double loss_scale = 0.05;      // Cauchy scale of the final stage, lens periods
+  bool fit_view_cone = true;     // needs >= 2 positions (else the nominal cone is kept)
+  int max_samples_per_position = 40000;
+  int max_iterations = 100;
+  int threads = 2;
+  bool verbose = false;
+};
+
+struct SolverResult {
+  LensEstimate lens;
+  CorrectionField correction;
+  std::vector<Eigen::Vector3d> cameras_m;
+  std::map<std::string, double> sigma;  // 1-sigma: pitch_lpi, slope, center_periods, ...
+  ResidualStats residuals;
+  std::vector<double> position_rms;     // inlier rms per position, lens periods
+  double solve_seconds = 0;
+  bool converged = false;
+  std::string report;                   // Ceres brief reports of the stages
+};
+
+// Predicted wrapped phase (DESIGN section 5 step 2) for a sample at content point (u, v) seen
+// from `camera_m`, given the nominal lens (patterns) and an estimate (with correction field).
+double predict_psi(const LensModel& nominal, const LensModel& estimate, double view_cone_deg,
+                   const Eigen::Vector3d& camera_m, double u, double v);
+
+SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
+                        const std::vector<PositionData>& positions, const SolverOptions& options);
+
+// The field minus its least-squares plane a + b u + c v over the screen (the solver's gauge).
+CorrectionField remove_gauge(const CorrectionField& field);
+// Display calibration with the estimate's lens values.
+DisplayCalibration apply_estimate(const DisplayCalibration& nominal, const LensEstimate& lens);
+
+}  // namespace lfd::calib

@@ -1,0 +1,324 @@
+#include "calib/patterns.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <opencv2/aruco.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "calib/lens_model.hpp"
+#include "util/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace lfd::calib {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+constexpr const char* kManifestFormat = "lfd-patterns";
+constexpr int kManifestVersion = 1;
+
+PatternKind kind_from_string(const std::string& s, const std::string& where) {
+  for (PatternKind k : {PatternKind::kBoard, PatternKind::kWhite, PatternKind::kBlack,
+                        PatternKind::kPhase})
+    if (s == to_string(k)) return k;
+  throw_input_error("{}: patterns: unknown pattern kind '{}'", where, s);
+}
+
+// Chessboard corners of the board on the panel. The ChArUco object-point convention has
+// changed between OpenCV releases, so instead of assuming it we detect the corners on a small
+// rendering of the same board and snap them to the square grid.
+std::vector<cv::Point2d> board_corners_on_panel(const BoardLayout& layout) {
+  const int sq = 64;
+  BoardLayout small = layout;
+  small.square_px = sq;
+  small.marker_px = int(std::lround(sq * double(layout.marker_px) / layout.square_px));
+  auto board = make_board(small);
+  cv::Mat img;
+  const int margin = sq / 2;
+  board->draw(cv::Size(layout.squares_x * sq + 2 * margin, layout.squares_y * sq + 2 * margin),
+              img, margin, 1);
+  std::vector<std::vector<cv::Point2f>> marker_corners;
+  std::vector<int> marker_ids;
+  cv::aruco::detectMarkers(img, board->dictionary, marker_corners, marker_ids);
+  std::vector<cv::Point2f> corners;
+  std::vector<int> ids;
+  if (!marker_ids.empty())
+    cv::aruco::interpolateCornersCharuco(marker_corners, marker_ids, img, board, corners, ids);
+  const size_t n = size_t(layout.squares_x - 1) * size_t(layout.squares_y - 1);
+  if (ids.size() != n)
+    throw std::runtime_error("patterns: cannot locate the ChArUco corners of the board layout");
+  std::vector<cv::Point2d> out(n);
+  for (size_t i = 0; i < ids.size(); ++i) {
+    // A corner between squares sits at a pixel boundary: OpenCV coordinate (k * sq - 0.5).
+    const double ix = std::round((corners[i].x - margin + 0.5) / sq);
+    const double iy = std::round((corners[i].y - margin + 0.5) / sq);
+    out[size_t(ids[i])] = {layout.origin_x_px + ix * layout.square_px - 0.5,
+                           layout.origin_y_px + iy * layout.square_px - 0.5};
+  }
+  return out;
+}
+
+void draw_corner_markers(const PatternSet& set, int index, Image8& image) {
+  const auto& m = set.markers;
+  auto dict = marker_dictionary();
+  for (int corner = 0; corner < 4; ++corner) {
+    cv::Mat marker;
+    cv::aruco::drawMarker(dict, 4 * index + corner, m.side_px, marker, 1);
+    const int x0 = int(std::lround(m.centres_px[corner].x + 0.5 - m.side_px / 2.0));
+    const int y0 = int(std::lround(m.centres_px[corner].y + 0.5 - m.side_px / 2.0));
+    for (int y = y0 - m.quiet_px; y < y0 + m.side_px + m.quiet_px; ++y)
+      for (int x = x0 - m.quiet_px; x < x0 + m.side_px + m.quiet_px; ++x) {
+        if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;
+        const bool inside = x >= x0 && y >= y0 && x < x0 + m.side_px && y < y0 + m.side_px;
+        const uint8_t value = inside ? marker.at<uint8_t>(y - y0, x - x0) : 255;
+        for (int c = 0; c < 3; ++c) image.at(x, y, c) = value;
+      }
+  }
+}
+
+}  // namespace
+
+const char* to_string(PatternKind kind) {
+  switch (kind) {
+    case PatternKind::kBoard: return "board";
+    case PatternKind::kWhite: return "white";
+    case PatternKind::kBlack: return "black";
+    case PatternKind::kPhase: return "phase";
+  }
+  return "?";
+}
+
+cv::Ptr<cv::aruco::Dictionary> board_dictionary() {
+  return cv::aruco::getPredefinedDictionary(cv::aruco::DICT_5X5_100);
+}
+cv::Ptr<cv::aruco::Dictionary> marker_dictionary() {
+  return cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_250);
+}
+
+cv::Ptr<cv::aruco::CharucoBoard> make_board(const BoardLayout& layout) {
+  return cv::aruco::CharucoBoard::create(layout.squares_x, layout.squares_y,
+                                         float(layout.square_px), float(layout.marker_px),
+                                         board_dictionary());
+}
+
+const PatternInfo* PatternSet::find(const std::string& stem) const {
+  for (const auto& p : patterns)
+    if (std::filesystem::path(p.file).stem().string() == stem) return &p;
+  return nullptr;
+}
+
+std::vector<const PatternInfo*> PatternSet::of_kind(PatternKind kind) const {
+  std::vector<const PatternInfo*> out;
+  for (const auto& p : patterns)
+    if (p.kind == kind) out.push_back(&p);
+  return out;
+}
+
+bool PatternSet::under_marker(double u, double v, double margin_px) const {
+  const auto& d = nominal.display;
+  const double x = u * d.screen_w - 0.5, y = (1.0 - v) * d.screen_h - 0.5;
+  const double half = markers.side_px / 2.0 + markers.quiet_px + margin_px;
+  for (const auto& c : markers.centres_px)
+    if (std::abs(x - c.x) < half && std::abs(y - c.y) < half) return true;
+  return false;
+}
+
+PatternSet plan_patterns(const Calibration& nominal, const PatternOptions& options) {
+  if (options.phase_steps < 3 || options.phase_steps > 32)
+    throw_input_error("patterns: phase steps must be between 3 and 32 (got {})",
+                      options.phase_steps);
+  PatternSet set;
+  set.nominal = nominal;
+  set.phase_steps = options.phase_steps;
+  const auto& d = nominal.display;
+  const int short_px = std::min(d.screen_w, d.screen_h);
+  const int long_px = std::max(d.screen_w, d.screen_h);
+
+  // Board: squares as large as fit with half a square of white margin all round, so every
+  // square spans tens of lenses and survives the lens sampling and the camera blur.
+  BoardLayout& b = set.board;
+  const int n_short = std::max(3, options.board_squares_short);
+  b.square_px = short_px / (n_short + 1);
+  const int n_long = std::max(3, (long_px - b.square_px) / b.square_px);
+  b.squares_x = d.screen_w >= d.screen_h ? n_long : n_short;
+  b.squares_y = d.screen_w >= d.screen_h ? n_short : n_long;
+  b.marker_px = int(std::lround(0.7 * b.square_px));
+  b.origin_x_px = (d.screen_w - b.squares_x * b.square_px) / 2;
+  b.origin_y_px = (d.screen_h - b.squares_y * b.square_px) / 2;
+  b.corners_px = board_corners_on_panel(b);
+
+  CornerMarkers& m = set.markers;
+  m.side_px = int(std::lround(0.09 * short_px));
+  m.quiet_px = std::max(4, m.side_px / 4);
+  const double inset = m.quiet_px + m.side_px / 2.0 - 0.5;
+  m.centres_px = {{inset, inset},
+                  {d.screen_w - 1 - inset, inset},
+                  {d.screen_w - 1 - inset, d.screen_h - 1 - inset},
+                  {inset, d.screen_h - 1 - inset}};
+
+  auto add = [&](std::string file, PatternKind kind, int step) {
+    set.patterns.push_back({std::move(file), kind, step, int(set.patterns.size())});
+  };
+  add("00_board.png", PatternKind::kBoard, 0);
+  add("01_white.png", PatternKind::kWhite, 0);
+  add("02_black.png", PatternKind::kBlack, 0);
+  for (int k = 0; k < set.phase_steps; ++k)
+    add(fmt::format("{:02d}_phase_{}of{}.png", 3 + k, k, set.phase_steps), PatternKind::kPhase, k);
+  return set;
+}
+
+Image8 render_pattern(const PatternSet& set, const PatternInfo& pattern) {
+  const auto& d = set.nominal.display;
+  Image8 image(d.screen_w, d.screen_h, 3, 0);
+  switch (pattern.kind) {
+    case PatternKind::kBoard: {
+      std::fill(image.pixels.begin(), image.pixels.end(), uint8_t(255));
+      const auto& b = set.board;
+      cv::Mat board_img;
+      make_board(b)->draw(cv::Size(b.squares_x * b.square_px, b.squares_y * b.square_px),
+                          board_img, 0, 1);
+      for (int y = 0; y < board_img.rows; ++y)
+        for (int x = 0; x < board_img.cols; ++x)
+          for (int c = 0; c < 3; ++c)
+            image.at(b.origin_x_px + x, b.origin_y_px + y, c) = board_img.at<uint8_t>(y, x);
+      return image;  // the board pattern carries no corner markers
+    }
+    case PatternKind::kWhite:
+      std::fill(image.pixels.begin(), image.pixels.end(), uint8_t(255));
+      break;
+    case PatternKind::kBlack:
+      break;
+    case PatternKind::kPhase: {
+      // DESIGN section 5 step 2: subpixel s shows 0.5 + 0.5 cos(2 pi (f_nom(s) - k/K)).
+      const LensModel lens(d, set.nominal.correction);
+      const double shift = double(pattern.step) / set.phase_steps;
+#pragma omp parallel for schedule(static)
+      for (int row = 0; row < d.screen_h; ++row)
+        for (int x = 0; x < d.screen_w; ++x)
+          for (int c = 0; c < 3; ++c) {
+            const double f = lens.subpixel_view_fraction(x, row, c);
+            const double value = 0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * (f - shift));
+            image.at(x, row, c) = uint8_t(std::lround(255.0 * value));
+          }
+      break;
+    }
+  }
+  draw_corner_markers(set, pattern.index, image);
+  return image;
+}
+
+namespace {
+
+ojson points_to_json(const std::vector<cv::Point2d>& points) {
+  ojson a = ojson::array();
+  for (const auto& p : points) a.push_back({p.x, p.y});
+  return a;
+}
+
+std::vector<cv::Point2d> points_from_json(const ojson& a, const std::string& where,
+                                          const std::string& field) {
+  require_field(a.is_array(), where, field, "must be an array of [x, y]");
+  std::vector<cv::Point2d> out;
+  for (const auto& p : a) {
+    require_field(p.is_array() && p.size() == 2 && p[0].is_number() && p[1].is_number(), where,
+                  field, "must be an array of [x, y]");
+    out.push_back({p[0].get<double>(), p[1].get<double>()});
+  }
+  return out;
+}
+
+}  // namespace
+
+void write_pattern_set(const std::filesystem::path& dir, const PatternSet& set, bool force) {
+  const auto pattern_dir = dir / "patterns";
+  const auto manifest_path = pattern_dir / "manifest.json";
+  guard_overwrite(manifest_path, force);
+  for (const auto& p : set.patterns) write_png(pattern_dir / p.file, render_pattern(set, p));
+
+  ojson j;
+  j["format"] = kManifestFormat;
+  j["version"] = kManifestVersion;
+  j["nominal"] = to_json(set.nominal);
+  j["phase_steps"] = set.phase_steps;
+  const auto& b = set.board;
+  j["board"] = {{"dictionary", "DICT_5X5_100"}, {"squares_x", b.squares_x},
+                {"squares_y", b.squares_y},     {"square_px", b.square_px},
+                {"marker_px", b.marker_px},     {"origin_px", {b.origin_x_px, b.origin_y_px}},
+                {"corners_px", points_to_json(b.corners_px)}};
+  j["corner_markers"] = {{"dictionary", "DICT_4X4_250"},
+                         {"side_px", set.markers.side_px},
+                         {"quiet_px", set.markers.quiet_px},
+                         {"centres_px", points_to_json(set.markers.centres_px)},
+                         {"ids", "4 * pattern index + corner (TL, TR, BR, BL)"}};
+  ojson list = ojson::array();
+  for (const auto& p : set.patterns) {
+    ojson e = {{"file", p.file}, {"kind", to_string(p.kind)}, {"index", p.index}};
+    if (p.kind == PatternKind::kPhase) {
+      e["step"] = p.step;
+      e["steps"] = set.phase_steps;
+      e["shows"] = "0.5 + 0.5 cos(2 pi (f_nom(s) - step/steps)) per subpixel";
+    }
+    list.push_back(e);
+  }
+  j["patterns"] = list;
+  write_text_atomic(manifest_path, j.dump(2) + "\n");
+}
+
+PatternSet read_pattern_set(const std::filesystem::path& dir) {
+  const auto path = dir / "patterns" / "manifest.json";
+  const std::string where = path.string();
+  if (!std::filesystem::exists(path))
+    throw_input_error("{}: not found (run `lfd patterns --display D.json --out {}` first)",
+                      where, dir.string());
+  ojson j;
+  try {
+    j = ojson::parse(read_text_file(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw_input_error("{}: not valid JSON ({})", where, e.what());
+  }
+  require_field(j.is_object() && j.value("format", "") == kManifestFormat, where, "format",
+                "is not \"lfd-patterns\"");
+  require_field(j.value("version", 0) == kManifestVersion, where, "version", "unsupported");
+  PatternSet set;
+  require_field(j.contains("nominal"), where, "nominal", "is missing");
+  set.nominal = parse_calibration(j["nominal"].dump(), where + ": nominal");
+  set.phase_steps = j.value("phase_steps", 0);
+  require_field(set.phase_steps >= 3 && set.phase_steps <= 32, where, "phase_steps",
+                "must be between 3 and 32");
+  try {
+    const auto& b = j.at("board");
+    set.board.squares_x = b.at("squares_x");
+    set.board.squares_y = b.at("squares_y");
+    set.board.square_px = b.at("square_px");
+    set.board.marker_px = b.at("marker_px");
+    set.board.origin_x_px = b.at("origin_px").at(0);
+    set.board.origin_y_px = b.at("origin_px").at(1);
+    set.board.corners_px = points_from_json(b.at("corners_px"), where, "board.corners_px");
+    const auto& m = j.at("corner_markers");
+    set.markers.side_px = m.at("side_px");
+    set.markers.quiet_px = m.at("quiet_px");
+    set.markers.centres_px = points_from_json(m.at("centres_px"), where, "corner_markers");
+    for (const auto& e : j.at("patterns")) {
+      PatternInfo p;
+      p.file = e.at("file").get<std::string>();
+      p.kind = kind_from_string(e.at("kind").get<std::string>(), where);
+      p.index = e.at("index");
+      p.step = e.value("step", 0);
+      set.patterns.push_back(p);
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw_input_error("{}: malformed manifest ({})", where, e.what());
+  }
+  require_field(set.markers.centres_px.size() == 4, where, "corner_markers.centres_px",
+                "needs 4 points");
+  require_field(set.of_kind(PatternKind::kBoard).size() == 1, where, "patterns",
+                "needs exactly one board pattern");
+  require_field(int(set.of_kind(PatternKind::kPhase).size()) == set.phase_steps, where,
+                "patterns", "needs phase_steps phase patterns");
+  return set;
+}
+
+}  // namespace lfd::calib

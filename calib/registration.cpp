@@ -1,0 +1,177 @@
+#include "calib/registration.hpp"
+
+#include <cmath>
+
+#include <opencv2/aruco.hpp>
+#include <opencv2/aruco/charuco.hpp>
+#include <opencv2/calib3d.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "util/error.hpp"
+
+namespace lfd::calib {
+
+ScreenUV panel_px_to_uv(const DisplayCalibration& d, cv::Point2d px) {
+  return {(px.x + 0.5) / d.screen_w, 1.0 - (px.y + 0.5) / d.screen_h};
+}
+
+Eigen::Vector3d uv_to_display_m(const DisplayCalibration& d, ScreenUV uv) {
+  return {(uv.u - 0.5) * d.width_m(), (uv.v - 0.5) * d.height_m(), 0.0};
+}
+
+BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
+  BoardDetection out;
+  out.image_size = gray8.size();
+  auto board = make_board(set.board);
+  auto params = cv::aruco::DetectorParameters::create();
+  params->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
+  std::vector<std::vector<cv::Point2f>> marker_corners, rejected;
+  std::vector<int> marker_ids;
+  cv::aruco::detectMarkers(gray8, board->dictionary, marker_corners, marker_ids, params,
+                           rejected);
+  if (marker_ids.size() < 4) return out;
+  cv::aruco::interpolateCornersCharuco(marker_corners, marker_ids, gray8, board, out.image_px,
+                                       out.ids, cv::noArray(), cv::noArray(), 2);
+  return out;
+}
+
+std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8) {
+  std::vector<std::vector<cv::Point2f>> corners;
+  std::vector<int> ids;
+  cv::aruco::detectMarkers(gray8, marker_dictionary(), corners, ids);
+  std::map<int, cv::Point2d> out;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    cv::Point2d c(0, 0);
+    for (const auto& p : corners[i]) c += cv::Point2d(p) * 0.25;
+    out[ids[i]] = c;
+  }
+  return out;
+}
+
+namespace {
+
+// Board corners as OpenCV object points in the display frame (metres, z = 0).
+std::vector<cv::Point3f> object_points(const PatternSet& set, const std::vector<int>& ids,
+                                       const std::vector<cv::Point2d>& shift_px) {
+  std::vector<cv::Point3f> out;
+  for (size_t i = 0; i < ids.size(); ++i) {
+    cv::Point2d px = set.board.corners_px.at(size_t(ids[i]));
+    if (!shift_px.empty()) px += shift_px[i];
+    const Eigen::Vector3d m = uv_to_display_m(set.nominal.display,
+                                              panel_px_to_uv(set.nominal.display, px));
+    out.emplace_back(float(m.x()), float(m.y()), 0.0f);
+  }
+  return out;
+}
+
+cv::Mat distortion_mat(const CameraIntrinsics& c) {
+  return c.distortion.empty() ? cv::Mat() : cv::Mat(c.distortion, true);
+}
+
+}  // namespace
+
+CameraIntrinsics self_calibrate(const std::vector<BoardDetection>& boards, const PatternSet& set,
+                                double* rms_px) {
+  std::vector<std::vector<cv::Point3f>> objects;
+  std::vector<std::vector<cv::Point2f>> images;
+  cv::Size size;
+  for (const auto& b : boards) {
+    if (b.ids.size() < 6) continue;
+    objects.push_back(object_points(set, b.ids, {}));
+    images.push_back(b.image_px);
+    size = b.image_size;
+  }
+  if (objects.size() < 3)
+    throw_input_error(
+        "self-calibration of the camera needs the board seen from at least 3 positions "
+        "(found {}); photograph more positions or pass --camera camera.yaml",
+        objects.size());
+  // Planar views: calibrateCamera with an initial guess from the image size; k1, k2 only,
+  // which is what a handful of planar views can determine.
+  cv::Mat K = cv::initCameraMatrix2D(objects, images, size), D;
+  std::vector<cv::Mat> rvecs, tvecs;
+  const double rms = cv::calibrateCamera(
+      objects, images, size, K, D, rvecs, tvecs,
+      cv::CALIB_USE_INTRINSIC_GUESS | cv::CALIB_ZERO_TANGENT_DIST | cv::CALIB_FIX_K3 |
+          cv::CALIB_FIX_ASPECT_RATIO);
+  if (rms_px) *rms_px = rms;
+  CameraIntrinsics c;
+  c.width = size.width;
+  c.height = size.height;
+  c.camera_matrix = cv::Matx33d(K);
+  D.reshape(1, 1).copyTo(c.distortion);
+  return c;
+}
+
+Registration::Registration(const BoardDetection& board, const PatternSet& set,
+                           const CameraIntrinsics& camera,
+                           const std::vector<cv::Point2d>& panel_shift_px)
+    : camera_(camera), display_(set.nominal.display) {
+  corners_ = int(board.ids.size());
+  if (corners_ < 8) throw InputError("too few board corners for registration");
+  const cv::Mat K(camera_.camera_matrix), D = distortion_mat(camera_);
+
+  std::vector<cv::Point2f> undistorted;
+  cv::undistortPoints(board.image_px, undistorted, K, D, cv::noArray(), K);
+  std::vector<cv::Point2f> uv;
+  for (int id : board.ids) {
+    const ScreenUV p = panel_px_to_uv(display_, set.board.corners_px.at(size_t(id)));
+    uv.emplace_back(float(p.u), float(p.v));
+  }
+  // Robust first (a corner misread on a glare spot), then least squares on the inliers.
+  cv::Mat inliers;
+  cv::Mat H = cv::findHomography(undistorted, uv, cv::RANSAC, 0.002, inliers);
+  if (H.empty()) throw InputError("the board corners do not fit a homography");
+  homography_ = cv::Matx33d(H);
+
+  const auto objects = object_points(set, board.ids, panel_shift_px);
+  std::vector<cv::Point3f> obj_in;
+  std::vector<cv::Point2f> img_in;
+  for (int i = 0; i < corners_; ++i)
+    if (inliers.at<uint8_t>(i)) {
+      obj_in.push_back(objects[size_t(i)]);
+      img_in.push_back(board.image_px[size_t(i)]);
+    }
+  cv::solvePnP(obj_in, img_in, K, D, rvec_, tvec_, false, cv::SOLVEPNP_IPPE);
+  cv::solvePnPRefineLM(obj_in, img_in, K, D, rvec_, tvec_);
+  std::vector<cv::Point2f> reproj;
+  cv::projectPoints(obj_in, rvec_, tvec_, K, D, reproj);
+  double sum = 0;
+  for (size_t i = 0; i < reproj.size(); ++i) {
+    const cv::Point2f d = reproj[i] - img_in[i];
+    sum += d.dot(d);
+  }
+  reprojection_rms_px_ = std::sqrt(sum / std::max<size_t>(1, reproj.size()));
+  cv::Matx33d R;
+  cv::Rodrigues(rvec_, R);
+  const cv::Vec3d c = -(R.t() * tvec_);
+  position_m_ = {c[0], c[1], c[2]};
+}
+
+std::vector<ScreenUV> Registration::image_to_uv(const std::vector<cv::Point2f>& image_px) const {
+  const cv::Mat K(camera_.camera_matrix), D = distortion_mat(camera_);
+  std::vector<cv::Point2f> undistorted;
+  if (!image_px.empty()) cv::undistortPoints(image_px, undistorted, K, D, cv::noArray(), K);
+  std::vector<ScreenUV> out;
+  out.reserve(undistorted.size());
+  for (const auto& p : undistorted) {
+    const cv::Vec3d q = homography_ * cv::Vec3d(p.x, p.y, 1.0);
+    out.push_back({q[0] / q[2], q[1] / q[2]});
+  }
+  return out;
+}
+
+std::vector<cv::Point2d> Registration::uv_to_image(const std::vector<ScreenUV>& uv) const {
+  std::vector<cv::Point3d> objects;
+  for (const auto& p : uv) {
+    const Eigen::Vector3d m = uv_to_display_m(display_, p);
+    objects.emplace_back(m.x(), m.y(), 0.0);
+  }
+  std::vector<cv::Point2d> out;
+  if (!objects.empty())
+    cv::projectPoints(objects, rvec_, tvec_, cv::Mat(camera_.camera_matrix),
+                      distortion_mat(camera_), out);
+  return out;
+}
+
+}  // namespace lfd::calib

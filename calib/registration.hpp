@@ -1,0 +1,69 @@
+#pragma once
+// Registration (DESIGN section 5 step 1): where the panel is in a photograph. The ChArUco
+// board gives corner correspondences camera pixel <-> panel point; with the camera intrinsics
+// they give the homography (undistorted camera pixel -> panel (u, v)) and the camera pose in
+// the display frame (DESIGN section 3: metres, panel centre origin, y up, viewer at z > 0).
+// Without intrinsics, boards seen from >= 3 positions self-calibrate them.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "calib/camera_model.hpp"
+#include "calib/lens_model.hpp"
+#include "calib/patterns.hpp"
+
+namespace lfd::calib {
+
+struct BoardDetection {
+  std::vector<int> ids;                   // ChArUco corner ids
+  std::vector<cv::Point2f> image_px;      // detected corners (distorted camera pixels)
+  cv::Size image_size;
+};
+
+// Detects the ChArUco corners in a photograph of the board pattern (8-bit grey).
+BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set);
+
+// Centres of the ArUco corner markers found in a capture, by marker id.
+std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8);
+
+// Intrinsics from the boards of >= 3 positions (cv::aruco::calibrateCameraCharuco).
+// Throws InputError if fewer than 3 usable boards.
+CameraIntrinsics self_calibrate(const std::vector<BoardDetection>& boards, const PatternSet& set,
+                                double* rms_px = nullptr);
+
+// Panel pixel (OpenCV coordinates) <-> screen (u, v) <-> display-frame metres.
+ScreenUV panel_px_to_uv(const DisplayCalibration& d, cv::Point2d px);
+Eigen::Vector3d uv_to_display_m(const DisplayCalibration& d, ScreenUV uv);
+
+class Registration {
+ public:
+  // Fits the homography (robustly) and the pose. `panel_shift_px` (optional, one per corner)
+  // moves the corners' physical panel positions for the pose: the lens array shows each
+  // corner displaced by up to half a lens (see calibrate.cpp), which the pose must not absorb.
+  Registration(const BoardDetection& board, const PatternSet& set, const CameraIntrinsics& camera,
+               const std::vector<cv::Point2d>& panel_shift_px = {});
+
+  const CameraIntrinsics& camera() const { return camera_; }
+  Eigen::Vector3d camera_position_m() const { return position_m_; }
+  double reprojection_rms_px() const { return reprojection_rms_px_; }
+  int corner_count() const { return corners_; }
+
+  // Undistorted camera pixels -> panel (u, v) of the content seen there.
+  std::vector<ScreenUV> image_to_uv(const std::vector<cv::Point2f>& image_px) const;
+  // Panel (u, v) -> distorted camera pixel, through the pose (for checks).
+  std::vector<cv::Point2d> uv_to_image(const std::vector<ScreenUV>& uv) const;
+
+ private:
+  CameraIntrinsics camera_;
+  DisplayCalibration display_;
+  cv::Matx33d homography_;  // undistorted pixel -> (u, v)
+  cv::Vec3d rvec_, tvec_;
+  Eigen::Vector3d position_m_;
+  double reprojection_rms_px_ = 0;
+  int corners_ = 0;
+};
+
+}  // namespace lfd::calib
