@@ -23,12 +23,14 @@ std::vector<double> filter_valid(const std::vector<double>& src, int w, int h, c
   const int n = int(k.size());
   const int vw = w - n + 1, vh = h - n + 1;
   std::vector<double> tmp(size_t(vw) * h), out(size_t(vw) * vh);
+#pragma omp parallel for schedule(static)
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < vw; ++x) {
       double s = 0.0;
       for (int i = 0; i < n; ++i) s += k[size_t(i)] * src[size_t(y) * w + x + i];
       tmp[size_t(y) * vw + x] = s;
     }
+#pragma omp parallel for schedule(static)
   for (int y = 0; y < vh; ++y)
     for (int x = 0; x < vw; ++x) {
       double s = 0.0;

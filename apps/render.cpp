@@ -1,0 +1,151 @@
+// `lfd render`: render a Gaussian scene into a light-field quilt (G2LF or per view) or one view.
+//   lfd render --scene guitar.compressed.ply --out guitar.png          (G2LF, 45 views, 5x9)
+//   lfd render --scene s.ply --method per-view --views 45 --cols 5 --rows 9 --size 512x512 --out q.png
+//   lfd render --scene s.ply --chunks 512 --plane-scale 2 --filter bilinear --out q.png
+//   lfd render --scene s.ply --camera cam.json --calibration visual.json --out q.png
+//   lfd render --scene s.ply --view 22 --out view.png
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "render/camera_json.hpp"
+#include "render/default_camera.hpp"
+#include "render/g2lf.hpp"
+#include "render/per_view_quilt.hpp"
+#include "render/quilt_layout.hpp"
+#include "render/scene_io.hpp"
+#include "util/error.hpp"
+
+namespace lfd::apps {
+namespace {
+
+// The display's view cone from a Looking Glass visual.json ({"viewCone": {"value": x}}).
+float view_cone_from_calibration(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw_input_error("{}: cannot open calibration file", path);
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw_input_error("{}: not valid JSON ({})", path, e.what());
+  }
+  const bool ok = j.is_object() && j.contains("viewCone") && j["viewCone"].is_object() &&
+                  j["viewCone"].contains("value") && j["viewCone"]["value"].is_number();
+  require_field(ok, path, "viewCone", "missing or not {\"value\": number}");
+  const double cone = j["viewCone"]["value"].get<double>();
+  require_field(cone > 0.0 && cone < 170.0, path, "viewCone", "must lie in (0, 170) degrees");
+  return float(cone);
+}
+
+// Adds `_qs{C}x{R}a{aspect}` before the extension unless the name already carries a tiling,
+// which must then agree with the quilt.
+std::string quilt_file_name(const std::string& out, const render::QuiltLayout& q) {
+  if (const auto named = render::parse_quilt_name(out)) {
+    if (named->cols != q.cols || named->rows != q.rows)
+      throw_input_error("--out: '{}' names a {}x{} quilt but the quilt is {}x{}", out, named->cols,
+                        named->rows, q.cols, q.rows);
+    return out;
+  }
+  const std::filesystem::path p(out);
+  const std::string name = p.stem().string() + render::quilt_suffix(q.cols, q.rows, q.aspect) +
+                           (p.has_extension() ? p.extension().string() : std::string(".png"));
+  return (p.parent_path() / name).string();
+}
+
+}  // namespace
+
+int RunRender(int argc, char** argv) {
+  CLI::App app{"Render a 3D Gaussian Splatting scene into a light-field quilt or a single view.\n"
+               "Examples:\n"
+               "  lfd render --scene guitar.compressed.ply --out guitar.png\n"
+               "  lfd render --scene s.ply --method per-view --size 512x512 --out quilt.png\n"
+               "  lfd render --scene s.ply --chunks 512 --plane-scale 2 --filter bilinear --out q.png\n"
+               "  lfd render --scene s.ply --camera cam.json --calibration visual.json --out q.png\n"
+               "  lfd render --scene s.ply --view 22 --out view.png",
+               "render"};
+  std::string scene_path, method = "g2lf", size_text, out, camera_path, calibration_path;
+  std::string filter = "nearest", precision = "u8", background_text = "0,0,0";
+  int views = 45, cols = 5, rows = 9, view = -1;
+  float orbit_deg = 0.0f, focal_distance = 0.0f, view_cone_deg = -1.0f;
+  render::G2lfOptions g2lf;
+  app.add_option("--scene", scene_path, "scene file (.ply, compressed .ply, .splat, .spz)")->required();
+  app.add_option("--method", method, "per-view (baseline) or g2lf (sweeping planes)")
+      ->check(CLI::IsMember({"per-view", "g2lf"}))->capture_default_str();
+  app.add_option("--views", views, "number of views")->capture_default_str();
+  app.add_option("--cols", cols, "quilt columns")->capture_default_str();
+  app.add_option("--rows", rows, "quilt rows")->capture_default_str();
+  app.add_option("--size", size_text, "size of one view, WxH (default: cam.json's, else 512x512)");
+  app.add_option("--chunks", g2lf.chunks, "G2LF: number of depth chunks N_chunk")->capture_default_str();
+  app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
+  app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")->capture_default_str();
+  app.add_option("--precision", precision, "G2LF: plane storage, u8 or f32")->capture_default_str();
+  app.add_option("--shift", g2lf.d_shift, "G2LF: D_shift, move the reference camera back (scene units)")
+      ->capture_default_str();
+  auto* camera_opt = app.add_option("--camera", camera_path, "cam.json with position, look_at, up, fov_y_deg");
+  app.add_option("--orbit", orbit_deg, "turn the default camera about the scene centre (degrees)")
+      ->excludes(camera_opt);
+  app.add_option("--focal-distance", focal_distance,
+                 "distance to the focal (zero-parallax) plane (default |look_at - position|)");
+  auto* cone_opt = app.add_option("--view-cone", view_cone_deg, "display view cone in degrees (default 40)");
+  app.add_option("--calibration", calibration_path, "visual.json whose viewCone to use")->excludes(cone_opt);
+  app.add_option("--background", background_text, "background colour R,G,B in [0, 1]")->capture_default_str();
+  app.add_option("--view", view, "render only this view (0 = leftmost) into --out");
+  app.add_option("--out", out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix")->required();
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  g2lf.filter = render::parse_plane_filter(filter);
+  g2lf.precision = render::parse_plane_precision(precision);
+  g2lf.check();
+  const auto bg = parse_numbers(background_text, ',', 3, "--background");
+  render::RasterSettings settings;
+  settings.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
+  if (!calibration_path.empty()) view_cone_deg = view_cone_from_calibration(calibration_path);
+  if (view_cone_deg < 0.0f) view_cone_deg = 40.0f;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const render::GaussianScene scene = render::load_scene(scene_path);
+  const render::CameraSpec spec =
+      camera_path.empty() ? render::frame_scene(scene, 40.0f, orbit_deg) : render::read_camera_json(camera_path);
+  std::optional<int> width, height;
+  if (!size_text.empty()) {
+    const auto wh = parse_numbers(size_text, 'x', 2, "--size");
+    if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
+      throw_input_error("--size: '{}' must be two integers in [1, 16384]", size_text);
+    width = int(wh[0]);
+    height = int(wh[1]);
+  }
+  const render::Camera base = render::camera_from_spec(spec, width, height);
+  if (focal_distance <= 0.0f) focal_distance = glm::length(spec.look_at - spec.position);
+  const render::QuiltGeometry geometry =
+      render::make_quilt_geometry(base, focal_distance, view_cone_deg, views);
+
+  std::string written;
+  if (view >= 0) {
+    if (view >= views) throw_input_error("--view: {} is outside 0..{}", view, views - 1);
+    const render::RasterImage img = render::render_view(scene, geometry, view, settings);
+    ImageF f(img.width, img.height, 3);
+    f.pixels = img.rgb;
+    written = out;
+    write_png(written, to_uint8(f));
+  } else {
+    const render::QuiltLayout layout = render::make_quilt_layout(geometry, cols, rows);
+    written = quilt_file_name(out, layout);
+    const ImageF quilt = method == "per-view"
+                             ? render::render_quilt_per_view(scene, geometry, layout, settings)
+                             : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);
+    write_png(written, to_uint8(quilt));
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << fmt::format("wrote {} ({} Gaussians, {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
+                           written, scene.size(), view >= 0 ? fmt::format("view {}", view) : method,
+                           view >= 0 ? 1 : views, base.width, base.height, view_cone_deg, seconds);
+  return 0;
+}
+
+}  // namespace lfd::apps

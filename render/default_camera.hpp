@@ -1,0 +1,14 @@
+#pragma once
+// A camera that frames a scene when the user gives none: it looks along the scene's +z axis
+// (the forward axis of COLMAP-trained 3DGS scenes) with -y up (COLMAP y points down), from far
+// enough that the robust bounding sphere fits the vertical field of view; the target (and so
+// the quilt's focal plane) is the box centre. `orbit_deg` turns the camera about the up axis
+// through the centre.
+#include "render/camera_json.hpp"
+#include "render/gaussian_scene.hpp"
+
+namespace lfd::render {
+
+CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg = 40.0f, float orbit_deg = 0.0f);
+
+}  // namespace lfd::render
