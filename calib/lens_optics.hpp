@@ -1,0 +1,49 @@
+#pragma once
+// The display half of the forward model (DESIGN section 4): which panel light a lens sends
+// from panel point P toward a viewing direction. Shared by DisplaySimulator::radiance() and
+// ::capture(), so a photograph and a validation profile see the same optics.
+#include <array>
+
+#include "calib/lens_model.hpp"
+#include "calib/phase_kernel.hpp"
+#include "util/image.hpp"
+
+namespace lfd::calib {
+
+class LensOptics {
+ public:
+  // `panel` must be screenW x screenH with 1, 3 or 4 channels (checked by the caller); lens,
+  // panel and kernel must outlive this object. The kernel comes from make_kernel().
+  LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKernel& kernel);
+
+  // The subpixel box blurred by the lens point spread sigma_A (lens periods) of this lens.
+  static PhaseKernel make_kernel(const LensModel& lens, double psf_sigma_phase);
+
+  // Linear radiance per channel (uniform white panel -> 1 on average over a lens) leaving
+  // screen point (u, v) in horizontal direction tan(theta) = dx/dz toward the viewer.
+  std::array<float, 3> seen(double u, double v, double tan_theta) const;
+
+  // The view fraction a lens sends toward tan(theta), wrapped into [0, 1): outside the cone
+  // the neighbouring lens repeats the views.
+  double seen_fraction(double tan_theta) const;
+  // The point Q on the same horizontal line as (u, v) whose phase shows fraction f through
+  // the lens covering (u, v).
+  double seen_u(double u, double v, double fraction) const;
+
+ private:
+  float channel_emission(double u_q, double v, int channel) const;
+
+  const LensModel& lens_;
+  const ImageF& panel_;
+  const PhaseKernel& kernel_;
+  double inv_two_tan_half_cone_ = 0;
+  double pitch_periods_ = 0;
+  bool has_correction_ = false;
+  bool has_cells_ = false;
+  int width_ = 0, height_ = 0;
+};
+
+// The panel must be exactly the calibration's screenW x screenH; throws InputError otherwise.
+void check_panel_size(const LensModel& lens, const ImageF& panel);
+
+}  // namespace lfd::calib

@@ -1,0 +1,102 @@
+// The display half of the forward model (DESIGN section 4), through DisplaySimulator::radiance.
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "calib/simulator.hpp"
+#include "simulator_test_support.hpp"
+#include "util/error.hpp"
+
+namespace lfd::calib {
+namespace {
+
+using testing::apw92011;
+using testing::view_index_panel;
+
+// An eye 0.6 m from panel point p, in the direction that shows view fraction f.
+Eigen::Vector3d eye_for_fraction(const DisplayCalibration& c, const Eigen::Vector3d& p, double f) {
+  const double tan_theta = (f - 0.5) * 2.0 * std::tan(0.5 * c.view_cone_deg * std::numbers::pi / 180.0);
+  return p + Eigen::Vector3d(0.6 * tan_theta, 0.0, 0.6);
+}
+
+std::vector<Eigen::Vector3d> random_panel_points(const DisplayCalibration& c, int n, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(-0.45, 0.45);
+  std::vector<Eigen::Vector3d> points;
+  for (int i = 0; i < n; ++i) points.emplace_back(ux(rng) * c.width_m(), ux(rng) * c.height_m(), 0);
+  return points;
+}
+
+TEST(SimulatorOptics, UniformWhitePanelAveragesToOne) {
+  const DisplaySimulator sim{LensModel(apw92011())};
+  const auto& c = sim.lens().calibration();
+  const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
+  std::array<double, 3> sum{};
+  const auto points = random_panel_points(c, 4000, 7);
+  for (const auto& p : points) {
+    const auto r = sim.radiance(white, p, eye_for_fraction(c, p, 0.37), 0.008);
+    for (int ch = 0; ch < 3; ++ch) sum[ch] += r[ch];
+  }
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(sum[ch] / points.size(), 1.0, 0.05) << "channel " << ch;
+}
+
+TEST(SimulatorOptics, BlackPanelEmitsNothing) {
+  const DisplaySimulator sim{LensModel(apw92011())};
+  const auto& c = sim.lens().calibration();
+  const ImageF black(c.screen_w, c.screen_h, 3, 0.0f);
+  const auto r = sim.radiance(black, {0.01, 0.02, 0}, {0.1, 0, 0.6}, 0.008);
+  EXPECT_EQ(r[0] + r[1] + r[2], 0.0f);
+}
+
+// The defining property of a calibrated display: an eye in view j's direction sees view j.
+TEST(SimulatorOptics, EyeInViewDirectionSeesThatView) {
+  const int views = 24;
+  const DisplaySimulator sim{LensModel(apw92011())};
+  const auto& c = sim.lens().calibration();
+  const ImageF index = view_index_panel(sim.lens(), views);
+  const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
+  const auto points = random_panel_points(c, 600, 3);
+  for (int j : {2, 11, 20}) {
+    int near = 0, total = 0;
+    double mean_view = 0;
+    for (const auto& p : points) {
+      const Eigen::Vector3d eye = eye_for_fraction(c, p, (j + 0.5) / views);
+      const auto ri = sim.radiance(index, p, eye, 0.008);
+      const auto rw = sim.radiance(white, p, eye, 0.008);
+      for (int ch = 0; ch < 3; ++ch) {
+        if (rw[ch] < 0.5f) continue;  // the point sees a gap between channel-ch subpixels
+        const double seen = ri[ch] / rw[ch] * (views - 1);
+        mean_view += seen;
+        near += std::abs(seen - j) <= 1.0;
+        ++total;
+      }
+    }
+    ASSERT_GT(total, 300);
+    EXPECT_NEAR(mean_view / total, j, 0.3) << "view " << j;
+    EXPECT_GT(double(near) / total, 0.85) << "view " << j;
+  }
+}
+
+TEST(SimulatorOptics, ViewsRepeatOutsideTheCone) {
+  const DisplaySimulator sim{LensModel(apw92011())};
+  const auto& c = sim.lens().calibration();
+  const ImageF index = view_index_panel(sim.lens(), 24);
+  const Eigen::Vector3d p(0.02, -0.01, 0);
+  // Fraction 0.3 and 1.3 leave through neighbouring lenses but show the same view.
+  const auto a = sim.radiance(index, p, eye_for_fraction(c, p, 0.3), 0.008);
+  const auto b = sim.radiance(index, p, eye_for_fraction(c, p, 1.3), 0.008);
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(a[ch], b[ch], 1e-4);
+}
+
+TEST(SimulatorOptics, WrongPanelSizeIsInputError) {
+  const DisplaySimulator sim{LensModel(apw92011())};
+  const ImageF wrong(1920, 1080, 3, 1.0f);
+  EXPECT_THROW(sim.radiance(wrong, {0, 0, 0}, {0, 0, 0.6}, 0.008), InputError);
+  const PhysicalCamera cam(CameraIntrinsics::from_fov(40, 64, 36), CameraPose{});
+  EXPECT_THROW(sim.capture(wrong, cam, CaptureEffects{}), InputError);
+}
+
+}  // namespace
+}  // namespace lfd::calib

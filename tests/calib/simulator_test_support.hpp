@@ -1,0 +1,49 @@
+#pragma once
+// Displays and panels shared by the simulator tests.
+#include <string>
+
+#include "calib/calibration_file.hpp"
+#include "calib/lens_model.hpp"
+#include "util/image.hpp"
+
+namespace lfd::calib::testing {
+
+// The real 16" Gen2 unit LKG-APW92011 (reference/looking-glass.md 2.5), embedded so the
+// tests need no shared data.
+inline DisplayCalibration apw92011() {
+  return parse_calibration(
+             R"({"configVersion":"3.0","serial":"LKG-APW92011","pitch":{"value":50.0693473815918},
+             "slope":{"value":-7.521984100341797},"center":{"value":0.07635253667831421},
+             "fringe":{"value":0.0},"viewCone":{"value":40.0},"invView":{"value":1.0},
+             "verticalAngle":{"value":0.0},"DPI":{"value":283.0},"screenW":{"value":3840.0},
+             "screenH":{"value":2160.0},"flipImageX":{"value":0.0},"flipImageY":{"value":0.0},
+             "flipSubp":{"value":0.0}})",
+             "LKG-APW92011.visual.json")
+      .display;
+}
+
+// A small display with the same optics per lens (17 subpixels per lens, same slant) so
+// full captures stay cheap in tests: 384 x 216 pixels at a tenth of the DPI.
+inline DisplayCalibration small_display() {
+  DisplayCalibration c = apw92011();
+  c.screen_w = 384;
+  c.screen_h = 216;
+  c.dpi = 28.3;
+  c.pitch_lpi = 5.00693473815918;
+  return c;
+}
+
+// Every subpixel shows its own view index as grey level index / (views - 1).
+inline ImageF view_index_panel(const LensModel& lens, int views) {
+  const auto& c = lens.calibration();
+  ImageF panel(c.screen_w, c.screen_h, 3);
+  for (int row = 0; row < c.screen_h; ++row)
+    for (int x = 0; x < c.screen_w; ++x)
+      for (int ch = 0; ch < 3; ++ch)
+        panel.at(x, row, ch) =
+            float(LensModel::view_index(lens.subpixel_view_fraction(x, row, ch), views)) /
+            float(views - 1);
+  return panel;
+}
+
+}  // namespace lfd::calib::testing
