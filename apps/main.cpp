@@ -26,8 +26,6 @@ const std::vector<Command>& commands() {
       {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
       {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
       {"compare", RunCompare, "PSNR and SSIM between two images"},
-      {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
-      {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
   };
