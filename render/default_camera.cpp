@@ -2,21 +2,40 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "render/scene_bounds.hpp"
 
 namespace lfd::render {
+namespace {
+
+// The q-quantile of the centres' distances from `center` (deterministic subsample).
+float distance_quantile(const GaussianScene& scene, const glm::vec3& center, double q) {
+  const size_t step = std::max<size_t>(1, scene.size() / 200000);
+  std::vector<float> d;
+  d.reserve(scene.size() / step + 1);
+  for (size_t i = 0; i < scene.size(); i += step) {
+    const auto& p = scene.positions[i];
+    d.push_back(glm::length(glm::vec3(p[0], p[1], p[2]) - center));
+  }
+  if (d.empty()) return 1.0f;
+  const auto nth = d.begin() + ptrdiff_t(q * double(d.size() - 1));
+  std::nth_element(d.begin(), nth, d.end());
+  return *nth;
+}
+
+}  // namespace
 
 CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg, float orbit_deg) {
-  const SceneBounds b = robust_bounds(scene);
-  const auto c = b.center();
+  // Centre: the middle of the 25-75% box, which ignores floaters and enclosing backgrounds.
+  const SceneBounds core = robust_bounds(scene, 0.25, 0.75);
+  const auto c = core.center();
   const glm::vec3 center(c[0], c[1], c[2]);
-  // The box's half-diagonal overstates a flat scene's depth; the sphere of the larger
-  // cross-section (x, y) plus half the depth keeps the subject in view from the front.
-  const auto e = b.extent();
-  const float radius = std::max({0.5f * std::sqrt(e[0] * e[0] + e[1] * e[1]), 0.5f * e[2], 1e-3f});
+  // Radius: 60% of the centres lie within it. A box (even a 1-99% one) would be decided by a
+  // background dome or far walls and put the camera outside them; this frames the subject.
+  const float radius = std::max(distance_quantile(scene, center, 0.6), 1e-3f);
   const float half_fov = 0.5f * fov_y_deg * float(M_PI) / 180.0f;
-  const float distance = radius / std::sin(half_fov) + 0.5f * e[2];
+  const float distance = 1.2f * radius / std::sin(half_fov);
   const float orbit = orbit_deg * float(M_PI) / 180.0f;
   const glm::vec3 backward(-std::sin(orbit), 0.0f, -std::cos(orbit));
   CameraSpec s;
