@@ -211,13 +211,16 @@ PlyFile parse_ply(std::string_view bytes, const std::string& name) {
 
   size_t pos = data_start;
   for (PlyElement& e : file.elements) {
+    // Rows without properties occupy no bytes, so nothing bounds their count: reject them
+    // (found by fuzzing: an ASCII "element x 10^18" with no properties looped for minutes).
+    if (e.properties.empty() && e.count > 0)
+      throw_input_error("{}: PLY element '{}' has {} rows but no properties", name, e.name,
+                        e.count);
     if (file.ascii) {
       parse_ascii_rows(bytes, pos, e, name);
       continue;
     }
     const size_t remaining = bytes.size() - pos;
-    if (e.stride_bytes == 0 && e.count > 0)
-      throw_input_error("{}: PLY element '{}' has rows but no properties", name, e.name);
     if (e.stride_bytes > 0 && e.count > remaining / e.stride_bytes)
       throw_input_error(
           "{}: truncated: element '{}' needs {} rows of {} bytes but only {} bytes remain", name,

@@ -126,6 +126,13 @@ TEST_F(SceneBadInput, AbsurdCountFailsBeforeAllocating) {
   expect_rejected(write("absurd_ascii.ply", ascii), "claims");
 }
 
+TEST_F(SceneBadInput, ElementWithRowsButNoPropertiesFailsFast) {
+  // Found by fuzzing: nothing bounds the count of property-less rows, so it must be rejected.
+  expect_rejected(write("empty_rows.ply", "ply\nformat ascii 1.0\nelement vertex 66600000000\n"
+                                          "end_header\n2.4\n"),
+                  "no properties");
+}
+
 TEST_F(SceneBadInput, NaNValue) {
   GaussianScene s = two_gaussians();
   s.positions[1][2] = std::numeric_limits<float>::quiet_NaN();
