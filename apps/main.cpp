@@ -28,6 +28,7 @@ const std::vector<Command>& commands() {
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
+      {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
   };
   return table;
 }

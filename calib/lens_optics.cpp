@@ -33,6 +33,8 @@ LensOptics::LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKe
   has_cells_ = c.has_cells();
   width_ = c.screen_w;
   height_ = c.screen_h;
+  for (int ch = 0; ch < 3; ++ch)
+    channel_offset_u_[ch] = lens.subpixel_uv(0, 0, ch).u - lens.pixel_uv(0, 0).u;
 }
 
 double LensOptics::seen_fraction(double tan_theta) const {
@@ -55,6 +57,18 @@ double LensOptics::seen_u(double u, double v, double fraction) const {
 float LensOptics::channel_emission(double u_q, double v, int channel) const {
   const int pc = panel_.channels == 1 ? 0 : channel;
   const double reach = kernel_.reach_u();
+  if (!has_cells_) {
+    // Classic stripes: channel c of pixel x emits at (x + 0.5) / W + offset_c on row `row`.
+    const int row = std::clamp(int(std::floor((1.0 - v) * height_)), 0, height_ - 1);
+    const double base = u_q - channel_offset_u_[channel];
+    const int x_lo = std::max(0, int(std::ceil((base - reach) * width_ - 0.5)));
+    const int x_hi = std::min(width_ - 1, int(std::floor((base + reach) * width_ - 0.5)));
+    const float* line = panel_.row(row);
+    double sum = 0.0;
+    for (int x = x_lo; x <= x_hi; ++x)
+      sum += kernel_(base - (x + 0.5) / width_) * line[x * panel_.channels + pc];
+    return float(3.0 * sum);
+  }
   const int x_lo = std::max(0, int(std::floor((u_q - reach) * width_ - 1.5)));
   const int x_hi = std::min(width_ - 1, int(std::ceil((u_q + reach) * width_ + 0.5)));
   if (x_lo > x_hi) return 0.0f;

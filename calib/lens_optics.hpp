@@ -41,6 +41,7 @@ class LensOptics {
   bool has_correction_ = false;
   bool has_cells_ = false;
   int width_ = 0, height_ = 0;
+  std::array<double, 3> channel_offset_u_{};  // classic layout: emitter offset from pixel centre
 };
 
 // The panel must be exactly the calibration's screenW x screenH; throws InputError otherwise.

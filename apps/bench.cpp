@@ -1,0 +1,48 @@
+// lfd bench: a table of benchmarks (speed lives here, never in tests: DESIGN section 9).
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <string_view>
+#include <vector>
+
+#include "apps/bench.hpp"
+#include "apps/commands.hpp"
+
+namespace lfd::apps {
+
+namespace {
+
+struct Bench {
+  const char* name;
+  int (*run)(int, char**);
+  const char* summary;
+};
+
+const std::vector<Bench>& benches() {
+  static const std::vector<Bench> table = {
+      {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
+  };
+  return table;
+}
+
+void print_usage() {
+  std::cout << "Usage: lfd bench <name> [--json FILE] [options]\n\nBenchmarks:\n";
+  for (const auto& b : benches()) std::printf("  %-12s %s\n", b.name, b.summary);
+  std::cout << "\nRun 'lfd bench <name> --help' for its options.\n";
+}
+
+}  // namespace
+
+int RunBench(int argc, char** argv) {
+  if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+    print_usage();
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string_view name = argv[1];
+  for (const auto& b : benches())
+    if (name == b.name) return b.run(argc - 1, argv + 1);
+  std::cerr << "lfd bench: unknown benchmark '" << name << "' (see lfd bench --help)\n";
+  return 2;
+}
+
+}  // namespace lfd::apps

@@ -1,0 +1,10 @@
+#pragma once
+// `lfd bench <name>`: one entry point per benchmark, dispatched from the table in bench.cpp.
+// Each prints a table and, with --json FILE, writes its figures as JSON. To add one, declare
+// it here and add a line to the table.
+
+namespace lfd::apps {
+
+int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
+
+}  // namespace lfd::apps

@@ -1,0 +1,44 @@
+#pragma once
+// Angular luminance profiles of isolated views (reference/display-optics.md 9.3): for each
+// view j a quilt with tile j white and the others black (and an all-black quilt for L_K) is
+// interlaced with the ASSUMED calibration, then seen through the simulator following the TRUE
+// calibration from directions theta sweeping the view cone, averaged over many points of the
+// panel so the profile describes the whole screen, not one lens.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "calib/calibration_file.hpp"
+#include "util/progress.hpp"
+
+namespace lfd::validate {
+
+struct ProfileOptions {
+  int views = 0;                 // 0: the TRUE calibration's recommended view count
+  double distance_m = 0.6;       // eye distance from each panel point
+  int angles_per_view = 8;       // theta samples across the cone, per view
+  int panel_points = 1500;       // points averaged over (jittered grid)
+  double region_fraction = 0.9;  // central part of the panel (width and height) sampled
+  double psf_sigma_phase = -1;   // lens point spread; < 0: the TRUE calibration's, else default
+  uint64_t seed = 1;             // jitter of the panel points
+
+  // Throws InputError naming the option for impossible values.
+  void check() const;
+};
+
+struct ViewProfiles {
+  int views = 0;
+  double distance_m = 0;
+  double psf_sigma_phase = 0;
+  int panel_points = 0;
+  std::vector<double> theta_deg;             // viewing directions, left to right
+  std::vector<std::vector<double>> view;     // L_j(theta), [view][angle], luminance (white = 1)
+  std::vector<double> black;                 // L_K(theta)
+};
+
+// The measurement. `assumed` drives the interlacer, `truth` the optics.
+ViewProfiles measure_view_profiles(const calib::Calibration& truth,
+                                   const calib::Calibration& assumed,
+                                   const ProfileOptions& options, Progress* progress = nullptr);
+
+}  // namespace lfd::validate
