@@ -19,6 +19,8 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
   // Per pixel: channel-summed phasor, mean level, saturation flag, and the per-step levels.
   cv::Mat re(size, CV_32F, 0.0f), im(size, CV_32F, 0.0f), mean(size, CV_32F, 0.0f),
       clipped(size, CV_32F, 0.0f);
+  // Saturated pixels (glare, specular reflections) carry no phase: they are left out of the
+  // block sums below, and a block keeps its phase if at least half of its pixels are valid.
   std::vector<cv::Mat> level(static_cast<size_t>(K));
   for (int k = 0; k < K; ++k) {
     const float ck = float(std::cos(two_pi * k / K)), sk = float(std::sin(two_pi * k / K));
@@ -48,9 +50,16 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
                cv::INTER_AREA);
     return out;
   };
-  const cv::Mat bre = shrink(re), bim = shrink(im), bmean = shrink(mean), bclip = shrink(clipped);
+  cv::Mat valid = 1.0f - clipped;
+  auto masked = [&](const cv::Mat& m) {
+    cv::Mat out;
+    cv::multiply(m, valid, out);
+    return shrink(out);
+  };
+  const cv::Mat bvalid = shrink(valid);
+  const cv::Mat bre = masked(re), bim = masked(im), bmean = masked(mean);
   std::vector<cv::Mat> blevel;
-  for (const auto& l : level) blevel.push_back(shrink(l));
+  for (const auto& l : level) blevel.push_back(masked(l));
 
   std::vector<cv::Point2f> centres;
   for (int by = 0; by < blocks.height; ++by)
@@ -70,12 +79,13 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
       if (!(p.u > m && p.u < 1 - m && p.v > m && p.v < 1 - m)) continue;
       if (set.under_marker(p.u, p.v, marker_margin)) continue;
       ++out.blocks_on_panel;
-      if (bclip.at<float>(by, bx) > 0.0f) {
+      const double valid_fraction = bvalid.at<float>(by, bx);
+      if (valid_fraction < 0.5) {
         ++out.blocks_clipped;
         continue;
       }
       const double zr = bre.at<float>(by, bx), zi = bim.at<float>(by, bx);
-      const double a = bmean.at<float>(by, bx);
+      const double a = bmean.at<float>(by, bx) / valid_fraction;
       // |z| = (K/2) * 3 b (three channels summed) and a is the per-channel mean.
       const double modulation = std::hypot(zr, zi) / (1.5 * K) / std::max(a, 1e-6);
       if (!(modulation >= options.min_modulation)) {
@@ -87,7 +97,7 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
       out.samples.push_back({float(p.u), float(p.v), float(psi), float(modulation)});
       modulations.push_back(float(modulation));
       for (int k = 0; k < K; ++k) {
-        const double e = blevel[size_t(k)].at<float>(by, bx) - a;
+        const double e = blevel[size_t(k)].at<float>(by, bx) / valid_fraction - a;
         const double model = std::cos(two_pi * (psi - double(k) / K));
         corr_num[size_t(k)] += e * model;
         corr_a[size_t(k)] += e * e;

@@ -1,0 +1,101 @@
+#pragma once
+// Calibration of a display unit from photographs (DESIGN section 5): the whole offline
+// pipeline behind `lfd calibrate DIR`. Captures are checked before anything is estimated
+// (missing or extra files, wrong pattern, camera motion, exposure, screen outside the photo,
+// no board), then: registration -> phase decoding -> coarse start -> one Ceres solve ->
+// quality gates. Every failure is an InputError naming the file and what to change;
+// nothing is written here (the caller writes the result only on success).
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "calib/calibration_file.hpp"
+#include "calib/camera_model.hpp"
+#include "calib/lens_solver.hpp"
+#include "calib/patterns.hpp"
+#include "calib/phase_decoding.hpp"
+
+namespace lfd::calib {
+
+// The photographs of one camera position, by pattern file stem. Images are CV_32FC3, RGB,
+// values in [0, 1].
+struct PositionCaptures {
+  std::string name;
+  std::map<std::string, cv::Mat> images;
+  std::map<std::string, std::string> paths;  // for messages (the stem if not from disk)
+};
+
+// Reads DIR/captures/<position>/<pattern stem>.<any extension OpenCV reads>. Throws
+// InputError for a missing capture, a duplicate, an unreadable file or mixed image sizes;
+// files that match no pattern are skipped with a warning.
+std::vector<PositionCaptures> read_captures(const std::filesystem::path& dir,
+                                            const PatternSet& set,
+                                            std::vector<std::string>& warnings);
+
+struct QualityGates {
+  double max_residual_rms_periods = 0.08;
+  double min_inlier_fraction = 0.6;
+  double max_pitch_sigma_rel = 3e-5;   // reference/display-optics.md 1.1 tolerance
+  double max_slant_sigma_deg = 0.005;
+  double max_center_sigma_periods = 0.01;
+  double max_view_cone_sigma_deg = 2.0;
+  double max_correction_sigma_periods = 0.02;
+};
+
+struct CalibrateOptions {
+  std::optional<CameraIntrinsics> camera;  // else self-calibrated from >= 3 positions
+  PhaseDecodeOptions decode;
+  SolverOptions solver;
+  QualityGates gates;
+  double max_motion_px = 3.0;          // corner markers may move this much between captures
+                                       // (or 0.5 % of the image diagonal, if more)
+  double max_clipped_fraction = 0.25;  // of the screen saturated in one capture
+  double min_contrast = 0.06;          // white minus black, fraction of full scale
+};
+
+struct PositionReport {
+  std::string name;
+  int board_corners = 0;
+  double reprojection_rms_px = 0;
+  Eigen::Vector3d camera_m{0, 0, 0};          // registration
+  Eigen::Vector3d camera_refined_m{0, 0, 0};  // after the solve
+  long samples = 0;
+  long blocks_on_panel = 0, blocks_clipped = 0, blocks_low_modulation = 0;
+  double median_modulation = 0;
+  double clipped_fraction = 0;
+  double residual_rms_periods = 0;
+  double plane_coherence = 0;
+};
+
+struct CalibrationOutcome {
+  Calibration calibration;
+  LensEstimate coarse;
+  SolverResult solve;
+  CameraIntrinsics camera;
+  bool camera_self_calibrated = false;
+  std::vector<PositionReport> positions;
+  std::vector<std::string> warnings;
+  std::vector<std::string> gate_failures;  // empty when the calibration passed
+  double seconds = 0;
+};
+
+// Runs the pipeline. Throws InputError for bad captures; returns gate failures in the outcome
+// (see enforce_gates) so tools can still report what was measured.
+CalibrationOutcome calibrate_display(const PatternSet& set,
+                                     const std::vector<PositionCaptures>& positions,
+                                     const CalibrateOptions& options);
+
+// Throws InputError listing every failed gate and what to change.
+void enforce_gates(const CalibrationOutcome& outcome);
+
+// A JSON report: positions, coarse start, solver summary, gates.
+nlohmann::ordered_json outcome_report(const CalibrationOutcome& outcome);
+
+// cv::Mat (CV_32FC3 RGB) <-> the project's float images.
+cv::Mat to_mat(const ImageF& image);
+
+}  // namespace lfd::calib

@@ -1,0 +1,59 @@
+#pragma once
+// Synthetic display units for the calibration round trip (tests, `lfd bench calibration`,
+// `lfd demo`): a TRUE unit (a real calibration plus a smooth correction warp and a view cone)
+// and the NOMINAL description a user would start from (pitch off by 1 %, slant by 0.5 degree,
+// any center), camera positions in front of it, and captures of the patterns made by the
+// optics simulator (calib/simulator.hpp).
+#include <cstdint>
+#include <vector>
+
+#include "calib/calibrate.hpp"
+#include "calib/simulator.hpp"
+
+namespace lfd::calib {
+
+struct SyntheticUnitOptions {
+  double warp_amplitude = 0.3;      // max |w| of the true correction field, lens periods
+  double pitch_error_rel = 0.01;    // nominal pitch = true pitch * (1 + this)
+  double slant_error_deg = 0.5;     // nominal slant = true slant + this
+  double view_cone_error_deg = 2.0; // nominal cone = true cone - this
+  uint64_t seed = 1;
+};
+
+struct SyntheticUnit {
+  Calibration truth;    // display + gauge-free correction field
+  Calibration nominal;  // what the patterns are made for (no correction)
+};
+
+SyntheticUnit make_synthetic_unit(const DisplayCalibration& real,
+                                  const SyntheticUnitOptions& options = {});
+
+struct CaptureRig {
+  CameraIntrinsics intrinsics;
+  std::vector<CameraPose> poses;
+  CaptureEffects effects;
+};
+
+// `positions` (1-3) cameras at different distances and sides, with a `width_px` wide image in
+// which the screen spans about 70 % of the width; realistic effects (blur, 2 % noise,
+// vignetting, lens distortion, 5 % glare) unless `clean`.
+CaptureRig make_capture_rig(const DisplayCalibration& display, int width_px, int positions,
+                            bool clean = false, uint64_t seed = 1);
+
+// Simulates every pattern of `set` from every pose of `rig`.
+std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Calibration& truth,
+                                                const CaptureRig& rig);
+
+// Errors of a calibration against the truth, in the units of the figures
+// (DESIGN section 5; docs/calibration.md).
+struct CalibrationErrors {
+  double slant_deg = 0;        // |slant_est - slant_true|
+  double pitch_rel = 0;        // |pitch_est / pitch_true - 1|
+  double center_periods = 0;   // wrapped
+  double view_cone_deg = 0;
+  double correction_rms_periods = 0;  // rms over the screen of w_est - w_true
+  double phase_rms_periods = 0;       // rms over the screen of A_est - A_true (all terms)
+};
+CalibrationErrors compare_with_truth(const Calibration& estimate, const Calibration& truth);
+
+}  // namespace lfd::calib

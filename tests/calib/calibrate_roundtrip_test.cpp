@@ -1,0 +1,57 @@
+// Round trip (DESIGN section 9): simulate captures of a unit with known truth, calibrate,
+// compare with the truth. Reduced capture size so it runs in well under a minute.
+#include <cstdlib>
+
+#include <gtest/gtest.h>
+
+#include "calib/calibrate.hpp"
+#include "calib/synthetic_unit.hpp"
+#include "calib/visual_json.hpp"
+
+namespace lfd::calib {
+namespace {
+
+std::filesystem::path shared_calibration(const char* name) {
+  return std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" / "calibrations" / name;
+}
+
+struct RoundTrip {
+  SyntheticUnit unit;
+  PatternSet set;
+  CaptureRig rig;
+  std::vector<PositionCaptures> captures;
+};
+
+RoundTrip simulate(const char* file, int width_px, int positions, bool clean) {
+  RoundTrip r;
+  r.unit = make_synthetic_unit(read_visual_json(shared_calibration(file)));
+  r.set = plan_patterns(r.unit.nominal);
+  r.rig = make_capture_rig(r.unit.truth.display, width_px, positions, clean);
+  r.captures = simulate_captures(r.set, r.unit.truth, r.rig);
+  return r;
+}
+
+TEST(CalibrateRoundTrip, PortraitFromTwoPositionsRecoversLensAndWarp) {
+  const RoundTrip r = simulate("LKG-PORT-portrait.visual.json", 480, 2, false);
+  CalibrateOptions options;
+  options.camera = r.rig.intrinsics;
+  const CalibrationOutcome out = calibrate_display(r.set, r.captures, options);
+  const CalibrationErrors e = compare_with_truth(out.calibration, r.unit.truth);
+  std::printf("slant %.5f deg, pitch %.2e, center %.4f, cone %.3f deg, warp %.4f, phase %.4f\n",
+              e.slant_deg, e.pitch_rel, e.center_periods, e.view_cone_deg,
+              e.correction_rms_periods, e.phase_rms_periods);
+  for (const auto& p : r.rig.poses)
+    std::printf("true camera %.4f %.4f %.4f\n", p.position_m.x(), p.position_m.y(), p.position_m.z());
+  for (const auto& w : out.warnings) std::printf("warning: %s\n", w.c_str());
+  for (const auto& f : out.gate_failures) std::printf("gate: %s\n", f.c_str());
+  std::printf("%s\n", outcome_report(out).dump(1).c_str());
+  EXPECT_LT(e.slant_deg, 0.002);
+  EXPECT_LT(e.pitch_rel, 5e-5);
+  EXPECT_LT(e.center_periods, 0.01);
+  EXPECT_LT(e.view_cone_deg, 1.0);
+  EXPECT_LT(e.correction_rms_periods, 0.02);
+  EXPECT_TRUE(out.gate_failures.empty());
+}
+
+}  // namespace
+}  // namespace lfd::calib
