@@ -49,7 +49,7 @@ std::vector<uint8_t> interlaced_views(const calib::Calibration& assumed, int vie
   const ImageF panel = interlace::interlace(quilt, layout, lens);  // nearest view
   std::vector<uint8_t> index(panel.pixels.size());
   for (size_t i = 0; i < index.size(); ++i)
-    index[i] = uint8_t(std::clamp(std::lround(panel.pixels[i] * 255.0f), 0L, 255L));
+    index[i] = uint8_t(std::clamp(panel.pixels[i] * 255.0f + 0.5f, 0.0f, 255.0f));
   return index;
 }
 
@@ -122,13 +122,20 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
     offsets.emplace_back(options.distance_m * std::sin(t * kDegToRad), 0.0,
                          options.distance_m * std::cos(t * kDegToRad));
 
+  // The subpixels of each view, so a pass switches on only its own (a panel is 25M values).
+  std::vector<std::vector<uint32_t>> subpixels_of(out.views);
+  for (auto& list : subpixels_of) list.reserve(index.size() / out.views + 1024);
+  for (size_t i = 0; i < index.size(); ++i)
+    if (index[i] >= 1 && index[i] <= out.views) subpixels_of[index[i] - 1].push_back(uint32_t(i));
+
   ImageF panel(d.screen_w, d.screen_h, 3, 0.0f);
   out.view.assign(out.views, std::vector<double>(angles, 0.0));
   // Pass j < views: tile j white; pass `views`: the all-black quilt (L_K).
   for (int pass = 0; pass <= out.views; ++pass) {
-    const uint8_t lit = uint8_t(pass + 1);
-    for (size_t i = 0; i < index.size(); ++i)
-      panel.pixels[i] = pass < out.views && index[i] == lit ? 1.0f : 0.0f;
+    if (pass > 0)
+      for (uint32_t i : subpixels_of[pass - 1]) panel.pixels[i] = 0.0f;
+    if (pass < out.views)
+      for (uint32_t i : subpixels_of[pass]) panel.pixels[i] = 1.0f;
     std::vector<double> profile(angles, 0.0);
 #pragma omp parallel
     {
