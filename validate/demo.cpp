@@ -1,0 +1,192 @@
+#include "validate/demo.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "calib/calibration_file.hpp"
+#include "calib/simulator.hpp"
+#include "calib/view_count.hpp"
+#include "interlace/interlacer.hpp"
+#include "interlace/test_quilt.hpp"
+#include "render/default_camera.hpp"
+#include "render/g2lf.hpp"
+#include "render/per_view_quilt.hpp"
+#include "render/scene_io.hpp"
+#include "util/atomic_file.hpp"
+#include "util/image.hpp"
+#include "validate/demo_report.hpp"
+#include "validate/report.hpp"
+#include "validate/view_metrics.hpp"
+
+namespace lfd::validate {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// A smooth warp of the lens array (lamination stress, thermal bow): low-order waves sampled
+// at the B-spline's Greville abscissae, peak amplitude `amplitude` lens periods.
+calib::CorrectionField smooth_warp(double amplitude) {
+  const int nx = 10, ny = 7;
+  std::vector<double> c(nx * ny);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const double u = (i - 1.0) / (nx - 3.0), v = (j - 1.0) / (ny - 3.0);
+      c[j * nx + i] = amplitude * (0.6 * std::sin(std::numbers::pi * (1.3 * u + 0.2)) *
+                                       std::cos(std::numbers::pi * (0.9 * v - 0.1)) +
+                                   0.4 * (u - 0.5) * (v - 0.5) * 4.0);
+    }
+  return calib::CorrectionField(nx, ny, c);
+}
+
+calib::Calibration with_slant_error(calib::Calibration c, double delta_deg) {
+  const double slant = std::atan(1.0 / c.display.slope) + delta_deg * std::numbers::pi / 180.0;
+  c.display.slope = 1.0 / std::tan(slant);
+  return c;
+}
+
+class Step {
+ public:
+  Step(bool verbose, std::string what) : verbose_(verbose), what_(std::move(what)), t0_(Clock::now()) {
+    if (verbose_) fmt::print("  {} ...", what_), std::fflush(stdout);
+  }
+  ~Step() {
+    if (verbose_)
+      fmt::print(" {:.1f} s\n", std::chrono::duration<double>(Clock::now() - t0_).count());
+  }
+
+ private:
+  bool verbose_;
+  std::string what_;
+  Clock::time_point t0_;
+};
+
+}  // namespace
+
+std::filesystem::path run_demo(const DemoOptions& o) {
+  namespace fs = std::filesystem;
+  const fs::path data = LFD_DATA_DIR;
+  const fs::path unit_path =
+      o.unit_calibration.empty() ? data / "calibrations/LKG-2K-04409.visual.json" : o.unit_calibration;
+  const fs::path scene_path = o.scene.empty() ? data / "scenes/demo.ply" : o.scene;
+  const fs::path out = o.out_dir;
+  fs::create_directories(out);
+  DemoReport report;
+  report.unit_source = unit_path.string();
+  report.scene_source = scene_path.string();
+
+  // 1. The simulated unit: its factory file plus a warp only its own calibration describes.
+  const calib::Calibration factory = calib::read_calibration(unit_path);
+  calib::Calibration truth = factory;
+  truth.correction = smooth_warp(o.warp_amplitude_periods);
+  truth.provenance = {{"tool", "lfd demo"},
+                      {"method", fmt::format("factory calibration {} + smooth lens warp of {} periods",
+                                             unit_path.filename().string(), o.warp_amplitude_periods)}};
+  const auto& d = truth.display;
+  const calib::ViewCountAdvice advice = calib::recommend_view_count(truth);
+  truth.recommended_views = advice.views;
+  truth.view_count_rule = advice.rule;
+  calib::write_calibration(out / "unit_truth.calibration.json", truth, true);
+  report.views = advice.views;
+  report.view_rule = advice.rule;
+  // The calibration the display is driven with: the unit's own (the calibration issue's
+  // solver replaces this with the calibration recovered from photographs).
+  const calib::Calibration& assumed = truth;
+
+  // 2. Quilts: the bundled scene through G2LF, and the numbered test quilt.
+  const double aspect = double(d.screen_w) / d.screen_h;
+  const int tile_h = int(std::lround(o.tile_width / aspect));
+  render::QuiltLayout layout;
+  ImageF scene_quilt;
+  {
+    Step step(o.verbose, "rendering the scene with G2LF");
+    const render::GaussianScene scene = render::load_scene(scene_path);
+    const render::CameraSpec spec = render::frame_scene(scene, 40.0f, 0.0f);
+    const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
+    const float focal = glm::length(spec.look_at - spec.position);
+    const render::QuiltGeometry geometry =
+        render::make_quilt_geometry(base, focal, float(d.view_cone_deg), advice.views);
+    layout = render::make_quilt_layout(geometry, advice.cols, advice.rows);
+    render::G2lfOptions g2lf;
+    g2lf.chunks = 64;
+    g2lf.plane_scale = 2;
+    g2lf.filter = render::PlaneFilter::kBilinear;
+    scene_quilt = render::render_quilt_g2lf(scene, geometry, layout, g2lf);
+    report.scene_gaussians = scene.size();
+  }
+  const std::string suffix = render::quilt_suffix(layout.cols, layout.rows, layout.aspect);
+  write_png(out / ("scene_quilt" + suffix + ".png"), to_uint8(scene_quilt));
+  const ImageF numbered = interlace::make_numbered_quilt(layout);
+  write_png(out / ("numbered_quilt" + suffix + ".png"), to_uint8(numbered));
+
+  // 3. Interlace with the calibration the display is driven with.
+  ImageF scene_panel, numbered_panel;
+  {
+    Step step(o.verbose, "interlacing");
+    const calib::LensModel lens(assumed.display, assumed.correction);
+    scene_panel = interlace::interlace(scene_quilt, layout, lens);
+    numbered_panel = interlace::interlace(numbered, layout, lens);
+    write_png(out / "scene_panel.png", to_uint8(scene_panel));
+    write_png(out / "numbered_panel.png", to_uint8(numbered_panel));
+  }
+
+  // 4. Photographs from three positions across the view cone at 0.45 m.
+  {
+    Step step(o.verbose, "photographing the display from three positions");
+    const calib::DisplaySimulator display(calib::LensModel(truth.display, truth.correction));
+    const double distance = 0.45;
+    const double fov = 2.0 * std::atan(0.65 * d.width_m() / distance) * 180.0 / std::numbers::pi;
+    const int cw = o.capture_width, ch = int(std::lround(cw / aspect));
+    calib::CaptureEffects fx;
+    fx.blur_px = 0.7;
+    fx.noise_sigma = 0.01;
+    fx.vignetting = 0.15;
+    for (auto [name, angle] : {std::pair{"left", -0.3}, {"centre", 0.0}, {"right", 0.3}}) {
+      const double theta = angle * d.view_cone_deg * std::numbers::pi / 180.0;
+      calib::CameraPose pose;
+      pose.position_m = {distance * std::sin(theta), 0.0, distance * std::cos(theta)};
+      const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(fov, cw, ch), pose);
+      // Which view a viewer there should see (DESIGN section 4: f_seen at the panel centre).
+      const double f_seen = 0.5 + std::tan(theta) / (2.0 * std::tan(d.view_cone_deg * std::numbers::pi / 360.0));
+      DemoCapture cap;
+      cap.name = name;
+      cap.angle_deg = theta * 180.0 / std::numbers::pi;
+      cap.expected_view = calib::LensModel::view_index(f_seen, advice.views);
+      cap.scene_image = fmt::format("capture_scene_{}.png", name);
+      cap.numbered_image = fmt::format("capture_numbered_{}.png", name);
+      write_png(out / cap.scene_image, to_uint8(display.capture(scene_panel, camera, fx)));
+      write_png(out / cap.numbered_image, to_uint8(display.capture(numbered_panel, camera, fx)));
+      report.captures.push_back(cap);
+    }
+  }
+
+  // 5. View separation: the unit's own calibration, its factory file, a 0.01-degree slant error.
+  {
+    Step step(o.verbose, "validating view separation (3 configurations)");
+    ProfileOptions po;
+    po.views = advice.views;
+    po.panel_points = o.validation_points;
+    std::vector<ValidationCase> cases;
+    const std::vector<std::pair<std::string, calib::Calibration>> configs = {
+        {"own calibration", assumed},
+        {"factory visual.json (no warp correction)", factory},
+        {"slant off by 0.01 deg", with_slant_error(assumed, 0.01)}};
+    for (const auto& [name, cal] : configs) {
+      ValidationCase c;
+      c.name = name;
+      c.truth_source = "simulated unit";
+      c.assumed_source = name;
+      c.profiles = measure_view_profiles(truth, cal, po);
+      c.summary = summarise(c.profiles);
+      report.validation.push_back({name, c.summary.mean_separation, c.summary.mean_crosstalk});
+      cases.push_back(std::move(c));
+    }
+    write_report(out / "validation", cases);
+  }
+  return write_demo_report(out, report);
+}
+
+}  // namespace lfd::validate
