@@ -53,6 +53,40 @@ TEST(SimulatorCapture, CentredCaptureShowsWhitePanelInsideBezel) {
   }
 }
 
+// Lens distortion moves the panel in the image exactly as project() says.
+TEST(SimulatorCapture, DistortedCaptureFollowsProject) {
+  const DisplaySimulator sim{LensModel(small_display())};
+  const auto& c = sim.lens().calibration();
+  const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
+  CameraIntrinsics k = CameraIntrinsics::from_fov(60.0, 320, 240);
+  k.distortion = {-0.3, 0.08, 0.0, 0.0, 0.0};
+  const PhysicalCamera cam(k, CameraPose{{0.06, 0.03, 0.45}, {0.01, 0, 0}, {0, 1, 0}});
+  CaptureEffects fx;
+  fx.supersample = 3;
+  fx.exposure = 0.3;
+  const ImageF img = sim.capture(white, cam, fx);
+  auto brightness = [&](const Eigen::Vector2d& px) {  // 3x3 neighbourhood, all channels
+    double sum = 0;
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        for (int ch = 0; ch < 3; ++ch)
+          sum += img.at(int(std::lround(px.x())) + dx, int(std::lround(px.y())) + dy, ch);
+    return sum / 27.0;
+  };
+  const double bezel = 0.3 * (fx.bezel[0] + fx.bezel[1] + fx.bezel[2]) / 3.0;
+  for (double sx : {-1.0, 1.0})
+    for (double sy : {-1.0, 1.0}) {
+      const Eigen::Vector3d corner(sx * 0.5 * c.width_m(), sy * 0.5 * c.height_m(), 0);
+      Eigen::Vector2d in, out;
+      ASSERT_TRUE(cam.project(0.97 * corner, in));
+      ASSERT_TRUE(cam.project(1.03 * corner, out));
+      ASSERT_TRUE(in.x() > 2 && in.y() > 2 && in.x() < 317 && in.y() < 237);
+      ASSERT_TRUE(out.x() > 2 && out.y() > 2 && out.x() < 317 && out.y() < 237);
+      EXPECT_GT(brightness(in), 0.2) << "inside corner " << sx << "," << sy;
+      EXPECT_NEAR(brightness(out), bezel, 1.5 / 255) << "outside corner " << sx << "," << sy;
+    }
+}
+
 TEST(SimulatorCapture, OutputIsQuantisedTo8Bits) {
   const DisplaySimulator sim{LensModel(small_display())};
   const auto& c = sim.lens().calibration();

@@ -51,9 +51,9 @@ TEST(SimulatorOptics, BlackPanelEmitsNothing) {
 }
 
 // The defining property of a calibrated display: an eye in view j's direction sees view j.
-TEST(SimulatorOptics, EyeInViewDirectionSeesThatView) {
+void expect_eye_sees_its_view(const DisplayCalibration& display) {
   const int views = 24;
-  const DisplaySimulator sim{LensModel(apw92011())};
+  const DisplaySimulator sim{LensModel(display)};
   const auto& c = sim.lens().calibration();
   const ImageF index = view_index_panel(sim.lens(), views);
   const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
@@ -77,6 +77,25 @@ TEST(SimulatorOptics, EyeInViewDirectionSeesThatView) {
     EXPECT_NEAR(mean_view / total, j, 0.3) << "view " << j;
     EXPECT_GT(double(near) / total, 0.85) << "view " << j;
   }
+}
+
+TEST(SimulatorOptics, EyeInViewDirectionSeesThatView) { expect_eye_sees_its_view(apw92011()); }
+
+TEST(SimulatorOptics, EyeInViewDirectionSeesThatViewOnGen3Cells) {
+  expect_eye_sees_its_view(testing::small_gen3_portrait());
+}
+
+TEST(SimulatorOptics, Gen3WhitePanelAveragesToOne) {
+  const DisplaySimulator sim{LensModel(testing::small_gen3_portrait())};
+  const auto& c = sim.lens().calibration();
+  const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
+  std::array<double, 3> sum{};
+  const auto points = random_panel_points(c, 4000, 11);
+  for (const auto& p : points) {
+    const auto r = sim.radiance(white, p, eye_for_fraction(c, p, 0.61), 0.008);
+    for (int ch = 0; ch < 3; ++ch) sum[ch] += r[ch];
+  }
+  for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(sum[ch] / points.size(), 1.0, 0.05) << "channel " << ch;
 }
 
 TEST(SimulatorOptics, ViewsRepeatOutsideTheCone) {

@@ -33,6 +33,20 @@ inline DisplayCalibration small_display() {
   return c;
 }
 
+// The 16" Portrait Gen3 factory template (reference/looking-glass.md 2.4: CellPatternMode 4,
+// two subpixel cells) at a tenth of the resolution and DPI: same optics per lens, small panel.
+inline DisplayCalibration small_gen3_portrait() {
+  return parse_calibration(
+             R"({"configVersion":"3.0","serial":"LKG-H-template","pitch":{"value":4.472},
+             "slope":{"value":-7.45},"center":{"value":0.0},"viewCone":{"value":50.0},
+             "invView":{"value":1.0},"DPI":{"value":28.3},"screenW":{"value":216.0},
+             "screenH":{"value":384.0},"CellPatternMode":{"value":4.0},"subpixelCells":[
+             {"ROffsetX":-0.25,"ROffsetY":-0.31,"GOffsetX":-0.25,"GOffsetY":0.28,"BOffsetX":0.25,"BOffsetY":0.0},
+             {"ROffsetX":0.25,"ROffsetY":-0.31,"GOffsetX":0.25,"GOffsetY":0.28,"BOffsetX":-0.25,"BOffsetY":0.0}]})",
+             "template-16in-portrait-gen3.visual.json")
+      .display;
+}
+
 // Every subpixel shows its own view index as grey level index / (views - 1).
 inline ImageF view_index_panel(const LensModel& lens, int views) {
   const auto& c = lens.calibration();
