@@ -5,6 +5,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibration_file.hpp"
+#include "calib/view_count.hpp"
 #include "util/progress.hpp"
 #include "validate/report.hpp"
 
@@ -43,6 +44,7 @@ int RunValidate(int argc, char** argv) {
   options.check();
 
   const calib::Calibration truth = calib::read_calibration(truth_path);
+  if (options.views == 0) options.views = calib::recommend_view_count(truth).views;
   std::vector<std::pair<std::string, std::string>> runs;  // case name, assumed file
   if (!assumed_path.empty()) runs.emplace_back("assumed", assumed_path);
   runs.emplace_back("true", truth_path);
@@ -54,8 +56,7 @@ int RunValidate(int argc, char** argv) {
     c.name = name;
     c.truth_source = truth_path;
     c.assumed_source = path;
-    const int views = options.views > 0 ? options.views : 0;
-    Progress progress("validate " + name, (views > 0 ? views : 256) + 1);
+    Progress progress("validate " + name, options.views + 1);
     c.profiles = validate::measure_view_profiles(truth, assumed, options, &progress);
     progress.finish();
     c.summary = validate::summarise(c.profiles);
