@@ -85,8 +85,9 @@ int RunRender(int argc, char** argv) {
   app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
   app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")->capture_default_str();
   app.add_option("--precision", precision, "G2LF: plane storage, u8 or f32")->capture_default_str();
-  app.add_option("--shift", g2lf.d_shift, "G2LF: D_shift, move the reference camera back (scene units)")
-      ->capture_default_str();
+  app.add_option("--shift", g2lf.d_shift,
+                 "G2LF: D_shift, move the reference camera back by this (scene units; default: by "
+                 "D_forward, to the base camera; 0 = the paper's setting)");
   auto* camera_opt = app.add_option("--camera", camera_path, "cam.json with position, look_at, up, fov_y_deg");
   app.add_option("--orbit", orbit_deg, "turn the default camera about the scene centre (degrees)")
       ->excludes(camera_opt);

@@ -115,17 +115,18 @@ int main(int argc, char** argv) {
   std::string json_path;
   size_t generated = 1000000;
   int views = 45, size = 512;
-  float cone = 40.0f, shift = 0.0f;
+  float cone = 40.0f, shift = 1.0f;
   bool quick = false;
   app.add_option("--guitar", guitar, "real scene to render (empty: skip)")->capture_default_str();
   app.add_option("--generated", generated, "Gaussians in the generated scene (0: skip)")->capture_default_str();
   app.add_option("--views", views, "quilt views")->capture_default_str();
   app.add_option("--size", size, "view width = height in pixels")->capture_default_str();
   app.add_option("--view-cone", cone, "view cone in degrees")->capture_default_str();
-  app.add_option("--shift", shift, "D_shift as a fraction of D_forward")->capture_default_str();
+  app.add_option("--shift", shift, "D_shift as a fraction of D_forward (1: reference camera at the base camera; 0: paper)")->capture_default_str();
   app.add_flag("--quick", quick, "only the N_chunk = 64 configurations");
   app.add_option("--json", json_path, "write the results as JSON");
   CLI11_PARSE(app, argc, argv);
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
   try {
     nlohmann::json out;

@@ -1,6 +1,7 @@
 #include "render/g2lf.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include "util/error.hpp"
 
@@ -9,7 +10,7 @@ namespace lfd::render {
 void G2lfOptions::check() const {
   if (chunks < 1 || chunks > 4096) throw_input_error("--chunks: {} is outside 1..4096", chunks);
   if (plane_scale < 1 || plane_scale > 8) throw_input_error("--plane-scale: {} is outside 1..8", plane_scale);
-  if (!std::isfinite(d_shift) || d_shift < 0.0f) throw_input_error("--shift: must be finite and >= 0");
+  if (!std::isfinite(d_shift)) throw_input_error("--shift: must be finite");
 }
 
 PlaneFilter parse_plane_filter(const std::string& name) {
@@ -33,7 +34,9 @@ ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geomet
     return std::chrono::duration<double>(b - a).count();
   };
   const auto t0 = Clock::now();
-  const ReferenceCamera ref = make_reference_camera(geometry, options.d_shift, options.plane_scale);
+  const float d_shift = options.d_shift >= 0.0f ? options.d_shift
+                                                : make_reference_camera(geometry, 0.0f, 1).d_forward;
+  const ReferenceCamera ref = make_reference_camera(geometry, d_shift, options.plane_scale);
   const DepthChunks chunks = bin_by_depth(scene, geometry, ref, options.chunks);
   const auto t1 = Clock::now();
   const SweepingPlanes planes = render_sweeping_planes(scene, geometry, ref, chunks, options, settings);

@@ -22,7 +22,10 @@ enum class PlanePrecision { kU8, kF32 };
 struct G2lfOptions {
   int chunks = 64;            // N_chunk
   int plane_scale = 1;        // P_s
-  float d_shift = 0.0f;       // D_shift, scene units (reference camera moved back)
+  // D_shift, scene units: the reference camera moves back from D_forward. Negative: D_forward,
+  // i.e. the reference camera sits at the base camera, so content between the base camera and
+  // D_forward (which the paper's D_shift = 0 drops) is kept; measured in docs/rendering.md.
+  float d_shift = -1.0f;
   PlaneFilter filter = PlaneFilter::kNearest;
   PlanePrecision precision = PlanePrecision::kU8;  // the paper's default
   bool adaptive_filter = true;  // Eq. gs_prefilter_fix; false: the constant 0.3 px^2

@@ -1,4 +1,5 @@
 // G2LF against the per-view baseline on a small random scene (45 views of 128x128).
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -101,7 +102,7 @@ TEST(G2lf, OptionsAreChecked) {
   o.plane_scale = 0;
   EXPECT_THROW(o.check(), InputError);
   o = {};
-  o.d_shift = -1.0f;
+  o.d_shift = std::nanf("");
   EXPECT_THROW(o.check(), InputError);
   EXPECT_THROW(parse_plane_filter("cubic"), InputError);
   EXPECT_THROW(parse_plane_precision("f16"), InputError);

@@ -1,0 +1,84 @@
+// `lfd render` and `lfd compare` end to end through the real program (small images).
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int code;
+  std::string out;
+};
+
+Result run(const std::string& args) {
+  const fs::path log = fs::temp_directory_path() / "lfd_render_cli_test.log";
+  const int status = std::system((std::string(LFD_EXE) + " " + args + " > " + log.string() + " 2>&1").c_str());
+  std::ifstream in(log);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {WEXITSTATUS(status), text};
+}
+
+const std::string kScene = std::string(LFD_SOURCE_DIR) + "/../shared/data/scenes/guitar.compressed.ply";
+
+fs::path temp_dir() {
+  const fs::path d = fs::temp_directory_path() / "lfd_render_cli_test";
+  fs::create_directories(d);
+  return d;
+}
+
+TEST(RenderCli, WritesAQuiltWithTheTilingSuffix) {
+  if (!fs::exists(kScene)) GTEST_SKIP() << "shared scene missing: " << kScene;
+  const fs::path out = temp_dir() / "quilt.png";
+  const Result r = run("render --scene " + kScene + " --views 8 --cols 4 --rows 2 --size 48x32 --chunks 16 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(temp_dir() / "quilt_qs4x2a1.5.png")) << r.out;
+}
+
+TEST(RenderCli, PerViewAndG2lfQuiltsAreComparable) {
+  if (!fs::exists(kScene)) GTEST_SKIP() << "shared scene missing: " << kScene;
+  const fs::path a = temp_dir() / "pv_qs3x1a1.png", b = temp_dir() / "g2_qs3x1a1.png";
+  ASSERT_EQ(run("render --scene " + kScene + " --method per-view --views 3 --cols 3 --rows 1 --size 40x40 --out " + a.string()).code, 0);
+  ASSERT_EQ(run("render --scene " + kScene + " --method g2lf --chunks 64 --views 3 --cols 3 --rows 1 --size 40x40 --out " + b.string()).code, 0);
+  const Result same = run("compare " + a.string() + " " + a.string() + " --json");
+  ASSERT_EQ(same.code, 0) << same.out;
+  EXPECT_TRUE(nlohmann::json::parse(same.out)["identical"].get<bool>());
+  const Result diff = run("compare " + a.string() + " " + b.string() + " --json");
+  ASSERT_EQ(diff.code, 0) << diff.out;
+  const auto j = nlohmann::json::parse(diff.out);
+  EXPECT_GT(j["psnr_db"].get<double>(), 20.0);
+  EXPECT_LT(j["ssim"].get<double>(), 1.0);
+}
+
+TEST(RenderCli, SingleViewAndCameraFile) {
+  if (!fs::exists(kScene)) GTEST_SKIP() << "shared scene missing: " << kScene;
+  const fs::path cam = temp_dir() / "cam.json", out = temp_dir() / "view.png";
+  std::ofstream(cam) << R"({"position":[0,0,-3],"look_at":[0,0,0],"up":[0,-1,0],"fov_y_deg":40,"width":24,"height":16})";
+  const Result r = run("render --scene " + kScene + " --camera " + cam.string() + " --view 2 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.out;
+  EXPECT_TRUE(fs::exists(out));
+}
+
+TEST(RenderCli, BadInputExitsWith2AndNamesTheProblem) {
+  const fs::path cam = temp_dir() / "bad_cam.json";
+  std::ofstream(cam) << R"({"position":[0,0],"look_at":[0,0,0],"fov_y_deg":40})";
+  Result r = run("render --scene " + kScene + " --camera " + cam.string() + " --out " + (temp_dir() / "x.png").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("position"), std::string::npos) << r.out;
+  r = run("render --scene " + kScene + " --filter cubic --out " + (temp_dir() / "x.png").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.out.find("--filter"), std::string::npos) << r.out;
+  r = run("render --scene /nonexistent.ply --out " + (temp_dir() / "x.png").string());
+  EXPECT_EQ(r.code, 2);
+  r = run("compare /nonexistent_a.png /nonexistent_b.png");
+  EXPECT_EQ(r.code, 2);
+}
+
+}  // namespace
