@@ -21,6 +21,7 @@ struct Bench {
 const std::vector<Bench>& benches() {
   static const std::vector<Bench> table = {
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
+      {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},
   };
   return table;
 }

@@ -6,5 +6,6 @@
 namespace lfd::apps {
 
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
+int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 
 }  // namespace lfd::apps

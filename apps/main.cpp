@@ -29,6 +29,8 @@ const std::vector<Command>& commands() {
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
+      {"patterns", RunPatterns, "write the calibration patterns for a display"},
+      {"calibrate", RunCalibrate, "calibrate a display unit from photographs of the patterns"},
   };
   return table;
 }

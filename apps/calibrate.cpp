@@ -1,0 +1,115 @@
+// lfd calibrate: a display unit's calibration from photographs of `lfd patterns`
+// (DESIGN section 5). Thin: the pipeline is calib::calibrate_display.
+#include <cstdio>
+#include <iostream>
+
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "calib/calibrate.hpp"
+#include "calib/live_calibration.hpp"
+#include "util/atomic_file.hpp"
+#include "util/error.hpp"
+
+namespace lfd::apps {
+
+int RunCalibrate(int argc, char** argv) {
+  CLI::App app{
+      "Calibrate a display unit from photographs: DIR/patterns (from `lfd patterns`) and\n"
+      "DIR/captures/<position>/<pattern file>. Writes calibration.json (lens values, correction\n"
+      "field, measured view cone, uncertainties, residuals, recommended views) only if every\n"
+      "quality gate passes.\n"
+      "\nExamples:\n"
+      "  lfd calibrate unit42 --camera camera.yaml --out unit42/calibration.json\n"
+      "  lfd calibrate unit42 --out cal.json --visual-json visual.json --report unit42/report\n"
+      "  lfd calibrate --live --simulate truth.json --display nominal.json --out cal.json",
+      "calibrate"};
+  std::string dir, camera_path, display_path, out_path, visual_path, report_dir, simulate_path,
+      monitor;
+  bool force = false, live = false;
+  int camera_index = 0, grid = 8;
+  calib::CalibrateOptions options;
+  app.add_option("DIR", dir, "folder with patterns/ and captures/");
+  app.add_option("--camera", camera_path,
+                 "camera intrinsics (OpenCV YAML: camera_matrix, distortion_coefficients); "
+                 "without it they are self-calibrated from the board at >= 3 positions");
+  app.add_option("--display", display_path,
+                 "display description (default: the one in the pattern manifest)");
+  app.add_option("--out", out_path, "calibration.json to write")->required();
+  app.add_option("--visual-json", visual_path, "also export the lens values as visual.json");
+  app.add_option("--report", report_dir, "write report.json (positions, residuals) here");
+  app.add_option("--grid", grid, "correction field control points per side (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 32));
+  app.add_flag("--force", force, "replace existing outputs (a .bak is kept)");
+  app.add_flag("--live", live, "show patterns on the display and grab camera frames");
+  app.add_option("--monitor", monitor, "live: monitor name prefix (default LKG)");
+  app.add_option("--camera-index", camera_index, "live: OpenCV camera index");
+  app.add_option("--simulate", simulate_path,
+                 "live: run against the simulator with this TRUE calibration");
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  // Fail before the work, not after it.
+  for (const auto& p : {out_path, visual_path})
+    if (!p.empty() && std::filesystem::exists(p) && !force)
+      throw_input_error("{}: exists; pass --force to replace it (a .bak is kept)", p);
+  if (!camera_path.empty()) options.camera = calib::CameraIntrinsics::read_yaml(camera_path);
+  options.solver.grid_nx = options.solver.grid_ny = grid < 4 ? 0 : grid;
+
+  calib::CalibrationOutcome outcome;
+  if (live) {
+    calib::LiveOptions lo;
+    lo.calibrate = options;
+    lo.monitor_prefix = monitor.empty() ? "LKG" : monitor;
+    lo.camera_index = camera_index;
+    if (display_path.empty())
+      throw_input_error("--live needs --display (the nominal description to start from)");
+    const calib::Calibration nominal = calib::read_calibration(display_path);
+    if (simulate_path.empty()) {
+      outcome = calib::run_live_calibration_on_hardware(nominal, lo);
+    } else {
+      outcome = calib::run_live_calibration_simulated(nominal, calib::read_calibration(simulate_path), lo);
+    }
+  } else {
+    if (dir.empty()) throw_input_error("DIR is required (or --live)");
+    const calib::PatternSet set = calib::read_pattern_set(dir);
+    if (!display_path.empty()) {
+      const calib::Calibration d = calib::read_calibration(display_path);
+      if (d.display.screen_w != set.nominal.display.screen_w ||
+          d.display.screen_h != set.nominal.display.screen_h)
+        throw_input_error("{}: is {}x{}, the patterns were made for {}x{}", display_path,
+                          d.display.screen_w, d.display.screen_h, set.nominal.display.screen_w,
+                          set.nominal.display.screen_h);
+    }
+    std::vector<std::string> warnings;
+    const auto captures = calib::read_captures(dir, set, warnings);
+    outcome = calib::calibrate_display(set, captures, options);
+    outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
+  }
+  for (const auto& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
+  if (!report_dir.empty())
+    write_text_atomic(std::filesystem::path(report_dir) / "report.json",
+                      calib::outcome_report(outcome).dump(2) + "\n");
+  calib::enforce_gates(outcome);
+
+  const auto& c = outcome.calibration;
+  calib::write_calibration(out_path, c, force);
+  if (!visual_path.empty()) calib::export_visual_json(visual_path, c, force);
+  auto sigma = [&](const char* k) {
+    auto it = c.uncertainty.find(k);
+    return it == c.uncertainty.end() ? 0.0 : it->second;
+  };
+  std::printf("pitch %.5f +- %.5f lpi, slope %.5f +- %.5f, center %.4f +- %.4f, view cone %.2f "
+              "+- %.2f deg\n",
+              c.display.pitch_lpi, sigma("pitch_lpi"), c.display.slope, sigma("slope"),
+              c.display.center_periods, sigma("center_periods"),
+              c.view_cone_measured_deg.value_or(c.display.view_cone_deg), sigma("view_cone_deg"));
+  if (c.residuals)
+    std::printf("phase residual rms %.4f periods (%ld samples, %.1f %% inliers); recommended "
+                "views %d; %.1f s\n",
+                c.residuals->rms_periods, c.residuals->count, 100 * c.residuals->inlier_fraction,
+                c.recommended_views.value_or(0), outcome.seconds);
+  std::printf("wrote %s\n", out_path.c_str());
+  return 0;
+}
+
+}  // namespace lfd::apps

@@ -1,0 +1,49 @@
+// lfd patterns: the calibration patterns for a display (DESIGN section 5).
+#include <cstdio>
+
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "calib/calibration_file.hpp"
+#include "calib/patterns.hpp"
+
+namespace lfd::apps {
+
+int RunPatterns(int argc, char** argv) {
+  CLI::App app{
+      "Write the calibration patterns for a display: DIR/patterns/*.png at panel resolution\n"
+      "and DIR/patterns/manifest.json. Show each full screen on the display, photograph it\n"
+      "from 2-3 camera positions and save the photos as DIR/captures/<position>/<file>, then\n"
+      "run `lfd calibrate DIR`.\n"
+      "\nExamples:\n"
+      "  lfd patterns --display data/displays/16in-gen2.visual.json --out unit42\n"
+      "  lfd patterns --display visual.json --out unit42 --steps 12 --force",
+      "patterns"};
+  std::string display_path, out_dir;
+  calib::PatternOptions options;
+  bool force = false;
+  app.add_option("--display", display_path,
+                 "nominal display: visual.json (template or factory) or calibration.json")
+      ->required();
+  app.add_option("--out", out_dir, "output folder (patterns go to OUT/patterns)")->required();
+  app.add_option("--steps", options.phase_steps, "phase-shift steps K")
+      ->capture_default_str()
+      ->check(CLI::Range(3, 32));
+  app.add_option("--board-squares", options.board_squares_short,
+                 "ChArUco squares along the short side of the panel")
+      ->capture_default_str()
+      ->check(CLI::Range(3, 20));
+  app.add_flag("--force", force, "replace existing patterns");
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  const calib::Calibration nominal = calib::read_calibration(display_path);
+  const calib::PatternSet set = calib::plan_patterns(nominal, options);
+  calib::write_pattern_set(out_dir, set, force);
+  std::printf("wrote %zu patterns (%dx%d) and manifest.json to %s/patterns\n", set.patterns.size(),
+              nominal.display.screen_w, nominal.display.screen_h, out_dir.c_str());
+  std::printf("next: photograph each pattern full screen (manual exposure and focus, tripod) and "
+              "save as %s/captures/<position>/<pattern file>\n",
+              out_dir.c_str());
+  return 0;
+}
+
+}  // namespace lfd::apps
