@@ -60,13 +60,16 @@ float LensOptics::channel_emission(double u_q, double v, int channel) const {
   if (!has_cells_) {
     // Classic stripes: channel c of pixel x emits at (x + 0.5) / W + offset_c on row `row`.
     const int row = std::clamp(int(std::floor((1.0 - v) * height_)), 0, height_ - 1);
-    const double base = u_q - channel_offset_u_[channel];
-    const int x_lo = std::max(0, int(std::ceil((base - reach) * width_ - 0.5)));
-    const int x_hi = std::min(width_ - 1, int(std::floor((base + reach) * width_ - 0.5)));
+    // Q in pixel units relative to the channel-c emitter centres (emitter x sits at x).
+    const double q_px = (u_q - channel_offset_u_[channel]) * width_ - 0.5;
+    const double reach_px = reach * width_;
+    const int x_lo = std::max(0, int(std::ceil(q_px - reach_px)));
+    const int x_hi = std::min(width_ - 1, int(std::floor(q_px + reach_px)));
     const float* line = panel_.row(row);
+    const double inv_width = 1.0 / width_;
     double sum = 0.0;
     for (int x = x_lo; x <= x_hi; ++x)
-      sum += kernel_(base - (x + 0.5) / width_) * line[x * panel_.channels + pc];
+      sum += kernel_((q_px - x) * inv_width) * line[x * panel_.channels + pc];
     return float(3.0 * sum);
   }
   const int x_lo = std::max(0, int(std::floor((u_q - reach) * width_ - 1.5)));
