@@ -117,9 +117,9 @@ GaussianScene read_compressed_ply(std::string_view bytes, const std::string& nam
   for (size_t i = 0; i < n; ++i) {
     const size_t ci = i / kGaussiansPerChunk;
     if (i % kGaussiansPerChunk == 0) {
-      for (int k = 0; k < 12; ++k) c[k] = float(chunk->value(ci, bounds[k]));
+      for (int k = 0; k < 12; ++k) c[k] = chunk->value_float(ci, bounds[k]);
       if (has_colour_range)
-        for (int k = 0; k < 6; ++k) c[12 + k] = float(chunk->value(ci, colour[k]));
+        for (int k = 0; k < 6; ++k) c[12 + k] = chunk->value_float(ci, colour[k]);
     }
     const auto p = unpack_111011(uint32_t(vertex->value(i, packed_position)));
     const auto s = unpack_111011(uint32_t(vertex->value(i, packed_scale)));

@@ -1,6 +1,7 @@
 #include "render/ply_header.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
@@ -60,6 +61,25 @@ T load(const unsigned char* p) {
   return v;  // little-endian host assumed (x86-64 / aarch64), as every 3DGS tool does
 }
 
+// ASCII values of integer properties must be integers the type can hold, so that
+// value() always returns what a binary file could have stored.
+bool in_range(PlyType t, double v) {
+  auto integer_within = [v](double lo, double hi) {
+    return v >= lo && v <= hi && std::floor(v) == v;
+  };
+  switch (t) {
+    case PlyType::Int8: return integer_within(-128, 127);
+    case PlyType::UInt8: return integer_within(0, 255);
+    case PlyType::Int16: return integer_within(-32768, 32767);
+    case PlyType::UInt16: return integer_within(0, 65535);
+    case PlyType::Int32: return integer_within(-2147483648.0, 2147483647.0);
+    case PlyType::UInt32: return integer_within(0, 4294967295.0);
+    case PlyType::Float32:
+    case PlyType::Float64: return true;
+  }
+  return true;
+}
+
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
 
 // Parses ASCII rows of `element` starting at `pos`, advancing it.
@@ -87,6 +107,9 @@ void parse_ascii_rows(std::string_view bytes, size_t& pos, PlyElement& element,
       if (res.ec != std::errc() || res.ptr != word.data() + word.size())
         throw_input_error("{}: element '{}' row {}: '{}' is not a number", name, element.name,
                           row, word.substr(0, 32));
+      if (!in_range(element.properties[p].type, v))
+        throw_input_error("{}: element '{}' row {}: {} does not fit property '{}'", name,
+                          element.name, row, word.substr(0, 32), element.properties[p].name);
       element.ascii_values[row * per_row + p] = v;
       pos = end;
     }
@@ -116,6 +139,14 @@ double PlyElement::value(size_t row, int property) const {
     case PlyType::Float64: return load<double>(at);
   }
   return 0.0;
+}
+
+float PlyElement::value_float(size_t row, int property) const {
+  const double v = value(row, property);
+  constexpr double kMax = std::numeric_limits<float>::max();
+  if (v > kMax) return std::numeric_limits<float>::infinity();
+  if (v < -kMax) return -std::numeric_limits<float>::infinity();
+  return float(v);  // NaN stays NaN
 }
 
 const PlyElement* PlyFile::find(std::string_view element_name) const {

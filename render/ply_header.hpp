@@ -32,6 +32,9 @@ struct PlyElement {
   int find(std::string_view property_name) const;
   PlyType type_of(int property) const { return properties[size_t(property)].type; }
   double value(size_t row, int property) const;
+  // value() as a float; magnitudes beyond float range become +-inf (not UB), so the loaders'
+  // finiteness check reports them.
+  float value_float(size_t row, int property) const;
 };
 
 struct PlyFile {

@@ -62,17 +62,17 @@ GaussianScene read_standard_ply(std::string_view bytes, const std::string& name)
   const size_t coeffs = size_t(scene.sh_coeffs());
   for (size_t i = 0; i < v.count; ++i) {
     for (int a = 0; a < 3; ++a) {
-      scene.positions[i][a] = float(v.value(i, xyz[a]));
-      scene.scales[i][a] = std::exp(float(v.value(i, scale[a])));
+      scene.positions[i][a] = v.value_float(i, xyz[a]);
+      scene.scales[i][a] = std::exp(v.value_float(i, scale[a]));
     }
-    for (int a = 0; a < 4; ++a) scene.rotations[i][a] = float(v.value(i, rot[a]));
-    scene.opacities[i] = sigmoid(float(v.value(i, opacity)));
+    for (int a = 0; a < 4; ++a) scene.rotations[i][a] = v.value_float(i, rot[a]);
+    scene.opacities[i] = sigmoid(v.value_float(i, opacity));
     float* sh = scene.sh.data() + i * coeffs * 3;
-    for (int c = 0; c < 3; ++c) sh[c] = float(v.value(i, dc[c]));
+    for (int c = 0; c < 3; ++c) sh[c] = v.value_float(i, dc[c]);
     // f_rest[ch * K + k] is coefficient k + 1 of channel ch (section 7.1).
     for (size_t ch = 0; ch < 3; ++ch)
       for (size_t k = 0; k < rest_per_channel; ++k)
-        sh[(k + 1) * 3 + ch] = float(v.value(i, rest[ch * rest_per_channel + k]));
+        sh[(k + 1) * 3 + ch] = v.value_float(i, rest[ch * rest_per_channel + k]);
   }
   finalize_scene(scene, name);
   return scene;

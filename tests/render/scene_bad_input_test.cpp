@@ -133,6 +133,18 @@ TEST_F(SceneBadInput, ElementWithRowsButNoPropertiesFailsFast) {
                   "no properties");
 }
 
+TEST_F(SceneBadInput, ValueBeyondFloatRangeIsNotFinite) {
+  std::string ply = encode_ply(two_gaussians(0), PlyEncoding::Ascii);
+  ply = replace_first(ply, "end_header\n0 ", "end_header\n1e300 ");
+  expect_rejected(write("huge.ply", ply), "position is not finite");
+}
+
+TEST_F(SceneBadInput, AsciiIntegerPropertyOutOfRange) {
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement chunk 1\nproperty uchar min_x\nend_header\n300\n";
+  expect_rejected(write("range.compressed.ply", ply), "does not fit");
+}
+
 TEST_F(SceneBadInput, NaNValue) {
   GaussianScene s = two_gaussians();
   s.positions[1][2] = std::numeric_limits<float>::quiet_NaN();
