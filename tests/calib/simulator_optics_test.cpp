@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "calib/lens_optics.hpp"
 #include "calib/simulator.hpp"
 #include "simulator_test_support.hpp"
 #include "util/error.hpp"
@@ -107,6 +108,26 @@ TEST(SimulatorOptics, ViewsRepeatOutsideTheCone) {
   const auto a = sim.radiance(index, p, eye_for_fraction(c, p, 0.3), 0.008);
   const auto b = sim.radiance(index, p, eye_for_fraction(c, p, 1.3), 0.008);
   for (int ch = 0; ch < 3; ++ch) EXPECT_NEAR(a[ch], b[ch], 1e-4);
+}
+
+// With a correction field the seen point is found by Newton steps; it must land on the
+// phase that shows the seen fraction, within the lens covering P.
+TEST(SimulatorOptics, SeenPointHasTheSeenPhaseWithACorrectionField) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> coefficient(-0.4, 0.4), unit(0.02, 0.98);
+  std::vector<double> w(8 * 6);
+  for (double& x : w) x = coefficient(rng);
+  const LensModel lens(apw92011(), CorrectionField(8, 6, w));
+  const ImageF panel(3840, 2160, 1, 0.0f);
+  const PhaseKernel kernel = LensOptics::make_kernel(lens, 0.008);
+  const LensOptics optics(lens, panel, kernel);
+  for (int i = 0; i < 2000; ++i) {
+    const double u = unit(rng), v = unit(rng), f = unit(rng);
+    const double u_q = optics.seen_u(u, v, f);
+    const double target = lens.phase_for_fraction(f, std::floor(lens.phase(u, v)));
+    ASSERT_NEAR(lens.phase(u_q, v), target, 1e-9) << "u " << u << " v " << v << " f " << f;
+    ASSERT_NEAR(lens.view_fraction(lens.phase(u_q, v)), f, 1e-6);
+  }
 }
 
 TEST(SimulatorOptics, WrongPanelSizeIsInputError) {
