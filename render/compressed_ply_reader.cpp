@@ -58,7 +58,10 @@ std::array<float, 4> unpack_rotation(uint32_t v) {
 }  // namespace
 
 GaussianScene read_compressed_ply(std::string_view bytes, const std::string& name) {
-  const PlyFile ply = parse_ply(bytes, name);
+  return compressed_ply_to_scene(parse_ply(bytes, name), name);
+}
+
+GaussianScene compressed_ply_to_scene(const PlyFile& ply, const std::string& name) {
   const PlyElement* chunk = ply.find("chunk");
   const PlyElement* vertex = ply.find("vertex");
   if (!chunk) throw_input_error("{}: compressed PLY has no 'chunk' element", name);

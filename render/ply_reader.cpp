@@ -33,7 +33,10 @@ int degree_for_rest_count(size_t rest, const std::string& name) {
 }  // namespace
 
 GaussianScene read_standard_ply(std::string_view bytes, const std::string& name) {
-  const PlyFile ply = parse_ply(bytes, name);
+  return standard_ply_to_scene(parse_ply(bytes, name), name);
+}
+
+GaussianScene standard_ply_to_scene(const PlyFile& ply, const std::string& name) {
   if (ply.find("chunk"))
     throw_input_error("{}: this is a compressed PLY (has a 'chunk' element)", name);
   const PlyElement* vertex = ply.find("vertex");

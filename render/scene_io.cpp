@@ -2,7 +2,6 @@
 #include "render/scene_io.hpp"
 
 #include <fstream>
-#include <iterator>
 
 #include "render/ply_header.hpp"
 #include "render/ply_writer.hpp"
@@ -24,10 +23,12 @@ std::string read_binary_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     throw_input_error("{}: no such file", path.string());
+  const auto size = std::filesystem::file_size(path, ec);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw_input_error("{}: cannot open for reading", path.string());
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw_input_error("{}: read error", path.string());
+  if (ec || !in) throw_input_error("{}: cannot open for reading", path.string());
+  std::string bytes(size_t(size), '\0');
+  if (!in.read(bytes.data(), std::streamsize(size)))
+    throw_input_error("{}: read error", path.string());
   return bytes;
 }
 
@@ -36,11 +37,10 @@ std::string read_binary_file(const std::filesystem::path& path) {
 GaussianScene read_scene_bytes(std::string_view bytes, const std::string& name) {
   if (bytes.empty()) throw_input_error("{}: empty file", name);
   if (looks_like_ply(bytes)) {
-    // A compressed PLY is a PLY with a `chunk` element (reference 7.4). The header is parsed
-    // twice (here and in the reader); it is small.
-    const PlyFile header = parse_ply(bytes, name);
-    return header.find("chunk") ? read_compressed_ply(bytes, name)
-                                : read_standard_ply(bytes, name);
+    // A compressed PLY is a PLY with a `chunk` element (reference 7.4).
+    const PlyFile ply = parse_ply(bytes, name);
+    return ply.find("chunk") ? compressed_ply_to_scene(ply, name)
+                             : standard_ply_to_scene(ply, name);
   }
   const auto b0 = uint8_t(bytes[0]);
   if ((bytes.size() >= 2 && b0 == 0x1f && uint8_t(bytes[1]) == 0x8b) ||
