@@ -38,9 +38,14 @@ int RunValidate(int argc, char** argv) {
   app.add_option("--psf", options.psf_sigma_phase,
                  "lens point spread sigma_A, lens periods (default: the calibration's, else 0.008)");
   app.add_option("--seed", options.seed, "seed of the panel point jitter")->capture_default_str();
+  std::string blend = "nearest";
+  app.add_option("--blend", blend, "the interlacer's view selection: nearest or linear")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"nearest", "linear"}));
   app.add_flag("--json", json, "print the figures as JSON on stdout");
   app.add_option("--out", out_dir, "report directory")->required();
   if (auto code = parse(app, argc, argv)) return *code;
+  options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
   options.check();
 
   const calib::Calibration truth = calib::read_calibration(truth_path);

@@ -104,15 +104,17 @@ std::string html_page(const std::vector<ValidationCase>& cases, bool figures) {
       "(L<sub>i</sub> &minus; L<sub>K</sub>), view separation V<sub>i</sub> = (L<sub>i</sub> "
       "&minus; L<sub>K</sub>) / &Sigma;<sub>j</sub>(L<sub>j</sub> &minus; L<sub>K</sub>) "
       "(reference/display-optics.md 9.3). Data: <a href=\"validation.json\">validation.json</a>."
-      "</p>\n<table><tr><th>case</th><th>true</th><th>assumed</th><th>views</th><th>panel "
-      "points</th><th>psf &sigma;<sub>A</sub></th><th>mean V</th><th>min V</th><th>mean X</th>"
+      "</p>\n<table><tr><th>case</th><th>true</th><th>assumed</th><th>views</th><th>view "
+      "blend</th><th>panel points</th><th>psf &sigma;<sub>A</sub></th><th>mean V</th><th>min V</th><th>mean X</th>"
       "<th>mean X adjacent</th></tr>\n";
   for (const auto& c : cases)
     h += fmt::format(
-        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.4f}</td><td>{:.3f}"
-        "</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>\n",
+        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.4f}</td>"
+        "<td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>\n",
         html_escape(c.name), html_escape(c.truth_source), html_escape(c.assumed_source),
-        c.profiles.views, c.profiles.panel_points, c.profiles.psf_sigma_phase,
+        c.profiles.views,
+        c.profiles.blend == interlace::ViewBlend::kLinear ? "linear" : "nearest",
+        c.profiles.panel_points, c.profiles.psf_sigma_phase,
         c.summary.mean_separation, c.summary.min_separation, c.summary.mean_crosstalk,
         c.summary.mean_adjacent_crosstalk);
   h += "</table>\n";
@@ -155,6 +157,7 @@ nlohmann::ordered_json to_json(const ValidationCase& c) {
           {"true_calibration", c.truth_source},
           {"assumed_calibration", c.assumed_source},
           {"views", p.views},
+          {"blend", p.blend == interlace::ViewBlend::kLinear ? "linear" : "nearest"},
           {"distance_m", p.distance_m},
           {"psf_sigma_phase", p.psf_sigma_phase},
           {"panel_points", p.panel_points},

@@ -53,6 +53,36 @@ std::vector<uint8_t> interlaced_views(const calib::Calibration& assumed, int vie
   return index;
 }
 
+// Linear view blending splits a subpixel between views a and b: the interlacer's own
+// per-subpixel choice (Interlacer::sample_for), applied to "tile j white, others black".
+struct BlendedViews {
+  std::vector<uint8_t> a, b;  // view + 1; 0 = black (outside the quilt area)
+  std::vector<float> weight_b;
+};
+
+BlendedViews blended_views(const calib::Calibration& assumed, int views) {
+  const auto& d = assumed.display;
+  const calib::LensModel lens(d, assumed.correction);
+  interlace::InterlaceOptions options;
+  options.blend = interlace::ViewBlend::kLinear;
+  const interlace::Interlacer interlacer(
+      lens, index_layout(views, double(d.screen_w) / d.screen_h), options);
+  const size_t n = size_t(d.screen_w) * d.screen_h * 3;
+  BlendedViews out{std::vector<uint8_t>(n, 0), std::vector<uint8_t>(n, 0), std::vector<float>(n, 0)};
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int row = 0; row < d.screen_h; ++row)
+    for (int x = 0; x < d.screen_w; ++x)
+      for (int c = 0; c < 3; ++c) {
+        const interlace::SubpixelSample s = interlacer.sample_for(x, row, c);
+        if (!s.inside) continue;
+        const size_t i = (size_t(row) * d.screen_w + x) * 3 + c;
+        out.a[i] = uint8_t(s.view_a + 1);
+        out.b[i] = uint8_t(s.view_b + 1);
+        out.weight_b[i] = s.weight_b;
+      }
+  return out;
+}
+
 // Jittered grid over the central `fraction` of the panel, in metres (display frame).
 std::vector<Eigen::Vector3d> panel_points(const calib::DisplayCalibration& d, int count,
                                           double fraction, uint64_t seed) {
@@ -111,7 +141,11 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
   for (int k = 0; k < angles; ++k)
     out.theta_deg.push_back(-half_cone + d.view_cone_deg * (k + 0.5) / angles);
 
-  const std::vector<uint8_t> index = interlaced_views(assumed, out.views);
+  out.blend = options.blend;
+  const bool linear = options.blend == interlace::ViewBlend::kLinear;
+  const std::vector<uint8_t> index = linear ? std::vector<uint8_t>{}
+                                            : interlaced_views(assumed, out.views);
+  const BlendedViews blended = linear ? blended_views(assumed, out.views) : BlendedViews{};
   const calib::DisplaySimulator simulator{calib::LensModel(d, truth.correction)};
   const auto points = panel_points(d, options.panel_points, options.region_fraction, options.seed);
   out.panel_points = int(points.size());
@@ -132,10 +166,18 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
   out.view.assign(out.views, std::vector<double>(angles, 0.0));
   // Pass j < views: tile j white; pass `views`: the all-black quilt (L_K).
   for (int pass = 0; pass <= out.views; ++pass) {
-    if (pass > 0)
-      for (uint32_t i : subpixels_of[pass - 1]) panel.pixels[i] = 0.0f;
-    if (pass < out.views)
-      for (uint32_t i : subpixels_of[pass]) panel.pixels[i] = 1.0f;
+    if (linear) {
+      const uint8_t lit = uint8_t(pass + 1);  // matches nothing on the black pass
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < long(panel.pixels.size()); ++i)
+        panel.pixels[i] = (blended.a[i] == lit ? 1.0f - blended.weight_b[i] : 0.0f) +
+                          (blended.b[i] == lit ? blended.weight_b[i] : 0.0f);
+    } else {
+      if (pass > 0)
+        for (uint32_t i : subpixels_of[pass - 1]) panel.pixels[i] = 0.0f;
+      if (pass < out.views)
+        for (uint32_t i : subpixels_of[pass]) panel.pixels[i] = 1.0f;
+    }
     std::vector<double> profile(angles, 0.0);
 #pragma omp parallel
     {

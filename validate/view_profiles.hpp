@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "calib/calibration_file.hpp"
+#include "interlace/interlacer.hpp"
 #include "util/progress.hpp"
 
 namespace lfd::validate {
@@ -21,6 +22,7 @@ struct ProfileOptions {
   double region_fraction = 0.9;  // central part of the panel (width and height) sampled
   double psf_sigma_phase = -1;   // lens point spread; < 0: the TRUE calibration's, else default
   uint64_t seed = 1;             // jitter of the panel points
+  interlace::ViewBlend blend = interlace::ViewBlend::kNearest;  // the interlacer's view selection
 
   // Throws InputError naming the option for impossible values.
   void check() const;
@@ -31,6 +33,7 @@ struct ViewProfiles {
   double distance_m = 0;
   double psf_sigma_phase = 0;
   int panel_points = 0;
+  interlace::ViewBlend blend = interlace::ViewBlend::kNearest;
   std::vector<double> theta_deg;             // viewing directions, left to right
   std::vector<std::vector<double>> view;     // L_j(theta), [view][angle], luminance (white = 1)
   std::vector<double> black;                 // L_K(theta)
