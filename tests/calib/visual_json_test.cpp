@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"ZeroSlope", R"("slope":{"value":-7})", R"("slope":{"value":0})", "slope"},
         BadCase{"NaNSlope", R"("slope":{"value":-7})", R"("slope":{"value":"NaN"})", "slope"},
         BadCase{"InfiniteCenter", R"("center":{"value":0.5})", R"("center":{"value":1e999})",
-                "1e999"}  // JSON overflow: rejected by the parser, naming the value,
+                "1e999"},  // JSON overflow: rejected by the parser, naming the value
         BadCase{"ZeroDPI", R"("DPI":{"value":283})", R"("DPI":{"value":0})", "DPI"},
         BadCase{"NegativeWidth", R"("screenW":{"value":3840})", R"("screenW":{"value":-1})",
                 "screenW"},
