@@ -135,5 +135,49 @@ TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
   expect_same(load_scene(v3), load_scene(v4), 0.0f);
 }
 
+std::string gzip(const std::string& data) {
+  z_stream z{};
+  deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
+  std::string out(deflateBound(&z, uLong(data.size())) + 64, '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
+  z.avail_in = uInt(data.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = uInt(out.size());
+  deflate(&z, Z_FINISH);
+  out.resize(z.total_out);
+  deflateEnd(&z);
+  return out;
+}
+
+TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
+  const fs::path v3 = LFD_SHARED_DATA_DIR "/scenes/three-points.spz";
+  if (!fs::exists(v3)) GTEST_SKIP() << "shared scene data not found; skipping";
+  const GaussianScene expected = load_scene(v3);
+  const std::string raw = gunzip(read_bytes(v3));
+  ASSERT_EQ(raw.size(), 211u);
+  // Same payload with version 2 and rotations re-encoded as v2 bytes: xyz of the file-frame
+  // (RUB) quaternion with w >= 0, byte = (c + 1) * 127.5.
+  std::string v2 = raw.substr(0, 16 + 27 + 3 + 9 + 9);
+  v2[4] = 2;
+  for (size_t i = 0; i < 3; ++i) {
+    auto q = expected.rotations[i];  // RDF (w, x, y, z)
+    const float sign = q[0] < 0 ? -1.0f : 1.0f;
+    const float rub_xyz[3] = {sign * q[1], -sign * q[2], -sign * q[3]};
+    for (float c : rub_xyz) v2 += char(uint8_t(std::lround((c + 1.0f) * 127.5f)));
+  }
+  v2 += raw.substr(16 + 27 + 3 + 9 + 9 + 12);
+  const fs::path path = temp_path("three-points-v2.spz");
+  std::ofstream(path, std::ios::binary) << gzip(v2);
+  const GaussianScene got = load_scene(path);
+  ASSERT_EQ(got.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(got.positions[i], expected.positions[i]);
+    float dot = 0;
+    for (int k = 0; k < 4; ++k) dot += got.rotations[i][k] * expected.rotations[i][k];
+    EXPECT_GT(std::fabs(dot), 0.9999f) << "Gaussian " << i;
+  }
+  EXPECT_EQ(got.sh, expected.sh);
+}
+
 }  // namespace
 }  // namespace lfd::render
