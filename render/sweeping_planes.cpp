@@ -51,7 +51,7 @@ SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeo
         const float t = img.transmittance[p];
         bool empty;
         if (options.precision == PlanePrecision::kU8) {
-          const auto q = [](float v) { return uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+          const auto q = [](float v) { return uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };
           uint8_t* texel = &planes.texels_u8[o];
           texel[0] = q(r); texel[1] = q(g); texel[2] = q(b); texel[3] = q(t);
           empty = texel[0] == 0 && texel[1] == 0 && texel[2] == 0 && texel[3] == 255;
