@@ -48,7 +48,7 @@ int RunBenchCalibration(int argc, char** argv) {
                "\nExample:\n  lfd bench calibration --json bench_calibration.json",
                "calibration"};
   std::string json_path, data_dir = "../shared/data";  // from the repository root
-  int width_px = 960, positions = 3, seeds = 1;
+  int width_px = 1280, positions = 3, seeds = 1, supersample = 2;
   app.add_option("--json", json_path, "write the figures as JSON to this file");
   app.add_option("--data", data_dir, "folder with calibrations/*.visual.json")
       ->capture_default_str();
@@ -58,6 +58,9 @@ int RunBenchCalibration(int argc, char** argv) {
   app.add_option("--positions", positions, "camera positions (1-3)")
       ->capture_default_str()
       ->check(CLI::Range(1, 3));
+  app.add_option("--supersample", supersample, "simulator samples per camera pixel per axis")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 8));
   app.add_option("--seeds", seeds, "synthetic units per display kind")
       ->capture_default_str()
       ->check(CLI::Range(1, 20));
@@ -77,8 +80,9 @@ int RunBenchCalibration(int argc, char** argv) {
       so.seed = uint64_t(seed);
       const calib::SyntheticUnit unit = calib::make_synthetic_unit(real, so);
       const calib::PatternSet set = calib::plan_patterns(unit.nominal);
-      const calib::CaptureRig rig =
+      calib::CaptureRig rig =
           calib::make_capture_rig(unit.truth.display, width_px, positions, false, uint64_t(seed));
+      rig.effects.supersample = supersample;
       auto t0 = std::chrono::steady_clock::now();
       const auto captures = calib::simulate_captures(set, unit.truth, rig);
       const double simulate_s = seconds_since(t0);

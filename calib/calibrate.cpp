@@ -381,6 +381,10 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
       pd.lateral_sigma_m = std::max(3e-4, 2 * z * noise / (f * extent * extent));
       pd.depth_sigma_m = std::max(focal_rel * z, 2 * z * noise / (f * extent));
     }
+    if (options.known_camera_positions_m.size() == positions.size()) {
+      pd.camera_m = options.known_camera_positions_m[i];
+      pd.lateral_sigma_m = pd.depth_sigma_m = 1e-4;
+    }
     data.push_back(std::move(pd));
     out.positions.push_back(rep);
   }

@@ -51,6 +51,9 @@ struct CalibrateOptions {
   PhaseDecodeOptions decode;
   SolverOptions solver;
   QualityGates gates;
+  // Camera positions known by other means (a measured rig; synthetic tests): they replace the
+  // registration's, with 0.1 mm priors. One per position, or empty.
+  std::vector<Eigen::Vector3d> known_camera_positions_m;
   double max_motion_px = 3.0;          // corner markers may move this much between captures
                                        // (or 0.5 % of the image diagonal, if more)
   double max_clipped_fraction = 0.25;  // of the screen saturated in one capture

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <algorithm>
 
 #include "calib/lens_solver.hpp"
 
@@ -67,13 +68,13 @@ CaptureRig make_capture_rig(const DisplayCalibration& d, int width_px, int posit
   CaptureEffects& e = rig.effects;
   e.seed = seed;
   e.supersample = 3;
+  e.exposure = 0.7;  // white at ~70 % of full scale, as docs/calibration.md asks
   if (!clean) {
     rig.intrinsics.distortion = {-0.06, 0.02, 0.0, 0.0, 0.0};
     e.blur_px = 0.7;
     e.noise_sigma = 0.02;
     e.vignetting = 0.25;
     e.gamma = 2.2;
-    e.exposure = 0.7;
     e.glare_fraction = 0.05;
   }
   return rig;
@@ -84,12 +85,34 @@ std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Cal
   const DisplaySimulator sim(LensModel(truth.display, truth.correction));
   std::vector<PositionCaptures> out(rig.poses.size());
   for (size_t i = 0; i < rig.poses.size(); ++i) out[i].name = "pos" + std::to_string(i + 1);
+  // Manual exposure per position, set on the white pattern as a user would: its brightest
+  // 1 % (the lens magnifies single subpixels into bright colour stripes) at 85 % of full scale.
+  std::vector<double> exposure(rig.poses.size(), rig.effects.exposure);
+  for (const auto& p : set.patterns) {
+    if (p.kind != PatternKind::kWhite) continue;
+    const ImageF panel = to_float(render_pattern(set, p));
+    for (size_t i = 0; i < rig.poses.size(); ++i) {
+      CaptureEffects e = rig.effects;
+      e.exposure = 0.25;  // below clipping even for the brightest stripes
+      e.noise_sigma = 0;
+      e.glare_fraction = 0;
+      const ImageF probe = sim.capture(panel, PhysicalCamera(rig.intrinsics, rig.poses[i]), e);
+      std::vector<float> lit;
+      for (float v : probe.pixels)
+        if (v > 0.05f) lit.push_back(v);
+      if (lit.empty()) continue;
+      std::nth_element(lit.begin(), lit.begin() + long(lit.size() * 0.99), lit.end());
+      const double p99 = std::pow(double(lit[size_t(lit.size() * 0.99)]), e.gamma) / e.exposure;
+      exposure[i] = std::pow(0.85, e.gamma) / p99;
+    }
+  }
   for (const auto& p : set.patterns) {
     const ImageF panel = to_float(render_pattern(set, p));
     const std::string stem = std::filesystem::path(p.file).stem().string();
     for (size_t i = 0; i < rig.poses.size(); ++i) {
       CaptureEffects e = rig.effects;
       e.seed = rig.effects.seed * 1000003 + i * 101 + size_t(p.index);
+      e.exposure = exposure[i];
       const PhysicalCamera camera(rig.intrinsics, rig.poses[i]);
       out[i].images[stem] = to_mat(sim.capture(panel, camera, e));
       out[i].paths[stem] = out[i].name + "/" + p.file;
