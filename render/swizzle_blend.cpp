@@ -1,7 +1,7 @@
 // Alg. 1 lines 6-12: swizzle blending. For quilt view j, pixel (x, y) and plane k the sampling
 // point is Eq. (u_prime), which is affine in x for a fixed (j, k) and independent of j in y
 // (views move horizontally only), so each output row reads one (nearest) or two (bilinear)
-// rows of each plane. Planes are composited front to back with Eq. (alpha_blend); a pixel stops
+// rows of each plane, the same for every view. Planes are composited front to back with Eq. (alpha_blend); a pixel stops
 // once its transmittance falls below half an 8-bit step (what is left cannot move an 8-bit
 // output value by more than rounding), a row once all its pixels have.
 #include <algorithm>
@@ -54,26 +54,26 @@ template <typename Texels, bool kBilinear>
 void swizzle_rows(const SweepingPlanes& planes, const Texels& tex, const QuiltGeometry& geometry,
                   const QuiltLayout& layout, const std::vector<PlaneMap>& maps,
                   const glm::vec3& background, ImageF& quilt) {
-  const int W = geometry.base.width, H = geometry.base.height;
+  const int W = geometry.base.width, H = geometry.base.height, V = geometry.views;
   const int Wp = planes.width, Hp = planes.height;
   const size_t plane_texels = size_t(Wp) * Hp;
+  std::vector<float> offsets(static_cast<size_t>(V));
+  for (int j = 0; j < V; ++j) offsets[size_t(j)] = geometry.view_offset(j);
+  // One job = output row y of every view: the plane rows it reads do not depend on the view,
+  // so each plane row is fetched into cache once and reused by all V views.
 #pragma omp parallel
   {
-    std::vector<float> T(static_cast<size_t>(W)), C(static_cast<size_t>(W) * 3);
-#pragma omp for schedule(dynamic, 4)
-    for (long long job = 0; job < (long long)geometry.views * H; ++job) {
-      const int view = int(job / H), y = int(job % H);
+    std::vector<float> T(static_cast<size_t>(V) * W), C(static_cast<size_t>(V) * W * 3);
+    std::vector<int> active(static_cast<size_t>(V));
+#pragma omp for schedule(dynamic, 2)
+    for (int y = 0; y < H; ++y) {
       std::fill(T.begin(), T.end(), 1.0f);
       std::fill(C.begin(), C.end(), 0.0f);
-      int active = W;
-      const float dx = geometry.view_offset(view);
+      std::fill(active.begin(), active.end(), W);
+      int views_active = V;
       const float v_ndc = (2.0f * y + 1.0f) / float(H) - 1.0f;
-      for (int k = 0; k < planes.count && active > 0; ++k) {
+      for (int k = 0; k < planes.count && views_active > 0; ++k) {
         const PlaneMap& m = maps[size_t(k)];
-        // u'(x) = u_left + step (x + 0.5); plane pixel px = ((u' + 1) Wp - 1) / 2 = alpha + beta x.
-        const float u_left = dx * m.parallax - m.scale_x, step = 2.0f * m.scale_x / float(W);
-        const float alpha = ((u_left + 0.5f * step + 1.0f) * float(Wp) - 1.0f) * 0.5f;
-        const float beta = step * float(Wp) * 0.5f;
         const float py = ((m.scale_y * v_ndc + 1.0f) * float(Hp) - 1.0f) * 0.5f;
         const int row0 = kBilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
         const int row1 = kBilinear ? row0 + 1 : row0;
@@ -85,40 +85,54 @@ void swizzle_rows(const SweepingPlanes& planes, const Texels& tex, const QuiltGe
             last = std::max(last, planes.row_last[size_t(k) * Hp + r]);
           }
         if (first > last) continue;
-        // Output columns whose samples can touch texels [first - 1, last + 1].
-        const float xa = (float(first) - 1.5f - alpha) / beta, xb = (float(last) + 1.5f - alpha) / beta;
-        const int x_lo = std::max(0, int(std::floor(std::min(xa, xb))));
-        const int x_hi = std::min(W - 1, int(std::ceil(std::max(xa, xb))));
         const size_t base = size_t(k) * plane_texels;
-        for (int x = x_lo; x <= x_hi; ++x) {
-          float& t = T[size_t(x)];
-          if (t < kMinTransmittance) continue;
-          const float px = alpha + beta * float(x);
-          float s[4];
-          if constexpr (kBilinear) {
-            const int col0 = int(std::floor(px));
-            const float fx = px - float(col0);
-            float a[4], b[4], c[4], d[4];
-            fetch(tex, base, Wp, Hp, col0, row0, a);
-            fetch(tex, base, Wp, Hp, col0 + 1, row0, b);
-            fetch(tex, base, Wp, Hp, col0, row1, c);
-            fetch(tex, base, Wp, Hp, col0 + 1, row1, d);
-            for (int ch = 0; ch < 4; ++ch)
-              s[ch] = (1.0f - fy) * ((1.0f - fx) * a[ch] + fx * b[ch]) + fy * ((1.0f - fx) * c[ch] + fx * d[ch]);
-          } else {
-            fetch(tex, base, Wp, Hp, int(std::floor(px + 0.5f)), row0, s);
+        const float step = 2.0f * m.scale_x / float(W);
+        const float beta = step * float(Wp) * 0.5f;
+        for (int j = 0; j < V; ++j) {
+          if (active[size_t(j)] == 0) continue;
+          // u'(x) = u_left + step (x + 0.5); plane pixel px = ((u' + 1) Wp - 1) / 2 = alpha + beta x.
+          const float u_left = offsets[size_t(j)] * m.parallax - m.scale_x;
+          const float alpha = ((u_left + 0.5f * step + 1.0f) * float(Wp) - 1.0f) * 0.5f;
+          // Output columns whose samples can touch texels [first - 1, last + 1].
+          const float xa = (float(first) - 1.5f - alpha) / beta, xb = (float(last) + 1.5f - alpha) / beta;
+          const int x_lo = std::max(0, int(std::floor(std::min(xa, xb))));
+          const int x_hi = std::min(W - 1, int(std::ceil(std::max(xa, xb))));
+          float* Tj = T.data() + size_t(j) * W;
+          float* Cj = C.data() + size_t(j) * W * 3;
+          int& act = active[size_t(j)];
+          for (int x = x_lo; x <= x_hi; ++x) {
+            float& t = Tj[x];
+            if (t < kMinTransmittance) continue;
+            const float px = alpha + beta * float(x);
+            float s[4];
+            if constexpr (kBilinear) {
+              const int col0 = int(std::floor(px));
+              const float fx = px - float(col0);
+              float a[4], b[4], c[4], d[4];
+              fetch(tex, base, Wp, Hp, col0, row0, a);
+              fetch(tex, base, Wp, Hp, col0 + 1, row0, b);
+              fetch(tex, base, Wp, Hp, col0, row1, c);
+              fetch(tex, base, Wp, Hp, col0 + 1, row1, d);
+              for (int ch = 0; ch < 4; ++ch)
+                s[ch] = (1.0f - fy) * ((1.0f - fx) * a[ch] + fx * b[ch]) + fy * ((1.0f - fx) * c[ch] + fx * d[ch]);
+            } else {
+              fetch(tex, base, Wp, Hp, int(std::floor(px + 0.5f)), row0, s);
+            }
+            Cj[3 * x] += t * s[0];
+            Cj[3 * x + 1] += t * s[1];
+            Cj[3 * x + 2] += t * s[2];
+            t *= s[3];
+            if (t < kMinTransmittance && --act == 0) --views_active;
           }
-          C[3 * size_t(x)] += t * s[0];
-          C[3 * size_t(x) + 1] += t * s[1];
-          C[3 * size_t(x) + 2] += t * s[2];
-          t *= s[3];
-          if (t < kMinTransmittance) --active;
         }
       }
-      const int x0 = layout.tile_x(view), y0 = layout.tile_y_top_down(view);
-      for (int x = 0; x < W && x < layout.tile_width(); ++x)
-        for (int ch = 0; ch < 3; ++ch)
-          quilt.at(x0 + x, y0 + y, ch) = C[3 * size_t(x) + ch] + T[size_t(x)] * background[ch];
+      for (int j = 0; j < V; ++j) {
+        const int x0 = layout.tile_x(j), y0 = layout.tile_y_top_down(j);
+        const float* Tj = T.data() + size_t(j) * W;
+        const float* Cj = C.data() + size_t(j) * W * 3;
+        for (int x = 0; x < W && x < layout.tile_width(); ++x)
+          for (int ch = 0; ch < 3; ++ch) quilt.at(x0 + x, y0 + y, ch) = Cj[3 * x + ch] + Tj[x] * background[ch];
+      }
     }
   }
 }
