@@ -31,11 +31,14 @@ CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg, float orbit_
   const SceneBounds core = robust_bounds(scene, 0.25, 0.75);
   const auto c = core.center();
   const glm::vec3 center(c[0], c[1], c[2]);
-  // Radius: 60% of the centres lie within it. A box (even a 1-99% one) would be decided by a
-  // background dome or far walls and put the camera outside them; this frames the subject.
-  const float radius = std::max(distance_quantile(scene, center, 0.6), 1e-3f);
+  // Radius: 90% of the centres lie within it; a bounding box (even a 1-99% one) would be decided
+  // by a background dome or far walls. When such an enclosing shell exists (the 99% distance
+  // far beyond the 90% one) the camera stays inside it, at 85% of its distance.
+  const float r90 = std::max(distance_quantile(scene, center, 0.9), 1e-3f);
+  const float r99 = std::max(distance_quantile(scene, center, 0.99), r90);
   const float half_fov = 0.5f * fov_y_deg * float(M_PI) / 180.0f;
-  const float distance = 1.2f * radius / std::sin(half_fov);
+  float distance = r90 / std::sin(half_fov);
+  if (r99 > 2.0f * r90) distance = std::min(distance, 0.85f * r99);
   const float orbit = orbit_deg * float(M_PI) / 180.0f;
   const glm::vec3 backward(-std::sin(orbit), 0.0f, -std::cos(orbit));
   CameraSpec s;

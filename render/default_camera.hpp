@@ -1,7 +1,8 @@
 #pragma once
 // A camera that frames a scene when the user gives none: it looks along the scene's +z axis
 // (the forward axis of COLMAP-trained 3DGS scenes) with -y up (COLMAP y points down), from far
-// enough that the sphere holding 60% of the centres fits the vertical field of view; the target (and so
+// enough that the sphere holding 90% of the centres fits the vertical field of view (but inside an
+// enclosing background shell, if there is one); the target (and so
 // the quilt's focal plane) is the centre of the 25-75% box. `orbit_deg` turns the camera about the up axis
 // through the centre.
 #include "render/camera_json.hpp"
