@@ -187,6 +187,11 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
   for (const auto& pc : positions) {
     const std::string stem = stem_of(board_p);
     BoardDetection b = detect_board(to_gray8(image_of(pc, stem)), set);
+    if (b.ids.size() < 8 && b.touches_border)
+      throw_input_error(
+          "{}: the screen is partly outside the photo (the board is cut off at the image "
+          "border, {} ChArUco corners left); step back or re-aim so the whole screen shows",
+          path_of(pc, stem), b.ids.size());
     if (b.ids.size() < 8)
       throw_input_error(
           "{}: no registration board found ({} ChArUco corners); show {} full screen, focus on "
@@ -273,7 +278,16 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
           path_of(pc, white_stem), 100 * (white.mean - black.mean));
     rep.clipped_fraction = white.clipped_fraction;
 
-    // Pattern identity and camera motion from the corner markers.
+    // Pattern identity and camera motion from the corner markers. A marker farther than a
+    // tenth of the image from where the registration puts it is a false detection.
+    std::vector<cv::Point2d> predicted_markers;
+    {
+      std::vector<ScreenUV> uv;
+      for (const auto& c : set.markers.centres_px) uv.push_back(panel_px_to_uv(nd, c));
+      predicted_markers = reg->uv_to_image(uv);
+    }
+    const double diag = std::hypot(size.width, size.height);
+    const double lens_px = double(size.width) / nominal_lens.pitch_periods();
     std::map<int, cv::Point2d> reference;
     std::string reference_path;
     int verified = 0;
@@ -284,6 +298,7 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
       std::map<int, cv::Point2d> own;
       std::set<int> others;
       for (const auto& [id, centre] : markers) {
+        if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > 0.1 * diag) continue;
         if (id / 4 == p.index) own[id % 4] = centre;
         else if (id / 4 < int(set.patterns.size())) others.insert(id / 4);
       }
@@ -295,45 +310,37 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
       if (reference.empty()) {
         reference = own;
         reference_path = path_of(pc, stem);
+        // The board capture has no corner markers: check it against this one through the
+        // registration (tolerance: a lens of apparent shift plus the pose error).
+        for (const auto& [corner, centre] : own) {
+          const double moved = cv::norm(predicted_markers[size_t(corner)] - centre);
+          if (moved > 4.0 + lens_px + 0.01 * diag)
+            throw_input_error(
+                "{}: the camera moved between the board capture and {} ({:.1f} px); use a "
+                "tripod and a remote release",
+                board_path, reference_path, moved);
+        }
         continue;
       }
+      std::vector<double> moved;
       for (const auto& [corner, centre] : own) {
         auto it = reference.find(corner);
-        if (it == reference.end()) continue;
-        const double moved = cv::norm(centre - it->second);
-        if (moved > std::max(options.max_motion_px, 0.005 * std::hypot(size.width, size.height)))
-          throw_input_error(
-              "{}: the camera moved between the captures of position {} (a corner marker is "
-              "{:.1f} px away from where {} shows it); use a tripod and a remote release",
-              path_of(pc, stem), pc.name, moved, reference_path);
+        if (it != reference.end()) moved.push_back(cv::norm(centre - it->second));
       }
+      if (moved.empty()) continue;
+      std::sort(moved.begin(), moved.end());
+      const double median = moved[moved.size() / 2];
+      if (median > std::max(options.max_motion_px, 0.005 * diag))
+        throw_input_error(
+            "{}: the camera moved between the captures of position {} (the corner markers are "
+            "{:.1f} px away from where {} shows them); use a tripod and a remote release",
+            path_of(pc, stem), pc.name, median, reference_path);
     }
     if (verified < int(set.patterns.size()) - 1)
       out.warnings.push_back(fmt::format(
           "{}: corner markers found in only {} of {} captures; pattern identity and camera "
           "motion could not be checked for the others",
           pc.name, verified, set.patterns.size() - 1));
-    // The board capture has no corner markers: check it against the white one through the
-    // registration (tolerance: half a lens of apparent shift plus the pose error).
-    if (reference.size() >= 3) {
-      std::vector<ScreenUV> uv;
-      std::vector<int> corners;
-      for (const auto& [corner, centre] : reference) {
-        uv.push_back(panel_px_to_uv(nd, set.markers.centres_px[size_t(corner)]));
-        corners.push_back(corner);
-      }
-      const auto predicted = reg->uv_to_image(uv);
-      const double lens_px =
-          double(size.width) / nominal_lens.pitch_periods();  // generous: screen <= photo
-      for (size_t j = 0; j < corners.size(); ++j) {
-        const double moved = cv::norm(predicted[j] - reference[corners[j]]);
-        if (moved > 4.0 + lens_px)
-          throw_input_error(
-              "{}: the camera moved between the board capture and {} ({:.1f} px); use a tripod "
-              "and a remote release",
-              board_path, reference_path, moved);
-      }
-    }
 
     std::vector<cv::Mat> captures;
     for (const auto* p : phase_p) {

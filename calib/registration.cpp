@@ -29,6 +29,19 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
   std::vector<int> marker_ids;
   cv::aruco::detectMarkers(gray8, board->dictionary, marker_corners, marker_ids, params,
                            rejected);
+  out.markers = int(marker_ids.size());
+  // The lit screen (the board's white) reaching the image border means it is cut off; the
+  // bezel and the room around it are dark.
+  double max_value = 0;
+  cv::minMaxLoc(gray8, nullptr, &max_value);
+  long bright = 0, edge = 0;
+  auto count = [&](int x, int y) {
+    ++edge;
+    if (gray8.at<uint8_t>(y, x) > 0.5 * max_value) ++bright;
+  };
+  for (int x = 0; x < gray8.cols; ++x) count(x, 0), count(x, gray8.rows - 1);
+  for (int y = 0; y < gray8.rows; ++y) count(0, y), count(gray8.cols - 1, y);
+  out.touches_border = max_value > 20 && bright > 0.02 * edge;
   if (marker_ids.size() < 4) return out;
   cv::aruco::interpolateCornersCharuco(marker_corners, marker_ids, gray8, board, out.image_px,
                                        out.ids, cv::noArray(), cv::noArray(), 2);

@@ -21,6 +21,8 @@ struct BoardDetection {
   std::vector<int> ids;                   // ChArUco corner ids
   std::vector<cv::Point2f> image_px;      // detected corners (distorted camera pixels)
   cv::Size image_size;
+  int markers = 0;               // ArUco markers of the board found
+  bool touches_border = false;   // some marker lies at the image border (screen cut off?)
 };
 
 // Detects the ChArUco corners in a photograph of the board pattern (8-bit grey).

@@ -1,0 +1,107 @@
+// The calibration patterns (DESIGN section 5): layout, pixel values, manifest round trip.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
+
+#include "calib/lens_model.hpp"
+#include "calib/patterns.hpp"
+#include "calib/registration.hpp"
+#include "calib/visual_json.hpp"
+#include "util/error.hpp"
+
+namespace lfd::calib {
+namespace {
+
+Calibration portrait() {
+  Calibration c;
+  c.display = read_visual_json(std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" /
+                               "calibrations" / "LKG-PORT-portrait.visual.json");
+  return c;
+}
+
+cv::Mat gray_quarter(const Image8& img) {
+  cv::Mat m(img.height, img.width, CV_8UC3, const_cast<uint8_t*>(img.pixels.data())), g, small;
+  cv::cvtColor(m, g, cv::COLOR_RGB2GRAY);
+  cv::resize(g, small, cv::Size(), 0.25, 0.25, cv::INTER_AREA);
+  return small;
+}
+
+TEST(PatternsGeneration, ListsBoardWhiteBlackAndKPhaseSteps) {
+  PatternOptions o;
+  o.phase_steps = 6;
+  const PatternSet set = plan_patterns(portrait(), o);
+  EXPECT_EQ(set.patterns.size(), 3u + 6u);
+  EXPECT_EQ(set.of_kind(PatternKind::kBoard).size(), 1u);
+  EXPECT_EQ(set.of_kind(PatternKind::kPhase).size(), 6u);
+  EXPECT_NE(set.find("00_board"), nullptr);
+  EXPECT_EQ(set.find("nonexistent"), nullptr);
+}
+
+TEST(PatternsGeneration, PhasePatternShowsTheNominalViewFractionSinusoid) {
+  const PatternSet set = plan_patterns(portrait());
+  const PatternInfo& p = *set.of_kind(PatternKind::kPhase).at(3);
+  const Image8 img = render_pattern(set, p);
+  const LensModel lens(set.nominal.display);
+  for (auto [x, row] : {std::pair{700, 900}, {800, 1500}, {401, 1203}})
+    for (int c = 0; c < 3; ++c) {
+      const double f = lens.subpixel_view_fraction(x, row, c);
+      const double expected = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (f - 3.0 / 8));
+      EXPECT_NEAR(img.at(x, row, c) / 255.0, expected, 0.5 / 255 + 1e-9);
+    }
+}
+
+TEST(PatternsGeneration, BoardCornersInTheManifestAreWhereTheBoardIsDrawn) {
+  const PatternSet set = plan_patterns(portrait());
+  const Image8 img = render_pattern(set, set.patterns.at(0));
+  const BoardDetection b = detect_board(gray_quarter(img), set);
+  ASSERT_GT(b.ids.size(), 20u);
+  for (size_t i = 0; i < b.ids.size(); ++i) {
+    // A quarter-size pixel centre i sits at full-size coordinate 4 i + 1.5.
+    const cv::Point2d full(b.image_px[i].x * 4 + 1.5, b.image_px[i].y * 4 + 1.5);
+    EXPECT_LT(cv::norm(full - set.board.corners_px.at(size_t(b.ids[i]))), 1.0) << b.ids[i];
+  }
+}
+
+TEST(PatternsGeneration, CornerMarkersEncodeThePatternIndex) {
+  const PatternSet set = plan_patterns(portrait());
+  const PatternInfo& p = set.patterns.at(5);
+  const auto markers = detect_corner_markers(gray_quarter(render_pattern(set, p)));
+  ASSERT_EQ(markers.size(), 4u);
+  for (const auto& [id, centre] : markers) {
+    EXPECT_EQ(id / 4, p.index);
+    const cv::Point2d expected = set.markers.centres_px.at(size_t(id % 4));
+    EXPECT_LT(cv::norm(cv::Point2d(centre.x * 4 + 1.5, centre.y * 4 + 1.5) - expected), 3.0);
+  }
+}
+
+TEST(PatternsGeneration, ManifestRoundTripsAndIsNotOverwrittenWithoutForce) {
+  const auto dir = std::filesystem::temp_directory_path() / "lfd_patterns_test";
+  std::filesystem::remove_all(dir);
+  PatternOptions o;
+  o.phase_steps = 3;
+  const PatternSet set = plan_patterns(portrait(), o);
+  write_pattern_set(dir, set, false);
+  for (const auto& p : set.patterns) EXPECT_TRUE(std::filesystem::exists(dir / "patterns" / p.file));
+  const PatternSet back = read_pattern_set(dir);
+  EXPECT_EQ(back.phase_steps, 3);
+  EXPECT_EQ(back.patterns.size(), set.patterns.size());
+  EXPECT_EQ(back.board.corners_px.size(), set.board.corners_px.size());
+  EXPECT_DOUBLE_EQ(back.nominal.display.pitch_lpi, set.nominal.display.pitch_lpi);
+  EXPECT_THROW(write_pattern_set(dir, set, false), InputError);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PatternsGeneration, MissingManifestNamesTheFileAndTheCommand) {
+  try {
+    read_pattern_set("/nonexistent/unit");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("manifest.json"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("lfd patterns"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace lfd::calib
