@@ -1,5 +1,6 @@
 #include "calib/registration.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <opencv2/aruco.hpp>
@@ -34,14 +35,13 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
   // bezel and the room around it are dark.
   double max_value = 0;
   cv::minMaxLoc(gray8, nullptr, &max_value);
-  long bright = 0, edge = 0;
-  auto count = [&](int x, int y) {
-    ++edge;
-    if (gray8.at<uint8_t>(y, x) > 0.5 * max_value) ++bright;
+  // Per edge: a cut-off screen lights a long stretch of it; glare spots only short ones.
+  auto lit_fraction = [&](cv::Mat line) {
+    return double(cv::countNonZero(line > 0.5 * max_value)) / double(line.total());
   };
-  for (int x = 0; x < gray8.cols; ++x) count(x, 0), count(x, gray8.rows - 1);
-  for (int y = 0; y < gray8.rows; ++y) count(0, y), count(gray8.cols - 1, y);
-  out.touches_border = max_value > 20 && bright > 0.02 * edge;
+  const double lit = std::max({lit_fraction(gray8.row(0)), lit_fraction(gray8.row(gray8.rows - 1)),
+                               lit_fraction(gray8.col(0)), lit_fraction(gray8.col(gray8.cols - 1))});
+  out.touches_border = max_value > 20 && lit > 0.15;
   if (marker_ids.size() < 4) return out;
   cv::aruco::interpolateCornersCharuco(marker_corners, marker_ids, gray8, board, out.image_px,
                                        out.ids, cv::noArray(), cv::noArray(), 2);
