@@ -1,5 +1,7 @@
 // lfd validate: crosstalk and view separation of a display (DESIGN section 1, job 3).
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "apps/cli.hpp"
@@ -7,9 +9,50 @@
 #include "calib/calibration_file.hpp"
 #include "calib/view_count.hpp"
 #include "util/progress.hpp"
+#include "util/atomic_file.hpp"
 #include "validate/report.hpp"
+#include "validate/view_count_check.hpp"
 
 namespace lfd::apps {
+
+namespace {
+
+int RunViewCountSweep(const calib::Calibration& truth, const std::string& list,
+                      const validate::ProfileOptions& options, const std::string& out_dir,
+                      bool json) {
+  std::vector<int> counts;
+  for (double v : parse_numbers(list, ',', size_t(std::count(list.begin(), list.end(), ',') + 1),
+                                "--sweep-views"))
+    counts.push_back(int(v));
+  int total = 0;
+  for (int v : counts) total += v + 1;
+  Progress progress("views sweep", total);
+  const validate::ViewCountSweep s = validate::sweep_view_counts(truth, counts, options, &progress);
+  progress.finish();
+  nlohmann::ordered_json j;
+  j["recommended_views"] = s.recommended;
+  j["saturation_views"] = s.saturation;
+  j["blur_floor"] = s.blur_floor;
+  for (const auto& p : s.points)
+    j["points"].push_back({{"views", p.views}, {"parallax_blur", p.parallax_blur},
+                           {"mean_separation", p.mean_separation},
+                           {"mean_adjacent_crosstalk", p.mean_adjacent_crosstalk}});
+  write_text_atomic(std::filesystem::path(out_dir) / "view_count_sweep.json", j.dump(2) + "\n");
+  if (json) {
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  std::printf("| views | parallax blur (cone fraction) | blur / floor | mean V | mean X adjacent |\n"
+              "|---|---|---|---|---|\n");
+  for (const auto& p : s.points)
+    std::printf("| %d | %.4f | %.2f | %.3f | %.3f |\n", p.views, p.parallax_blur,
+                p.parallax_blur / s.blur_floor, p.mean_separation, p.mean_adjacent_crosstalk);
+  std::printf("blur within 10%% of its floor from %d views; the rule recommends %d\n", s.saturation,
+              s.recommended);
+  return 0;
+}
+
+}  // namespace
 
 int RunValidate(int argc, char** argv) {
   CLI::App app{
@@ -29,8 +72,6 @@ int RunValidate(int argc, char** argv) {
       ->required();
   app.add_option("--assumed", assumed_path, "calibration the interlacer uses (default: the true one)");
   app.add_option("--views", options.views, "views in the quilt (default: recommended for the display)");
-  app.add_option("--distance", options.distance_m, "eye distance from the panel in metres")
-      ->capture_default_str();
   app.add_option("--points", options.panel_points, "panel points averaged over")
       ->capture_default_str();
   app.add_option("--angles-per-view", options.angles_per_view, "direction samples per view")
@@ -42,6 +83,10 @@ int RunValidate(int argc, char** argv) {
   app.add_option("--blend", blend, "the interlacer's view selection: nearest or linear")
       ->capture_default_str()
       ->check(CLI::IsMember({"nearest", "linear"}));
+  std::string sweep;
+  app.add_option("--sweep-views", sweep,
+                 "check the view-count rule instead: parallax blur and separation for each of these "
+                 "ascending view counts, e.g. 16,24,32,45,64,96");
   app.add_flag("--json", json, "print the figures as JSON on stdout");
   app.add_option("--out", out_dir, "report directory")->required();
   if (auto code = parse(app, argc, argv)) return *code;
@@ -49,6 +94,7 @@ int RunValidate(int argc, char** argv) {
   options.check();
 
   const calib::Calibration truth = calib::read_calibration(truth_path);
+  if (!sweep.empty()) return RunViewCountSweep(truth, sweep, options, out_dir, json);
   if (options.views == 0) options.views = calib::recommend_view_count(truth).views;
   std::vector<std::pair<std::string, std::string>> runs;  // case name, assumed file
   if (!assumed_path.empty()) runs.emplace_back("assumed", assumed_path);

@@ -26,14 +26,16 @@ ViewCountAdvice recommend_view_count(const Calibration& calibration) {
   const LensModel lens(calibration.display, calibration.correction);
   ViewCountAdvice a;
   // A subpixel covers 1/(subpixels per lens) of the phase: seen through the lens it emits a
-  // box of that width in phase, blurred by the lens point spread sigma_A. Views narrower than
-  // twice the combined spread cannot be told apart; they only add crosstalk and render cost.
+  // box of that width in phase, blurred by the lens point spread sigma_A. Measured with
+  // `lfd validate --sweep-views` (docs/display-model.md), the parallax blur a viewer sees is
+  // within ~10 % of its floor (the lens blur) once the views are narrower than 1.6 sigma_eff:
+  // more views only add crosstalk and render cost.
   const double subpixel_phase_width = 1.0 / lens.subpixels_per_lens();
   const double sigma_a = calibration.phase_blur_sigma.value_or(kDefaultPhaseBlurSigma);
   const double sigma_eff = std::sqrt(sigma_a * sigma_a + subpixel_phase_width *
                                                              subpixel_phase_width / 12.0);
   a.sampling_limit = lens.subpixels_per_lens() * std::max(1.0, std::abs(calibration.display.slope));
-  a.blur_limit = 1.0 / (2.0 * sigma_eff);
+  a.blur_limit = 1.0 / (kViewWidthInSigmas * sigma_eff);
   // A phase error (calibration uncertainty or an uncorrected warp) shifts every view; keep it
   // under a quarter of a view.
   double phase_error = 0.0;
@@ -51,7 +53,7 @@ ViewCountAdvice recommend_view_count(const Calibration& calibration) {
   a.cols = best.cols;
   a.rows = best.rows;
   a.rule = fmt::format(
-      "views = largest quilt grid <= min(sampling {:.0f}, blur 1/(2*sigma_eff) = {:.1f}, "
+      "views = largest quilt grid <= min(sampling {:.0f}, blur 1/(1.6*sigma_eff) = {:.1f}, "
       "accuracy 1/(4*phase error) = {}) with sigma_eff = sqrt(sigma_A^2 + w_sub^2/12) = "
       "{:.4f} periods (sigma_A {:.4f}{}, subpixel phase width w_sub {:.4f})",
       a.sampling_limit, a.blur_limit,
