@@ -48,7 +48,8 @@ int RunBenchCalibration(int argc, char** argv) {
                "\nExample:\n  lfd bench calibration --json bench_calibration.json",
                "calibration"};
   std::string json_path, data_dir = "../shared/data";  // from the repository root
-  int width_px = 1280, positions = 3, seeds = 1, supersample = 2;
+  int width_px = 1280, positions = 3, seeds = 1, supersample = 2, board_squares = 6;
+  std::string only;
   app.add_option("--json", json_path, "write the figures as JSON to this file");
   app.add_option("--data", data_dir, "folder with calibrations/*.visual.json")
       ->capture_default_str();
@@ -61,6 +62,10 @@ int RunBenchCalibration(int argc, char** argv) {
   app.add_option("--supersample", supersample, "simulator samples per camera pixel per axis")
       ->capture_default_str()
       ->check(CLI::Range(1, 8));
+  app.add_option("--only", only, "run only the displays whose label contains this");
+  app.add_option("--board-squares", board_squares, "ChArUco squares along the short side")
+      ->capture_default_str()
+      ->check(CLI::Range(3, 20));
   app.add_option("--seeds", seeds, "synthetic units per display kind")
       ->capture_default_str()
       ->check(CLI::Range(1, 20));
@@ -74,12 +79,15 @@ int RunBenchCalibration(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0;
   for (const auto& u : kUnits) {
+    if (!only.empty() && std::string(u.label).find(only) == std::string::npos) continue;
     const auto real = calib::read_visual_json(std::filesystem::path(data_dir) / "calibrations" / u.file);
     for (int seed = 1; seed <= seeds; ++seed) {
       calib::SyntheticUnitOptions so;
       so.seed = uint64_t(seed);
       const calib::SyntheticUnit unit = calib::make_synthetic_unit(real, so);
-      const calib::PatternSet set = calib::plan_patterns(unit.nominal);
+      calib::PatternOptions po;
+      po.board_squares_short = board_squares;
+      const calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
       calib::CaptureRig rig =
           calib::make_capture_rig(unit.truth.display, width_px, positions, false, uint64_t(seed));
       rig.effects.supersample = supersample;
