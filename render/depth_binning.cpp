@@ -9,7 +9,7 @@
 namespace lfd::render {
 
 DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geometry,
-                         const ReferenceCamera& ref, int chunks) {
+                         const ReferenceCamera& ref, int chunks, ChunkBinning binning) {
   const Camera& cam = ref.camera;
   const float lim_x = 1.3f * cam.tan_half_fov_x(), lim_y = 1.3f * cam.tan_half_fov_y();
   std::vector<std::pair<float, uint32_t>> depth_index;
@@ -22,10 +22,26 @@ DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geomet
   }
   std::sort(depth_index.begin(), depth_index.end());
 
-  DepthChunks out;
+  // Cuts: indices into the sorted list where a chunk begins.
   const size_t n = depth_index.size();
-  for (int k = 0; k < chunks; ++k) {
-    const size_t b = n * size_t(k) / size_t(chunks), e = n * size_t(k + 1) / size_t(chunks);
+  std::vector<size_t> cuts;
+  const int count_chunks = binning == ChunkBinning::kMixed ? chunks - chunks / 2 : chunks;
+  for (int k = 0; k <= count_chunks; ++k) cuts.push_back(n * size_t(k) / size_t(count_chunks));
+  if (binning == ChunkBinning::kMixed && n > 0 && chunks / 2 > 0) {
+    const int disparity_chunks = chunks / 2;
+    const double w_near = 1.0 / depth_index.front().first, w_far = 1.0 / depth_index.back().first;
+    for (int k = 1; k < disparity_chunks; ++k) {
+      const float z = float(1.0 / (w_near + (w_far - w_near) * double(k) / double(disparity_chunks)));
+      cuts.push_back(size_t(std::lower_bound(depth_index.begin(), depth_index.end(),
+                                             std::pair<float, uint32_t>(z, 0)) - depth_index.begin()));
+    }
+    std::sort(cuts.begin(), cuts.end());
+    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  }
+
+  DepthChunks out;
+  for (size_t c = 0; c + 1 < cuts.size(); ++c) {
+    const size_t b = cuts[c], e = cuts[c + 1];
     if (b == e) continue;
     std::vector<uint32_t> ids(e - b);
     for (size_t i = b; i < e; ++i) ids[i - b] = depth_index[i].second;

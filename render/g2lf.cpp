@@ -25,6 +25,12 @@ PlanePrecision parse_plane_precision(const std::string& name) {
   throw_input_error("--precision: '{}' is not u8 or f32", name);
 }
 
+ChunkBinning parse_chunk_binning(const std::string& name) {
+  if (name == "quantile") return ChunkBinning::kQuantile;
+  if (name == "mixed") return ChunkBinning::kMixed;
+  throw_input_error("--binning: '{}' is not quantile or mixed", name);
+}
+
 ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
                          const QuiltLayout& layout, const G2lfOptions& options,
                          const RasterSettings& settings, G2lfStats* stats) {
@@ -37,7 +43,7 @@ ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geomet
   const float d_shift = options.d_shift >= 0.0f ? options.d_shift
                                                 : make_reference_camera(geometry, 0.0f, 1).d_forward;
   const ReferenceCamera ref = make_reference_camera(geometry, d_shift, options.plane_scale);
-  const DepthChunks chunks = bin_by_depth(scene, geometry, ref, options.chunks);
+  const DepthChunks chunks = bin_by_depth(scene, geometry, ref, options.chunks, options.binning);
   const auto t1 = Clock::now();
   const SweepingPlanes planes = render_sweeping_planes(scene, geometry, ref, chunks, options, settings);
   const auto t2 = Clock::now();

@@ -18,6 +18,15 @@ namespace lfd::render {
 
 enum class PlaneFilter { kNearest, kBilinear };
 enum class PlanePrecision { kU8, kF32 };
+// How the depth range is cut into chunks (stage 1).
+//   kQuantile: the paper's: equal Gaussian counts per chunk. Any monotone key (depth, inverse
+//     depth) gives the same chunks, so "quantiles of disparity" is the same method.
+//   kMixed: the union of N_chunk/2 count quantiles and N_chunk/2 cuts uniform in inverse
+//     reference depth (disparity) over the binned range. The disparity cuts bound every chunk's
+//     parallax error (dx_j |1/z - 1/d_k|) also where few, large Gaussians cover much of the
+//     image (backgrounds, ground near the camera), which count quantiles give one or two
+//     planes; the count cuts keep the paper's density where the Gaussians are.
+enum class ChunkBinning { kQuantile, kMixed };
 
 struct G2lfOptions {
   int chunks = 64;            // N_chunk
@@ -29,21 +38,25 @@ struct G2lfOptions {
   PlaneFilter filter = PlaneFilter::kNearest;
   PlanePrecision precision = PlanePrecision::kU8;  // the paper's default
   bool adaptive_filter = true;  // Eq. gs_prefilter_fix; false: the constant 0.3 px^2
+  ChunkBinning binning = ChunkBinning::kQuantile;
   void check() const;           // throws InputError naming the bad option
 };
 
 PlaneFilter parse_plane_filter(const std::string& name);        // "nearest" | "bilinear"
 PlanePrecision parse_plane_precision(const std::string& name);  // "u8" | "f32"
+ChunkBinning parse_chunk_binning(const std::string& name);      // "quantile" | "mixed"
 
 // Stage 1 (depth_binning.cpp): Gaussians whose centre lies in the reference frustum (z > 0.2,
-// |ndc| <= 1.3 as the rasterizer's guard band), sorted by reference depth and split into
-// `chunks` runs of equal size; each plane sits at the median depth of its chunk.
+// |ndc| <= 1.3 as the rasterizer's guard band), sorted by reference depth and split into at most
+// `chunks` runs (kQuantile: of equal size; kMixed: see ChunkBinning); each plane sits at the
+// median depth of its chunk.
 struct DepthChunks {
   std::vector<std::vector<uint32_t>> members;  // non-empty chunks, front to back
   std::vector<float> plane_depth;              // d_k: depth from the *base* camera (Eq. u_prime)
 };
 DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geometry,
-                         const ReferenceCamera& ref, int chunks);
+                         const ReferenceCamera& ref, int chunks,
+                         ChunkBinning binning = ChunkBinning::kQuantile);
 
 // Stage 2 (sweeping_planes.cpp): the planes C (premultiplied RGB) and T, RGBA per texel,
 // either 8-bit (value * 255 rounded, colour clamped to [0, 1]) or float.
