@@ -29,9 +29,13 @@ DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geomet
   for (int k = 0; k <= count_chunks; ++k) cuts.push_back(n * size_t(k) / size_t(count_chunks));
   if (binning == ChunkBinning::kMixed && n > 0 && chunks / 2 > 0) {
     const int disparity_chunks = chunks / 2;
-    const double w_near = 1.0 / depth_index.front().first, w_far = 1.0 / depth_index.back().first;
+    // Disparity = inverse *base-camera* depth: the parallax of a point drawn on a plane at the
+    // wrong depth grows with |1/z - 1/d_k| in base depths, in the outer views (dx_j) and, when
+    // the reference camera sits ahead of the base camera (D_shift < D_forward), in all views.
+    const double fwd = ref.d_forward_eff;
+    const double w_near = 1.0 / (depth_index.front().first + fwd), w_far = 1.0 / (depth_index.back().first + fwd);
     for (int k = 1; k < disparity_chunks; ++k) {
-      const float z = float(1.0 / (w_near + (w_far - w_near) * double(k) / double(disparity_chunks)));
+      const float z = float(1.0 / (w_near + (w_far - w_near) * double(k) / double(disparity_chunks)) - fwd);
       cuts.push_back(size_t(std::lower_bound(depth_index.begin(), depth_index.end(),
                                              std::pair<float, uint32_t>(z, 0)) - depth_index.begin()));
     }

@@ -124,7 +124,7 @@ GaussianScene cluster_before_sparse_background() {
   return s;
 }
 
-// Reference depth span of each chunk in inverse depth, and the whole binned range.
+// Span of each chunk in inverse base-camera depth, and the whole binned range.
 std::pair<double, double> widest_disparity_span(const GaussianScene& s, const ReferenceCamera& ref,
                                                 const DepthChunks& c) {
   double widest = 0, w_min = 1e30, w_max = 0;
@@ -132,7 +132,7 @@ std::pair<double, double> widest_disparity_span(const GaussianScene& s, const Re
     double lo = 1e30, hi = 0;
     for (uint32_t i : members) {
       const auto& p = s.positions[i];
-      const double w = 1.0 / ref.camera.to_camera(glm::vec3(p[0], p[1], p[2])).z;
+      const double w = 1.0 / (ref.camera.to_camera(glm::vec3(p[0], p[1], p[2])).z + ref.d_forward_eff);
       lo = std::min(lo, w), hi = std::max(hi, w);
     }
     widest = std::max(widest, hi - lo);
@@ -173,6 +173,7 @@ TEST(G2lf, MixedBinningRendersASparseBackgroundBetterThanCountQuantiles) {
   const ImageF truth = render_quilt_per_view(s, g, layout);
   G2lfOptions o;
   o.chunks = 16;
+  o.binning = ChunkBinning::kQuantile;
   const double p_quantile = psnr(render_quilt_g2lf(s, g, layout, o), truth);
   o.binning = ChunkBinning::kMixed;
   const double p_mixed = psnr(render_quilt_g2lf(s, g, layout, o), truth);
