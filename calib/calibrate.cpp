@@ -5,6 +5,7 @@
 #include <cmath>
 #include <ctime>
 #include <numbers>
+#include <array>
 #include <set>
 
 #include <opencv2/imgcodecs.hpp>
@@ -228,21 +229,24 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     PositionReport rep;
     rep.name = pc.name;
     std::optional<Registration> reg;
+    std::vector<cv::Point2d> board_shift;
+    // The lens array shows a panel feature displaced by (c - 1/2) lens periods along the row
+    // (lens_solver.cpp, shift_fraction); this moves it back for the pose.
+    auto lens_shift_px = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
+      const Eigen::Vector3d p = uv_to_display_m(nd, panel_px_to_uv(nd, px));
+      const double f_seen = 0.5 + (camera.x() - p.x()) / camera.z() * k_nom;
+      double c = nd.inv_view ? 1.0 - f_seen : f_seen;
+      c -= std::floor(c);
+      return cv::Point2d(-(c - 0.5) / nominal_lens.pitch_periods() * nd.screen_w, 0.0);
+    };
     try {
       reg.emplace(boards[i], set, out.camera);
       // The lens array shows each board corner displaced by (c - 1/2) lens periods along the
       // row (lens_solver.cpp, shift_fraction); move the corners back for the pose.
       const Eigen::Vector3d c0 = reg->camera_position_m();
-      std::vector<cv::Point2d> shift;
-      for (int id : boards[i].ids) {
-        const cv::Point2d px = set.board.corners_px.at(size_t(id));
-        const Eigen::Vector3d p = uv_to_display_m(nd, panel_px_to_uv(nd, px));
-        const double f_seen = 0.5 + (c0.x() - p.x()) / c0.z() * k_nom;
-        double c = nd.inv_view ? 1.0 - f_seen : f_seen;
-        c -= std::floor(c);
-        shift.emplace_back(-(c - 0.5) / nominal_lens.pitch_periods() * nd.screen_w, 0.0);
-      }
-      reg.emplace(boards[i], set, out.camera, shift);
+      for (int id : boards[i].ids)
+        board_shift.push_back(lens_shift_px(set.board.corners_px.at(size_t(id)), c0));
+      reg.emplace(boards[i], set, out.camera, board_shift);
     } catch (const InputError& e) {
       throw_input_error("{}: {}", board_path, e.what());
     }
@@ -289,18 +293,24 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     const double diag = std::hypot(size.width, size.height);
     const double lens_px = double(size.width) / nominal_lens.pitch_periods();
     std::map<int, cv::Point2d> reference;
+    std::map<int, std::vector<std::array<cv::Point2d, 4>>> marker_corners;
     std::string reference_path;
     int verified = 0;
     for (const auto& p : set.patterns) {
       if (p.kind == PatternKind::kBoard) continue;
       const std::string stem = stem_of(&p);
-      const auto markers = detect_corner_markers(to_gray8(image_of(pc, stem)));
+      const auto markers = detect_corner_marker_corners(to_gray8(image_of(pc, stem)));
       std::map<int, cv::Point2d> own;
       std::set<int> others;
-      for (const auto& [id, centre] : markers) {
+      for (const auto& [id, corners] : markers) {
+        const cv::Point2d centre = (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25;
         if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > 0.1 * diag) continue;
-        if (id / 4 == p.index) own[id % 4] = centre;
-        else if (id / 4 < int(set.patterns.size())) others.insert(id / 4);
+        if (id / 4 == p.index) {
+          own[id % 4] = centre;
+          marker_corners[id % 4].push_back(corners);
+        } else if (id / 4 < int(set.patterns.size())) {
+          others.insert(id / 4);
+        }
       }
       if (own.empty() && !others.empty())
         throw_input_error("{}: shows pattern {}, expected {}", path_of(pc, stem),
@@ -341,6 +351,30 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
           "{}: corner markers found in only {} of {} captures; pattern identity and camera "
           "motion could not be checked for the others",
           pc.name, verified, set.patterns.size() - 1));
+
+    // The corner markers, averaged over the captures, add correspondences at the far corners
+    // of the screen, where they constrain the perspective (and so the camera's lateral
+    // position) most.
+    if (options.use_corner_markers) {
+      ExtraPoints extra;
+      for (const auto& [corner, seen] : marker_corners) {
+        if (seen.size() < 3) continue;
+        const auto panel = corner_marker_panel_px(set, corner);
+        for (size_t k = 0; k < 4; ++k) {
+          cv::Point2d mean(0, 0);
+          for (const auto& c : seen) mean += c[k] * (1.0 / double(seen.size()));
+          extra.image_px.emplace_back(mean);
+          extra.panel_px.push_back(panel[k]);
+          extra.shift_px.push_back(lens_shift_px(panel[k], reg->camera_position_m()));
+        }
+      }
+      if (!extra.image_px.empty()) {
+        reg.emplace(boards[i], set, out.camera, board_shift, extra);
+        rep.board_corners = reg->corner_count();
+        rep.reprojection_rms_px = reg->reprojection_rms_px();
+        rep.camera_m = reg->camera_position_m();
+      }
+    }
 
     std::vector<cv::Mat> captures;
     for (const auto* p : phase_p) {

@@ -59,19 +59,34 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
   return out;
 }
 
-std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8) {
+std::map<int, std::array<cv::Point2d, 4>> detect_corner_marker_corners(const cv::Mat& gray8) {
   std::vector<std::vector<cv::Point2f>> corners, rejected;
   std::vector<int> ids;
   auto params = cv::aruco::DetectorParameters::create();
   params->cornerRefinementMethod = cv::aruco::CORNER_REFINE_SUBPIX;
   cv::aruco::detectMarkers(gray8, marker_dictionary(), corners, ids, params, rejected);
-  std::map<int, cv::Point2d> out;
-  for (size_t i = 0; i < ids.size(); ++i) {
-    cv::Point2d c(0, 0);
-    for (const auto& p : corners[i]) c += cv::Point2d(p) * 0.25;
-    out[ids[i]] = c;
-  }
+  std::map<int, std::array<cv::Point2d, 4>> out;
+  for (size_t i = 0; i < ids.size(); ++i)
+    for (int k = 0; k < 4; ++k) out[ids[i]][size_t(k)] = cv::Point2d(corners[i][size_t(k)]);
   return out;
+}
+
+std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8) {
+  std::map<int, cv::Point2d> out;
+  for (const auto& [id, c] : detect_corner_marker_corners(gray8))
+    out[id] = (c[0] + c[1] + c[2] + c[3]) * 0.25;
+  return out;
+}
+
+std::array<cv::Point2d, 4> corner_marker_panel_px(const PatternSet& set, int corner) {
+  // The marker occupies pixels x0 .. x0 + side - 1 (patterns.cpp), so its outer corners sit
+  // on pixel boundaries, half a pixel outside the first and last pixel centres.
+  const auto& m = set.markers;
+  const cv::Point2d c = m.centres_px.at(size_t(corner));
+  const double x0 = std::lround(c.x + 0.5 - m.side_px / 2.0) - 0.5;
+  const double y0 = std::lround(c.y + 0.5 - m.side_px / 2.0) - 0.5;
+  const double x1 = x0 + m.side_px, y1 = y0 + m.side_px;
+  return {cv::Point2d(x0, y0), cv::Point2d(x1, y0), cv::Point2d(x1, y1), cv::Point2d(x0, y1)};
 }
 
 namespace {
@@ -131,17 +146,28 @@ CameraIntrinsics self_calibrate(const std::vector<BoardDetection>& boards, const
 
 Registration::Registration(const BoardDetection& board, const PatternSet& set,
                            const CameraIntrinsics& camera,
-                           const std::vector<cv::Point2d>& panel_shift_px)
+                           const std::vector<cv::Point2d>& panel_shift_px,
+                           const ExtraPoints& extra)
     : camera_(camera), display_(set.nominal.display) {
-  corners_ = int(board.ids.size());
-  if (corners_ < 8) throw InputError("too few board corners for registration");
+  if (board.ids.size() < 8) throw InputError("too few board corners for registration");
   const cv::Mat K(camera_.camera_matrix), D = distortion_mat(camera_);
 
+  std::vector<cv::Point2f> image_px = board.image_px;
+  std::vector<cv::Point2d> panel_px, shift = panel_shift_px;
+  for (int id : board.ids) panel_px.push_back(set.board.corners_px.at(size_t(id)));
+  if (shift.size() != panel_px.size()) shift.assign(panel_px.size(), cv::Point2d(0, 0));
+  for (size_t i = 0; i < extra.image_px.size(); ++i) {
+    image_px.push_back(extra.image_px[i]);
+    panel_px.push_back(extra.panel_px.at(i));
+    shift.push_back(extra.shift_px.empty() ? cv::Point2d(0, 0) : extra.shift_px.at(i));
+  }
+  corners_ = int(image_px.size());
+
   std::vector<cv::Point2f> undistorted;
-  cv::undistortPoints(board.image_px, undistorted, K, D, cv::noArray(), K);
+  cv::undistortPoints(image_px, undistorted, K, D, cv::noArray(), K);
   std::vector<cv::Point2f> uv;
-  for (int id : board.ids) {
-    const ScreenUV p = panel_px_to_uv(display_, set.board.corners_px.at(size_t(id)));
+  for (const auto& px : panel_px) {
+    const ScreenUV p = panel_px_to_uv(display_, px);
     uv.emplace_back(float(p.u), float(p.v));
   }
   // Robust first (a corner misread on a glare spot), then least squares on the inliers.
@@ -150,13 +176,14 @@ Registration::Registration(const BoardDetection& board, const PatternSet& set,
   if (H.empty()) throw InputError("the board corners do not fit a homography");
   homography_ = cv::Matx33d(H);
 
-  const auto objects = object_points(set, board.ids, panel_shift_px);
   std::vector<cv::Point3f> obj_in;
   std::vector<cv::Point2f> img_in;
   for (int i = 0; i < corners_; ++i)
     if (inliers.at<uint8_t>(i)) {
-      obj_in.push_back(objects[size_t(i)]);
-      img_in.push_back(board.image_px[size_t(i)]);
+      const Eigen::Vector3d m =
+          uv_to_display_m(display_, panel_px_to_uv(display_, panel_px[size_t(i)] + shift[size_t(i)]));
+      obj_in.emplace_back(float(m.x()), float(m.y()), 0.0f);
+      img_in.push_back(image_px[size_t(i)]);
     }
   cv::solvePnP(obj_in, img_in, K, D, rvec_, tvec_, false, cv::SOLVEPNP_IPPE);
   cv::solvePnPRefineLM(obj_in, img_in, K, D, rvec_, tvec_);

@@ -4,6 +4,7 @@
 // they give the homography (undistorted camera pixel -> panel (u, v)) and the camera pose in
 // the display frame (DESIGN section 3: metres, panel centre origin, y up, viewer at z > 0).
 // Without intrinsics, boards seen from >= 3 positions self-calibrate them.
+#include <array>
 #include <map>
 #include <string>
 #include <vector>
@@ -30,6 +31,17 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set);
 
 // Centres of the ArUco corner markers found in a capture, by marker id.
 std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8);
+// Their four outer corners (marker order TL, TR, BR, BL as drawn), by marker id.
+std::map<int, std::array<cv::Point2d, 4>> detect_corner_marker_corners(const cv::Mat& gray8);
+// Panel positions (OpenCV pixel coordinates) of the outer corners of corner marker `corner`.
+std::array<cv::Point2d, 4> corner_marker_panel_px(const PatternSet& set, int corner);
+
+// Extra correspondences for the registration (the corner markers, averaged over captures).
+struct ExtraPoints {
+  std::vector<cv::Point2f> image_px;
+  std::vector<cv::Point2d> panel_px;
+  std::vector<cv::Point2d> shift_px;  // as panel_shift_px, one per point (or empty)
+};
 
 // Intrinsics from the boards of >= 3 positions (cv::aruco::calibrateCameraCharuco).
 // Throws InputError if fewer than 3 usable boards.
@@ -46,7 +58,8 @@ class Registration {
   // moves the corners' physical panel positions for the pose: the lens array shows each
   // corner displaced by up to half a lens (see calibrate.cpp), which the pose must not absorb.
   Registration(const BoardDetection& board, const PatternSet& set, const CameraIntrinsics& camera,
-               const std::vector<cv::Point2d>& panel_shift_px = {});
+               const std::vector<cv::Point2d>& panel_shift_px = {},
+               const ExtraPoints& extra = {});
 
   const CameraIntrinsics& camera() const { return camera_; }
   Eigen::Vector3d camera_position_m() const { return position_m_; }
