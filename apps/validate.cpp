@@ -10,6 +10,8 @@
 #include "calib/view_count.hpp"
 #include "util/progress.hpp"
 #include "util/atomic_file.hpp"
+#include "util/error.hpp"
+#include "validate/miscalibration.hpp"
 #include "validate/report.hpp"
 #include "validate/view_count_check.hpp"
 
@@ -63,7 +65,8 @@ int RunValidate(int argc, char** argv) {
       "With --assumed the true-calibration case is measured too, for comparison.\n"
       "\nExamples:\n"
       "  lfd validate --calibration LKG-APW92011.visual.json --out report/\n"
-      "  lfd validate --calibration truth.json --assumed recovered.json --views 24 --out report/",
+      "  lfd validate --calibration truth.json --assumed recovered.json --views 24 --out report/\n"
+      "  lfd validate --calibration LKG-APW92011.visual.json --slant-error 0.01 --out report/",
       "validate"};
   std::string truth_path, assumed_path, out_dir;
   validate::ProfileOptions options;
@@ -71,6 +74,14 @@ int RunValidate(int argc, char** argv) {
   app.add_option("--calibration", truth_path, "TRUE calibration (calibration.json or visual.json)")
       ->required();
   app.add_option("--assumed", assumed_path, "calibration the interlacer uses (default: the true one)");
+  validate::Miscalibration error;
+  app.add_option("--slant-error", error.slant_deg,
+                 "instead of --assumed: the truth with its slant off by this many degrees");
+  app.add_option("--pitch-error", error.pitch_relative,
+                 "... with its pitch off by this fraction (e.g. 2e-5)");
+  app.add_option("--center-error", error.center_periods, "... with its center off (lens periods)");
+  app.add_flag("--no-correction", error.drop_correction,
+               "... without its correction field (what a plain visual.json export shows)");
   app.add_option("--views", options.views, "views in the quilt (default: recommended for the display)");
   app.add_option("--points", options.panel_points, "panel points averaged over")
       ->capture_default_str();
@@ -96,17 +107,24 @@ int RunValidate(int argc, char** argv) {
   const calib::Calibration truth = calib::read_calibration(truth_path);
   if (!sweep.empty()) return RunViewCountSweep(truth, sweep, options, out_dir, json);
   if (options.views == 0) options.views = calib::recommend_view_count(truth).views;
-  std::vector<std::pair<std::string, std::string>> runs;  // case name, assumed file
-  if (!assumed_path.empty()) runs.emplace_back("assumed", assumed_path);
-  runs.emplace_back("true", truth_path);
+  if (!assumed_path.empty() && !error.empty())
+    throw InputError("--assumed and the --*-error options are alternatives: give one");
+  struct Run {
+    std::string name, source;
+    calib::Calibration assumed;
+  };
+  std::vector<Run> runs;
+  if (!assumed_path.empty()) runs.push_back({"assumed", assumed_path, calib::read_calibration(assumed_path)});
+  if (!error.empty())
+    runs.push_back({"miscalibrated", truth_path + " with " + error.describe(), validate::apply(truth, error)});
+  runs.push_back({"true", truth_path, truth});
 
   std::vector<validate::ValidationCase> cases;
-  for (const auto& [name, path] : runs) {
-    const calib::Calibration assumed = path == truth_path ? truth : calib::read_calibration(path);
+  for (const auto& [name, source, assumed] : runs) {
     validate::ValidationCase c;
     c.name = name;
     c.truth_source = truth_path;
-    c.assumed_source = path;
+    c.assumed_source = source;
     Progress progress("validate " + name, options.views + 1);
     c.profiles = validate::measure_view_profiles(truth, assumed, options, &progress);
     progress.finish();

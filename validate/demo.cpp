@@ -18,6 +18,7 @@
 #include "util/atomic_file.hpp"
 #include "util/image.hpp"
 #include "validate/demo_report.hpp"
+#include "validate/miscalibration.hpp"
 #include "validate/report.hpp"
 #include "validate/view_metrics.hpp"
 
@@ -40,12 +41,6 @@ calib::CorrectionField smooth_warp(double amplitude) {
                                    0.4 * (u - 0.5) * (v - 0.5) * 4.0);
     }
   return calib::CorrectionField(nx, ny, c);
-}
-
-calib::Calibration with_slant_error(calib::Calibration c, double delta_deg) {
-  const double slant = std::atan(1.0 / c.display.slope) + delta_deg * std::numbers::pi / 180.0;
-  c.display.slope = 1.0 / std::tan(slant);
-  return c;
 }
 
 class Step {
@@ -173,7 +168,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
     const std::vector<std::pair<std::string, calib::Calibration>> configs = {
         {"own calibration", assumed},
         {"factory visual.json (no warp correction)", factory},
-        {"slant off by 0.01 deg", with_slant_error(assumed, 0.01)}};
+        {"slant off by 0.01 deg", apply(assumed, Miscalibration{.slant_deg = 0.01})}};
     for (const auto& [name, cal] : configs) {
       ValidationCase c;
       c.name = name;
