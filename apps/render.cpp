@@ -70,7 +70,7 @@ int RunRender(int argc, char** argv) {
                "  lfd render --scene s.ply --view 22 --out view.png",
                "render"};
   std::string scene_path, method = "g2lf", size_text, out, camera_path, calibration_path;
-  std::string filter = "nearest", precision = "u8", background_text = "0,0,0";
+  std::string filter = "nearest", precision = "u8", binning = "mixed", background_text = "0,0,0";
   int views = 45, cols = 5, rows = 9, view = -1;
   float orbit_deg = 0.0f, focal_distance = 0.0f, view_cone_deg = -1.0f;
   render::G2lfOptions g2lf;
@@ -85,6 +85,9 @@ int RunRender(int argc, char** argv) {
   app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
   app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")->capture_default_str();
   app.add_option("--precision", precision, "G2LF: plane storage, u8 or f32")->capture_default_str();
+  app.add_option("--binning", binning,
+                 "G2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
+                 "quantile (the paper's equal counts)")->capture_default_str();
   app.add_option("--shift", g2lf.d_shift,
                  "G2LF: D_shift, move the reference camera back by this (scene units; default: by "
                  "D_forward, to the base camera; 0 = the paper's setting)");
@@ -102,6 +105,7 @@ int RunRender(int argc, char** argv) {
 
   g2lf.filter = render::parse_plane_filter(filter);
   g2lf.precision = render::parse_plane_precision(precision);
+  g2lf.binning = render::parse_chunk_binning(binning);
   g2lf.check();
   const auto bg = parse_numbers(background_text, ',', 3, "--background");
   render::RasterSettings settings;
