@@ -25,17 +25,10 @@ std::optional<double> optional_number(const ojson& root, const char* key,
 }  // namespace
 
 Calibration parse_calibration(const std::string& text, const std::string& name) {
-  ojson root;
-  try {
-    root = ojson::parse(text);
-  } catch (const std::exception& e) {
-    throw_input_error("{}: not valid JSON ({})", name, e.what());
-  }
-  if (!root.is_object()) throw_input_error("{}: not a JSON object", name);
-
+  const ojson root = parse_json_object(text, name);
   Calibration c;
   if (!root.contains("format")) {  // a plain Looking Glass visual.json
-    c.display = parse_visual_json(text, name);
+    c.display = visual_json_from_object(root, name);
     return c;
   }
   require_field(root["format"] == "lfd-calibration", name, "format",
@@ -48,7 +41,7 @@ Calibration parse_calibration(const std::string& text, const std::string& name) 
                     " (this lfd reads up to " + std::to_string(kCalibrationFormatVersion) + ")");
   require_field(root.contains("display") && root["display"].is_object(), name, "display",
                 "is missing");
-  c.display = parse_visual_json(root["display"].dump(), name + ": display");
+  c.display = visual_json_from_object(root["display"], name + ": display");
   if (root.contains("correction") && !root["correction"].is_null())
     c.correction = CorrectionField::from_json(root["correction"], name);
   c.view_cone_measured_deg = optional_number(root, "view_cone_measured_deg", name);

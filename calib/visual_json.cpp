@@ -62,7 +62,7 @@ void put_number(ojson& root, const char* key, double value) {
 
 }  // namespace
 
-DisplayCalibration parse_visual_json(const std::string& text, const std::string& name) {
+ojson parse_json_object(const std::string& text, const std::string& name) {
   ojson root;
   try {
     root = ojson::parse(text);
@@ -70,7 +70,15 @@ DisplayCalibration parse_visual_json(const std::string& text, const std::string&
     throw_input_error("{}: not valid JSON ({})", name, e.what());
   }
   if (!root.is_object()) throw_input_error("{}: not a JSON object", name);
+  return root;
+}
 
+DisplayCalibration parse_visual_json(const std::string& text, const std::string& name) {
+  return visual_json_from_object(parse_json_object(text, name), name);
+}
+
+DisplayCalibration visual_json_from_object(const ojson& root, const std::string& name) {
+  if (!root.is_object()) throw_input_error("{}: not a JSON object", name);
   DisplayCalibration c;
   c.source = root;
   if (auto it = root.find("serial"); it != root.end() && it->is_string()) c.serial = *it;

@@ -9,8 +9,12 @@
 
 namespace lfd::calib {
 
+// Parses JSON text that must hold an object; InputError naming `name` otherwise.
+nlohmann::ordered_json parse_json_object(const std::string& text, const std::string& name);
+
 // Parses visual.json text. `name` (usually the file path) prefixes every error message.
 DisplayCalibration parse_visual_json(const std::string& text, const std::string& name);
+DisplayCalibration visual_json_from_object(const nlohmann::ordered_json& root, const std::string& name);
 DisplayCalibration read_visual_json(const std::filesystem::path& path);
 
 // The visual.json object: the source object with the modelled fields updated in place

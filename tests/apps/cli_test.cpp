@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/apps/run_lfd.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include "tests/test_data.hpp"
@@ -14,22 +16,9 @@
 
 namespace {
 
-struct Result {
-  int exit_code = -1;
-  std::string output;  // stdout + stderr
-};
+using Result = lfd::test::RunResult;
 
-Result run(const std::string& args) {
-  Result r;
-  const std::string cmd = std::string(LFD_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+Result run(const std::string& args) { return lfd::test::run_lfd(args); }
 
 int lines(const std::string& s) {
   int n = 0;
