@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/apps/run_lfd.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -18,12 +20,10 @@ struct Result {
   std::string out;
 };
 
+// Output through a pipe, not a shared log file: CTest runs these tests in parallel.
 Result run(const std::string& args) {
-  const fs::path log = fs::temp_directory_path() / "lfd_render_cli_test.log";
-  const int status = std::system((std::string(LFD_EXE) + " " + args + " > " + log.string() + " 2>&1").c_str());
-  std::ifstream in(log);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return {WEXITSTATUS(status), text};
+  const auto r = lfd::test::run_lfd(args);
+  return {r.exit_code, r.output};
 }
 
 const std::string kScene = std::string(LFD_SOURCE_DIR) + "/../shared/data/scenes/guitar.compressed.ply";
