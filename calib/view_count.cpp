@@ -36,13 +36,14 @@ ViewCountAdvice recommend_view_count(const Calibration& calibration) {
                                                              subpixel_phase_width / 12.0);
   a.sampling_limit = lens.subpixels_per_lens() * std::max(1.0, std::abs(calibration.display.slope));
   a.blur_limit = 1.0 / (kViewWidthInSigmas * sigma_eff);
-  // A phase error (calibration uncertainty or an uncorrected warp) shifts every view; keep it
-  // under a quarter of a view.
-  double phase_error = 0.0;
-  if (auto it = calibration.uncertainty.find("correction_rms_periods");
-      it != calibration.uncertainty.end())
-    phase_error = std::max(phase_error, it->second);
-  if (calibration.residuals) phase_error = std::max(phase_error, calibration.residuals->rms_periods);
+  // An error in the estimated phase (center and correction field uncertainty) shifts every
+  // view; keep it under a quarter of a view. The residual RMS is not used: it is the noise of
+  // single phase samples, which the fit averages away.
+  double phase_variance = 0.0;
+  for (const char* key : {"center_periods", "correction_rms_periods"})
+    if (auto it = calibration.uncertainty.find(key); it != calibration.uncertainty.end())
+      phase_variance += it->second * it->second;
+  const double phase_error = std::sqrt(phase_variance);
   a.accuracy_limit = phase_error > 0 ? 1.0 / (4.0 * phase_error) : 1e9;
 
   const double limit = std::min({a.sampling_limit, a.blur_limit, a.accuracy_limit});
@@ -54,7 +55,7 @@ ViewCountAdvice recommend_view_count(const Calibration& calibration) {
   a.rows = best.rows;
   a.rule = fmt::format(
       "views = largest quilt grid <= min(sampling {:.0f}, blur 1/(1.6*sigma_eff) = {:.1f}, "
-      "accuracy 1/(4*phase error) = {}) with sigma_eff = sqrt(sigma_A^2 + w_sub^2/12) = "
+      "accuracy 1/(4*phase uncertainty) = {}) with sigma_eff = sqrt(sigma_A^2 + w_sub^2/12) = "
       "{:.4f} periods (sigma_A {:.4f}{}, subpixel phase width w_sub {:.4f})",
       a.sampling_limit, a.blur_limit,
       a.accuracy_limit > 1e8 ? std::string("unlimited") : fmt::format("{:.1f}", a.accuracy_limit),

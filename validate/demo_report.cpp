@@ -50,7 +50,8 @@ td,th{{border:1px solid #ccc;padding:4px 10px;text-align:right}} .grid{{display:
 figcaption{{font-size:90%;color:#555}}</style></head><body>
 <h1>lfd demo</h1>
 <p>A simulated display unit: <code>{}</code> (a real unit's factory calibration) with a smooth
-lens-array warp that only its own calibration describes. {} views ({}).</p>
+lens-array warp that only its own calibration describes, calibrated from simulated photographs.
+{} views ({}).</p>
 <p>Scene: <code>{}</code>, {} Gaussians, rendered with G2LF (64 sweeping planes, P<sub>s</sub> = 2, bilinear).</p>
 )",
                                  escape(r.unit_source), r.views, escape(r.view_rule),
