@@ -1,6 +1,7 @@
 #pragma once
 // Where tests find data: the project's data/ and the shared real data beside the repo
 // (../shared/data). Tests that need the shared data skip with a message when it is absent.
+#include <unistd.h>
 #include <algorithm>
 #include <filesystem>
 #include <string>
@@ -33,7 +34,8 @@ inline std::vector<std::filesystem::path> shared_calibrations() {
 
 // A fresh temporary directory per test.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("lfd_test_" + name);
+  auto dir = std::filesystem::temp_directory_path() /
+             ("lfd_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

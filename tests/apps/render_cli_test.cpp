@@ -1,4 +1,5 @@
 // `lfd render` and `lfd compare` end to end through the real program (small images).
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -29,7 +30,7 @@ Result run(const std::string& args) {
 const std::string kScene = std::string(LFD_SOURCE_DIR) + "/../shared/data/scenes/guitar.compressed.ply";
 
 fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / "lfd_render_cli_test";
+  const fs::path d = fs::temp_directory_path() / ("lfd_render_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(d);
   return d;
 }

@@ -1,5 +1,6 @@
 // `lfd scene`: generate writes a loadable PLY; info reports counts, degree and bounds (also as
 // JSON); bad input exits 2 with a one-line message naming the file.
+#include <unistd.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -19,7 +20,7 @@ using Result = lfd::test::RunResult;
 Result run(const std::string& args) { return lfd::test::run_lfd(args); }
 
 std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / "lfd_scene_cli_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("lfd_scene_cli_test_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -1,4 +1,5 @@
 // `lfd simulate`, `lfd validate` and `lfd bench` through the real program (small display).
+#include <unistd.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -29,7 +30,7 @@ Result run(const std::string& args) {
 }
 
 fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / "lfd_simulate_cli_test";
+  const fs::path d = fs::temp_directory_path() / ("lfd_simulate_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(d);
   return d;
 }

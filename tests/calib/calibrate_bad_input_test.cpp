@@ -1,5 +1,6 @@
 // Bad input to `lfd calibrate` (DESIGN section 8): every case is an InputError that names the
 // file and says what to change, or a warning; nothing is estimated from bad captures.
+#include <unistd.h>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -143,13 +144,13 @@ TEST(CalibrateBadInput, QualityGatesRejectAndSayWhy) {
 class CaptureFolder : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    patterns_ = std::filesystem::temp_directory_path() / "lfd_calibrate_bad_input_patterns";
+    patterns_ = std::filesystem::temp_directory_path() / ("lfd_calibrate_bad_input_patterns_" + std::to_string(::getpid()));
     std::filesystem::remove_all(patterns_);
     write_pattern_set(patterns_, fixture().set, false);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(patterns_); }
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "lfd_calibrate_bad_input";
+    dir_ = std::filesystem::temp_directory_path() / ("lfd_calibrate_bad_input_" + std::to_string(::getpid()));
     std::filesystem::remove_all(dir_);
     std::filesystem::create_directories(dir_);
     std::filesystem::copy(patterns_ / "patterns", dir_ / "patterns");

@@ -1,4 +1,5 @@
 // The calibration patterns (DESIGN section 5): layout, pixel values, manifest round trip.
+#include <unistd.h>
 #include <cmath>
 #include <numbers>
 
@@ -77,7 +78,7 @@ TEST(PatternsGeneration, CornerMarkersEncodeThePatternIndex) {
 }
 
 TEST(PatternsGeneration, ManifestRoundTripsAndIsNotOverwrittenWithoutForce) {
-  const auto dir = std::filesystem::temp_directory_path() / "lfd_patterns_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("lfd_patterns_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   PatternOptions o;
   o.phase_steps = 3;

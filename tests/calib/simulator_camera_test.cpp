@@ -1,4 +1,5 @@
 // The physical camera: pose conventions, OpenCV distortion, YAML intrinsics.
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 
@@ -71,7 +72,7 @@ TEST(Camera, DistortionMovesImagePoints) {
 }
 
 TEST(Camera, YamlRoundTrip) {
-  const auto path = std::filesystem::temp_directory_path() / "lfd_camera_roundtrip.yaml";
+  const auto path = std::filesystem::temp_directory_path() / ("lfd_camera_roundtrip_" + std::to_string(::getpid()) + ".yaml");
   const CameraIntrinsics k = distorted_camera().intrinsics();
   k.write_yaml(path);
   const CameraIntrinsics r = CameraIntrinsics::read_yaml(path);
@@ -85,7 +86,7 @@ TEST(Camera, YamlRoundTrip) {
 }
 
 TEST(Camera, YamlMissingNodeNamesFileAndNode) {
-  const auto path = std::filesystem::temp_directory_path() / "lfd_camera_missing.yaml";
+  const auto path = std::filesystem::temp_directory_path() / ("lfd_camera_missing_" + std::to_string(::getpid()) + ".yaml");
   {
     std::ofstream f(path);
     f << "%YAML:1.0\n---\nimage_width: 640\nimage_height: 480\ncamera_matrix: !!opencv-matrix\n"
@@ -95,14 +96,14 @@ TEST(Camera, YamlMissingNodeNamesFileAndNode) {
     CameraIntrinsics::read_yaml(path);
     FAIL() << "expected InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("lfd_camera_missing.yaml"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find(path.filename().string()), std::string::npos);
     EXPECT_NE(std::string(e.what()).find("distortion_coefficients"), std::string::npos);
   }
   std::filesystem::remove(path);
 }
 
 TEST(Camera, YamlMalformedMatrixIsInputError) {
-  const auto path = std::filesystem::temp_directory_path() / "lfd_camera_bad.yaml";
+  const auto path = std::filesystem::temp_directory_path() / ("lfd_camera_bad_" + std::to_string(::getpid()) + ".yaml");
   {
     std::ofstream f(path);
     f << "%YAML:1.0\n---\nimage_width: 640\nimage_height: 480\ncamera_matrix: 12\n"
@@ -114,7 +115,7 @@ TEST(Camera, YamlMalformedMatrixIsInputError) {
 }
 
 TEST(Camera, YamlNotYamlIsInputError) {
-  const auto path = std::filesystem::temp_directory_path() / "lfd_camera_garbage.yaml";
+  const auto path = std::filesystem::temp_directory_path() / ("lfd_camera_garbage_" + std::to_string(::getpid()) + ".yaml");
   {
     std::ofstream f(path);
     f << "{{{{ not yaml ]]]\n";

@@ -1,5 +1,6 @@
 // save_ply writes what load_scene reads back: binary and ASCII PLY, all SH degrees; SPZ v4
 // (zstd streams) decodes exactly like the equivalent v3 (gzip) file.
+#include <unistd.h>
 #include <gtest/gtest.h>
 #include <zlib.h>
 #include <zstd.h>
@@ -20,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_path(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "lfd_scene_roundtrip";
+  const fs::path dir = fs::temp_directory_path() / ("lfd_scene_roundtrip_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   return dir / name;
 }

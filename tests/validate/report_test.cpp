@@ -1,4 +1,5 @@
 // The report: JSON with the figures, HTML page, gnuplot figures where gnuplot exists.
+#include <unistd.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -26,7 +27,7 @@ ValidationCase small_case() {
 }
 
 TEST(ValidationReport, WritesJsonHtmlAndFigures) {
-  const auto dir = std::filesystem::temp_directory_path() / "lfd_validate_report_test";
+  const auto dir = std::filesystem::temp_directory_path() / ("lfd_validate_report_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   const auto index = write_report(dir, {small_case()});
   ASSERT_TRUE(std::filesystem::exists(index));
