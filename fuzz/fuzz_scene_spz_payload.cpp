@@ -8,24 +8,13 @@
 #include <string>
 #include <string_view>
 
+#include "tests/render/gzip_for_tests.hpp"
 #include "render/scene_parsers.hpp"
 #include "util/error.hpp"
 
 namespace {
 
-std::string gzip(std::string_view data) {
-  z_stream z{};
-  deflateInit2(&z, 1, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
-  std::string out(deflateBound(&z, uLong(data.size())) + 64, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
-  z.avail_in = uInt(data.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = uInt(out.size());
-  deflate(&z, Z_FINISH);
-  out.resize(z.total_out);
-  deflateEnd(&z);
-  return out;
-}
+std::string gzip(std::string_view data) { return lfd::test::gzip(data, 1); }
 
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 
+#include "tests/render/gzip_for_tests.hpp"
 #include "render/ply_writer.hpp"
 #include "render/scene_io.hpp"
 #include "util/error.hpp"
@@ -66,19 +67,7 @@ std::string replace_first(std::string s, const std::string& from, const std::str
   return s;
 }
 
-std::string gzip(const std::string& data) {
-  z_stream z{};
-  deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
-  std::string out(deflateBound(&z, uLong(data.size())) + 64, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
-  z.avail_in = uInt(data.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = uInt(out.size());
-  deflate(&z, Z_FINISH);
-  out.resize(z.total_out);
-  deflateEnd(&z);
-  return out;
-}
+using lfd::test::gzip;
 
 // A 16-byte legacy SPZ header.
 std::string spz_header(uint32_t version, uint32_t points, uint8_t degree, uint8_t flags = 0) {

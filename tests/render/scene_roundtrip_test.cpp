@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iterator>
 
+#include "tests/render/gzip_for_tests.hpp"
 #include "render/ply_writer.hpp"
 #include "render/scene_generator.hpp"
 #include "render/scene_io.hpp"
@@ -136,19 +137,7 @@ TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
   expect_same(load_scene(v3), load_scene(v4), 0.0f);
 }
 
-std::string gzip(const std::string& data) {
-  z_stream z{};
-  deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
-  std::string out(deflateBound(&z, uLong(data.size())) + 64, '\0');
-  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data.data()));
-  z.avail_in = uInt(data.size());
-  z.next_out = reinterpret_cast<Bytef*>(out.data());
-  z.avail_out = uInt(out.size());
-  deflate(&z, Z_FINISH);
-  out.resize(z.total_out);
-  deflateEnd(&z);
-  return out;
-}
+using lfd::test::gzip;
 
 TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
   const fs::path v3 = LFD_SHARED_DATA_DIR "/scenes/three-points.spz";
