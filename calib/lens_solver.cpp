@@ -419,6 +419,8 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   for (size_t i = 0; i < samples.size(); ++i) {
     double pos_sum2 = 0;
     long pos_in = 0;
+    auto& kept = result.position_samples.emplace_back();
+    kept.reserve(samples[i].size());
     for (const auto& s : samples[i]) {
       double w = 0;
       if (with_field)
@@ -428,6 +430,7 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
       const double r = wrap_half(s.psi - psi_linear(dc, x.lens, &x.cams[2 * i], s.u, s.v,
                                                     s.u_phys, s.a_nom) - dc.sign * w);
       abs_all.push_back(std::abs(r));
+      kept.push_back({float(s.u), float(s.v), float(s.psi), float(r)});
       if (std::abs(r) < inlier_bound) {
         sum2 += r * r;
         pos_sum2 += r * r;

@@ -46,6 +46,12 @@ struct SolverOptions {
   bool verbose = false;
 };
 
+// One phase sample after the solve (for reports): where it is, what was decoded, and the
+// wrapped residual psi_obs - psi_model, lens periods.
+struct ResidualSample {
+  float u = 0, v = 0, psi = 0, residual = 0;
+};
+
 struct SolverResult {
   LensEstimate lens;
   CorrectionField correction;
@@ -53,6 +59,7 @@ struct SolverResult {
   std::map<std::string, double> sigma;  // 1-sigma: pitch_lpi, slope, center_periods, ...
   ResidualStats residuals;
   std::vector<double> position_rms;     // inlier rms per position, lens periods
+  std::vector<std::vector<ResidualSample>> position_samples;  // per position, as solved
   double solve_seconds = 0;
   bool converged = false;
   std::string report;                   // Ceres brief reports of the stages
