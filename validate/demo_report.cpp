@@ -4,25 +4,9 @@
 #include <nlohmann/json.hpp>
 
 #include "util/atomic_file.hpp"
+#include "validate/html.hpp"
 
 namespace lfd::validate {
-
-namespace {
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-}  // namespace
 
 std::filesystem::path write_demo_report(const std::filesystem::path& dir, const DemoReport& r) {
   nlohmann::ordered_json j;
@@ -54,9 +38,9 @@ lens-array warp that only its own calibration describes, calibrated from simulat
 {} views ({}).</p>
 <p>Scene: <code>{}</code>, {} Gaussians, rendered with G2LF (64 sweeping planes, P<sub>s</sub> = 2, bilinear).</p>
 )",
-                                 escape(r.unit_source), r.views, escape(r.view_rule),
-                                 escape(r.scene_source), r.scene_gaussians);
-  if (!r.calibration_note.empty()) html += "<h2>Calibration</h2><p>" + escape(r.calibration_note) + "</p>\n";
+                                 html_escape(r.unit_source), r.views, html_escape(r.view_rule),
+                                 html_escape(r.scene_source), r.scene_gaussians);
+  if (!r.calibration_note.empty()) html += "<h2>Calibration</h2><p>" + html_escape(r.calibration_note) + "</p>\n";
   html += "<h2>Photographs of the display</h2>\n<div class=\"grid\">\n";
   for (const auto& c : r.captures)
     html += fmt::format("<figure><img src=\"{}\"><figcaption>{} ({:+.1f} deg)</figcaption></figure>\n",
@@ -69,7 +53,7 @@ lens-array warp that only its own calibration describes, calibrated from simulat
           "<th>mean view separation V</th><th>mean crosstalk X</th></tr>\n";
   for (const auto& v : r.validation)
     html += fmt::format("<tr><td style=\"text-align:left\">{}</td><td>{:.1f} %</td><td>{:.2f}</td></tr>\n",
-                        escape(v.configuration), 100.0 * v.mean_separation, v.mean_crosstalk);
+                        html_escape(v.configuration), 100.0 * v.mean_separation, v.mean_crosstalk);
   html += "</table>\n<p>Angular profiles and per-view figures: <a href=\"validation/index.html\">"
           "validation report</a>.</p>\n<h2>Quilts and panels</h2>\n<div class=\"grid\">\n";
   for (const auto& [img, caption] :

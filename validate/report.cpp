@@ -6,6 +6,7 @@
 
 #include "util/atomic_file.hpp"
 #include "validate/gnuplot.hpp"
+#include "validate/html.hpp"
 
 namespace lfd::validate {
 
@@ -74,20 +75,6 @@ std::string plot_script(const ValidationCase& c, const std::string& stem) {
       stem);
   s += "unset multiplot\nset output\n";
   return s;
-}
-
-std::string html_escape(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 std::string html_page(const std::vector<ValidationCase>& cases, bool figures) {
