@@ -9,6 +9,7 @@
 #include "calib/live_calibration.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
+#include "validate/calibration_report.hpp"
 
 namespace lfd::apps {
 
@@ -86,9 +87,7 @@ int RunCalibrate(int argc, char** argv) {
     outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   }
   for (const auto& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
-  if (!report_dir.empty())
-    write_text_atomic(std::filesystem::path(report_dir) / "report.json",
-                      calib::outcome_report(outcome).dump(2) + "\n");
+  if (!report_dir.empty()) validate::write_calibration_report(outcome, report_dir);
   calib::enforce_gates(outcome);
 
   const auto& c = outcome.calibration;
