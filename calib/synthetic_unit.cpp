@@ -80,31 +80,34 @@ CaptureRig make_capture_rig(const DisplayCalibration& d, int width_px, int posit
   return rig;
 }
 
+double exposure_on_white(const DisplaySimulator& sim, const ImageF& white_panel,
+                         const PhysicalCamera& camera, const CaptureEffects& effects) {
+  CaptureEffects e = effects;
+  e.exposure = 0.25;  // below clipping even for the brightest stripes
+  e.noise_sigma = 0;
+  e.glare_fraction = 0;
+  const ImageF probe = sim.capture(white_panel, camera, e);
+  std::vector<float> lit;
+  for (float v : probe.pixels)
+    if (v > 0.05f) lit.push_back(v);
+  if (lit.empty()) return effects.exposure;
+  std::nth_element(lit.begin(), lit.begin() + long(lit.size() * 0.99), lit.end());
+  const double p99 = std::pow(double(lit[size_t(lit.size() * 0.99)]), e.gamma) / e.exposure;
+  return std::pow(0.85, e.gamma) / p99;
+}
+
 std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Calibration& truth,
                                                 const CaptureRig& rig) {
   const DisplaySimulator sim(LensModel(truth.display, truth.correction));
   std::vector<PositionCaptures> out(rig.poses.size());
   for (size_t i = 0; i < rig.poses.size(); ++i) out[i].name = "pos" + std::to_string(i + 1);
-  // Manual exposure per position, set on the white pattern as a user would: its brightest
-  // 1 % (the lens magnifies single subpixels into bright colour stripes) at 85 % of full scale.
   std::vector<double> exposure(rig.poses.size(), rig.effects.exposure);
   for (const auto& p : set.patterns) {
     if (p.kind != PatternKind::kWhite) continue;
     const ImageF panel = to_float(render_pattern(set, p));
-    for (size_t i = 0; i < rig.poses.size(); ++i) {
-      CaptureEffects e = rig.effects;
-      e.exposure = 0.25;  // below clipping even for the brightest stripes
-      e.noise_sigma = 0;
-      e.glare_fraction = 0;
-      const ImageF probe = sim.capture(panel, PhysicalCamera(rig.intrinsics, rig.poses[i]), e);
-      std::vector<float> lit;
-      for (float v : probe.pixels)
-        if (v > 0.05f) lit.push_back(v);
-      if (lit.empty()) continue;
-      std::nth_element(lit.begin(), lit.begin() + long(lit.size() * 0.99), lit.end());
-      const double p99 = std::pow(double(lit[size_t(lit.size() * 0.99)]), e.gamma) / e.exposure;
-      exposure[i] = std::pow(0.85, e.gamma) / p99;
-    }
+    for (size_t i = 0; i < rig.poses.size(); ++i)
+      exposure[i] = exposure_on_white(sim, panel, PhysicalCamera(rig.intrinsics, rig.poses[i]),
+                                      rig.effects);
   }
   for (const auto& p : set.patterns) {
     const ImageF panel = to_float(render_pattern(set, p));

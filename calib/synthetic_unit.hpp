@@ -40,6 +40,12 @@ struct CaptureRig {
 CaptureRig make_capture_rig(const DisplayCalibration& display, int width_px, int positions,
                             bool clean = false, uint64_t seed = 1);
 
+// Manual exposure for one camera, set on the white pattern as a user would: its brightest 1 %
+// (the lens magnifies single subpixels into bright colour stripes) at 85 % of full scale.
+// `effects.exposure` if nothing is lit.
+double exposure_on_white(const DisplaySimulator& simulator, const ImageF& white_panel,
+                         const PhysicalCamera& camera, const CaptureEffects& effects);
+
 // Simulates every pattern of `set` from every pose of `rig`.
 std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Calibration& truth,
                                                 const CaptureRig& rig);

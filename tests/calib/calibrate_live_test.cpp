@@ -1,5 +1,9 @@
-// The live loop (`lfd calibrate --live --simulate TRUTH.json`): rounds of patterns made for the
-// previous estimate, "shown" to the simulator; later rounds start closer to the truth.
+// The live loop (`lfd calibrate --live`, and with --simulate TRUTH.json): rounds of patterns
+// made for the previous estimate, shown and photographed position by position; later rounds
+// start closer to the truth. The window and camera versions are in tests/calib/live/.
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "calib/live_calibration.hpp"
@@ -34,6 +38,70 @@ TEST(CalibrateLive, SimulatedRoundsRefineTheNominalModel) {
 
 TEST(CalibrateLive, HardwareModeSaysItIsNotAvailable) {
   EXPECT_THROW(run_live_calibration_on_hardware(Calibration{}, LiveOptions{}), InputError);
+}
+
+// Both devices in one, writing down what the loop asks of them; its "photographs" are grey,
+// so calibrate_display stops at the first board.
+struct RecordingDevices : PatternDisplay, FrameSource {
+  std::vector<std::string> events;
+  std::vector<Image8> shown;
+  void show(const Image8& pattern) override {
+    shown.push_back(pattern);
+    events.push_back("show");
+  }
+  void start_position(int index, int count) override {
+    events.push_back("start " + std::to_string(index) + " of " + std::to_string(count));
+  }
+  void fix_exposure_on_white() override { events.push_back("fix exposure"); }
+  cv::Mat capture() override {
+    events.push_back("capture");
+    return cv::Mat(48, 64, CV_32FC3, cv::Scalar::all(0.5));
+  }
+};
+
+TEST(CalibrateLive, EachPositionAimsOnTheBoardFixesExposureOnWhiteThenPhotographsEveryPattern) {
+  const DisplayCalibration d = read_visual_json(
+      std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" / "calibrations" /
+      "LKG-PORT-portrait.visual.json");
+  Calibration nominal;
+  nominal.display = d;
+  const PatternSet set = plan_patterns(nominal);
+  RecordingDevices devices;
+  LiveOptions o;
+  o.rounds = 1;
+  o.positions = 2;
+  o.move_camera = [&](int position, int count) {
+    devices.events.push_back("move " + std::to_string(position) + " of " + std::to_string(count));
+  };
+  try {
+    run_live_calibration(nominal, devices, devices, o);
+    FAIL() << "grey photographs have no board";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("round 1, pos1/"), std::string::npos) << e.what();
+  }
+  std::vector<std::string> expected;
+  for (int i = 0; i < 2; ++i) {
+    for (const char* step : {"show", "move ", "start ", "show", "fix exposure"}) {
+      std::string event = step;
+      if (event == "move ") event += std::to_string(i + 1) + " of 2";
+      if (event == "start ") event += std::to_string(i) + " of 2";
+      expected.push_back(event);
+    }
+    for (size_t k = 0; k < set.patterns.size(); ++k) {
+      expected.push_back("show");
+      expected.push_back("capture");
+    }
+  }
+  EXPECT_EQ(devices.events, expected);
+  // What was on screen: the board to aim at, white for the exposure, then the manifest.
+  const size_t per_position = set.patterns.size() + 2;
+  ASSERT_EQ(devices.shown.size(), 2 * per_position);
+  auto same = [](const Image8& a, const Image8& b) { return a.pixels == b.pixels; };
+  EXPECT_TRUE(same(devices.shown[0], render_pattern(set, *set.of_kind(PatternKind::kBoard)[0])));
+  EXPECT_TRUE(same(devices.shown[1], render_pattern(set, *set.of_kind(PatternKind::kWhite)[0])));
+  for (size_t k = 0; k < set.patterns.size(); ++k)
+    EXPECT_TRUE(same(devices.shown[per_position + 2 + k], render_pattern(set, set.patterns[k])))
+        << set.patterns[k].file;
 }
 
 }  // namespace

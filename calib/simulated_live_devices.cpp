@@ -1,0 +1,39 @@
+#include "calib/simulated_live_devices.hpp"
+
+#include <utility>
+
+#include "util/error.hpp"
+
+namespace lfd::calib {
+
+SimulatedCamera::SimulatedCamera(const Calibration& truth, CaptureRig rig,
+                                 std::function<Image8()> screen)
+    : simulator_(LensModel(truth.display, truth.correction)),
+      rig_(std::move(rig)),
+      screen_(std::move(screen)),
+      exposure_(rig_.effects.exposure) {
+  if (rig_.poses.empty()) throw_input_error("simulated camera: the rig has no poses");
+}
+
+PhysicalCamera SimulatedCamera::camera() const {
+  return PhysicalCamera(rig_.intrinsics, rig_.poses[size_t(position_) % rig_.poses.size()]);
+}
+
+void SimulatedCamera::start_position(int index, int) {
+  position_ = index;
+  photo_ = 0;
+  exposure_ = rig_.effects.exposure;
+}
+
+void SimulatedCamera::fix_exposure_on_white() {
+  exposure_ = exposure_on_white(simulator_, to_float(screen_()), camera(), rig_.effects);
+}
+
+cv::Mat SimulatedCamera::capture() {
+  CaptureEffects e = rig_.effects;
+  e.seed = rig_.effects.seed * 1000003 + size_t(position_) * 101 + size_t(photo_++);
+  e.exposure = exposure_;
+  return to_mat(simulator_.capture(to_float(screen_()), camera(), e));
+}
+
+}  // namespace lfd::calib

@@ -1,0 +1,46 @@
+#pragma once
+// The live loop's devices for `--simulate` and the tests (calib/live_devices.hpp): a display
+// that only remembers the pattern, and a camera that photographs whatever a screen shows
+// through the optics simulator looking at a TRUE unit. The camera takes the screen as a
+// function so a test can hand it a real window's read-back framebuffer instead.
+#include <functional>
+
+#include "calib/live_devices.hpp"
+#include "calib/synthetic_unit.hpp"
+
+namespace lfd::calib {
+
+class RememberedPattern : public PatternDisplay {
+ public:
+  void show(const Image8& pattern) override { pattern_ = pattern; }
+  const Image8& pattern() const { return pattern_; }
+
+ private:
+  Image8 pattern_;
+};
+
+class SimulatedCamera : public FrameSource {
+ public:
+  // `screen` returns the panel image on screen now (screenW x screenH of the truth).
+  SimulatedCamera(const Calibration& truth, CaptureRig rig, std::function<Image8()> screen);
+
+  // Switches to pose `index` of the rig (positions beyond the rig's poses wrap around).
+  void start_position(int index, int count) override;
+  // Manual exposure as a user would set it on the white pattern (exposure_on_white).
+  void fix_exposure_on_white() override;
+  // One simulated photograph; its noise seed depends on the position and the photograph's
+  // number there, as in simulate_captures.
+  cv::Mat capture() override;
+
+ private:
+  PhysicalCamera camera() const;
+
+  DisplaySimulator simulator_;
+  CaptureRig rig_;
+  std::function<Image8()> screen_;
+  int position_ = 0;
+  int photo_ = 0;  // photographs taken at this position
+  double exposure_;
+};
+
+}  // namespace lfd::calib
