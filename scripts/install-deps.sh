@@ -10,9 +10,9 @@ PACKAGES=(
   libeigen3-dev libopencv-dev libopencv-contrib-dev libceres-dev
   # device access
   libhidapi-dev libusb-1.0-0-dev
-  # graphics: GL loading, headless EGL on Mesa, windows, UI
+  # graphics: GL loading, headless EGL on Mesa, windows, UI; Xvfb and Xlib for the window tests
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev libimgui-dev
-  xvfb xauth
+  xvfb xauth libx11-dev
   # formats and utilities
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libzstd-dev zlib1g-dev
   libtbb-dev
