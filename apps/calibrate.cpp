@@ -6,6 +6,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibrate.hpp"
+#include "calib/live/hardware_live_calibration.hpp"
 #include "calib/live_calibration.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -22,12 +23,15 @@ int RunCalibrate(int argc, char** argv) {
       "\nExamples:\n"
       "  lfd calibrate unit42 --camera camera.yaml --out unit42/calibration.json\n"
       "  lfd calibrate unit42 --out cal.json --visual-json visual.json --report unit42/report\n"
+      "  lfd calibrate --live --display nominal.json --camera camera.yaml --out cal.json\n"
+      "  lfd calibrate --live --display nominal.json --positions 3 --camera-index 1 \\\n"
+      "      --out cal.json\n"
       "  lfd calibrate --live --simulate truth.json --display nominal.json --out cal.json",
       "calibrate"};
   std::string dir, camera_path, display_path, out_path, visual_path, report_dir, simulate_path,
       monitor;
-  bool force = false, live = false;
-  int camera_index = 0, grid = 8;
+  bool force = false, live = false, keep_camera_settings = false;
+  int camera_index = 0, grid = 8, positions = 1, rounds = 2;
   calib::CalibrateOptions options;
   app.add_option("DIR", dir, "folder with patterns/ and captures/");
   app.add_option("--camera", camera_path,
@@ -43,8 +47,20 @@ int RunCalibrate(int argc, char** argv) {
       ->check(CLI::Range(0, 32));
   app.add_flag("--force", force, "replace existing outputs (a .bak is kept)");
   app.add_flag("--live", live, "show patterns on the display and grab camera frames");
-  app.add_option("--monitor", monitor, "live: monitor name prefix (default LKG)");
-  app.add_option("--camera-index", camera_index, "live: OpenCV camera index");
+  app.add_option("--monitor", monitor,
+                 "live: monitor name prefix (default LKG; else the display's resolution decides)");
+  app.add_option("--camera-index", camera_index, "live: OpenCV camera index (/dev/videoN)")
+      ->capture_default_str();
+  app.add_option("--positions", positions,
+                 "live: camera positions per round (you are asked to move the camera)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 8));
+  app.add_option("--rounds", rounds, "live: rounds, each with patterns for the last estimate")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 10));
+  app.add_flag("--keep-camera-settings", keep_camera_settings,
+               "live: leave exposure, white balance and focus as set (v4l2-ctl) instead of "
+               "letting them settle on the white pattern and locking them");
   app.add_option("--simulate", simulate_path,
                  "live: run against the simulator with this TRUE calibration");
   if (auto code = parse(app, argc, argv)) return *code;
@@ -62,14 +78,16 @@ int RunCalibrate(int argc, char** argv) {
     lo.calibrate = options;
     lo.monitor_prefix = monitor.empty() ? "LKG" : monitor;
     lo.camera_index = camera_index;
+    lo.positions = positions;
+    lo.rounds = rounds;
+    lo.lock_camera_settings = !keep_camera_settings;
     if (display_path.empty())
       throw_input_error("--live needs --display (the nominal description to start from)");
     const calib::Calibration nominal = calib::read_calibration(display_path);
-    if (simulate_path.empty()) {
-      outcome = calib::run_live_calibration_on_hardware(nominal, lo);
-    } else {
-      outcome = calib::run_live_calibration_simulated(nominal, calib::read_calibration(simulate_path), lo);
-    }
+    outcome = simulate_path.empty()
+                  ? calib::run_live_calibration_on_hardware(nominal, lo)
+                  : calib::run_live_calibration_simulated(
+                        nominal, calib::read_calibration(simulate_path), lo);
   } else {
     if (dir.empty()) throw_input_error("DIR is required (or --live)");
     const calib::PatternSet set = calib::read_pattern_set(dir);

@@ -80,10 +80,4 @@ CalibrationOutcome run_live_calibration_simulated(const Calibration& nominal,
   return run_live_calibration(nominal, screen, camera, o);
 }
 
-CalibrationOutcome run_live_calibration_on_hardware(const Calibration&, const LiveOptions&) {
-  throw_input_error(
-      "--live without --simulate (GLFW window + camera) is not available in this build yet; use "
-      "the offline workflow (lfd patterns, photograph, lfd calibrate DIR) or --simulate");
-}
-
 }  // namespace lfd::calib

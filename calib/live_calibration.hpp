@@ -54,9 +54,4 @@ CalibrationOutcome run_live_calibration_simulated(const Calibration& nominal,
                                                   const Calibration& truth,
                                                   const LiveOptions& options);
 
-// Full-screen patterns on the display's monitor (GLFW) and frames from cv::VideoCapture.
-// Not available in this build yet: throws InputError saying so.
-CalibrationOutcome run_live_calibration_on_hardware(const Calibration& nominal,
-                                                    const LiveOptions& options);
-
 }  // namespace lfd::calib

@@ -36,10 +36,6 @@ TEST(CalibrateLive, SimulatedRoundsRefineTheNominalModel) {
   EXPECT_TRUE(out.gate_failures.empty());
 }
 
-TEST(CalibrateLive, HardwareModeSaysItIsNotAvailable) {
-  EXPECT_THROW(run_live_calibration_on_hardware(Calibration{}, LiveOptions{}), InputError);
-}
-
 // Both devices in one, writing down what the loop asks of them; its "photographs" are grey,
 // so calibrate_display stops at the first board.
 struct RecordingDevices : PatternDisplay, FrameSource {
