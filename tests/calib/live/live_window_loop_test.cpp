@@ -19,10 +19,11 @@ TEST(LiveCalibrationOnScreen, RecoversTheTruthFromPhotographsOfTheWindow) {
   const GlfwSession glfw;
   PatternWindow window(glfw, glfw.find_display_monitor("LKG", d.screen_w, d.screen_h),
                        d.screen_w, d.screen_h);
-  // The sizes and bounds of the simulated live test (calibrate_live_test.cpp).
+  // The sizes and bounds of the simulated live test (calibrate_live_test.cpp), in one round:
+  // refining over rounds is that test's subject, the window in the loop this one's.
   CaptureRig rig = make_capture_rig(d, 480, 2, false);
   LiveOptions o;
-  o.rounds = 2;
+  o.rounds = 1;
   o.positions = 2;
   o.calibrate.camera = rig.intrinsics;
   int photographs = 0;
@@ -37,10 +38,10 @@ TEST(LiveCalibrationOnScreen, RecoversTheTruthFromPhotographsOfTheWindow) {
   const CalibrationErrors before = compare_with_truth(unit.nominal, unit.truth);
   const CalibrationOutcome out = run_live_calibration(unit.nominal, window, camera, o);
   EXPECT_GT(photographs, 0);
-  ASSERT_EQ(errors.size(), 2u);
-  EXPECT_LT(errors[1].phase_rms_periods, 0.2 * before.phase_rms_periods);
-  EXPECT_LT(errors[1].pitch_rel, 3e-4);
-  EXPECT_LT(errors[1].slant_deg, 0.005);
+  ASSERT_EQ(errors.size(), 1u);
+  EXPECT_LT(errors[0].phase_rms_periods, 0.2 * before.phase_rms_periods);
+  EXPECT_LT(errors[0].pitch_rel, 3e-4);
+  EXPECT_LT(errors[0].slant_deg, 0.005);
   EXPECT_TRUE(out.gate_failures.empty());
 }
 
