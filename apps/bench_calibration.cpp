@@ -7,8 +7,11 @@
 #include <chrono>
 #include <cstdio>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <omp.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
@@ -40,6 +43,37 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// The simulated captures, from `cache_dir` if an earlier run with the same settings left them
+// there (simulating is most of the benchmark's time), else simulated and, with a cache, saved.
+std::vector<calib::PositionCaptures> cached_captures(const std::string& cache_dir,
+                                                     const std::string& file, int seed, int width,
+                                                     int positions, int supersample,
+                                                     const calib::PatternSet& set,
+                                                     const calib::Calibration& truth,
+                                                     const calib::CaptureRig& rig) {
+  namespace fs = std::filesystem;
+  if (cache_dir.empty()) return calib::simulate_captures(set, truth, rig);
+  const fs::path dir = fs::path(cache_dir) / fmt::format("{}-seed{}-w{}-p{}-ss{}", file, seed,
+                                                         width, positions, supersample);
+  if (fs::exists(dir / "complete")) {
+    std::vector<std::string> warnings;
+    return calib::read_captures(dir, set, warnings);
+  }
+  auto captures = calib::simulate_captures(set, truth, rig);
+  for (const auto& pc : captures) {
+    const fs::path pdir = dir / "captures" / pc.name;
+    fs::create_directories(pdir);
+    for (const auto& [stem, image] : pc.images) {
+      cv::Mat bgr, out;
+      cv::cvtColor(image, bgr, cv::COLOR_RGB2BGR);
+      bgr.convertTo(out, CV_16UC3, 65535.0);
+      cv::imwrite((pdir / (stem + ".png")).string(), out);
+    }
+  }
+  write_text_atomic(dir / "complete", "");
+  return captures;
+}
+
 }  // namespace
 
 int RunBenchCalibration(int argc, char** argv) {
@@ -49,7 +83,8 @@ int RunBenchCalibration(int argc, char** argv) {
                "calibration"};
   std::string json_path, data_dir = "../shared/data";  // from the repository root
   int width_px = 1280, positions = 3, seeds = 1, supersample = 2, board_squares = 6;
-  std::string only;
+  std::string only, cache_dir;
+  bool true_poses = false, show_poses = false, clean = false;
   app.add_option("--json", json_path, "write the figures as JSON to this file");
   app.add_option("--data", data_dir, "folder with calibrations/*.visual.json")
       ->capture_default_str();
@@ -69,6 +104,14 @@ int RunBenchCalibration(int argc, char** argv) {
   app.add_option("--seeds", seeds, "synthetic units per display kind")
       ->capture_default_str()
       ->check(CLI::Range(1, 20));
+  app.add_option("--cache", cache_dir,
+                 "keep the simulated captures here (16-bit PNG) and reuse them on the next run "
+                 "with the same settings");
+  app.add_flag("--true-poses", true_poses,
+               "diagnostic: give the solver the true camera positions (0.1 mm priors)");
+  app.add_flag("--no-noise", clean, "diagnostic: captures without sensor noise and glare");
+  app.add_flag("--show-poses", show_poses,
+               "diagnostic: print each position's camera error (registration, refined)");
   if (auto code = parse(app, argc, argv)) return *code;
 
   const Bars bars;
@@ -90,12 +133,17 @@ int RunBenchCalibration(int argc, char** argv) {
       const calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
       calib::CaptureRig rig =
           calib::make_capture_rig(unit.truth.display, width_px, positions, false, uint64_t(seed));
+      if (clean) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
       rig.effects.supersample = supersample;
       auto t0 = std::chrono::steady_clock::now();
-      const auto captures = calib::simulate_captures(set, unit.truth, rig);
+      const auto captures =
+          cached_captures(cache_dir, fmt::format("{}{}", u.file, clean ? "-no-noise" : ""), seed,
+                          width_px, positions, supersample, set, unit.truth, rig);
       const double simulate_s = seconds_since(t0);
       calib::CalibrateOptions options;
       options.camera = rig.intrinsics;
+      if (true_poses)
+        for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
       t0 = std::chrono::steady_clock::now();
       nlohmann::ordered_json row = {{"display", u.label}, {"file", u.file}, {"seed", seed},
                                     {"positions", positions},
@@ -104,6 +152,18 @@ int RunBenchCalibration(int argc, char** argv) {
         const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
         const double calibrate_s = seconds_since(t0);
         const calib::CalibrationErrors e = calib::compare_with_truth(out.calibration, unit.truth);
+        if (show_poses)
+          for (size_t i = 0; i < out.positions.size(); ++i) {
+            const Eigen::Vector3d t = rig.poses[i].position_m;
+            const Eigen::Vector3d r = out.positions[i].camera_m - t;
+            const Eigen::Vector3d f = out.positions[i].camera_refined_m - t;
+            std::fprintf(stderr,
+                         "  %s: camera at (%.4f, %.4f, %.4f) m; registration error (%+.2f, %+.2f, "
+                         "%+.2f) mm, refined (%+.2f, -, %+.2f) mm; residual rms %.4f\n",
+                         out.positions[i].name.c_str(), t.x(), t.y(), t.z(), 1e3 * r.x(),
+                         1e3 * r.y(), 1e3 * r.z(), 1e3 * f.x(), 1e3 * f.z(),
+                         out.positions[i].residual_rms_periods);
+          }
         const bool pass = e.slant_deg <= bars.slant_deg && e.pitch_rel <= bars.pitch_rel &&
                           e.center_periods <= bars.center && e.view_cone_deg <= bars.cone_deg &&
                           e.correction_rms_periods <= bars.warp;

@@ -106,7 +106,7 @@ void apply_camera_effects(ImageF& image, const CameraIntrinsics& intrinsics,
     cv::GaussianBlur(m, m, cv::Size(0, 0), e.blur_px, e.blur_px, cv::BORDER_REFLECT);
   }
   apply_vignetting(image, intrinsics, e.vignetting);
-  apply_glare(image, e.glare_fraction, e.seed);
+  apply_glare(image, e.glare_fraction, e.glare_seed ? e.glare_seed : e.seed);
   apply_noise(image, e.noise_sigma, e.seed);
   const float inv_gamma = float(1.0 / e.gamma);
 #pragma omp parallel for schedule(static)

@@ -172,8 +172,8 @@ struct Problem {
 double shift_fraction(double f_seen, bool inv_view) {
   // The lens covering a panel point P shows the camera the content at the point Q of the same
   // lens whose phase shows f_seen: frac(A(Q)) = c (DESIGN section 4). Averaged over the lens,
-  // Q - P = (c - 1/2) lens periods along the row, so registration (which locates content)
-  // reports points shifted by that much from the points the camera looks at.
+  // Q - P = (c - 1/2) lens periods along the row: the content a camera block sees is shifted
+  // by that much from the point it looks at, and jumps by a whole lens where c wraps.
   const double c = inv_view ? 1.0 - f_seen : f_seen;
   return c - std::floor(c) - 0.5;
 }
@@ -186,16 +186,6 @@ DisplayCalibration apply_estimate(const DisplayCalibration& nominal, const LensE
   d.slope = lens.slope;
   d.center_periods = lens.center_periods - std::floor(lens.center_periods);
   return d;
-}
-
-double predict_psi(const LensModel& nominal, const LensModel& estimate, double view_cone_deg,
-                   const Eigen::Vector3d& camera_m, double u, double v) {
-  const auto& d = estimate.calibration();
-  const double k = 0.5 / std::tan(view_cone_deg * kPi / 360.0);
-  const double f_seen = 0.5 + (camera_m.x() - (u - 0.5) * d.width_m()) / camera_m.z() * k;
-  const double s = d.inv_view ? 1.0 : -1.0;
-  const double psi = f_seen + s * (estimate.phase(u, v) - nominal.phase(u, v));
-  return psi - std::floor(psi);
 }
 
 CorrectionField remove_gauge(const CorrectionField& field) {
@@ -251,31 +241,32 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
                                                   size_t(options.max_samples_per_position));
     for (size_t j = 0; j < in.size(); j += stride) {
       Sample s;
-      s.u = in[j].u;
+      s.u_phys = in[j].u;
       s.v = in[j].v;
-      s.u_phys = s.u;
-      s.a_nom = nominal_lens.phase(s.u, s.v);
       s.psi = in[j].psi;
-      if (with_field) {
-        s.wu = bspline_weights(nx, s.u);
+      if (with_field) {  // the field is smooth: its weights at P serve for the content point too
+        s.wu = bspline_weights(nx, s.u_phys);
         s.wv = bspline_weights(ny, s.v);
       }
       samples[i].push_back(s);
     }
   }
 
-  // delta: update each sample's physical point from the current estimate.
-  auto update_physical_points = [&]() {
+  // delta: each sample's content point (where A is evaluated) from its physical point and the
+  // current estimate; it moves with the estimate, so it is updated between the stages.
+  auto update_content_points = [&]() {
     double pitch_p, tilt;
     shader_terms(dc, x.lens[0], x.lens[1], pitch_p, tilt);
     const double k = 0.5 / std::tan(x.lens[3] * kPi / 360.0);
     for (size_t i = 0; i < samples.size(); ++i)
       for (auto& s : samples[i]) {
         const double f_seen =
-            0.5 + (x.cams[2 * i] - (s.u - 0.5) * dc.width_m) / x.cams[2 * i + 1] * k;
-        s.u_phys = s.u - shift_fraction(f_seen, nd.inv_view) / pitch_p;
+            0.5 + (x.cams[2 * i] - (s.u_phys - 0.5) * dc.width_m) / x.cams[2 * i + 1] * k;
+        s.u = s.u_phys + shift_fraction(f_seen, nd.inv_view) / pitch_p;
+        s.a_nom = nominal_lens.phase(s.u, s.v);
       }
   };
+  update_content_points();
 
   std::vector<double> m0x, m1x, m0y, m1y;
   if (with_field) {
@@ -399,10 +390,10 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
 
   // Stage 1: the linear model only, wide loss (the unmodelled warp is up to ~0.3 period).
   build_and_solve(0.2, false, false);
-  update_physical_points();
+  update_content_points();
   // Stage 2: with the correction field.
   build_and_solve(0.1, true, false);
-  update_physical_points();
+  update_content_points();
   // Stage 3: final robust scale, uncertainties.
   build_and_solve(options.loss_scale, true, true);
 
@@ -430,7 +421,7 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
       const double r = wrap_half(s.psi - psi_linear(dc, x.lens, &x.cams[2 * i], s.u, s.v,
                                                     s.u_phys, s.a_nom) - dc.sign * w);
       abs_all.push_back(std::abs(r));
-      kept.push_back({float(s.u), float(s.v), float(s.psi), float(r)});
+      kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
       if (std::abs(r) < inlier_bound) {
         sum2 += r * r;
         pos_sum2 += r * r;

@@ -1,11 +1,11 @@
 #pragma once
 // The lens solver (DESIGN section 5 step 4): ONE non-linear least-squares problem over all
-// camera positions. At a panel point X (whose content the camera sees, from registration) the
-// decoded phase is (DESIGN section 5 step 2)
-//   psi(X) = f_seen(P) + s (A_true(X) - A_nom(X))   (mod 1),  s = +1 with invView, -1 without
-//   f_seen(P) = 0.5 + ((Cx - Px) / Cz) / (2 tan(viewCone / 2)),  P = X - delta
-// where delta (< half a lens, horizontal) is the mean offset between the point the camera looks
-// at and the content the lens shows it there (see lens_solver.cpp). Unknowns: pitch, slope,
+// camera positions. At a panel point P the camera looks at (from registration) the decoded
+// phase is (DESIGN section 5 step 2)
+//   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))   (mod 1),  s = +1 with invView, -1 without
+//   f_seen(P) = 0.5 + ((Cx - Px) / Cz) / (2 tan(viewCone / 2)),  X = P + delta
+// where X is the content the lens shows there and delta (< half a lens, horizontal) the mean
+// offset to it (see lens_solver.cpp). Unknowns: pitch, slope,
 // center, viewCone, the B-spline correction field w (smoothness prior; gauge: zero mean and
 // zero linear trend, so it cannot absorb center, pitch or slope) and per-position camera
 // positions (priors from the registration). Residuals are wrap-aware
@@ -64,11 +64,6 @@ struct SolverResult {
   bool converged = false;
   std::string report;                   // Ceres brief reports of the stages
 };
-
-// Predicted wrapped phase (DESIGN section 5 step 2) for a sample at content point (u, v) seen
-// from `camera_m`, given the nominal lens (patterns) and an estimate (with correction field).
-double predict_psi(const LensModel& nominal, const LensModel& estimate, double view_cone_deg,
-                   const Eigen::Vector3d& camera_m, double u, double v);
 
 SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
                         const std::vector<PositionData>& positions, const SolverOptions& options);

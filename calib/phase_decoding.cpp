@@ -65,7 +65,7 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
   for (int by = 0; by < blocks.height; ++by)
     for (int bx = 0; bx < blocks.width; ++bx)
       centres.emplace_back(bx * b + 0.5f * b - 0.5f, by * b + 0.5f * b - 0.5f);
-  const std::vector<ScreenUV> uv = registration.image_to_uv(centres);
+  const std::vector<ScreenUV> uv = registration.image_to_panel_uv(centres);
 
   DecodedPhase out;
   out.step_correlation.assign(size_t(K), 0.0);

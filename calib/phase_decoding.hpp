@@ -18,7 +18,7 @@
 namespace lfd::calib {
 
 struct PhaseSample {
-  float u = 0, v = 0;  // panel point whose content the camera sees (registration)
+  float u = 0, v = 0;  // panel point the camera looks at (registration)
   float psi = 0;       // decoded wrapped phase in [0, 1)
   float modulation = 0;
 };

@@ -174,7 +174,6 @@ Registration::Registration(const BoardDetection& board, const PatternSet& set,
   cv::Mat inliers;
   cv::Mat H = cv::findHomography(undistorted, uv, cv::RANSAC, 0.002, inliers);
   if (H.empty()) throw InputError("the board corners do not fit a homography");
-  homography_ = cv::Matx33d(H);
 
   std::vector<cv::Point3f> obj_in;
   std::vector<cv::Point2f> img_in;
@@ -201,15 +200,23 @@ Registration::Registration(const BoardDetection& board, const PatternSet& set,
   position_m_ = {c[0], c[1], c[2]};
 }
 
-std::vector<ScreenUV> Registration::image_to_uv(const std::vector<cv::Point2f>& image_px) const {
-  const cv::Mat K(camera_.camera_matrix), D = distortion_mat(camera_);
-  std::vector<cv::Point2f> undistorted;
-  if (!image_px.empty()) cv::undistortPoints(image_px, undistorted, K, D, cv::noArray(), K);
+std::vector<ScreenUV> Registration::image_to_panel_uv(
+    const std::vector<cv::Point2f>& image_px) const {
+  std::vector<cv::Point2f> normalized;
+  if (!image_px.empty())
+    cv::undistortPoints(image_px, normalized, cv::Mat(camera_.camera_matrix),
+                        distortion_mat(camera_));
+  cv::Matx33d R;
+  cv::Rodrigues(rvec_, R);
+  const cv::Matx33d Rt = R.t();
+  const cv::Vec3d centre = -(Rt * tvec_);
   std::vector<ScreenUV> out;
-  out.reserve(undistorted.size());
-  for (const auto& p : undistorted) {
-    const cv::Vec3d q = homography_ * cv::Vec3d(p.x, p.y, 1.0);
-    out.push_back({q[0] / q[2], q[1] / q[2]});
+  out.reserve(normalized.size());
+  for (const auto& p : normalized) {
+    const cv::Vec3d ray = Rt * cv::Vec3d(p.x, p.y, 1.0);
+    const double t = -centre[2] / ray[2];  // the panel is the plane z = 0
+    const cv::Vec3d m = centre + t * ray;
+    out.push_back({m[0] / display_.width_m() + 0.5, m[1] / display_.height_m() + 0.5});
   }
   return out;
 }

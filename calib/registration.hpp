@@ -54,7 +54,7 @@ Eigen::Vector3d uv_to_display_m(const DisplayCalibration& d, ScreenUV uv);
 
 class Registration {
  public:
-  // Fits the homography (robustly) and the pose. `panel_shift_px` (optional, one per corner)
+  // Finds the corners that fit one homography (robustly) and fits the pose to them. `panel_shift_px` (optional, one per corner)
   // moves the corners' physical panel positions for the pose: the lens array shows each
   // corner displaced by up to half a lens (see calibrate.cpp), which the pose must not absorb.
   Registration(const BoardDetection& board, const PatternSet& set, const CameraIntrinsics& camera,
@@ -66,15 +66,18 @@ class Registration {
   double reprojection_rms_px() const { return reprojection_rms_px_; }
   int corner_count() const { return corners_; }
 
-  // Undistorted camera pixels -> panel (u, v) of the content seen there.
-  std::vector<ScreenUV> image_to_uv(const std::vector<cv::Point2f>& image_px) const;
+  // Camera pixels (distorted, as photographed) -> the panel point (u, v) the camera looks at
+  // there: the pixel's ray through the pose, met with the panel plane. This is the physical
+  // point, not the content the lens array shows there (that is shifted by up to half a lens,
+  // with a jump of a whole lens where the seen view fraction wraps, so it is no homography;
+  // the solver adds the shift from its current estimate).
+  std::vector<ScreenUV> image_to_panel_uv(const std::vector<cv::Point2f>& image_px) const;
   // Panel (u, v) -> distorted camera pixel, through the pose (for checks).
   std::vector<cv::Point2d> uv_to_image(const std::vector<ScreenUV>& uv) const;
 
  private:
   CameraIntrinsics camera_;
   DisplayCalibration display_;
-  cv::Matx33d homography_;  // undistorted pixel -> (u, v)
   cv::Vec3d rvec_, tvec_;
   Eigen::Vector3d position_m_;
   double reprojection_rms_px_ = 0;

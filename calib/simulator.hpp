@@ -25,7 +25,10 @@ struct CaptureEffects {
   double glare_fraction = 0.0;     // fraction of pixels replaced by saturated glare blobs
   std::array<float, 3> bezel{0.03f, 0.03f, 0.035f};  // what is seen outside the panel
   int supersample = 3;             // samples per camera pixel per axis
-  uint64_t seed = 1;
+  uint64_t seed = 1;               // noise (and glare, unless glare_seed is set)
+  // Reflections of room lights stay where they are while the camera and the room do: the
+  // photos of one camera position share one glare_seed (0: glare follows `seed`).
+  uint64_t glare_seed = 0;
 };
 
 class DisplaySimulator {

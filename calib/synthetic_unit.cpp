@@ -115,6 +115,7 @@ std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Cal
     for (size_t i = 0; i < rig.poses.size(); ++i) {
       CaptureEffects e = rig.effects;
       e.seed = rig.effects.seed * 1000003 + i * 101 + size_t(p.index);
+      e.glare_seed = rig.effects.seed * 1000003 + i * 101 + 7919;  // fixed per position
       e.exposure = exposure[i];
       const PhysicalCamera camera(rig.intrinsics, rig.poses[i]);
       out[i].images[stem] = to_mat(sim.capture(panel, camera, e));
