@@ -53,8 +53,9 @@ std::vector<calib::PositionCaptures> cached_captures(const std::string& cache_di
                                                      const calib::CaptureRig& rig) {
   namespace fs = std::filesystem;
   if (cache_dir.empty()) return calib::simulate_captures(set, truth, rig);
-  const fs::path dir = fs::path(cache_dir) / fmt::format("{}-seed{}-w{}-p{}-ss{}", file, seed,
-                                                         width, positions, supersample);
+  const fs::path dir =
+      fs::path(cache_dir) / fmt::format("{}-seed{}-w{}-p{}-ss{}-n{}", file, seed, width,
+                                        positions, supersample, set.patterns.size());
   if (fs::exists(dir / "complete")) {
     std::vector<std::string> warnings;
     return calib::read_captures(dir, set, warnings);

@@ -12,6 +12,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calib/coarse_start.hpp"
+#include "calib/fringe_registration.hpp"
 #include "calib/lens_model.hpp"
 #include "calib/registration.hpp"
 #include "calib/view_count.hpp"
@@ -172,6 +173,8 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
   const auto phase_p = set.of_kind(PatternKind::kPhase);
   const auto white_p = set.of_kind(PatternKind::kWhite);
   const auto black_p = set.of_kind(PatternKind::kBlack);
+  const auto fringe_x_p = set.of_kind(PatternKind::kFringeX);
+  const auto fringe_y_p = set.of_kind(PatternKind::kFringeY);
   auto path_of = [](const PositionCaptures& pc, const std::string& stem) {
     auto it = pc.paths.find(stem);
     return it == pc.paths.end() ? pc.name + "/" + stem : it->second;
@@ -232,11 +235,15 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     std::vector<cv::Point2d> board_shift;
     // The lens array shows a panel feature displaced by (c - 1/2) lens periods along the row
     // (lens_solver.cpp, shift_fraction); this moves it back for the pose.
-    auto lens_shift_px = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
+    // c: the lens fraction the camera sees at panel pixel px (nominal cone).
+    auto seen_fraction = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
       const Eigen::Vector3d p = uv_to_display_m(nd, panel_px_to_uv(nd, px));
       const double f_seen = 0.5 + (camera.x() - p.x()) / camera.z() * k_nom;
-      double c = nd.inv_view ? 1.0 - f_seen : f_seen;
-      c -= std::floor(c);
+      const double c = nd.inv_view ? 1.0 - f_seen : f_seen;
+      return c - std::floor(c);
+    };
+    auto lens_shift_px = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
+      const double c = seen_fraction(px, camera);
       return cv::Point2d(-(c - 0.5) / nominal_lens.pitch_periods() * nd.screen_w, 0.0);
     };
     try {
@@ -373,6 +380,41 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
         rep.board_corners = reg->corner_count();
         rep.reprojection_rms_px = reg->reprojection_rms_px();
         rep.camera_m = reg->camera_position_m();
+      }
+    }
+
+    // Dense registration from the fringe patterns, if the set has them: the board's ~40
+    // corners leave the camera's lateral position a few millimetres uncertain, thousands of
+    // fringe blocks over the whole screen pin it (and the panel mapping) down.
+    if (!fringe_x_p.empty()) {
+      auto images = [&](const std::vector<const PatternInfo*>& list) {
+        std::vector<cv::Mat> out_images;
+        for (const auto* p : list) out_images.push_back(image_of(pc, stem_of(p)));
+        return out_images;
+      };
+      const FringeCorrespondences dense =
+          decode_fringes(images(fringe_x_p), images(fringe_y_p), *reg, set);
+      ExtraPoints extra;
+      const Eigen::Vector3d camera = reg->camera_position_m();
+      for (size_t k = 0; k < dense.image_px.size(); ++k) {
+        // Blocks where the seen view wraps mix content a lens apart: no clean position.
+        const double c = seen_fraction(dense.panel_px[k], camera);
+        if (c < 0.1 || c > 0.9) continue;
+        extra.image_px.push_back(dense.image_px[k]);
+        extra.panel_px.push_back(dense.panel_px[k]);
+        extra.shift_px.push_back(lens_shift_px(dense.panel_px[k], camera));
+      }
+      rep.fringe_points = long(extra.image_px.size());
+      if (extra.image_px.size() >= 100) {
+        reg.emplace(boards[i], set, out.camera, board_shift, extra);
+        rep.board_corners = reg->corner_count();
+        rep.reprojection_rms_px = reg->reprojection_rms_px();
+        rep.camera_m = reg->camera_position_m();
+      } else {
+        out.warnings.push_back(fmt::format(
+            "{}: only {} fringe blocks decoded; registration from the board alone (less "
+            "accurate center); check focus and exposure of the fringe photos",
+            pc.name, extra.image_px.size()));
       }
     }
 
@@ -532,7 +574,8 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
   for (const auto& p : o.positions)
     positions.push_back(
         {{"name", p.name},
-         {"board_corners", p.board_corners},
+         {"registration_points", p.board_corners},
+         {"fringe_points", p.fringe_points},
          {"reprojection_rms_px", p.reprojection_rms_px},
          {"camera_m", {p.camera_m.x(), p.camera_m.y(), p.camera_m.z()}},
          {"camera_refined_m",

@@ -22,7 +22,7 @@ constexpr int kManifestVersion = 1;
 
 PatternKind kind_from_string(const std::string& s, const std::string& where) {
   for (PatternKind k : {PatternKind::kBoard, PatternKind::kWhite, PatternKind::kBlack,
-                        PatternKind::kPhase})
+                        PatternKind::kPhase, PatternKind::kFringeX, PatternKind::kFringeY})
     if (s == to_string(k)) return k;
   throw_input_error("{}: patterns: unknown pattern kind '{}'", where, s);
 }
@@ -87,6 +87,8 @@ const char* to_string(PatternKind kind) {
     case PatternKind::kWhite: return "white";
     case PatternKind::kBlack: return "black";
     case PatternKind::kPhase: return "phase";
+    case PatternKind::kFringeX: return "fringe_x";
+    case PatternKind::kFringeY: return "fringe_y";
   }
   return "?";
 }
@@ -167,6 +169,19 @@ PatternSet plan_patterns(const Calibration& nominal, const PatternOptions& optio
   add("02_black.png", PatternKind::kBlack, 0);
   for (int k = 0; k < set.phase_steps; ++k)
     add(fmt::format("{:02d}_phase_{}of{}.png", 3 + k, k, set.phase_steps), PatternKind::kPhase, k);
+  if (options.fringes) {
+    // A period long against the board registration's error (a few pixels, so the fringe
+    // order follows from it) and against a lens, short enough for a precise phase.
+    set.fringe_period_px = std::max(48, short_px / 12);
+    for (const auto& [kind, axis] : {std::pair{PatternKind::kFringeX, "x"},
+                                     std::pair{PatternKind::kFringeY, "y"}})
+      for (int k = 0; k < set.fringe_steps; ++k)
+        add(fmt::format("{:02d}_fringe_{}_{}of{}.png", int(set.patterns.size()), axis, k,
+                        set.fringe_steps),
+            kind, k);
+  } else {
+    set.fringe_steps = 0;
+  }
   return set;
 }
 
@@ -203,6 +218,19 @@ Image8 render_pattern(const PatternSet& set, const PatternInfo& pattern) {
             const double value = 0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * (f - shift));
             image.at(x, row, c) = uint8_t(std::lround(255.0 * value));
           }
+      break;
+    }
+    case PatternKind::kFringeX:
+    case PatternKind::kFringeY: {
+      // Whole pixels (all three subpixels alike), so every view shows the same image.
+      const bool along_x = pattern.kind == PatternKind::kFringeX;
+      const double shift = double(pattern.step) / set.fringe_steps;
+      for (int row = 0; row < d.screen_h; ++row)
+        for (int x = 0; x < d.screen_w; ++x) {
+          const double t = (along_x ? x : row) / set.fringe_period_px - shift;
+          const auto value = uint8_t(std::lround(255.0 * (0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * t))));
+          for (int c = 0; c < 3; ++c) image.at(x, row, c) = value;
+        }
       break;
     }
   }
@@ -243,6 +271,8 @@ void write_pattern_set(const std::filesystem::path& dir, const PatternSet& set, 
   j["version"] = kManifestVersion;
   j["nominal"] = to_json(set.nominal);
   j["phase_steps"] = set.phase_steps;
+  j["fringe_steps"] = set.fringe_steps;
+  j["fringe_period_px"] = set.fringe_period_px;
   const auto& b = set.board;
   j["board"] = {{"dictionary", "DICT_5X5_100"}, {"squares_x", b.squares_x},
                 {"squares_y", b.squares_y},     {"square_px", b.square_px},
@@ -260,6 +290,13 @@ void write_pattern_set(const std::filesystem::path& dir, const PatternSet& set, 
       e["step"] = p.step;
       e["steps"] = set.phase_steps;
       e["shows"] = "0.5 + 0.5 cos(2 pi (f_nom(s) - step/steps)) per subpixel";
+    }
+    if (p.kind == PatternKind::kFringeX || p.kind == PatternKind::kFringeY) {
+      e["step"] = p.step;
+      e["steps"] = set.fringe_steps;
+      e["shows"] = p.kind == PatternKind::kFringeX
+                       ? "0.5 + 0.5 cos(2 pi (x / fringe_period_px - step/steps)) per pixel"
+                       : "0.5 + 0.5 cos(2 pi (row / fringe_period_px - step/steps)) per pixel";
     }
     list.push_back(e);
   }
@@ -288,6 +325,14 @@ PatternSet read_pattern_set(const std::filesystem::path& dir) {
   set.phase_steps = j.value("phase_steps", 0);
   require_field(set.phase_steps >= 3 && set.phase_steps <= 32, where, "phase_steps",
                 "must be between 3 and 32");
+  // Manifests written before the fringe patterns existed have none: board-only registration.
+  set.fringe_steps = j.value("fringe_steps", 0);
+  set.fringe_period_px = j.value("fringe_period_px", 0.0);
+  require_field(set.fringe_steps == 0 || (set.fringe_steps >= 3 && set.fringe_steps <= 32), where,
+                "fringe_steps", "must be 0 or between 3 and 32");
+  require_field(set.fringe_steps == 0 || (std::isfinite(set.fringe_period_px) &&
+                                          set.fringe_period_px >= 8),
+                where, "fringe_period_px", "must be at least 8");
   try {
     const auto& b = j.at("board");
     set.board.squares_x = b.at("squares_x");
@@ -318,6 +363,9 @@ PatternSet read_pattern_set(const std::filesystem::path& dir) {
                 "needs exactly one board pattern");
   require_field(int(set.of_kind(PatternKind::kPhase).size()) == set.phase_steps, where,
                 "patterns", "needs phase_steps phase patterns");
+  for (PatternKind kind : {PatternKind::kFringeX, PatternKind::kFringeY})
+    require_field(int(set.of_kind(kind).size()) == set.fringe_steps, where, "patterns",
+                  fmt::format("needs fringe_steps {} patterns", to_string(kind)));
   return set;
 }
 

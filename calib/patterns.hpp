@@ -4,7 +4,10 @@
 //   board   a ChArUco board (the same 2D image in every view) for registration and pose;
 //   white / black   exposure normalisation and exposure checks;
 //   phase k K phase-shifted sinusoids in the nominal view fraction,
-//           subpixel s shows 0.5 + 0.5 cos(2 pi (f_nom(s) - k/K)).
+//           subpixel s shows 0.5 + 0.5 cos(2 pi (f_nom(s) - k/K));
+//   fringe x/y k   4 phase-shifted sinusoids along the panel's x (y) axis, the same in every
+//           view (pixel x shows 0.5 + 0.5 cos(2 pi (x / period - k/4))): dense registration,
+//           thousands of correspondences over the whole screen where the board gives ~40.
 // Every pattern except the board carries four ArUco markers in the panel corners whose ids
 // encode the pattern index, so a capture of the wrong pattern or from a camera that moved is
 // recognised (the ids and the marker positions are checked against the manifest).
@@ -20,13 +23,13 @@
 
 namespace lfd::calib {
 
-enum class PatternKind { kBoard, kWhite, kBlack, kPhase };
+enum class PatternKind { kBoard, kWhite, kBlack, kPhase, kFringeX, kFringeY };
 const char* to_string(PatternKind kind);
 
 struct PatternInfo {
   std::string file;  // file name under patterns/ and captures/<position>/ (stem is what counts)
   PatternKind kind = PatternKind::kPhase;
-  int step = 0;      // phase step k (kPhase only)
+  int step = 0;      // phase step k (kPhase, kFringeX, kFringeY)
   int index = 0;     // position in the manifest; corner marker ids are 4 * index + corner
 };
 
@@ -49,6 +52,8 @@ struct CornerMarkers {
 struct PatternSet {
   Calibration nominal;  // the display the patterns were made for (its lens model is f_nom)
   int phase_steps = 8;
+  int fringe_steps = 4;       // per fringe axis (0: no fringe patterns, board-only registration)
+  double fringe_period_px = 0;
   BoardLayout board;
   CornerMarkers markers;
   std::vector<PatternInfo> patterns;
@@ -62,6 +67,7 @@ struct PatternSet {
 struct PatternOptions {
   int phase_steps = 8;          // K >= 3; 8 rejects gamma harmonics up to the 6th
   int board_squares_short = 6;  // ChArUco squares along the short panel side
+  bool fringes = true;          // dense registration patterns (8 more photos per position)
 };
 
 // The pattern list and layout for a display (no pixels yet).

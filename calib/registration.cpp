@@ -165,9 +165,11 @@ Registration::Registration(const BoardDetection& board, const PatternSet& set,
 
   std::vector<cv::Point2f> undistorted;
   cv::undistortPoints(image_px, undistorted, K, D, cv::noArray(), K);
+  // The physical panel points (content moved back by the lens shift) are what a homography
+  // maps the undistorted pixels to.
   std::vector<cv::Point2f> uv;
-  for (const auto& px : panel_px) {
-    const ScreenUV p = panel_px_to_uv(display_, px);
+  for (size_t i = 0; i < panel_px.size(); ++i) {
+    const ScreenUV p = panel_px_to_uv(display_, panel_px[i] + shift[i]);
     uv.emplace_back(float(p.u), float(p.v));
   }
   // Robust first (a corner misread on a glare spot), then least squares on the inliers.
