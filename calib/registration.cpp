@@ -35,13 +35,22 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
   // bezel and the room around it are dark.
   double max_value = 0;
   cv::minMaxLoc(gray8, nullptr, &max_value);
-  // Per edge: a cut-off screen lights a long stretch of it; glare spots only short ones.
-  auto lit_fraction = [&](cv::Mat line) {
-    return double(cv::countNonZero(line > 0.5 * max_value)) / double(line.total());
+  // Per edge: a cut-off screen lights a long unbroken stretch of it; glare spots (several may
+  // sit on one edge) only short ones.
+  auto longest_lit_run = [&](cv::Mat line) {
+    const cv::Mat lit = (line > 0.5 * max_value);
+    const cv::Mat flat = lit.reshape(1, 1);
+    int run = 0, best = 0;
+    for (int i = 0; i < flat.cols; ++i) {
+      run = flat.at<uint8_t>(0, i) ? run + 1 : 0;
+      best = std::max(best, run);
+    }
+    return double(best) / double(line.total());
   };
-  const double lit = std::max({lit_fraction(gray8.row(0)), lit_fraction(gray8.row(gray8.rows - 1)),
-                               lit_fraction(gray8.col(0)), lit_fraction(gray8.col(gray8.cols - 1))});
-  out.touches_border = max_value > 20 && lit > 0.15;
+  const double lit =
+      std::max({longest_lit_run(gray8.row(0)), longest_lit_run(gray8.row(gray8.rows - 1)),
+                longest_lit_run(gray8.col(0).clone()), longest_lit_run(gray8.col(gray8.cols - 1).clone())});
+  out.touches_border = max_value > 20 && lit > 0.25;
   if (marker_ids.size() < 4) return out;
   cv::aruco::interpolateCornersCharuco(marker_corners, marker_ids, gray8, board, out.image_px,
                                        out.ids, cv::noArray(), cv::noArray(), 2);

@@ -30,8 +30,7 @@ void SimulatedCamera::fix_exposure_on_white() {
 }
 
 cv::Mat SimulatedCamera::capture() {
-  CaptureEffects e = rig_.effects;
-  e.seed = rig_.effects.seed * 1000003 + size_t(position_) * 101 + size_t(photo_++);
+  CaptureEffects e = photo_effects(rig_, size_t(position_), size_t(photo_++));
   e.exposure = exposure_;
   return to_mat(simulator_.capture(to_float(screen_()), camera(), e));
 }

@@ -96,6 +96,13 @@ double exposure_on_white(const DisplaySimulator& sim, const ImageF& white_panel,
   return std::pow(0.85, e.gamma) / p99;
 }
 
+CaptureEffects photo_effects(const CaptureRig& rig, size_t position, size_t photo) {
+  CaptureEffects e = rig.effects;
+  e.seed = rig.effects.seed * 1000003 + position * 101 + photo;
+  e.glare_seed = rig.effects.seed * 1000003 + position * 101 + 7919;
+  return e;
+}
+
 std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Calibration& truth,
                                                 const CaptureRig& rig) {
   const DisplaySimulator sim(LensModel(truth.display, truth.correction));
@@ -113,9 +120,7 @@ std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const Cal
     const ImageF panel = to_float(render_pattern(set, p));
     const std::string stem = std::filesystem::path(p.file).stem().string();
     for (size_t i = 0; i < rig.poses.size(); ++i) {
-      CaptureEffects e = rig.effects;
-      e.seed = rig.effects.seed * 1000003 + i * 101 + size_t(p.index);
-      e.glare_seed = rig.effects.seed * 1000003 + i * 101 + 7919;  // fixed per position
+      CaptureEffects e = photo_effects(rig, i, size_t(p.index));
       e.exposure = exposure[i];
       const PhysicalCamera camera(rig.intrinsics, rig.poses[i]);
       out[i].images[stem] = to_mat(sim.capture(panel, camera, e));

@@ -43,6 +43,10 @@ CaptureRig make_capture_rig(const DisplayCalibration& display, int width_px, int
 // Manual exposure for one camera, set on the white pattern as a user would: its brightest 1 %
 // (the lens magnifies single subpixels into bright colour stripes) at 85 % of full scale.
 // `effects.exposure` if nothing is lit.
+// The effects of photo number `photo` at camera position `position` (0-based): its own noise,
+// and the position's glare (reflections stay put while the camera does).
+CaptureEffects photo_effects(const CaptureRig& rig, size_t position, size_t photo);
+
 double exposure_on_white(const DisplaySimulator& simulator, const ImageF& white_panel,
                          const PhysicalCamera& camera, const CaptureEffects& effects);
 

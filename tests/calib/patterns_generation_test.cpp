@@ -33,9 +33,13 @@ TEST(PatternsGeneration, ListsBoardWhiteBlackAndKPhaseSteps) {
   PatternOptions o;
   o.phase_steps = 6;
   const PatternSet set = plan_patterns(portrait(), o);
-  EXPECT_EQ(set.patterns.size(), 3u + 6u);
+  EXPECT_EQ(set.patterns.size(), 3u + 6u + 8u);
   EXPECT_EQ(set.of_kind(PatternKind::kBoard).size(), 1u);
   EXPECT_EQ(set.of_kind(PatternKind::kPhase).size(), 6u);
+  EXPECT_EQ(set.of_kind(PatternKind::kFringeX).size(), 4u);
+  EXPECT_EQ(set.of_kind(PatternKind::kFringeY).size(), 4u);
+  o.fringes = false;
+  EXPECT_EQ(plan_patterns(portrait(), o).patterns.size(), 3u + 6u);
   EXPECT_NE(set.find("00_board"), nullptr);
   EXPECT_EQ(set.find("nonexistent"), nullptr);
 }
@@ -51,6 +55,21 @@ TEST(PatternsGeneration, PhasePatternShowsTheNominalViewFractionSinusoid) {
       const double expected = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * (f - 3.0 / 8));
       EXPECT_NEAR(img.at(x, row, c) / 255.0, expected, 0.5 / 255 + 1e-9);
     }
+}
+
+TEST(PatternsGeneration, FringePatternsShowTheSameSinusoidInEveryViewAlongTheirAxis) {
+  const PatternSet set = plan_patterns(portrait());
+  ASSERT_GE(set.fringe_period_px, 48.0);
+  for (PatternKind kind : {PatternKind::kFringeX, PatternKind::kFringeY}) {
+    const PatternInfo& p = *set.of_kind(kind).at(1);
+    const Image8 img = render_pattern(set, p);
+    for (auto [x, row] : {std::pair{700, 900}, {800, 1500}, {401, 1203}}) {
+      const double t = (kind == PatternKind::kFringeX ? x : row) / set.fringe_period_px - 0.25;
+      const double expected = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * t);
+      for (int c = 0; c < 3; ++c)  // all subpixels of a pixel alike: no view dependence
+        EXPECT_NEAR(img.at(x, row, c) / 255.0, expected, 0.5 / 255 + 1e-9) << to_string(kind);
+    }
+  }
 }
 
 TEST(PatternsGeneration, BoardCornersInTheManifestAreWhereTheBoardIsDrawn) {
@@ -87,7 +106,13 @@ TEST(PatternsGeneration, ManifestRoundTripsAndIsNotOverwrittenWithoutForce) {
   for (const auto& p : set.patterns) EXPECT_TRUE(std::filesystem::exists(dir / "patterns" / p.file));
   const PatternSet back = read_pattern_set(dir);
   EXPECT_EQ(back.phase_steps, 3);
+  EXPECT_EQ(back.fringe_steps, set.fringe_steps);
+  EXPECT_DOUBLE_EQ(back.fringe_period_px, set.fringe_period_px);
   EXPECT_EQ(back.patterns.size(), set.patterns.size());
+  for (size_t i = 0; i < set.patterns.size(); ++i) {
+    EXPECT_EQ(back.patterns[i].kind, set.patterns[i].kind) << set.patterns[i].file;
+    EXPECT_EQ(back.patterns[i].step, set.patterns[i].step) << set.patterns[i].file;
+  }
   EXPECT_EQ(back.board.corners_px.size(), set.board.corners_px.size());
   EXPECT_DOUBLE_EQ(back.nominal.display.pitch_lpi, set.nominal.display.pitch_lpi);
   EXPECT_THROW(write_pattern_set(dir, set, false), InputError);
