@@ -8,7 +8,6 @@
 #include "calib/calibrate.hpp"
 #include "calib/live/hardware_live_calibration.hpp"
 #include "calib/live_calibration.hpp"
-#include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "validate/calibration_report.hpp"
 
@@ -41,7 +40,7 @@ int RunCalibrate(int argc, char** argv) {
                  "display description (default: the one in the pattern manifest)");
   app.add_option("--out", out_path, "calibration.json to write")->required();
   app.add_option("--visual-json", visual_path, "also export the lens values as visual.json");
-  app.add_option("--report", report_dir, "write report.json (positions, residuals) here");
+  app.add_option("--report", report_dir, "write the report here: index.html (result, gates, per-position tables, phase and residual maps), figures, report.json");
   app.add_option("--grid", grid, "correction field control points per side (0: none)")
       ->capture_default_str()
       ->check(CLI::Range(0, 32));

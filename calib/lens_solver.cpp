@@ -406,7 +406,6 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   std::vector<double> abs_all;
   double sum2 = 0;
   long inliers = 0;
-  const double inlier_bound = 0.15;
   for (size_t i = 0; i < samples.size(); ++i) {
     double pos_sum2 = 0;
     long pos_in = 0;
@@ -422,7 +421,7 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
                                                     s.u_phys, s.a_nom) - dc.sign * w);
       abs_all.push_back(std::abs(r));
       kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
-      if (std::abs(r) < inlier_bound) {
+      if (std::abs(r) < kOutlierBoundPeriods) {
         sum2 += r * r;
         pos_sum2 += r * r;
         ++inliers;

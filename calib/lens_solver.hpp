@@ -46,6 +46,10 @@ struct SolverOptions {
   bool verbose = false;
 };
 
+// A phase residual beyond this is an outlier (glare, bezel): left out of the residual RMS and
+// counted against the inlier fraction.
+inline constexpr double kOutlierBoundPeriods = 0.15;
+
 // One phase sample after the solve (for reports): where it is, what was decoded, and the
 // wrapped residual psi_obs - psi_model, lens periods.
 struct ResidualSample {

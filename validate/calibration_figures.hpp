@@ -11,9 +11,9 @@
 
 namespace lfd::validate {
 
-// Residuals at or beyond this many lens periods are outliers: the solver's inlier bound
-// (calib/lens_solver.cpp), so the figures show the samples its statistics leave out.
-inline constexpr double kOutlierBoundPeriods = 0.15;
+// Residuals at or beyond the solver's inlier bound are drawn as outliers, so the figures show
+// the samples its statistics leave out.
+using calib::kOutlierBoundPeriods;
 
 struct PositionFigures {
   std::string psi, residual;  // PNG file names in the report folder; empty without samples
