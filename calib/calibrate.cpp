@@ -300,7 +300,6 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     const double diag = std::hypot(size.width, size.height);
     const double lens_px = double(size.width) / nominal_lens.pitch_periods();
     std::map<int, cv::Point2d> reference;
-    std::map<int, std::vector<std::array<cv::Point2d, 4>>> marker_corners;
     std::string reference_path;
     int verified = 0;
     for (const auto& p : set.patterns) {
@@ -314,7 +313,6 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
         if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > 0.1 * diag) continue;
         if (id / 4 == p.index) {
           own[id % 4] = centre;
-          marker_corners[id % 4].push_back(corners);
         } else if (id / 4 < int(set.patterns.size())) {
           others.insert(id / 4);
         }
@@ -358,30 +356,6 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
           "{}: corner markers found in only {} of {} captures; pattern identity and camera "
           "motion could not be checked for the others",
           pc.name, verified, set.patterns.size() - 1));
-
-    // The corner markers, averaged over the captures, add correspondences at the far corners
-    // of the screen, where they constrain the perspective (and so the camera's lateral
-    // position) most.
-    if (options.use_corner_markers) {
-      ExtraPoints extra;
-      for (const auto& [corner, seen] : marker_corners) {
-        if (seen.size() < 3) continue;
-        const auto panel = corner_marker_panel_px(set, corner);
-        for (size_t k = 0; k < 4; ++k) {
-          cv::Point2d mean(0, 0);
-          for (const auto& c : seen) mean += c[k] * (1.0 / double(seen.size()));
-          extra.image_px.emplace_back(mean);
-          extra.panel_px.push_back(panel[k]);
-          extra.shift_px.push_back(lens_shift_px(panel[k], reg->camera_position_m()));
-        }
-      }
-      if (!extra.image_px.empty()) {
-        reg.emplace(boards[i], set, out.camera, board_shift, extra);
-        rep.board_corners = reg->corner_count();
-        rep.reprojection_rms_px = reg->reprojection_rms_px();
-        rep.camera_m = reg->camera_position_m();
-      }
-    }
 
     // Dense registration from the fringe patterns, if the set has them: the board's ~40
     // corners leave the camera's lateral position a few millimetres uncertain, thousands of

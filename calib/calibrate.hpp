@@ -54,10 +54,6 @@ struct CalibrateOptions {
   // Camera positions known by other means (a measured rig; synthetic tests): they replace the
   // registration's, with 0.1 mm priors. One per position, or empty.
   std::vector<Eigen::Vector3d> known_camera_positions_m;
-  // Add the corner markers of the captures to the board corners for registration and pose.
-  // Off: measured on the Portrait round trip it made pitch, center and cone worse (the marker
-  // corners seem biased under the lens array); kept for the investigation.
-  bool use_corner_markers = false;
   double max_motion_px = 3.0;          // corner markers may move this much between captures
                                        // (or 0.5 % of the image diagonal, if more)
   double max_clipped_fraction = 0.25;  // of the screen saturated in one capture

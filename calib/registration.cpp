@@ -87,17 +87,6 @@ std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8) {
   return out;
 }
 
-std::array<cv::Point2d, 4> corner_marker_panel_px(const PatternSet& set, int corner) {
-  // The marker occupies pixels x0 .. x0 + side - 1 (patterns.cpp), so its outer corners sit
-  // on pixel boundaries, half a pixel outside the first and last pixel centres.
-  const auto& m = set.markers;
-  const cv::Point2d c = m.centres_px.at(size_t(corner));
-  const double x0 = std::lround(c.x + 0.5 - m.side_px / 2.0) - 0.5;
-  const double y0 = std::lround(c.y + 0.5 - m.side_px / 2.0) - 0.5;
-  const double x1 = x0 + m.side_px, y1 = y0 + m.side_px;
-  return {cv::Point2d(x0, y0), cv::Point2d(x1, y0), cv::Point2d(x1, y1), cv::Point2d(x0, y1)};
-}
-
 namespace {
 
 // Board corners as OpenCV object points in the display frame (metres, z = 0).

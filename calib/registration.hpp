@@ -33,10 +33,8 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set);
 std::map<int, cv::Point2d> detect_corner_markers(const cv::Mat& gray8);
 // Their four outer corners (marker order TL, TR, BR, BL as drawn), by marker id.
 std::map<int, std::array<cv::Point2d, 4>> detect_corner_marker_corners(const cv::Mat& gray8);
-// Panel positions (OpenCV pixel coordinates) of the outer corners of corner marker `corner`.
-std::array<cv::Point2d, 4> corner_marker_panel_px(const PatternSet& set, int corner);
 
-// Extra correspondences for the registration (the corner markers, averaged over captures).
+// Extra correspondences for the registration (the fringe blocks).
 struct ExtraPoints {
   std::vector<cv::Point2f> image_px;
   std::vector<cv::Point2d> panel_px;
@@ -54,9 +52,10 @@ Eigen::Vector3d uv_to_display_m(const DisplayCalibration& d, ScreenUV uv);
 
 class Registration {
  public:
-  // Finds the corners that fit one homography (robustly) and fits the pose to them. `panel_shift_px` (optional, one per corner)
-  // moves the corners' physical panel positions for the pose: the lens array shows each
-  // corner displaced by up to half a lens (see calibrate.cpp), which the pose must not absorb.
+  // Finds the correspondences (board corners + extra points) whose physical panel points fit
+  // one homography (robustly) and fits the pose to them. `panel_shift_px` (optional, one per
+  // corner) moves content positions to physical ones: the lens array shows each feature
+  // displaced by up to half a lens (see calibrate.cpp), which the pose must not absorb.
   Registration(const BoardDetection& board, const PatternSet& set, const CameraIntrinsics& camera,
                const std::vector<cv::Point2d>& panel_shift_px = {},
                const ExtraPoints& extra = {});
