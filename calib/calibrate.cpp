@@ -567,7 +567,10 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
                  {"fy", o.camera.camera_matrix(1, 1)},
                  {"cx", o.camera.camera_matrix(0, 2)},
                  {"cy", o.camera.camera_matrix(1, 2)}};
-  j["solver"] = {{"seconds", o.solve.solve_seconds}, {"stages", o.solve.report}};
+  j["solver"] = {{"seconds", o.solve.solve_seconds},
+                 {"phase_noise_periods", o.solve.obs_sigma_periods},
+                 {"noise_inflation", o.solve.noise_inflation},
+                 {"stages", o.solve.report}};
   j["warnings"] = o.warnings;
   j["gate_failures"] = o.gate_failures;
   j["seconds"] = o.seconds;

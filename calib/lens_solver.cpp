@@ -275,12 +275,60 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   }
 
   SolverResult result;
+  // The wrapped residual (lens periods) of sample s of position i at the current estimate.
+  auto residual_of = [&](size_t i, const Sample& s) {
+    double w = 0;
+    if (with_field)
+      for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a)
+          w += x.coeffs[size_t(s.wv.i0 + b) * nx + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
+    return wrap_half(s.psi - psi_linear(dc, x.lens, &x.cams[2 * i], s.u, s.v, s.u_phys, s.a_nom) -
+                     dc.sign * w);
+  };
+
+  // The phase noise the final stage weights the samples with: the inlier RMS, inflated by how
+  // much neighbouring samples share their errors (lens-scale moire, registration, what the
+  // field cannot follow). For independent errors the mean of the n residuals in a screen cell
+  // has variance sigma^2 / n; the measured n * mean^2 over sigma^2 is the inflation. Without
+  // it the covariance would count 100k correlated samples as independent and come out several
+  // times too small.
+  auto effective_sigma = [&]() {
+    constexpr int kCells = 16;
+    double sum2 = 0, inflation_sum = 0;
+    long n = 0, cells_used = 0;
+    std::vector<std::pair<double, long>> cells;
+    for (size_t i = 0; i < samples.size(); ++i) {
+      cells.assign(kCells * kCells, {0.0, 0});
+      for (const auto& s : samples[i]) {
+        const double r = residual_of(i, s);
+        if (std::abs(r) >= kOutlierBoundPeriods) continue;
+        sum2 += r * r;
+        ++n;
+        const int cu = std::clamp(int(s.u_phys * kCells), 0, kCells - 1);
+        const int cv = std::clamp(int(s.v * kCells), 0, kCells - 1);
+        cells[size_t(cv) * kCells + cu].first += r;
+        cells[size_t(cv) * kCells + cu].second += 1;
+      }
+      for (const auto& [sum, count] : cells)
+        if (count >= 10) {
+          inflation_sum += sum * sum / double(count);  // = count * mean^2
+          ++cells_used;
+        }
+    }
+    if (n < 10) return options.obs_sigma;
+    const double sigma2 = sum2 / double(n);
+    const double inflation = cells_used ? std::max(1.0, inflation_sum / cells_used / sigma2) : 1.0;
+    result.noise_inflation = inflation;
+    return std::max(1e-4, std::sqrt(sigma2 * inflation));
+  };
+
+  double obs_sigma = options.obs_sigma;
   auto build_and_solve = [&](double loss_scale, bool field_free, bool covariance) {
     ceres::Problem::Options po;
     po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(po);
-    ceres::CauchyLoss loss(loss_scale / options.obs_sigma);
-    const double inv_sigma = 1.0 / options.obs_sigma;
+    ceres::CauchyLoss loss(loss_scale / obs_sigma);
+    const double inv_sigma = 1.0 / obs_sigma;
     for (size_t i = 0; i < samples.size(); ++i)
       for (const auto& s : samples[i]) {
         std::vector<double*> blocks{x.lens, &x.cams[2 * i]};
@@ -345,12 +393,9 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
     result.converged = summary.IsSolutionUsable();
 
     if (!covariance) return;
-    // Uncertainties: the Gauss-Newton covariance at the solution, scaled by the observed
-    // residual variance (the residuals were normalised by an assumed sigma).
-    long n_obs = 0;
-    for (const auto& s : samples) n_obs += long(s.size());
-    const long n_par = 4 + long(x.cams.size()) + long(x.coeffs.size());
-    const double variance = 2.0 * summary.final_cost / double(std::max(1L, n_obs - n_par));
+    // Uncertainties: the Gauss-Newton covariance at the solution. The samples are weighted by
+    // their measured effective noise (effective_sigma) and the priors by theirs, so it needs
+    // no rescaling.
     ceres::Covariance::Options co;
     co.algorithm_type = ceres::DENSE_SVD;
     co.null_space_rank = -1;
@@ -366,7 +411,6 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
     const size_t dim = 4 + x.coeffs.size();
     Eigen::MatrixXd c(dim, dim);
     if (!cov.GetCovarianceMatrix(blocks, c.data())) return;
-    c *= variance;
     const char* names[4] = {"pitch_lpi", "slope", "center_periods", "view_cone_deg"};
     for (int i = 0; i < 4; ++i) result.sigma[names[i]] = std::sqrt(std::max(0.0, c(i, i)));
     if (!fit_cone) result.sigma["view_cone_deg"] = 0;
@@ -394,7 +438,9 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   // Stage 2: with the correction field.
   build_and_solve(0.1, true, false);
   update_content_points();
-  // Stage 3: final robust scale, uncertainties.
+  // Stage 3: final robust scale, the measured noise, uncertainties.
+  obs_sigma = effective_sigma();
+  result.obs_sigma_periods = obs_sigma;
   build_and_solve(options.loss_scale, true, true);
 
   result.lens = {x.lens[0], x.lens[1], x.lens[2] - std::floor(x.lens[2]), x.lens[3]};
@@ -412,13 +458,7 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
     auto& kept = result.position_samples.emplace_back();
     kept.reserve(samples[i].size());
     for (const auto& s : samples[i]) {
-      double w = 0;
-      if (with_field)
-        for (int b = 0; b < 4; ++b)
-          for (int a = 0; a < 4; ++a)
-            w += x.coeffs[size_t(s.wv.i0 + b) * nx + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
-      const double r = wrap_half(s.psi - psi_linear(dc, x.lens, &x.cams[2 * i], s.u, s.v,
-                                                    s.u_phys, s.a_nom) - dc.sign * w);
+      const double r = residual_of(i, s);
       abs_all.push_back(std::abs(r));
       kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
       if (std::abs(r) < kOutlierBoundPeriods) {

@@ -37,7 +37,7 @@ struct LensEstimate {
 struct SolverOptions {
   int grid_nx = 8, grid_ny = 8;  // correction control points (0: no correction field)
   double smoothness = 1.0;       // weight of the second differences of the control points
-  double obs_sigma = 0.02;       // assumed phase noise per sample, lens periods
+  double obs_sigma = 0.02;       // phase noise per sample assumed before it is measured, periods
   double loss_scale = 0.05;      // Cauchy scale of the final stage, lens periods
   bool fit_view_cone = true;     // needs >= 2 positions (else the nominal cone is kept)
   int max_samples_per_position = 40000;
@@ -64,6 +64,8 @@ struct SolverResult {
   ResidualStats residuals;
   std::vector<double> position_rms;     // inlier rms per position, lens periods
   std::vector<std::vector<ResidualSample>> position_samples;  // per position, as solved
+  double obs_sigma_periods = 0;  // per-sample phase noise the final stage used (effective)
+  double noise_inflation = 1;    // its inflation for errors shared by neighbouring samples
   double solve_seconds = 0;
   bool converged = false;
   std::string report;                   // Ceres brief reports of the stages
