@@ -99,7 +99,7 @@ double exposure_on_white(const DisplaySimulator& sim, const ImageF& white_panel,
 CaptureEffects photo_effects(const CaptureRig& rig, size_t position, size_t photo) {
   CaptureEffects e = rig.effects;
   e.seed = rig.effects.seed * 1000003 + position * 101 + photo;
-  e.glare_seed = rig.effects.seed * 1000003 + position * 101 + 7919;
+  e.glare_seed = rig.glare_moves ? 0 : rig.effects.seed * 1000003 + position * 101 + 7919;
   return e;
 }
 

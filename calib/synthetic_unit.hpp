@@ -32,6 +32,7 @@ struct CaptureRig {
   CameraIntrinsics intrinsics;
   std::vector<CameraPose> poses;
   CaptureEffects effects;
+  bool glare_moves = false;  // new glare in every photo (a room that changes between photos)
 };
 
 // `positions` (1-3) cameras at different distances and sides, with a `width_px` wide image in

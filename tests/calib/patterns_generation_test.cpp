@@ -119,6 +119,21 @@ TEST(PatternsGeneration, ManifestRoundTripsAndIsNotOverwrittenWithoutForce) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(PatternsGeneration, ManifestWithoutFringesReadsAsBoardOnlyRegistration) {
+  // Pattern folders written before the fringe patterns existed stay usable.
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("lfd_patterns_nofringe_test_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  PatternOptions o;
+  o.fringes = false;
+  write_pattern_set(dir, plan_patterns(portrait(), o), false);
+  const PatternSet back = read_pattern_set(dir);
+  EXPECT_EQ(back.fringe_steps, 0);
+  EXPECT_TRUE(back.of_kind(PatternKind::kFringeX).empty());
+  EXPECT_EQ(back.patterns.size(), 3u + 8u);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(PatternsGeneration, MissingManifestNamesTheFileAndTheCommand) {
   try {
     read_pattern_set("/nonexistent/unit");
