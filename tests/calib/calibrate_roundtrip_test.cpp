@@ -51,6 +51,13 @@ TEST(CalibrateRoundTrip, PortraitFromTwoPositionsRecoversLensAndWarp) {
   EXPECT_LT(e.view_cone_deg, 1.0);
   EXPECT_LT(e.correction_rms_periods, 0.02);
   EXPECT_TRUE(out.gate_failures.empty());
+  // The reported uncertainties are honest: the errors are within a few sigma (and the sigmas
+  // are not inflated past use: they pass the gates above).
+  const auto& sigma = out.calibration.uncertainty;
+  EXPECT_LT(e.center_periods, 4 * sigma.at("center_periods"));
+  EXPECT_LT(e.view_cone_deg, 4 * sigma.at("view_cone_deg"));
+  EXPECT_LT(e.correction_rms_periods, 4 * sigma.at("correction_rms_periods"));
+  EXPECT_LT(e.pitch_rel, 4 * sigma.at("pitch_lpi") / out.calibration.display.pitch_lpi);
 }
 
 }  // namespace
