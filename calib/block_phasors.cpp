@@ -4,12 +4,51 @@
 #include <cmath>
 #include <numbers>
 
+#include <Eigen/Dense>
 #include <opencv2/imgproc.hpp>
 
 namespace lfd::calib {
 
 double BlockPhasors::phase(int bx, int by) const {
-  double t = std::atan2(im.at<float>(by, bx), re.at<float>(by, bx)) / (2.0 * std::numbers::pi);
+  const double two_pi = 2.0 * std::numbers::pi;
+  double t = std::atan2(im.at<float>(by, bx), re.at<float>(by, bx)) / two_pi;
+  const int K = int(level.size());
+  if (K >= 6) {
+    // Levels y_k = a + c cos(2 pi k/K) + s sin(2 pi k/K), t = atan2(s, c) / 2 pi.
+    Eigen::MatrixXd design(K, 3);
+    Eigen::VectorXd y(K);
+    for (int k = 0; k < K; ++k) {
+      design.row(k) << 1.0, std::cos(two_pi * k / K), std::sin(two_pi * k / K);
+      y[k] = level[size_t(k)].at<float>(by, bx);
+    }
+    std::vector<bool> kept(size_t(K), true);
+    Eigen::Vector3d fit = design.colPivHouseholderQr().solve(y);
+    for (int dropped = 0; dropped < 3; ++dropped) {
+      const Eigen::VectorXd residual = y - design * fit;
+      std::vector<double> magnitudes;
+      int worst = -1;
+      for (int k = 0; k < K; ++k) {
+        if (!kept[size_t(k)]) continue;
+        magnitudes.push_back(std::abs(residual[k]));
+        if (worst < 0 || std::abs(residual[k]) > std::abs(residual[worst])) worst = k;
+      }
+      std::nth_element(magnitudes.begin(), magnitudes.begin() + magnitudes.size() / 2,
+                       magnitudes.end());
+      const double median = magnitudes[magnitudes.size() / 2];
+      const double b = std::hypot(fit[1], fit[2]);
+      if (!(std::abs(residual[worst]) > 3 * median && std::abs(residual[worst]) > 0.125 * b)) break;
+      kept[size_t(worst)] = false;
+      Eigen::MatrixXd a_kept(K - dropped - 1, 3);
+      Eigen::VectorXd y_kept(K - dropped - 1);
+      for (int k = 0, row = 0; k < K; ++k)
+        if (kept[size_t(k)]) {
+          a_kept.row(row) = design.row(k);
+          y_kept[row++] = y[k];
+        }
+      fit = a_kept.colPivHouseholderQr().solve(y_kept);
+      t = std::atan2(fit[2], fit[1]) / two_pi;
+    }
+  }
   return t - std::floor(t);
 }
 

@@ -22,7 +22,11 @@ struct BlockPhasors {
   cv::Point2f centre_px(int bx, int by) const {
     return {bx * block_px + 0.5f * block_px - 0.5f, by * block_px + 0.5f * block_px - 0.5f};
   }
-  // Wrapped phase t in [0, 1) and modulation b / a of a block (valid fraction > 0).
+  // Wrapped phase t in [0, 1) and modulation b / a of a block (valid fraction > 0). With 6 or
+  // more steps the phase leaves out up to three that something transient (glare that comes
+  // and goes, a reflection of someone walking by) pushed off the sinusoid: a step goes only if
+  // its residual dominates (> 3x the median) and is large against the modulation (> b / 8), so
+  // the harmonics of the camera response, spread over all steps alike, keep cancelling.
   double phase(int bx, int by) const;
   double modulation(int bx, int by, int steps) const;
 };
