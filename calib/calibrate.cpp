@@ -381,7 +381,6 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
       rep.fringe_points = long(extra.image_px.size());
       if (extra.image_px.size() >= 100) {
         reg.emplace(boards[i], set, out.camera, board_shift, extra);
-        rep.board_corners = reg->corner_count();
         rep.reprojection_rms_px = reg->reprojection_rms_px();
         rep.camera_m = reg->camera_position_m();
       } else {
@@ -433,7 +432,7 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     {
       const double z = rep.camera_m.z(), f = out.camera.camera_matrix(0, 0);
       const double extent = 0.5 * std::min(nd.width_m(), nd.height_m()) / z;
-      const double noise = rep.reprojection_rms_px / std::sqrt(double(rep.board_corners));
+      const double noise = rep.reprojection_rms_px / std::sqrt(double(reg->corner_count()));
       const double focal_rel = out.camera_self_calibrated ? 5e-3 : 1e-3;
       pd.lateral_sigma_m = std::max(3e-4, 2 * z * noise / (f * extent * extent));
       pd.depth_sigma_m = std::max(focal_rel * z, 2 * z * noise / (f * extent));
@@ -548,7 +547,7 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
   for (const auto& p : o.positions)
     positions.push_back(
         {{"name", p.name},
-         {"registration_points", p.board_corners},
+         {"board_corners", p.board_corners},
          {"fringe_points", p.fringe_points},
          {"reprojection_rms_px", p.reprojection_rms_px},
          {"camera_m", {p.camera_m.x(), p.camera_m.y(), p.camera_m.z()}},

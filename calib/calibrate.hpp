@@ -62,9 +62,9 @@ struct CalibrateOptions {
 
 struct PositionReport {
   std::string name;
-  int board_corners = 0;          // correspondences of the registration (with fringe blocks)
-  long fringe_points = 0;         // fringe blocks among them
-  double reprojection_rms_px = 0;
+  int board_corners = 0;
+  long fringe_points = 0;         // fringe blocks in the registration (0: board alone)
+  double reprojection_rms_px = 0; // of all the registration's correspondences
   Eigen::Vector3d camera_m{0, 0, 0};          // registration
   Eigen::Vector3d camera_refined_m{0, 0, 0};  // after the solve
   long samples = 0;

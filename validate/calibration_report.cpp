@@ -123,17 +123,17 @@ std::string warnings_section(const calib::CalibrationOutcome& o, bool figures_mi
 std::string positions_section(const calib::CalibrationOutcome& o) {
   std::string h =
       "<h2>Camera positions</h2>\n<table><tr><th class=\"l\">position</th><th>board corners</th>"
-      "<th>board reprojection rms (px)</th><th>camera from registration x, y, z (m)</th>"
+      "<th>fringe blocks</th><th>registration reprojection rms (px)</th><th>camera from registration x, y, z (m)</th>"
       "<th>camera refined x, y, z (m)</th><th>phase samples</th><th>blocks on screen</th>"
       "<th>saturated blocks</th><th>low-modulation blocks</th><th>median modulation</th>"
       "<th>white clipped</th><th>residual rms (lens periods)</th><th>plane coherence</th></tr>\n";
   for (const auto& p : o.positions)
     h += fmt::format(
-        "<tr><td class=\"l\">{}</td><td>{}</td><td>{:.2f}</td><td>{}</td><td>{}</td><td>{}</td>"
-        "<td>{}</td><td>{}</td><td>{}</td><td>{:.2f}</td><td>{:.1f} %</td><td>{:.4f}</td>"
+        "<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{:.2f}</td><td>{}</td><td>{}</td>"
+        "<td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.2f}</td><td>{:.1f} %</td><td>{:.4f}</td>"
         "<td>{:.3f}</td></tr>\n",
-        html_escape(p.name), p.board_corners, p.reprojection_rms_px, xyz(p.camera_m),
-        xyz(p.camera_refined_m), p.samples, p.blocks_on_panel, p.blocks_clipped,
+        html_escape(p.name), p.board_corners, p.fringe_points, p.reprojection_rms_px,
+        xyz(p.camera_m), xyz(p.camera_refined_m), p.samples, p.blocks_on_panel, p.blocks_clipped,
         p.blocks_low_modulation, p.median_modulation, 100 * p.clipped_fraction,
         p.residual_rms_periods, p.plane_coherence);
   h += "</table>\n<p>Display frame: panel at z = 0, x right, y up, origin at the panel centre. "
