@@ -130,8 +130,8 @@ std::string positions_section(const calib::CalibrationOutcome& o) {
   for (const auto& p : o.positions)
     h += fmt::format(
         "<tr><td class=\"l\">{}</td><td>{}</td><td>{}</td><td>{:.2f}</td><td>{}</td><td>{}</td>"
-        "<td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.2f}</td><td>{:.1f} %</td><td>{:.4f}</td>"
-        "<td>{:.3f}</td></tr>\n",
+        "<td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.2f}</td><td>{:.1f} %</td>"
+        "<td>{:.4f}</td><td>{:.3f}</td></tr>\n",
         html_escape(p.name), p.board_corners, p.fringe_points, p.reprojection_rms_px,
         xyz(p.camera_m), xyz(p.camera_refined_m), p.samples, p.blocks_on_panel, p.blocks_clipped,
         p.blocks_low_modulation, p.median_modulation, 100 * p.clipped_fraction,
