@@ -85,7 +85,7 @@ int RunBenchCalibration(int argc, char** argv) {
   std::string json_path, data_dir = "../shared/data";  // from the repository root
   int width_px = 1280, positions = 3, seeds = 1, supersample = 2, board_squares = 6;
   std::string only, cache_dir;
-  bool true_poses = false, show_poses = false, clean = false, moving_glare = false;
+  bool true_poses = false, show_poses = false, no_noise = false, moving_glare = false;
   app.add_option("--json", json_path, "write the figures as JSON to this file");
   app.add_option("--data", data_dir, "folder with calibrations/*.visual.json")
       ->capture_default_str();
@@ -110,7 +110,7 @@ int RunBenchCalibration(int argc, char** argv) {
                  "with the same settings");
   app.add_flag("--true-poses", true_poses,
                "diagnostic: give the solver the true camera positions (0.1 mm priors)");
-  app.add_flag("--no-noise", clean, "diagnostic: captures without sensor noise and glare");
+  app.add_flag("--no-noise", no_noise, "diagnostic: captures without sensor noise and glare");
   app.add_flag("--moving-glare", moving_glare,
                "diagnostic: new glare in every photo instead of per position");
   app.add_flag("--show-poses", show_poses,
@@ -136,16 +136,15 @@ int RunBenchCalibration(int argc, char** argv) {
       const calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
       calib::CaptureRig rig =
           calib::make_capture_rig(unit.truth.display, width_px, positions, false, uint64_t(seed));
-      if (clean) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
+      if (no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
       rig.glare_moves = moving_glare;
       rig.effects.supersample = supersample;
       auto t0 = std::chrono::steady_clock::now();
       const auto captures =
           cached_captures(cache_dir,
-                          fmt::format("{}{}{}", u.file, clean ? "-no-noise" : "",
+                          fmt::format("{}{}{}", u.file, no_noise ? "-no-noise" : "",
                                       moving_glare ? "-moving-glare" : ""),
-                          seed,
-                          width_px, positions, supersample, set, unit.truth, rig);
+                          seed, width_px, positions, supersample, set, unit.truth, rig);
       const double simulate_s = seconds_since(t0);
       calib::CalibrateOptions options;
       options.camera = rig.intrinsics;
