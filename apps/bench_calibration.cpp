@@ -17,7 +17,7 @@
 #include "apps/cli.hpp"
 #include "calib/calibrate.hpp"
 #include "calib/synthetic_unit.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "util/atomic_file.hpp"
 
 namespace lfd::apps {

@@ -10,7 +10,7 @@
 
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "calib/simulator.hpp"
 #include "util/atomic_file.hpp"
 

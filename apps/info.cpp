@@ -7,9 +7,9 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/calibration_file.hpp"
-#include "calib/lens_model.hpp"
-#include "calib/view_count.hpp"
+#include "calib/display/calibration_file.hpp"
+#include "calib/display/lens_model.hpp"
+#include "calib/display/view_count.hpp"
 
 namespace lfd::apps {
 

@@ -3,7 +3,7 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file.hpp"
 #include "util/error.hpp"

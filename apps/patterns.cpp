@@ -3,7 +3,7 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "calib/patterns.hpp"
 
 namespace lfd::apps {

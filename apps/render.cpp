@@ -2,18 +2,24 @@
 //   lfd render --scene guitar.compressed.ply --out guitar.png          (G2LF, 45 views, 5x9)
 //   lfd render --scene s.ply --method per-view --views 45 --cols 5 --rows 9 --size 512x512 --out q.png
 //   lfd render --scene s.ply --chunks 512 --plane-scale 2 --filter bilinear --out q.png
-//   lfd render --scene s.ply --camera cam.json --calibration visual.json --out q.png
+//   lfd render --scene s.ply --calibration calibration.json --panel panel.png --out q.png
 //   lfd render --scene s.ply --view 22 --out view.png
+// With --calibration (visual.json or calibration.json) the display chooses the view cone (the
+// measured one if present), the view count (its recommendation unless --views), the tile grid
+// and the view aspect; --panel interlaces the quilt for it in the same run.
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <optional>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "calib/display/calibration_file.hpp"
+#include "calib/display/display_quilt.hpp"
+#include "calib/display/lens_model.hpp"
+#include "interlace/interlacer.hpp"
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
 #include "render/g2lf.hpp"
@@ -24,24 +30,6 @@
 
 namespace lfd::apps {
 namespace {
-
-// The display's view cone from a Looking Glass visual.json ({"viewCone": {"value": x}}).
-float view_cone_from_calibration(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw_input_error("{}: cannot open calibration file", path);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw_input_error("{}: not valid JSON ({})", path, e.what());
-  }
-  const bool ok = j.is_object() && j.contains("viewCone") && j["viewCone"].is_object() &&
-                  j["viewCone"].contains("value") && j["viewCone"]["value"].is_number();
-  require_field(ok, path, "viewCone", "missing or not {\"value\": number}");
-  const double cone = j["viewCone"]["value"].get<double>();
-  require_field(cone > 0.0 && cone < 170.0, path, "viewCone", "must lie in (0, 170) degrees");
-  return float(cone);
-}
 
 // Adds `_qs{C}x{R}a{aspect}` before the extension unless the name already carries a tiling,
 // which must then agree with the quilt.
@@ -62,8 +50,12 @@ std::string quilt_file_name(const std::string& out, const render::QuiltLayout& q
 
 int RunRender(int argc, char** argv) {
   CLI::App app{"Render a 3D Gaussian Splatting scene into a light-field quilt or a single view.\n"
+               "With --calibration the display decides the view cone (measured if the file has\n"
+               "it), the view count (its recommendation unless --views), the tile grid and the\n"
+               "view aspect; --panel also writes the interlaced panel for that display.\n"
                "Examples:\n"
                "  lfd render --scene guitar.compressed.ply --out guitar.png\n"
+               "  lfd render --scene s.ply --calibration calibration.json --panel panel.png --out q.png\n"
                "  lfd render --scene s.ply --method per-view --size 512x512 --out quilt.png\n"
                "  lfd render --scene s.ply --chunks 512 --plane-scale 2 --filter bilinear --out q.png\n"
                "  lfd render --scene s.ply --camera cam.json --calibration visual.json --out q.png\n"
@@ -71,16 +63,25 @@ int RunRender(int argc, char** argv) {
                "render"};
   std::string scene_path, method = "g2lf", size_text, out, camera_path, calibration_path;
   std::string filter = "nearest", precision = "u8", binning = "mixed", background_text = "0,0,0";
-  int views = 45, cols = 5, rows = 9, view = -1;
-  float orbit_deg = 0.0f, focal_distance = 0.0f, view_cone_deg = -1.0f;
+  std::string panel_path, blend = "nearest";
+  std::optional<int> views_opt, cols_opt, rows_opt;
+  int view = -1;
+  bool overscan = false;
+  float orbit_deg = 0.0f, focal_distance = 0.0f;
+  std::optional<float> view_cone_opt;
   render::G2lfOptions g2lf;
   app.add_option("--scene", scene_path, "scene file (.ply, compressed .ply, .splat, .spz)")->required();
   app.add_option("--method", method, "per-view (baseline) or g2lf (sweeping planes)")
       ->check(CLI::IsMember({"per-view", "g2lf"}))->capture_default_str();
-  app.add_option("--views", views, "number of views")->capture_default_str();
-  app.add_option("--cols", cols, "quilt columns")->capture_default_str();
-  app.add_option("--rows", rows, "quilt rows")->capture_default_str();
-  app.add_option("--size", size_text, "size of one view, WxH (default: cam.json's, else 512x512)");
+  app.add_option("--views", views_opt,
+                 "number of views (default: the calibration's recommendation, else 45)");
+  auto* cols_o = app.add_option("--cols", cols_opt, "quilt columns (default: chosen for the views)");
+  auto* rows_o = app.add_option("--rows", rows_opt, "quilt rows (default: chosen for the views)");
+  cols_o->needs(rows_o);
+  rows_o->needs(cols_o);
+  app.add_option("--size", size_text,
+                 "size of one view, WxH (default: cam.json's, else 512 tall at the display's "
+                 "aspect, else 512x512)");
   app.add_option("--chunks", g2lf.chunks, "G2LF: number of depth chunks N_chunk")->capture_default_str();
   app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
   app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")->capture_default_str();
@@ -96,8 +97,18 @@ int RunRender(int argc, char** argv) {
       ->excludes(camera_opt);
   app.add_option("--focal-distance", focal_distance,
                  "distance to the focal (zero-parallax) plane (default |look_at - position|)");
-  auto* cone_opt = app.add_option("--view-cone", view_cone_deg, "display view cone in degrees (default 40)");
-  app.add_option("--calibration", calibration_path, "visual.json whose viewCone to use")->excludes(cone_opt);
+  auto* cone_opt = app.add_option("--view-cone", view_cone_opt,
+                                  "display view cone in degrees (default 40, or the calibration's)");
+  auto* calibration_opt =
+      app.add_option("--calibration", calibration_path,
+                     "the display: visual.json or calibration.json (cone, views, grid, aspect)")
+          ->excludes(cone_opt);
+  app.add_option("--panel", panel_path,
+                 "also write the quilt interlaced for the --calibration display (PNG)")
+      ->needs(calibration_opt);
+  app.add_option("--blend", blend, "--panel: view selection, nearest or linear")
+      ->check(CLI::IsMember({"nearest", "linear"}))->capture_default_str();
+  app.add_flag("--overscan", overscan, "--panel: fill the panel and crop instead of black bars");
   app.add_option("--background", background_text, "background colour R,G,B in [0, 1]")->capture_default_str();
   app.add_option("--view", view, "render only this view (0 = leftmost) into --out");
   app.add_option("--out", out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix")->required();
@@ -107,11 +118,25 @@ int RunRender(int argc, char** argv) {
   g2lf.precision = render::parse_plane_precision(precision);
   g2lf.binning = render::parse_chunk_binning(binning);
   g2lf.check();
+  if (view >= 0 && !panel_path.empty())
+    throw_input_error("--panel: needs a whole quilt; leave out --view");
   const auto bg = parse_numbers(background_text, ',', 3, "--background");
   render::RasterSettings settings;
   settings.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
-  if (!calibration_path.empty()) view_cone_deg = view_cone_from_calibration(calibration_path);
-  if (view_cone_deg < 0.0f) view_cone_deg = 40.0f;
+  if (view_cone_opt && !(*view_cone_opt > 0.0f && *view_cone_opt < 170.0f))
+    throw_input_error("--view-cone: {} must lie in (0, 170) degrees", *view_cone_opt);
+
+  // The display decides the quilt when there is one; the user's options override it.
+  std::optional<calib::Calibration> calibration;
+  std::optional<calib::DisplayQuilt> display_quilt;
+  if (!calibration_path.empty()) {
+    calibration = calib::read_calibration(calibration_path);
+    display_quilt = calib::quilt_for_display(*calibration, views_opt);
+  }
+  const int views = display_quilt ? display_quilt->views : views_opt.value_or(45);
+  if (views < 1 || views > 256) throw_input_error("--views: {} is outside 1..256", views);
+  const float view_cone_deg =
+      display_quilt ? float(display_quilt->view_cone_deg) : view_cone_opt.value_or(40.0f);
 
   const auto t0 = std::chrono::steady_clock::now();
   const render::GaussianScene scene = render::load_scene(scene_path);
@@ -124,11 +149,17 @@ int RunRender(int argc, char** argv) {
       throw_input_error("--size: '{}' must be two integers in [1, 16384]", size_text);
     width = int(wh[0]);
     height = int(wh[1]);
+  } else if (display_quilt && !spec.width && !spec.height) {
+    const calib::ViewSize size = calib::view_size_for_display(*display_quilt);
+    width = size.width;
+    height = size.height;
   }
   const render::Camera base = render::camera_from_spec(spec, width, height);
   if (focal_distance <= 0.0f) focal_distance = glm::length(spec.look_at - spec.position);
   const render::QuiltGeometry geometry =
       render::make_quilt_geometry(base, focal_distance, view_cone_deg, views);
+  if (display_quilt)
+    std::cout << fmt::format("display {}: {}\n", calibration_path, display_quilt->describe());
 
   std::string written;
   if (view >= 0) {
@@ -139,12 +170,28 @@ int RunRender(int argc, char** argv) {
     written = out;
     write_png(written, to_uint8(f));
   } else {
-    const render::QuiltLayout layout = render::make_quilt_layout(geometry, cols, rows);
+    calib::QuiltGrid grid = display_quilt ? display_quilt->grid
+                                          : calib::quilt_grid_for_views(views, double(base.width) / base.height);
+    if (cols_opt) grid = {*cols_opt, *rows_opt};
+    if (grid.cols < 1 || grid.rows < 1 || grid.cols * grid.rows < views)
+      throw_input_error("--cols/--rows: {}x{} tiles cannot hold {} views", grid.cols, grid.rows, views);
+    const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     written = quilt_file_name(out, layout);
     const ImageF quilt = method == "per-view"
                              ? render::render_quilt_per_view(scene, geometry, layout, settings)
                              : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);
-    write_png(written, to_uint8(quilt));
+    const Image8 quilt8 = to_uint8(quilt);
+    write_png(written, quilt8);
+    if (!panel_path.empty()) {
+      // Interlace the quilt as written (8 bits), so the panel equals `lfd interlace` of the file.
+      const calib::LensModel lens(calibration->display, calibration->correction);
+      interlace::InterlaceOptions options;
+      options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
+      options.overscan = overscan;
+      const ImageF panel = interlace::interlace(to_float(quilt8), layout, lens, options);
+      write_png(panel_path, to_uint8(panel));
+      std::cout << fmt::format("wrote {} ({}x{} panel)\n", panel_path, panel.width, panel.height);
+    }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << fmt::format("wrote {} ({} Gaussians, {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",

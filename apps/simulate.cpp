@@ -3,9 +3,9 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "calib/simulator.hpp"
-#include "calib/view_count.hpp"
+#include "calib/display/view_count.hpp"
 #include "util/error.hpp"
 #include "util/image.hpp"
 

@@ -6,8 +6,8 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/calibration_file.hpp"
-#include "calib/view_count.hpp"
+#include "calib/display/calibration_file.hpp"
+#include "calib/display/view_count.hpp"
 #include "util/progress.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"

@@ -13,9 +13,10 @@
 
 #include "calib/coarse_start.hpp"
 #include "calib/fringe_registration.hpp"
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
+#include "calib/display/lens_relations.hpp"
 #include "calib/registration.hpp"
-#include "calib/view_count.hpp"
+#include "calib/display/view_count.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -224,7 +225,6 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
 
   // 3. Per position: registration, screen-in-photo, exposure, identity and motion, phase.
   const LensModel nominal_lens(nd, set.nominal.correction);
-  const double k_nom = 0.5 / std::tan(nd.view_cone_deg * std::numbers::pi / 360.0);
   std::vector<PositionData> data;
   for (size_t i = 0; i < positions.size(); ++i) {
     const auto& pc = positions[i];
@@ -233,23 +233,21 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     rep.name = pc.name;
     std::optional<Registration> reg;
     std::vector<cv::Point2d> board_shift;
-    // The lens array shows a panel feature displaced by (c - 1/2) lens periods along the row
-    // (lens_solver.cpp, shift_fraction); this moves it back for the pose.
-    // c: the lens fraction the camera sees at panel pixel px (nominal cone).
-    auto seen_fraction = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
+    // The lens array shows a panel feature displaced by the lens content shift along the row
+    // (lens_relations.hpp, nominal cone); this moves it back for the pose.
+    auto lens_shift_periods = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
       const Eigen::Vector3d p = uv_to_display_m(nd, panel_px_to_uv(nd, px));
-      const double f_seen = 0.5 + (camera.x() - p.x()) / camera.z() * k_nom;
-      const double c = nd.inv_view ? 1.0 - f_seen : f_seen;
-      return c - std::floor(c);
+      const double f_seen = seen_fraction(camera.x() - p.x(), camera.z() - p.z(), nd.view_cone_deg);
+      return lens_content_shift(f_seen, nd.inv_view);
     };
     auto lens_shift_px = [&](cv::Point2d px, const Eigen::Vector3d& camera) {
-      const double c = seen_fraction(px, camera);
-      return cv::Point2d(-(c - 0.5) / nominal_lens.pitch_periods() * nd.screen_w, 0.0);
+      const double shift = lens_shift_periods(px, camera);
+      return cv::Point2d(-shift / nominal_lens.pitch_periods() * nd.screen_w, 0.0);
     };
     try {
       reg.emplace(boards[i], set, out.camera);
       // The lens array shows each board corner displaced by (c - 1/2) lens periods along the
-      // row (lens_solver.cpp, shift_fraction); move the corners back for the pose.
+      // row (lens_relations.hpp, lens_content_shift); move the corners back for the pose.
       const Eigen::Vector3d c0 = reg->camera_position_m();
       for (int id : boards[i].ids)
         board_shift.push_back(lens_shift_px(set.board.corners_px.at(size_t(id)), c0));
@@ -372,8 +370,7 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
       const Eigen::Vector3d camera = reg->camera_position_m();
       for (size_t k = 0; k < dense.image_px.size(); ++k) {
         // Blocks where the seen view wraps mix content a lens apart: no clean position.
-        const double c = seen_fraction(dense.panel_px[k], camera);
-        if (c < 0.1 || c > 0.9) continue;
+        if (std::abs(lens_shift_periods(dense.panel_px[k], camera)) > 0.4) continue;
         extra.image_px.push_back(dense.image_px[k]);
         extra.panel_px.push_back(dense.panel_px[k]);
         extra.shift_px.push_back(lens_shift_px(dense.panel_px[k], camera));
@@ -463,8 +460,12 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
   Calibration& c = out.calibration;
   c.display = apply_estimate(nd, out.solve.lens);
   c.correction = out.solve.correction;
-  if (positions.size() >= 2 && options.solver.fit_view_cone)
+  if (positions.size() >= 2 && options.solver.fit_view_cone) {
+    // The measured cone is the cone; the nominal stays beside it for provenance.
     c.view_cone_measured_deg = out.solve.lens.view_cone_deg;
+    c.view_cone_nominal_deg = nd.view_cone_deg;
+    c.display.view_cone_deg = out.solve.lens.view_cone_deg;
+  }
   c.uncertainty = out.solve.sigma;
   const double slope = c.display.slope;
   if (out.solve.sigma.count("slope"))

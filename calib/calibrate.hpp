@@ -13,7 +13,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "calib/camera_model.hpp"
 #include "calib/lens_solver.hpp"
 #include "calib/patterns.hpp"

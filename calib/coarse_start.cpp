@@ -7,7 +7,8 @@
 #include <Eigen/Dense>
 #include <opencv2/core.hpp>
 
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
+#include "calib/display/lens_relations.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -118,7 +119,7 @@ LensEstimate coarse_start(const Calibration& nominal, const std::vector<Position
 
   // beta_u_i = a - W_m k / Cz_i with a = s (P'_true - P'_nom): linear least squares in (a, k)
   // if the distances differ enough to separate them, else k from the nominal cone.
-  double k = 0.5 / std::tan(d.view_cone_deg * std::numbers::pi / 360.0);
+  double k = fraction_per_tan(d.view_cone_deg);
   double inv_min = 1e9, inv_max = 0;
   for (const auto& p : positions) {
     inv_min = std::min(inv_min, 1.0 / p.camera_m.z());
@@ -135,8 +136,7 @@ LensEstimate coarse_start(const Calibration& nominal, const std::vector<Position
     }
     const Eigen::Vector2d x = A.colPivHouseholderQr().solve(b);
     // Accept only a physically plausible cone (10 to 120 degrees).
-    if (x[1] > 0.5 / std::tan(60 * std::numbers::pi / 180) &&
-        x[1] < 0.5 / std::tan(5 * std::numbers::pi / 180)) {
+    if (x[1] > fraction_per_tan(120.0) && x[1] < fraction_per_tan(10.0)) {
       a = x[0];
       k = x[1];
     } else {
@@ -157,15 +157,16 @@ LensEstimate coarse_start(const Calibration& nominal, const std::vector<Position
   if (!(pitch_p > 0)) throw_input_error("calibration: the coarse start found no plausible pitch");
   const double tilt = (s * beta_v + nom.tilt() * nom.pitch_periods()) / pitch_p;
   LensEstimate e;
-  e.slope = double(d.screen_h) / (double(d.screen_w) * tilt) * (d.flip_image_x ? -1.0 : 1.0);
-  e.pitch_lpi = pitch_p / ((double(d.screen_w) / d.dpi) * std::cos(std::atan(1.0 / e.slope)));
-  e.view_cone_deg = 2.0 * std::atan(0.5 / k) * 180.0 / std::numbers::pi;
+  const PitchSlope lens = pitch_slope_from_shader_terms(d.geometry(), pitch_p, tilt);
+  e.slope = lens.slope;
+  e.pitch_lpi = lens.pitch_lpi;
+  e.view_cone_deg = view_cone_from_fraction_per_tan(k);
   // center: circular mean over positions of c_nom + s (1/2 + (Cx + W_m/2) k / Cz - alpha).
   std::complex<double> sum = 0;
   for (size_t i = 0; i < positions.size(); ++i) {
     const auto& c = positions[i].camera_m;
     const double center = d.center_periods +
-                          s * (0.5 + (c.x() + 0.5 * width_m) * k / c.z() - planes[i].alpha);
+                          s * (seen_fraction_k(c.x() + 0.5 * width_m, c.z(), k) - planes[i].alpha);
     sum += std::polar(1.0, kTwoPi * center);
   }
   e.center_periods = std::arg(sum) / kTwoPi;

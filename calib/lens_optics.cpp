@@ -26,8 +26,7 @@ PhaseKernel LensOptics::make_kernel(const LensModel& lens, double psf_sigma_phas
 LensOptics::LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKernel& kernel)
     : lens_(lens), panel_(panel), kernel_(kernel) {
   const auto& c = lens.calibration();
-  // DESIGN 4: tan(theta) = (f - 0.5) * 2 tan(viewCone / 2).
-  inv_two_tan_half_cone_ = 1.0 / (2.0 * std::tan(0.5 * c.view_cone_deg * std::numbers::pi / 180.0));
+  view_cone_deg_ = c.view_cone_deg;
   pitch_periods_ = lens.pitch_periods();
   has_correction_ = !lens.correction().empty();
   has_cells_ = c.has_cells();
@@ -38,8 +37,7 @@ LensOptics::LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKe
 }
 
 double LensOptics::seen_fraction(double tan_theta) const {
-  const double f = 0.5 + tan_theta * inv_two_tan_half_cone_;
-  return f - std::floor(f);
+  return wrap_fraction(calib::seen_fraction_of_tan(tan_theta, view_cone_deg_));
 }
 
 double LensOptics::seen_u(double u, double v, double fraction) const {

@@ -4,7 +4,8 @@
 // ::capture(), so a photograph and a validation profile see the same optics.
 #include <array>
 
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
+#include "calib/display/lens_relations.hpp"
 #include "calib/phase_kernel.hpp"
 #include "util/image.hpp"
 
@@ -36,7 +37,7 @@ class LensOptics {
   const LensModel& lens_;
   const ImageF& panel_;
   const PhaseKernel& kernel_;
-  double inv_two_tan_half_cone_ = 0;
+  double view_cone_deg_ = 0;
   double pitch_periods_ = 0;
   bool has_correction_ = false;
   bool has_cells_ = false;

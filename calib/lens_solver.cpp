@@ -10,57 +10,39 @@
 #include <Eigen/Dense>
 #include <ceres/ceres.h>
 
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
+#include "calib/display/lens_relations.hpp"
 
 namespace lfd::calib {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
-double scalar(double x) { return x; }
-template <int N>
-double scalar(const ceres::Jet<double, N>& x) { return x.a; }
 
 template <typename T>
 T wrap_half(const T& x) {  // to [-0.5, 0.5): the residual of a phase known modulo 1
-  return x - T(std::floor(scalar(x) + 0.5));
+  return x - T(std::floor(scalar_part(x) + 0.5));
 }
 
 // The display constants the phase model needs besides the unknowns.
 struct DisplayConstants {
-  double w_px, h_px, dpi, width_m;
-  bool flip_x;
+  ScreenGeometry geometry;
+  double width_m;
   double sign;  // s = +1 with invView, -1 without (DESIGN section 5 step 2)
   static DisplayConstants of(const DisplayCalibration& d) {
-    return {double(d.screen_w), double(d.screen_h), d.dpi, d.width_m(), d.flip_image_x,
-            d.inv_view ? 1.0 : -1.0};
+    return {d.geometry(), d.width_m(), d.inv_view ? 1.0 : -1.0};
   }
+  // Px of a panel point at screen u, display frame (metres, origin at the screen centre).
+  double panel_x_m(double u) const { return (u - 0.5) * width_m; }
 };
-
-// pitch' and tilt of the shaders (reference/looking-glass.md 3.1), differentiable.
-template <typename T>
-void shader_terms(const DisplayConstants& dc, const T& pitch_lpi, const T& slope, T& pitch_p,
-                  T& tilt) {
-  const T abs_slope = scalar(slope) < 0 ? -slope : slope;
-  pitch_p = pitch_lpi * (dc.w_px / dc.dpi) * abs_slope / sqrt(T(1) + slope * slope);
-  tilt = T(dc.h_px) / (T(dc.w_px) * slope);
-  if (dc.flip_x) tilt = -tilt;
-}
 
 // psi model without the correction field: f_seen(P) + s (A_true_linear(X) - A_nom(X)).
 // lens = {pitch_lpi, slope, center, view_cone_deg}, cam = {Cx, Cz}.
 template <typename T>
 T psi_linear(const DisplayConstants& dc, const T* lens, const T* cam, double u, double v,
              double u_phys, double a_nom) {
-  using std::sqrt;
-  using std::tan;
-  T pitch_p, tilt;
-  shader_terms(dc, lens[0], lens[1], pitch_p, tilt);
-  const T a_true = (T(u) + T(v) * tilt) * pitch_p - lens[2];
-  const T k = T(0.5) / tan(lens[3] * T(kPi / 360.0));
-  const T px = T((u_phys - 0.5) * dc.width_m);
-  const T f_seen = T(0.5) + (cam[0] - px) / cam[1] * k;
+  const ShaderTerms<T> terms = shader_terms(dc.geometry, lens[0], lens[1]);
+  const T a_true = (T(u) + T(v) * terms.tilt) * terms.pitch_periods - lens[2];
+  const T f_seen = seen_fraction(T(cam[0] - T(dc.panel_x_m(u_phys))), cam[1], lens[3]);
   return f_seen + T(dc.sign) * (a_true - T(a_nom));
 }
 
@@ -169,15 +151,6 @@ struct Problem {
   std::vector<double> coeffs;  // nx * ny
 };
 
-double shift_fraction(double f_seen, bool inv_view) {
-  // The lens covering a panel point P shows the camera the content at the point Q of the same
-  // lens whose phase shows f_seen: frac(A(Q)) = c (DESIGN section 4). Averaged over the lens,
-  // Q - P = (c - 1/2) lens periods along the row: the content a camera block sees is shifted
-  // by that much from the point it looks at, and jumps by a whole lens where c wraps.
-  const double c = inv_view ? 1.0 - f_seen : f_seen;
-  return c - std::floor(c) - 0.5;
-}
-
 }  // namespace
 
 DisplayCalibration apply_estimate(const DisplayCalibration& nominal, const LensEstimate& lens) {
@@ -255,14 +228,12 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   // delta: each sample's content point (where A is evaluated) from its physical point and the
   // current estimate; it moves with the estimate, so it is updated between the stages.
   auto update_content_points = [&]() {
-    double pitch_p, tilt;
-    shader_terms(dc, x.lens[0], x.lens[1], pitch_p, tilt);
-    const double k = 0.5 / std::tan(x.lens[3] * kPi / 360.0);
+    const double pitch_p = shader_terms(dc.geometry, x.lens[0], x.lens[1]).pitch_periods;
     for (size_t i = 0; i < samples.size(); ++i)
       for (auto& s : samples[i]) {
-        const double f_seen =
-            0.5 + (x.cams[2 * i] - (s.u_phys - 0.5) * dc.width_m) / x.cams[2 * i + 1] * k;
-        s.u = s.u_phys + shift_fraction(f_seen, nd.inv_view) / pitch_p;
+        const double f_seen = seen_fraction(x.cams[2 * i] - dc.panel_x_m(s.u_phys),
+                                            x.cams[2 * i + 1], x.lens[3]);
+        s.u = s.u_phys + lens_content_shift(f_seen, nd.inv_view) / pitch_p;
         s.a_nom = nominal_lens.phase(s.u, s.v);
       }
   };

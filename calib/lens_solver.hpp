@@ -17,7 +17,7 @@
 
 #include <Eigen/Core>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "calib/phase_decoding.hpp"
 
 namespace lfd::calib {

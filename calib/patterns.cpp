@@ -7,7 +7,7 @@
 #include <opencv2/aruco.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 

@@ -18,7 +18,7 @@
 #include <opencv2/aruco/charuco.hpp>
 #include <opencv2/core.hpp>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "util/image.hpp"
 
 namespace lfd::calib {

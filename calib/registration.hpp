@@ -13,7 +13,7 @@
 #include <opencv2/core.hpp>
 
 #include "calib/camera_model.hpp"
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 #include "calib/patterns.hpp"
 
 namespace lfd::calib {

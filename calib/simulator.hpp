@@ -10,7 +10,7 @@
 #include <Eigen/Core>
 
 #include "calib/camera_model.hpp"
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 #include "util/image.hpp"
 
 namespace lfd::calib {

@@ -5,6 +5,7 @@
 #include <random>
 #include <algorithm>
 
+#include "calib/display/lens_relations.hpp"
 #include "calib/lens_solver.hpp"
 
 namespace lfd::calib {
@@ -32,8 +33,7 @@ SyntheticUnit make_synthetic_unit(const DisplayCalibration& real,
   DisplayCalibration& n = unit.nominal.display;
   n.view_cone_deg = real.view_cone_deg;
   n.pitch_lpi = real.pitch_lpi * (1.0 + o.pitch_error_rel);
-  const double slant = std::atan(1.0 / real.slope) + o.slant_error_deg * std::numbers::pi / 180;
-  n.slope = 1.0 / std::tan(slant);
+  n.slope = slope_of_slant_deg(slant_deg_of_slope(real.slope) + o.slant_error_deg);
   n.center_periods = 0.5 * (uni(rng) + 1.0);
   return unit;
 }

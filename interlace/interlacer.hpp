@@ -4,7 +4,7 @@
 // included), a view index (nearest, or a linear blend of the two nearest view centres), and a
 // bilinear lookup inside that view's quilt tile (aspect/overscan and viewPortion handled as
 // Looking Glass software does). The GLSL interlacer must match this function.
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
 

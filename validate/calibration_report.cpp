@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 #include "util/atomic_file.hpp"
 #include "validate/calibration_figures.hpp"
 #include "validate/html.hpp"

@@ -6,13 +6,14 @@
 
 #include <fmt/format.h>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
+#include "calib/display/lens_relations.hpp"
 #include "calib/patterns.hpp"
 #include "calib/simulator.hpp"
 #include "calib/synthetic_unit.hpp"
-#include "calib/view_count.hpp"
+#include "calib/display/view_count.hpp"
 #include "interlace/interlacer.hpp"
-#include "interlace/test_quilt.hpp"
+#include "validate/numbered_quilt.hpp"
 #include "render/default_camera.hpp"
 #include "render/g2lf.hpp"
 #include "render/per_view_quilt.hpp"
@@ -127,7 +128,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   }
   const std::string suffix = render::quilt_suffix(layout.cols, layout.rows, layout.aspect);
   write_png(out / ("scene_quilt" + suffix + ".png"), to_uint8(scene_quilt));
-  const ImageF numbered = interlace::make_numbered_quilt(layout);
+  const ImageF numbered = make_numbered_quilt(layout);
   write_png(out / ("numbered_quilt" + suffix + ".png"), to_uint8(numbered));
 
   // 4. Interlace with the calibration the display is driven with.
@@ -158,7 +159,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
       pose.position_m = {distance * std::sin(theta), 0.0, distance * std::cos(theta)};
       const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(fov, cw, ch), pose);
       // Which view a viewer there should see (DESIGN section 4: f_seen at the panel centre).
-      const double f_seen = 0.5 + std::tan(theta) / (2.0 * std::tan(d.view_cone_deg * std::numbers::pi / 360.0));
+      const double f_seen = calib::seen_fraction(pose.position_m.x(), pose.position_m.z(), d.view_cone_deg);
       DemoCapture cap;
       cap.name = name;
       cap.angle_deg = theta * 180.0 / std::numbers::pi;

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "calib/display/lens_relations.hpp"
+
 namespace lfd::validate {
 
 std::string Miscalibration::describe() const {
@@ -20,8 +22,7 @@ std::string Miscalibration::describe() const {
 calib::Calibration apply(const calib::Calibration& calibration, const Miscalibration& e) {
   calib::Calibration c = calibration;
   // The slant is the lens angle from vertical, atan(1/slope); perturb the angle, not the slope.
-  const double slant = std::atan(1.0 / c.display.slope) + e.slant_deg * std::numbers::pi / 180.0;
-  c.display.slope = 1.0 / std::tan(slant);
+  c.display.slope = calib::slope_of_slant_deg(calib::slant_deg_of_slope(c.display.slope) + e.slant_deg);
   c.display.pitch_lpi *= 1.0 + e.pitch_relative;
   c.display.center_periods += e.center_periods;
   if (e.drop_correction) c.correction = calib::CorrectionField();

@@ -3,7 +3,7 @@
 // amounts, to drive the interlacer with while the optics follow the truth.
 #include <string>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 
 namespace lfd::validate {
 

@@ -4,18 +4,20 @@
 #include <cmath>
 #include <numbers>
 
-#include "calib/view_count.hpp"
+#include "calib/display/lens_relations.hpp"
+#include "calib/display/view_count.hpp"
 #include "util/error.hpp"
 #include "validate/view_metrics.hpp"
 
 namespace lfd::validate {
 
 double parallax_blur(const ViewProfiles& p, double view_cone_deg) {
-  const double half_cone_tan = std::tan(0.5 * view_cone_deg * std::numbers::pi / 180.0);
   double sum = 0;
   int count = 0;
   for (size_t a = 0; a < p.theta_deg.size(); ++a) {
-    const double s_eye = std::tan(p.theta_deg[a] * std::numbers::pi / 180.0) / (2.0 * half_cone_tan);
+    // The eye's view position relative to the centre view, -1/2 .. 1/2 across the cone.
+    const double s_eye =
+        calib::seen_fraction_of_tan(std::tan(p.theta_deg[a] * std::numbers::pi / 180.0), view_cone_deg) - 0.5;
     if (std::abs(s_eye) >= 0.4) continue;
     double total = 0, moment = 0;
     for (int j = 0; j < p.views; ++j) {

@@ -1,5 +1,5 @@
 #pragma once
-// Checks the view-count rule (calib/view_count.hpp) with the simulator: how much parallax blur
+// Checks the view-count rule (calib/display/view_count.hpp) with the simulator: how much parallax blur
 // a viewer sees as the number of views grows. A viewer at direction theta should see the view
 // rendered for theta, i.e. the camera offset s(theta) = tan(theta) / (2 tan(cone / 2)); what
 // reaches the eye is a mixture of views j (camera offsets s_j = (j + 0.5)/V - 0.5) with weights
@@ -11,7 +11,7 @@
 // then levels off at the lens blur: beyond that, more views cost rendering time and buy nothing.
 #include <vector>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "validate/view_profiles.hpp"
 
 namespace lfd::validate {

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "calib/simulator.hpp"
-#include "calib/view_count.hpp"
+#include "calib/display/view_count.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/error.hpp"

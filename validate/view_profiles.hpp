@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "interlace/interlacer.hpp"
 #include "util/progress.hpp"
 

@@ -8,7 +8,7 @@
 
 #include "calib/live_calibration.hpp"
 #include "calib/synthetic_unit.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {

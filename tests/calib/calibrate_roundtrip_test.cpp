@@ -6,7 +6,7 @@
 
 #include "calib/calibrate.hpp"
 #include "calib/synthetic_unit.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 
 namespace lfd::calib {
 namespace {

@@ -6,10 +6,10 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 #include "calib/patterns.hpp"
 #include "calib/registration.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {

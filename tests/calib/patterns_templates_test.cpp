@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "calib/patterns.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 
 namespace lfd::calib {
 namespace {

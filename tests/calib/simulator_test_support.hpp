@@ -2,8 +2,8 @@
 // Displays and panels shared by the simulator tests.
 #include <string>
 
-#include "calib/calibration_file.hpp"
-#include "calib/lens_model.hpp"
+#include "calib/display/calibration_file.hpp"
+#include "calib/display/lens_model.hpp"
 #include "util/image.hpp"
 
 namespace lfd::calib::testing {

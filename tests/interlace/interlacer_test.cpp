@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "interlace/quilt_file.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calib/synthetic_unit.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"
 #include "validate/calibration_report.hpp"

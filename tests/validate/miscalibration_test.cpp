@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 
 namespace lfd::validate {
 namespace {

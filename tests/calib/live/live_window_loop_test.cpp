@@ -7,7 +7,7 @@
 #include "calib/live/pattern_window.hpp"
 #include "calib/live_calibration.hpp"
 #include "calib/simulated_live_devices.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "tests/calib/live/live_test_display.hpp"
 
 namespace lfd::calib {

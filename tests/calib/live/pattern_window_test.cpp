@@ -8,7 +8,7 @@
 #include "calib/live/glfw_session.hpp"
 #include "calib/live/pattern_window.hpp"
 #include "calib/patterns.hpp"
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "tests/calib/live/live_test_display.hpp"
 #include "tests/calib/live/x11_screen.hpp"
 #include "util/error.hpp"

@@ -1,4 +1,6 @@
-#include "calib/view_count.hpp"
+#include "calib/display/view_count.hpp"
+
+#include "calib/display/display_quilt.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,15 +12,8 @@ namespace lfd::calib {
 
 namespace {
 
-struct QuiltGrid {
-  int views, cols, rows;
-};
-
 // Quilt-friendly view counts (whole tile grids, as Looking Glass software uses).
-constexpr std::array<QuiltGrid, 14> kGrids = {{{16, 4, 4}, {24, 4, 6}, {32, 4, 8}, {40, 5, 8},
-                                               {45, 5, 9}, {48, 8, 6}, {54, 6, 9}, {60, 6, 10},
-                                               {66, 11, 6}, {72, 8, 9}, {80, 8, 10}, {88, 8, 11},
-                                               {96, 8, 12}, {100, 10, 10}}};
+constexpr std::array<int, 14> kViewCounts = {16, 24, 32, 40, 45, 48, 54, 60, 66, 72, 80, 88, 96, 100};
 
 }  // namespace
 
@@ -47,12 +42,13 @@ ViewCountAdvice recommend_view_count(const Calibration& calibration) {
   a.accuracy_limit = phase_error > 0 ? 1.0 / (4.0 * phase_error) : 1e9;
 
   const double limit = std::min({a.sampling_limit, a.blur_limit, a.accuracy_limit});
-  QuiltGrid best = kGrids.front();
-  for (const auto& g : kGrids)
-    if (g.views <= limit + 1e-9) best = g;
-  a.views = best.views;
-  a.cols = best.cols;
-  a.rows = best.rows;
+  a.views = kViewCounts.front();
+  for (int views : kViewCounts)
+    if (views <= limit + 1e-9) a.views = views;
+  const QuiltGrid grid = quilt_grid_for_views(
+      a.views, double(calibration.display.screen_w) / calibration.display.screen_h);
+  a.cols = grid.cols;
+  a.rows = grid.rows;
   a.rule = fmt::format(
       "views = largest quilt grid <= min(sampling {:.0f}, blur 1/(1.6*sigma_eff) = {:.1f}, "
       "accuracy 1/(4*phase uncertainty) = {}) with sigma_eff = sqrt(sigma_A^2 + w_sub^2/12) = "

@@ -1,4 +1,4 @@
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 
 #include <cmath>
 #include <iostream>

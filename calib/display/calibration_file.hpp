@@ -3,20 +3,22 @@
 //   {"format": "lfd-calibration", "version": 1,
 //    "display": {visual.json object},
 //    "correction": {"nx":..,"ny":..,"coefficients":[..]} (lens periods, may be absent),
-//    "view_cone_measured_deg": .., "phase_blur_sigma": .. (lens periods),
+//    "view_cone_measured_deg": .., "view_cone_nominal_deg": .., "phase_blur_sigma": .. (lens periods),
 //    "uncertainty": {"pitch_lpi":..,"slope":..,"center_periods":..,"view_cone_deg":..,"correction_rms_periods":..},
 //    "residuals": {"rms_periods":..,"median_abs_periods":..,"inlier_fraction":..,"count":..},
 //    "recommended_views": N, "view_count_rule": "...",
 //    "provenance": {"tool":..,"created":..,"method":..,"inputs":[..]}}
 // Every field but "display" is optional. read_calibration() also accepts a plain visual.json.
+// The measured view cone is the cone: display.viewCone holds it (also in memory), and the
+// nominal cone it replaced is kept beside it for provenance.
 #include <filesystem>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "calib/correction_field.hpp"
-#include "calib/display_calibration.hpp"
+#include "calib/display/correction_field.hpp"
+#include "calib/display/display_calibration.hpp"
 
 namespace lfd::calib {
 
@@ -30,7 +32,8 @@ struct ResidualStats {
 struct Calibration {
   DisplayCalibration display;
   CorrectionField correction;                 // empty for a plain visual.json
-  std::optional<double> view_cone_measured_deg;
+  std::optional<double> view_cone_measured_deg;  // when set, display.view_cone_deg equals it
+  std::optional<double> view_cone_nominal_deg;   // the nominal cone before measurement
   std::optional<double> phase_blur_sigma;     // lens point spread, lens periods
   std::map<std::string, double> uncertainty;  // 1-sigma, keyed by parameter name
   std::optional<ResidualStats> residuals;

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "calib/display/lens_relations.hpp"
+
 namespace lfd::calib {
 
 // Physical emitter position of each colour relative to its pixel centre, in pixel units
@@ -42,6 +44,10 @@ struct DisplayCalibration {
   double width_m() const { return screen_w * pixel_pitch_m(); }
   double height_m() const { return screen_h * pixel_pitch_m(); }
   bool has_cells() const { return !subpixel_cells.empty(); }
+  // What the shader terms need of the screen (lens_relations.hpp).
+  ScreenGeometry geometry() const {
+    return {double(screen_w), double(screen_h), dpi, flip_image_x};
+  }
 
   // Throws lfd::InputError("<where>: <field>: <problem>") for values no display can have:
   // non-positive pitch/DPI/size, zero or non-finite slope, NaN anywhere, CellPatternMode

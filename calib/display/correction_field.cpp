@@ -1,4 +1,4 @@
-#include "calib/correction_field.hpp"
+#include "calib/display/correction_field.hpp"
 
 #include <algorithm>
 #include <cmath>

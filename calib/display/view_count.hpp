@@ -3,8 +3,8 @@
 // narrower than what the lens can separate only add crosstalk and rendering cost.
 #include <string>
 
-#include "calib/calibration_file.hpp"
-#include "calib/lens_model.hpp"
+#include "calib/display/calibration_file.hpp"
+#include "calib/display/lens_model.hpp"
 
 namespace lfd::calib {
 

@@ -1,10 +1,10 @@
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {

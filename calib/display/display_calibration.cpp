@@ -1,4 +1,4 @@
-#include "calib/display_calibration.hpp"
+#include "calib/display/display_calibration.hpp"
 
 #include <cmath>
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "calib/display_calibration.hpp"
+#include "calib/display/display_calibration.hpp"
 
 namespace lfd::calib {
 

@@ -1,8 +1,8 @@
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 
 #include <gtest/gtest.h>
 
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"

@@ -1,9 +1,9 @@
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 
 #include <cmath>
 #include <iostream>
 
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
@@ -45,6 +45,15 @@ Calibration parse_calibration(const std::string& text, const std::string& name) 
   if (root.contains("correction") && !root["correction"].is_null())
     c.correction = CorrectionField::from_json(root["correction"], name);
   c.view_cone_measured_deg = optional_number(root, "view_cone_measured_deg", name);
+  c.view_cone_nominal_deg = optional_number(root, "view_cone_nominal_deg", name);
+  if (c.view_cone_measured_deg) {
+    require_field(*c.view_cone_measured_deg > 0 && *c.view_cone_measured_deg < 180, name,
+                  "view_cone_measured_deg", "must be between 0 and 180 degrees");
+    // The measured cone is the cone. Files written before the nominal was kept beside it
+    // hold the nominal in display.viewCone.
+    if (!c.view_cone_nominal_deg) c.view_cone_nominal_deg = c.display.view_cone_deg;
+    c.display.view_cone_deg = *c.view_cone_measured_deg;
+  }
   c.phase_blur_sigma = optional_number(root, "phase_blur_sigma", name);
   if (c.phase_blur_sigma)
     require_field(*c.phase_blur_sigma >= 0 && *c.phase_blur_sigma < 0.5, name,
@@ -88,7 +97,13 @@ nlohmann::ordered_json to_json(const Calibration& c) {
   root["version"] = kCalibrationFormatVersion;
   root["display"] = to_visual_json(c.display);
   if (!c.correction.empty()) root["correction"] = c.correction.to_json();
-  if (c.view_cone_measured_deg) root["view_cone_measured_deg"] = *c.view_cone_measured_deg;
+  if (c.view_cone_measured_deg) {
+    // display.viewCone carries the measured cone too, so tools that read only the display
+    // block (or the exported visual.json) get it.
+    root["display"]["viewCone"] = ojson{{"value", *c.view_cone_measured_deg}};
+    root["view_cone_measured_deg"] = *c.view_cone_measured_deg;
+  }
+  if (c.view_cone_nominal_deg) root["view_cone_nominal_deg"] = *c.view_cone_nominal_deg;
   if (c.phase_blur_sigma) root["phase_blur_sigma"] = *c.phase_blur_sigma;
   if (!c.uncertainty.empty()) {
     ojson u = ojson::object();
@@ -120,10 +135,10 @@ void export_visual_json(const std::filesystem::path& path, const Calibration& c,
               << ": visual.json cannot hold the correction field (range " << r[0] << " .. "
               << r[1] << " lens periods); it is dropped\n";
   }
-  if (c.view_cone_measured_deg)
-    std::cerr << "warning: " << path.string()
-              << ": the measured view cone is kept only in calibration.json\n";
-  write_visual_json(path, c.display);
+  // The measured cone is the cone: other tools reading the export must get it.
+  DisplayCalibration display = c.display;
+  if (c.view_cone_measured_deg) display.view_cone_deg = *c.view_cone_measured_deg;
+  write_visual_json(path, display);
 }
 
 }  // namespace lfd::calib

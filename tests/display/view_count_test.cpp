@@ -1,8 +1,8 @@
-#include "calib/view_count.hpp"
+#include "calib/display/view_count.hpp"
 
 #include <gtest/gtest.h>
 
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {

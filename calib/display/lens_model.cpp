@@ -1,4 +1,4 @@
-#include "calib/lens_model.hpp"
+#include "calib/display/lens_model.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,10 +9,9 @@ namespace lfd::calib {
 LensModel::LensModel(const DisplayCalibration& calibration, CorrectionField correction)
     : calibration_(calibration), correction_(std::move(correction)) {
   const auto& c = calibration_;
-  // reference/looking-glass.md 3.1: cos(atan(1/s)) = |s|/sqrt(1+s^2) > 0 for either sign.
-  pitch_periods_ = c.pitch_lpi * (double(c.screen_w) / c.dpi) * std::cos(std::atan(1.0 / c.slope));
-  tilt_ = double(c.screen_h) / (double(c.screen_w) * c.slope);
-  if (c.flip_image_x) tilt_ = -tilt_;
+  const ShaderTerms<double> terms = shader_terms(c.geometry(), c.pitch_lpi, c.slope);
+  pitch_periods_ = terms.pitch_periods;
+  tilt_ = terms.tilt;
   // 3.5: on a BGR panel (flipSubp) red sits at the third position and blue at the first.
   if (c.flip_subp) physical_index_ = {2, 1, 0};
   // 2.3: cell offsets are in pixel units; normalise once into screen units.
@@ -25,7 +24,7 @@ LensModel::LensModel(const DisplayCalibration& calibration, CorrectionField corr
 }
 
 double LensModel::slant_deg() const {
-  return std::atan(1.0 / calibration_.slope) * 180.0 / std::numbers::pi;
+  return slant_deg_of_slope(calibration_.slope);
 }
 
 ScreenUV LensModel::pixel_uv(int x, int row_top_down) const {

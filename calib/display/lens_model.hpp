@@ -1,15 +1,15 @@
 #pragma once
 // The one lens model everything uses (DESIGN section 4, reference/looking-glass.md section 3):
 //   A(u, v) = (u + v * tilt) * pitch' - center + w(u, v)
-//   pitch' = pitch * (W / DPI) * cos(atan(1 / slope)),  tilt = H / (W * slope) (negated by flipImageX)
+// with pitch' and tilt from shader_terms() (lens_relations.hpp),
 // per-channel subpixel positions (classic 1/3-pixel stride, BGR via flipSubp, or Gen3 cells),
 // view fraction f = 1 - frac(A) (invView) or frac(A), clamped to [1e-5, 0.999999], and the view
 // index floor(f * V). The interlacer, the simulator, the pattern generator and the solver all
 // call this class, so they cannot disagree.
 #include <array>
 
-#include "calib/correction_field.hpp"
-#include "calib/display_calibration.hpp"
+#include "calib/display/correction_field.hpp"
+#include "calib/display/display_calibration.hpp"
 
 namespace lfd::calib {
 

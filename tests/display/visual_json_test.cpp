@@ -1,11 +1,11 @@
-#include "calib/visual_json.hpp"
+#include "calib/display/visual_json.hpp"
 
 #include <cmath>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include "calib/calibration_file.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
