@@ -50,8 +50,9 @@ Calibration parse_calibration(const std::string& text, const std::string& name) 
     require_field(*c.view_cone_measured_deg > 0 && *c.view_cone_measured_deg < 180, name,
                   "view_cone_measured_deg", "must be between 0 and 180 degrees");
     // The measured cone is the cone. Files written before the nominal was kept beside it
-    // hold the nominal in display.viewCone.
-    if (!c.view_cone_nominal_deg) c.view_cone_nominal_deg = c.display.view_cone_deg;
+    // hold the nominal in display.viewCone (one that equals the measured cone names none).
+    if (!c.view_cone_nominal_deg && c.display.view_cone_deg != *c.view_cone_measured_deg)
+      c.view_cone_nominal_deg = c.display.view_cone_deg;
     c.display.view_cone_deg = *c.view_cone_measured_deg;
   }
   c.phase_blur_sigma = optional_number(root, "phase_blur_sigma", name);
@@ -103,7 +104,12 @@ nlohmann::ordered_json to_json(const Calibration& c) {
     root["display"]["viewCone"] = ojson{{"value", *c.view_cone_measured_deg}};
     root["view_cone_measured_deg"] = *c.view_cone_measured_deg;
   }
-  if (c.view_cone_nominal_deg) root["view_cone_nominal_deg"] = *c.view_cone_nominal_deg;
+  // The nominal cone: as given, else the display's cone if the measured one has not yet
+  // replaced it in memory (it would be lost from the file otherwise).
+  if (c.view_cone_nominal_deg)
+    root["view_cone_nominal_deg"] = *c.view_cone_nominal_deg;
+  else if (c.view_cone_measured_deg && c.display.view_cone_deg != *c.view_cone_measured_deg)
+    root["view_cone_nominal_deg"] = c.display.view_cone_deg;
   if (c.phase_blur_sigma) root["phase_blur_sigma"] = *c.phase_blur_sigma;
   if (!c.uncertainty.empty()) {
     ojson u = ojson::object();
