@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/rasterizer_cpu.hpp"
+#include "render/blend.hpp"
 
 namespace lfd::render {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/g2lf.hpp"
+#include "render/depth_binning.hpp"
 #include "util/error.hpp"
 
 namespace lfd::render {

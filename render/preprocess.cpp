@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/rasterizer_cpu.hpp"
+#include "render/preprocess.hpp"
 #include "render/spherical_harmonics.hpp"
 
 namespace lfd::render {

@@ -4,7 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/g2lf.hpp"
+#include "render/rasterizer_cpu.hpp"
+#include "render/sweeping_planes.hpp"
 #include "util/progress.hpp"
 
 namespace lfd::render {
@@ -16,15 +17,15 @@ size_t SweepingPlanes::bytes() const {
 
 SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
                                       const ReferenceCamera& ref, const DepthChunks& chunks,
-                                      const G2lfOptions& options, const RasterSettings& settings) {
+                                      PlanePrecision precision, const RasterSettings& settings) {
   SweepingPlanes planes;
   planes.count = int(chunks.members.size());
   planes.width = ref.camera.width;
   planes.height = ref.camera.height;
-  planes.precision = options.precision;
+  planes.precision = precision;
   planes.plane_depth = chunks.plane_depth;
   const size_t texels = size_t(planes.width) * planes.height;
-  if (options.precision == PlanePrecision::kU8)
+  if (precision == PlanePrecision::kU8)
     planes.texels_u8.assign(texels * 4 * planes.count, 0);
   else
     planes.texels_f32.assign(texels * 4 * planes.count, 0.0f);
@@ -34,9 +35,6 @@ SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeo
   RasterSettings chunk_settings = settings;
   chunk_settings.background = glm::vec3(0.0f);
   chunk_settings.sh_origin = geometry.base.position_world;
-  chunk_settings.dilation_px2 =
-      options.adaptive_filter ? adaptive_filter_variance(geometry, ref, options.plane_scale, settings.dilation_px2)
-                              : settings.dilation_px2;
 
   Progress progress("sweeping planes", planes.count);
 #pragma omp parallel for schedule(dynamic, 1)
@@ -50,7 +48,7 @@ SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeo
         const float r = img.rgb[3 * p], g = img.rgb[3 * p + 1], b = img.rgb[3 * p + 2];
         const float t = img.transmittance[p];
         bool empty;
-        if (options.precision == PlanePrecision::kU8) {
+        if (precision == PlanePrecision::kU8) {
           const auto q = [](float v) { return uint8_t(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); };
           uint8_t* texel = &planes.texels_u8[o];
           texel[0] = q(r); texel[1] = q(g); texel[2] = q(b); texel[3] = q(t);

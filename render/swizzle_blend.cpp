@@ -8,7 +8,7 @@
 #include <array>
 #include <cmath>
 
-#include "render/g2lf.hpp"
+#include "render/swizzle_blend.hpp"
 
 namespace lfd::render {
 namespace {

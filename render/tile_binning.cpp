@@ -8,7 +8,7 @@
 
 #include <omp.h>
 
-#include "render/rasterizer_cpu.hpp"
+#include "render/tile_binning.hpp"
 
 namespace lfd::render {
 
