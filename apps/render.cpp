@@ -84,11 +84,14 @@ int RunRender(int argc, char** argv) {
                  "aspect, else 512x512)");
   app.add_option("--chunks", g2lf.chunks, "G2LF: number of depth chunks N_chunk")->capture_default_str();
   app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
-  app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")->capture_default_str();
-  app.add_option("--precision", precision, "G2LF: plane storage, u8 or f32")->capture_default_str();
+  app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")
+      ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
+  app.add_option("--precision", precision, "G2LF: plane storage, u8 or f32")
+      ->check(CLI::IsMember({"u8", "f32"}))->capture_default_str();
   app.add_option("--binning", binning,
                  "G2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
-                 "quantile (the paper's equal counts)")->capture_default_str();
+                 "quantile (the paper's equal counts)")
+      ->check(CLI::IsMember({"mixed", "quantile"}))->capture_default_str();
   app.add_option("--shift", g2lf.d_shift,
                  "G2LF: D_shift, move the reference camera back by this (scene units; default: by "
                  "D_forward, to the base camera; 0 = the paper's setting)");

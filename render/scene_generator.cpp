@@ -355,12 +355,12 @@ void fill_gaussian(GaussianScene& scene, size_t i, const Component& c, std::mt19
 void SceneGeneratorOptions::check() const {
   const auto kinds = generator_kinds();
   if (std::find(kinds.begin(), kinds.end(), kind) == kinds.end())
-    throw_input_error("--kind: unknown scene kind '{}' (one of: {})", kind,
+    throw_input_error("scene generator options: kind: unknown scene kind '{}' (one of: {})", kind,
                       fmt::join(kinds, ", "));
   if (count == 0 || count > kMaxCount)
-    throw_input_error("--count: {} Gaussians is out of range (1..{})", count, kMaxCount);
+    throw_input_error("scene generator options: count: {} Gaussians is out of range (1..{})", count, kMaxCount);
   if (sh_degree < 0 || sh_degree > 3)
-    throw_input_error("--sh-degree: {} is not in 0..3", sh_degree);
+    throw_input_error("scene generator options: sh_degree: {} is not in 0..3", sh_degree);
 }
 
 std::vector<std::string> generator_kinds() { return {"tabletop", "corridor"}; }

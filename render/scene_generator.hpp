@@ -17,7 +17,7 @@ struct SceneGeneratorOptions {
   size_t count = 100000;          // number of Gaussians
   uint64_t seed = 1;
   int sh_degree = 1;
-  void check() const;             // throws InputError for an unknown kind or absurd count
+  void check() const;             // InputError "scene generator options: <field>: ..."
 };
 
 std::vector<std::string> generator_kinds();

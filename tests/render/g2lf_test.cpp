@@ -110,6 +110,39 @@ TEST(G2lf, OptionsAreChecked) {
   EXPECT_EQ(parse_chunk_binning("mixed"), ChunkBinning::kMixed);
 }
 
+TEST(G2lf, OptionErrorsNameTheFieldNotAFlag) {
+  G2lfOptions o;
+  o.chunks = 0;
+  try {
+    o.check();
+    FAIL() << "chunks = 0 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("G2LF options: chunks"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("--"), std::string::npos) << e.what();
+  }
+}
+
+TEST(G2lf, ShiftBeyondDForwardIsRefusedNotRendered) {
+  const Fixture& f = fixture();
+  const float d_forward = make_reference_camera(f.geometry, 0.0f, 1).d_forward;
+  G2lfOptions o;
+  o.chunks = 4;
+  o.d_shift = 2.0f * d_forward;  // reference camera behind the base camera
+  EXPECT_THROW(o.check(f.geometry), InputError);
+  try {
+    render_quilt_g2lf(f.scene, f.geometry, f.layout, o);
+    FAIL() << "D_shift " << o.d_shift << " > D_forward " << d_forward << " was rendered";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("d_shift"), std::string::npos) << what;
+    EXPECT_NE(what.find("D_forward"), std::string::npos) << what;
+  }
+  o.d_shift = d_forward;  // at the base camera: the largest allowed
+  EXPECT_NO_THROW(o.check(f.geometry));
+  o.d_shift = -1.0f;      // the default: D_forward
+  EXPECT_NO_THROW(o.check(f.geometry));
+}
+
 // A dense cluster at depth 3.3-3.7 (around the focal plane) in front of a sparse background spread over depth 5-40: the
 // case (few large background Gaussians covering much of the image) where count quantiles put
 // the whole background on one plane.
