@@ -7,9 +7,24 @@
 #include <vector>
 
 #include "apps/commands.hpp"
+#include "util/data_dir.hpp"
 #include "util/error.hpp"
+#include "util/version.hpp"
 
 namespace {
+
+// `lfd version`: the version line and where the program finds its bundled data.
+int RunVersion(int argc, char** argv) {
+  if (argc > 1 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
+    std::cout << "Print the version, the git commit and the build date, and the folder of the\n"
+                 "bundled data (display templates, the demo scene; $LFD_DATA_DIR overrides it).\n"
+                 "\nUsage: lfd version   (or lfd --version: the first line only)\n";
+    return 0;
+  }
+  if (argc > 1) lfd::throw_input_error("version takes no arguments (got '{}')", argv[1]);
+  std::cout << lfd::version_line() << "\ndata: " << lfd::data_dir().string() << "\n";
+  return 0;
+}
 
 struct Command {
   const char* name;
@@ -31,6 +46,7 @@ const std::vector<Command>& commands() {
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
       {"patterns", RunPatterns, "write the calibration patterns for a display"},
       {"calibrate", RunCalibrate, "calibrate a display unit from photographs of the patterns"},
+      {"version", RunVersion, "print the version, the git commit and the data folder"},
   };
   return table;
 }
@@ -39,7 +55,8 @@ void print_usage() {
   std::cout << "lfd: light field display toolkit\n\nUsage: lfd <command> [options]\n\n"
                "Commands:\n";
   for (const auto& c : commands()) std::printf("  %-11s %s\n", c.name, c.summary);
-  std::cout << "\nRun 'lfd <command> --help' for a command's options and examples.\n";
+  std::cout << "\nRun 'lfd <command> --help' for a command's options and examples,\n"
+               "'lfd --version' for the version and the git commit it was built from.\n";
 }
 
 }  // namespace
@@ -48,6 +65,10 @@ int main(int argc, char** argv) {
   if (argc < 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     print_usage();
     return argc < 2 ? 2 : 0;
+  }
+  if (std::strcmp(argv[1], "--version") == 0 || std::strcmp(argv[1], "-V") == 0) {
+    std::cout << lfd::version_line() << "\n";
+    return 0;
   }
   const std::string_view name = argv[1];
   for (const auto& c : commands()) {

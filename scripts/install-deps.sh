@@ -20,6 +20,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # plots in validation reports
   gnuplot-nox
+  # Debian packages (scripts/package.sh: cpack computes the Depends with dpkg-shlibdeps)
+  dpkg-dev file
 )
 
 missing=()
