@@ -9,7 +9,7 @@
 #include "calib/live/hardware_live_calibration.hpp"
 #include "calib/live_calibration.hpp"
 #include "util/error.hpp"
-#include "validate/calibration_report.hpp"
+#include "report/calibration_report.hpp"
 
 namespace lfd::apps {
 
@@ -104,7 +104,7 @@ int RunCalibrate(int argc, char** argv) {
     outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   }
   for (const auto& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
-  if (!report_dir.empty()) validate::write_calibration_report(outcome, report_dir);
+  if (!report_dir.empty()) report::write_calibration_report(outcome, report_dir);
   calib::enforce_gates(outcome);
 
   const auto& c = outcome.calibration;

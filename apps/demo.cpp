@@ -3,7 +3,7 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "validate/demo.hpp"
+#include "pipeline/demo.hpp"
 
 namespace lfd::apps {
 
@@ -12,7 +12,7 @@ int RunDemo(int argc, char** argv) {
                "rendered with G2LF, interlaced, photographed from three positions, validated, and\n"
                "an HTML report.\n\nExamples:\n  lfd demo\n  lfd demo --out /tmp/demo --unit my.visual.json",
                "demo"};
-  validate::DemoOptions options;
+  pipeline::DemoOptions options;
   std::string out = options.out_dir.string(), unit, scene;
   app.add_option("--out", out, "report folder")->capture_default_str();
   app.add_option("--unit", unit, "calibration of the simulated unit (default: bundled real unit)");
@@ -24,7 +24,7 @@ int RunDemo(int argc, char** argv) {
   options.unit_calibration = unit;
   options.scene = scene;
   std::cout << "lfd demo -> " << out << "\n";
-  const auto index = validate::run_demo(options);
+  const auto index = pipeline::run_demo(options);
   std::cout << "report: " << index.string() << "\n";
   return 0;
 }

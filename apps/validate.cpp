@@ -12,7 +12,7 @@
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "validate/miscalibration.hpp"
-#include "validate/report.hpp"
+#include "report/validation_report.hpp"
 #include "validate/view_count_check.hpp"
 
 namespace lfd::apps {
@@ -119,9 +119,9 @@ int RunValidate(int argc, char** argv) {
     runs.push_back({"miscalibrated", truth_path + " with " + error.describe(), validate::apply(truth, error)});
   runs.push_back({"true", truth_path, truth});
 
-  std::vector<validate::ValidationCase> cases;
+  std::vector<report::ValidationCase> cases;
   for (const auto& [name, source, assumed] : runs) {
-    validate::ValidationCase c;
+    report::ValidationCase c;
     c.name = name;
     c.truth_source = truth_path;
     c.assumed_source = source;
@@ -131,12 +131,12 @@ int RunValidate(int argc, char** argv) {
     c.summary = validate::summarise(c.profiles);
     cases.push_back(std::move(c));
   }
-  const auto index = validate::write_report(out_dir, cases);
+  const auto index = report::write_report(out_dir, cases);
 
   if (json) {
     nlohmann::ordered_json j = nlohmann::ordered_json::array();
     for (const auto& c : cases) {
-      auto cj = validate::to_json(c);
+      auto cj = report::to_json(c);
       cj.erase("profiles");  // the profiles are in validation.json
       j.push_back(cj);
     }

@@ -3,8 +3,9 @@
 // pipeline behind `lfd calibrate DIR`. Captures are checked before anything is estimated
 // (missing or extra files, wrong pattern, camera motion, exposure, screen outside the photo,
 // no board), then: registration -> phase decoding -> coarse start -> one Ceres solve ->
-// quality gates. Every failure is an InputError naming the file and what to change;
-// nothing is written here (the caller writes the result only on success).
+// quality gates, each a named stage (calibration_stages.hpp). Every failure is an InputError
+// naming the file and what to change; nothing is written here (the caller writes the result
+// only on success).
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -13,38 +14,15 @@
 
 #include <opencv2/core.hpp>
 
-#include "calib/display/calibration_file.hpp"
 #include "calib/camera_model.hpp"
+#include "calib/capture_io.hpp"
+#include "calib/display/calibration_file.hpp"
 #include "calib/lens_solver.hpp"
 #include "calib/patterns.hpp"
 #include "calib/phase_decoding.hpp"
+#include "calib/quality_gates.hpp"
 
 namespace lfd::calib {
-
-// The photographs of one camera position, by pattern file stem. Images are CV_32FC3, RGB,
-// values in [0, 1].
-struct PositionCaptures {
-  std::string name;
-  std::map<std::string, cv::Mat> images;
-  std::map<std::string, std::string> paths;  // for messages (the stem if not from disk)
-};
-
-// Reads DIR/captures/<position>/<pattern stem>.<any extension OpenCV reads>. Throws
-// InputError for a missing capture, a duplicate, an unreadable file or mixed image sizes;
-// files that match no pattern are skipped with a warning.
-std::vector<PositionCaptures> read_captures(const std::filesystem::path& dir,
-                                            const PatternSet& set,
-                                            std::vector<std::string>& warnings);
-
-struct QualityGates {
-  double max_residual_rms_periods = 0.08;
-  double min_inlier_fraction = 0.6;
-  double max_pitch_sigma_rel = 5e-5;   // near the reference/display-optics.md 1.1 tolerance
-  double max_slant_sigma_deg = 0.005;
-  double max_center_sigma_periods = 0.01;
-  double max_view_cone_sigma_deg = 2.0;
-  double max_correction_sigma_periods = 0.02;
-};
 
 struct CalibrateOptions {
   std::optional<CameraIntrinsics> camera;  // else self-calibrated from >= 3 positions
@@ -58,6 +36,9 @@ struct CalibrateOptions {
                                        // (or 0.5 % of the image diagonal, if more)
   double max_clipped_fraction = 0.25;  // of the screen saturated in one capture
   double min_contrast = 0.06;          // white minus black, fraction of full scale
+
+  // Throws InputError("calibrate options: <field>: ...") for values that cannot work.
+  void check() const;
 };
 
 struct PositionReport {
@@ -98,8 +79,5 @@ void enforce_gates(const CalibrationOutcome& outcome);
 
 // A JSON report: positions, coarse start, solver summary, gates.
 nlohmann::ordered_json outcome_report(const CalibrationOutcome& outcome);
-
-// cv::Mat (CV_32FC3 RGB) <-> the project's float images.
-cv::Mat to_mat(const ImageF& image);
 
 }  // namespace lfd::calib

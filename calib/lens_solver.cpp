@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include <Eigen/Dense>
@@ -145,12 +146,6 @@ void basis_moments(int n, std::vector<double>& m0, std::vector<double>& m1) {
   }
 }
 
-struct Problem {
-  double lens[4];
-  std::vector<double> cams;    // 2 per position
-  std::vector<double> coeffs;  // nx * ny
-};
-
 }  // namespace
 
 DisplayCalibration apply_estimate(const DisplayCalibration& nominal, const LensEstimate& lens) {
@@ -185,77 +180,83 @@ CorrectionField remove_gauge(const CorrectionField& field) {
   return CorrectionField(field.nx(), field.ny(), std::move(c));
 }
 
-SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
-                        const std::vector<PositionData>& positions, const SolverOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const DisplayCalibration& nd = nominal.display;
-  const DisplayConstants dc = DisplayConstants::of(nd);
-  const LensModel nominal_lens(nd, nominal.correction);
-  const bool with_field = options.grid_nx >= 4 && options.grid_ny >= 4;
-  const int nx = with_field ? options.grid_nx : 0, ny = with_field ? options.grid_ny : 0;
-  const bool fit_cone = options.fit_view_cone && positions.size() >= 2;
+namespace {
 
-  Problem x;
-  x.lens[0] = start.pitch_lpi;
-  x.lens[1] = start.slope;
-  x.lens[2] = start.center_periods;
-  x.lens[3] = start.view_cone_deg;
-  for (const auto& p : positions) {
-    x.cams.push_back(p.camera_m.x());
-    x.cams.push_back(p.camera_m.z());
-  }
-  x.coeffs.assign(size_t(nx) * ny, 0.0);
-
-  // Samples: subsampled evenly to the cap; the nominal phase is a constant per sample.
-  std::vector<std::vector<Sample>> samples(positions.size());
-  for (size_t i = 0; i < positions.size(); ++i) {
-    const auto& in = positions[i].samples;
-    const size_t stride = std::max<size_t>(1, (in.size() + options.max_samples_per_position - 1) /
-                                                  size_t(options.max_samples_per_position));
-    for (size_t j = 0; j < in.size(); j += stride) {
-      Sample s;
-      s.u_phys = in[j].u;
-      s.v = in[j].v;
-      s.psi = in[j].psi;
-      if (with_field) {  // the field is smooth: its weights at P serve for the content point too
-        s.wu = bspline_weights(nx, s.u_phys);
-        s.wv = bspline_weights(ny, s.v);
-      }
-      samples[i].push_back(s);
+// One lens problem (the unknowns, the samples) and the steps that solve it:
+//   update_content_points -> solve_stage (linear model) -> solve_stage (with the field)
+//   -> measure_noise -> solve_stage (final loss, measured noise) -> covariance -> statistics.
+class LensProblem {
+ public:
+  LensProblem(const Calibration& nominal, const LensEstimate& start,
+              const std::vector<PositionData>& positions, const SolverOptions& options)
+      : nominal_(nominal.display),
+        dc_(DisplayConstants::of(nominal.display)),
+        nominal_lens_(nominal.display, nominal.correction),
+        positions_(positions),
+        options_(options),
+        with_field_(options.grid_nx >= 4 && options.grid_ny >= 4),
+        nx_(with_field_ ? options.grid_nx : 0),
+        ny_(with_field_ ? options.grid_ny : 0),
+        fit_cone_(options.fit_view_cone && positions.size() >= 2),
+        obs_sigma_(options.obs_sigma) {
+    lens_[0] = start.pitch_lpi;
+    lens_[1] = start.slope;
+    lens_[2] = start.center_periods;
+    lens_[3] = start.view_cone_deg;
+    for (const auto& p : positions) {
+      cams_.push_back(p.camera_m.x());
+      cams_.push_back(p.camera_m.z());
+    }
+    coeffs_.assign(size_t(nx_) * ny_, 0.0);
+    select_samples();
+    if (with_field_) {
+      basis_moments(nx_, m0x_, m1x_);
+      basis_moments(ny_, m0y_, m1y_);
     }
   }
 
-  // delta: each sample's content point (where A is evaluated) from its physical point and the
-  // current estimate; it moves with the estimate, so it is updated between the stages.
-  auto update_content_points = [&]() {
-    const double pitch_p = shader_terms(dc.geometry, x.lens[0], x.lens[1]).pitch_periods;
-    for (size_t i = 0; i < samples.size(); ++i)
-      for (auto& s : samples[i]) {
-        const double f_seen = seen_fraction(x.cams[2 * i] - dc.panel_x_m(s.u_phys),
-                                            x.cams[2 * i + 1], x.lens[3]);
-        s.u = s.u_phys + lens_content_shift(f_seen, nd.inv_view) / pitch_p;
-        s.a_nom = nominal_lens.phase(s.u, s.v);
+  // Each sample's content point (where A is evaluated) from its physical point and the
+  // current estimate: it moves with the estimate, so it is updated between the stages.
+  void update_content_points() {
+    const double pitch_p = shader_terms(dc_.geometry, lens_[0], lens_[1]).pitch_periods;
+    for (size_t i = 0; i < samples_.size(); ++i)
+      for (auto& s : samples_[i]) {
+        const double f_seen = seen_fraction(cams_[2 * i] - dc_.panel_x_m(s.u_phys),
+                                            cams_[2 * i + 1], lens_[3]);
+        s.u = s.u_phys + lens_content_shift(f_seen, nominal_.inv_view) / pitch_p;
+        s.a_nom = nominal_lens_.phase(s.u, s.v);
       }
-  };
-  update_content_points();
-
-  std::vector<double> m0x, m1x, m0y, m1y;
-  if (with_field) {
-    basis_moments(nx, m0x, m1x);
-    basis_moments(ny, m0y, m1y);
   }
 
-  SolverResult result;
-  // The wrapped residual (lens periods) of sample s of position i at the current estimate.
-  auto residual_of = [&](size_t i, const Sample& s) {
-    double w = 0;
-    if (with_field)
-      for (int b = 0; b < 4; ++b)
-        for (int a = 0; a < 4; ++a)
-          w += x.coeffs[size_t(s.wv.i0 + b) * nx + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
-    return wrap_half(s.psi - psi_linear(dc, x.lens, &x.cams[2 * i], s.u, s.v, s.u_phys, s.a_nom) -
-                     dc.sign * w);
-  };
+  // Builds the Ceres problem at the current estimate and solves it under a Cauchy loss of
+  // `loss_scale` lens periods; the field is held fixed unless `field_free`.
+  void solve_stage(double loss_scale, bool field_free, SolverResult& result) {
+    problem_ = std::make_unique<ceres::Problem>(problem_options());
+    loss_ = std::make_unique<ceres::CauchyLoss>(loss_scale / obs_sigma_);
+    add_phase_residuals();
+    add_camera_priors();
+    if (with_field_) {
+      add_smoothness_prior();
+      add_gauge_constraints();
+      if (!field_free)
+        for (auto& c : coeffs_) problem_->SetParameterBlockConstant(&c);
+    }
+    if (!fit_cone_) problem_->SetManifold(lens_, new ceres::SubsetManifold(4, {3}));
+
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    if (!ceres::IsSparseLinearAlgebraLibraryTypeAvailable(ceres::SUITE_SPARSE))
+      so.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
+    so.max_num_iterations = options_.max_iterations;
+    so.num_threads = options_.threads;
+    so.function_tolerance = 1e-10;
+    so.parameter_tolerance = 1e-12;
+    so.minimizer_progress_to_stdout = options_.verbose;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, problem_.get(), &summary);
+    result.report += summary.BriefReport() + "\n";
+    result.converged = summary.IsSolutionUsable();
+  }
 
   // The phase noise the final stage weights the samples with: the inlier RMS, inflated by how
   // much neighbouring samples share their errors (lens-scale moire, registration, what the
@@ -263,14 +264,14 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   // has variance sigma^2 / n; the measured n * mean^2 over sigma^2 is the inflation. Without
   // it the covariance would count 100k correlated samples as independent and come out several
   // times too small.
-  auto effective_sigma = [&]() {
+  void measure_noise(SolverResult& result) {
     constexpr int kCells = 16;
     double sum2 = 0, inflation_sum = 0;
     long n = 0, cells_used = 0;
     std::vector<std::pair<double, long>> cells;
-    for (size_t i = 0; i < samples.size(); ++i) {
+    for (size_t i = 0; i < samples_.size(); ++i) {
       cells.assign(kCells * kCells, {0.0, 0});
-      for (const auto& s : samples[i]) {
+      for (const auto& s : samples_[i]) {
         const double r = residual_of(i, s);
         if (std::abs(r) >= kOutlierBoundPeriods) continue;
         sum2 += r * r;
@@ -286,168 +287,230 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
           ++cells_used;
         }
     }
-    if (n < 10) return options.obs_sigma;
-    const double sigma2 = sum2 / double(n);
-    const double inflation = cells_used ? std::max(1.0, inflation_sum / cells_used / sigma2) : 1.0;
-    result.noise_inflation = inflation;
-    return std::max(1e-4, std::sqrt(sigma2 * inflation));
-  };
-
-  double obs_sigma = options.obs_sigma;
-  auto build_and_solve = [&](double loss_scale, bool field_free, bool covariance) {
-    ceres::Problem::Options po;
-    po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
-    ceres::Problem problem(po);
-    ceres::CauchyLoss loss(loss_scale / obs_sigma);
-    const double inv_sigma = 1.0 / obs_sigma;
-    for (size_t i = 0; i < samples.size(); ++i)
-      for (const auto& s : samples[i]) {
-        std::vector<double*> blocks{x.lens, &x.cams[2 * i]};
-        if (with_field)
-          for (int b = 0; b < 4; ++b)
-            for (int a = 0; a < 4; ++a)
-              blocks.push_back(&x.coeffs[size_t(s.wv.i0 + b) * nx + size_t(s.wu.i0 + a)]);
-        problem.AddResidualBlock(new PhaseResidual(dc, s, inv_sigma, with_field), &loss, blocks);
-      }
-    for (size_t i = 0; i < positions.size(); ++i)
-      problem.AddResidualBlock(
-          new ceres::AutoDiffCostFunction<CameraPrior, 2, 2>(new CameraPrior{
-              positions[i].camera_m.x(), positions[i].camera_m.z(),
-              1.0 / positions[i].lateral_sigma_m, 1.0 / positions[i].depth_sigma_m}),
-          nullptr, &x.cams[2 * i]);
-    if (with_field) {
-      auto at = [&](int ix, int iy) { return &x.coeffs[size_t(iy) * nx + ix]; };
-      const double l = options.smoothness;
-      for (int iy = 0; iy < ny; ++iy)
-        for (int ix = 1; ix + 1 < nx; ++ix)
-          problem.AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
-                                   {at(ix - 1, iy), at(ix, iy), at(ix + 1, iy)});
-      for (int iy = 1; iy + 1 < ny; ++iy)
-        for (int ix = 0; ix < nx; ++ix)
-          problem.AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
-                                   {at(ix, iy - 1), at(ix, iy), at(ix, iy + 1)});
-      for (int iy = 0; iy + 1 < ny; ++iy)
-        for (int ix = 0; ix + 1 < nx; ++ix)
-          problem.AddResidualBlock(new LinearCombination({l, -l, -l, l}), nullptr,
-                                   {at(ix, iy), at(ix + 1, iy), at(ix, iy + 1), at(ix + 1, iy + 1)});
-      // Gauge: integral of w times 1, (u - 1/2), (v - 1/2) over the screen is zero.
-      std::vector<double*> all;
-      for (auto& c : x.coeffs) all.push_back(&c);
-      const double g = 1e4;
-      for (int moment = 0; moment < 3; ++moment) {
-        std::vector<double> a;
-        for (int iy = 0; iy < ny; ++iy)
-          for (int ix = 0; ix < nx; ++ix) {
-            const double mx = moment == 1 ? m1x[size_t(ix)] * 12 : m0x[size_t(ix)];
-            const double my = moment == 2 ? m1y[size_t(iy)] * 12 : m0y[size_t(iy)];
-            a.push_back(g * mx * my);
-          }
-        problem.AddResidualBlock(new LinearCombination(a), nullptr, all);
-      }
-      if (!field_free)
-        for (auto& c : x.coeffs) problem.SetParameterBlockConstant(&c);
+    if (n >= 10) {
+      const double sigma2 = sum2 / double(n);
+      const double inflation =
+          cells_used ? std::max(1.0, inflation_sum / cells_used / sigma2) : 1.0;
+      result.noise_inflation = inflation;
+      obs_sigma_ = std::max(1e-4, std::sqrt(sigma2 * inflation));
+    } else {
+      obs_sigma_ = options_.obs_sigma;
     }
-    if (!fit_cone) problem.SetManifold(x.lens, new ceres::SubsetManifold(4, {3}));
+    result.obs_sigma_periods = obs_sigma_;
+  }
 
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-    if (!ceres::IsSparseLinearAlgebraLibraryTypeAvailable(ceres::SUITE_SPARSE))
-      so.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
-    so.max_num_iterations = options.max_iterations;
-    so.num_threads = options.threads;
-    so.function_tolerance = 1e-10;
-    so.parameter_tolerance = 1e-12;
-    so.minimizer_progress_to_stdout = options.verbose;
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
-    result.report += summary.BriefReport() + "\n";
-    result.converged = summary.IsSolutionUsable();
-
-    if (!covariance) return;
-    // Uncertainties: the Gauss-Newton covariance at the solution. The samples are weighted by
-    // their measured effective noise (effective_sigma) and the priors by theirs, so it needs
-    // no rescaling.
+  // Uncertainties: the Gauss-Newton covariance at the solution of the last stage. The samples
+  // are weighted by their measured effective noise (measure_noise) and the priors by theirs,
+  // so it needs no rescaling.
+  void covariance(SolverResult& result) {
     ceres::Covariance::Options co;
     co.algorithm_type = ceres::DENSE_SVD;
     co.null_space_rank = -1;
     co.min_reciprocal_condition_number = 1e-14;
-    co.num_threads = options.threads;
+    co.num_threads = options_.threads;
     ceres::Covariance cov(co);
-    std::vector<const double*> blocks{x.lens};
-    for (auto& c : x.coeffs) blocks.push_back(&c);
+    std::vector<const double*> blocks{lens_};
+    for (auto& c : coeffs_) blocks.push_back(&c);
     std::vector<std::pair<const double*, const double*>> pairs;
     for (size_t a = 0; a < blocks.size(); ++a)
       for (size_t b = a; b < blocks.size(); ++b) pairs.emplace_back(blocks[a], blocks[b]);
-    if (!cov.Compute(pairs, &problem)) return;
-    const size_t dim = 4 + x.coeffs.size();
+    if (!cov.Compute(pairs, problem_.get())) return;
+    const size_t dim = 4 + coeffs_.size();
     Eigen::MatrixXd c(dim, dim);
     if (!cov.GetCovarianceMatrix(blocks, c.data())) return;
     const char* names[4] = {"pitch_lpi", "slope", "center_periods", "view_cone_deg"};
     for (int i = 0; i < 4; ++i) result.sigma[names[i]] = std::sqrt(std::max(0.0, c(i, i)));
-    if (!fit_cone) result.sigma["view_cone_deg"] = 0;
-    if (with_field) {
+    if (!fit_cone_) result.sigma["view_cone_deg"] = 0;
+    if (with_field_) {
       // RMS over the screen of the standard deviation of w.
       double sum = 0;
       const int n = 16;
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const BSplineWeights wu = bspline_weights(nx, (i + 0.5) / n);
-          const BSplineWeights wv = bspline_weights(ny, (j + 0.5) / n);
+          const BSplineWeights wu = bspline_weights(nx_, (i + 0.5) / n);
+          const BSplineWeights wv = bspline_weights(ny_, (j + 0.5) / n);
           Eigen::VectorXd g = Eigen::VectorXd::Zero(long(dim));
           for (int b = 0; b < 4; ++b)
-            for (int a = 0; a < 4; ++a)
-              g[4 + (wv.i0 + b) * nx + wu.i0 + a] = wu.w[a] * wv.w[b];
+            for (int a = 0; a < 4; ++a) g[4 + (wv.i0 + b) * nx_ + wu.i0 + a] = wu.w[a] * wv.w[b];
           sum += g.dot(c * g);
         }
       result.sigma["correction_rms_periods"] = std::sqrt(std::max(0.0, sum / (n * n)));
     }
-  };
+  }
 
-  // Stage 1: the linear model only, wide loss (the unmodelled warp is up to ~0.3 period).
-  build_and_solve(0.2, false, false);
-  update_content_points();
-  // Stage 2: with the correction field.
-  build_and_solve(0.1, true, false);
-  update_content_points();
-  // Stage 3: final robust scale, the measured noise, uncertainties.
-  obs_sigma = effective_sigma();
-  result.obs_sigma_periods = obs_sigma;
-  build_and_solve(options.loss_scale, true, true);
+  // The estimate, the refined cameras and the residual statistics (lens periods).
+  void statistics(SolverResult& result) const {
+    result.lens = {lens_[0], lens_[1], lens_[2] - std::floor(lens_[2]), lens_[3]};
+    if (with_field_) result.correction = CorrectionField(nx_, ny_, coeffs_);
+    for (size_t i = 0; i < positions_.size(); ++i)
+      result.cameras_m.push_back({cams_[2 * i], positions_[i].camera_m.y(), cams_[2 * i + 1]});
+    std::vector<double> abs_all;
+    double sum2 = 0;
+    long inliers = 0;
+    for (size_t i = 0; i < samples_.size(); ++i) {
+      double pos_sum2 = 0;
+      long pos_in = 0;
+      auto& kept = result.position_samples.emplace_back();
+      kept.reserve(samples_[i].size());
+      for (const auto& s : samples_[i]) {
+        const double r = residual_of(i, s);
+        abs_all.push_back(std::abs(r));
+        kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
+        if (std::abs(r) < kOutlierBoundPeriods) {
+          sum2 += r * r;
+          pos_sum2 += r * r;
+          ++inliers;
+          ++pos_in;
+        }
+      }
+      result.position_rms.push_back(pos_in ? std::sqrt(pos_sum2 / pos_in) : 1.0);
+    }
+    result.residuals.count = long(abs_all.size());
+    if (!abs_all.empty()) {
+      std::nth_element(abs_all.begin(), abs_all.begin() + abs_all.size() / 2, abs_all.end());
+      result.residuals.median_abs_periods = abs_all[abs_all.size() / 2];
+      result.residuals.inlier_fraction = double(inliers) / double(abs_all.size());
+      result.residuals.rms_periods = inliers ? std::sqrt(sum2 / inliers) : 1.0;
+    }
+  }
 
-  result.lens = {x.lens[0], x.lens[1], x.lens[2] - std::floor(x.lens[2]), x.lens[3]};
-  if (with_field) result.correction = CorrectionField(nx, ny, x.coeffs);
-  for (size_t i = 0; i < positions.size(); ++i)
-    result.cameras_m.push_back({x.cams[2 * i], positions[i].camera_m.y(), x.cams[2 * i + 1]});
+ private:
+  static ceres::Problem::Options problem_options() {
+    ceres::Problem::Options po;
+    po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    return po;
+  }
 
-  // Residual statistics in lens periods.
-  std::vector<double> abs_all;
-  double sum2 = 0;
-  long inliers = 0;
-  for (size_t i = 0; i < samples.size(); ++i) {
-    double pos_sum2 = 0;
-    long pos_in = 0;
-    auto& kept = result.position_samples.emplace_back();
-    kept.reserve(samples[i].size());
-    for (const auto& s : samples[i]) {
-      const double r = residual_of(i, s);
-      abs_all.push_back(std::abs(r));
-      kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
-      if (std::abs(r) < kOutlierBoundPeriods) {
-        sum2 += r * r;
-        pos_sum2 += r * r;
-        ++inliers;
-        ++pos_in;
+  // Samples: subsampled evenly to the cap; the field's basis weights at the physical point
+  // serve for the content point too (the field is smooth).
+  void select_samples() {
+    samples_.resize(positions_.size());
+    for (size_t i = 0; i < positions_.size(); ++i) {
+      const auto& in = positions_[i].samples;
+      const size_t cap = size_t(options_.max_samples_per_position);
+      const size_t stride = std::max<size_t>(1, (in.size() + cap - 1) / cap);
+      for (size_t j = 0; j < in.size(); j += stride) {
+        Sample s;
+        s.u_phys = in[j].u;
+        s.v = in[j].v;
+        s.psi = in[j].psi;
+        if (with_field_) {
+          s.wu = bspline_weights(nx_, s.u_phys);
+          s.wv = bspline_weights(ny_, s.v);
+        }
+        samples_[i].push_back(s);
       }
     }
-    result.position_rms.push_back(pos_in ? std::sqrt(pos_sum2 / pos_in) : 1.0);
+    update_content_points();
   }
-  result.residuals.count = long(abs_all.size());
-  if (!abs_all.empty()) {
-    std::nth_element(abs_all.begin(), abs_all.begin() + abs_all.size() / 2, abs_all.end());
-    result.residuals.median_abs_periods = abs_all[abs_all.size() / 2];
-    result.residuals.inlier_fraction = double(inliers) / double(abs_all.size());
-    result.residuals.rms_periods = inliers ? std::sqrt(sum2 / inliers) : 1.0;
+
+  double* coeff(int ix, int iy) { return &coeffs_[size_t(iy) * nx_ + ix]; }
+
+  // The wrapped residual (lens periods) of sample s of position i at the current estimate.
+  double residual_of(size_t i, const Sample& s) const {
+    double w = 0;
+    if (with_field_)
+      for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a)
+          w += coeffs_[size_t(s.wv.i0 + b) * nx_ + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
+    return wrap_half(s.psi - psi_linear(dc_, lens_, &cams_[2 * i], s.u, s.v, s.u_phys, s.a_nom) -
+                     dc_.sign * w);
   }
+
+  void add_phase_residuals() {
+    const double inv_sigma = 1.0 / obs_sigma_;
+    for (size_t i = 0; i < samples_.size(); ++i)
+      for (const auto& s : samples_[i]) {
+        std::vector<double*> blocks{lens_, &cams_[2 * i]};
+        if (with_field_)
+          for (int b = 0; b < 4; ++b)
+            for (int a = 0; a < 4; ++a) blocks.push_back(coeff(s.wu.i0 + a, s.wv.i0 + b));
+        problem_->AddResidualBlock(new PhaseResidual(dc_, s, inv_sigma, with_field_), loss_.get(),
+                                   blocks);
+      }
+  }
+
+  void add_camera_priors() {
+    for (size_t i = 0; i < positions_.size(); ++i)
+      problem_->AddResidualBlock(
+          new ceres::AutoDiffCostFunction<CameraPrior, 2, 2>(new CameraPrior{
+              positions_[i].camera_m.x(), positions_[i].camera_m.z(),
+              1.0 / positions_[i].lateral_sigma_m, 1.0 / positions_[i].depth_sigma_m}),
+          nullptr, &cams_[2 * i]);
+  }
+
+  // Second differences of the control points (a prior on the warp's curvature).
+  void add_smoothness_prior() {
+    const double l = options_.smoothness;
+    for (int iy = 0; iy < ny_; ++iy)
+      for (int ix = 1; ix + 1 < nx_; ++ix)
+        problem_->AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
+                                   {coeff(ix - 1, iy), coeff(ix, iy), coeff(ix + 1, iy)});
+    for (int iy = 1; iy + 1 < ny_; ++iy)
+      for (int ix = 0; ix < nx_; ++ix)
+        problem_->AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
+                                   {coeff(ix, iy - 1), coeff(ix, iy), coeff(ix, iy + 1)});
+    for (int iy = 0; iy + 1 < ny_; ++iy)
+      for (int ix = 0; ix + 1 < nx_; ++ix)
+        problem_->AddResidualBlock(
+            new LinearCombination({l, -l, -l, l}), nullptr,
+            {coeff(ix, iy), coeff(ix + 1, iy), coeff(ix, iy + 1), coeff(ix + 1, iy + 1)});
+  }
+
+  // Gauge: the integrals of w times 1, (u - 1/2), (v - 1/2) over the screen are zero, so the
+  // field cannot absorb center, pitch or slope.
+  void add_gauge_constraints() {
+    std::vector<double*> all;
+    for (auto& c : coeffs_) all.push_back(&c);
+    const double g = 1e4;
+    for (int moment = 0; moment < 3; ++moment) {
+      std::vector<double> a;
+      for (int iy = 0; iy < ny_; ++iy)
+        for (int ix = 0; ix < nx_; ++ix) {
+          const double mx = moment == 1 ? m1x_[size_t(ix)] * 12 : m0x_[size_t(ix)];
+          const double my = moment == 2 ? m1y_[size_t(iy)] * 12 : m0y_[size_t(iy)];
+          a.push_back(g * mx * my);
+        }
+      problem_->AddResidualBlock(new LinearCombination(a), nullptr, all);
+    }
+  }
+
+  const DisplayCalibration& nominal_;
+  const DisplayConstants dc_;
+  const LensModel nominal_lens_;
+  const std::vector<PositionData>& positions_;
+  const SolverOptions& options_;
+  const bool with_field_;
+  const int nx_, ny_;
+  const bool fit_cone_;
+  double obs_sigma_;
+  double lens_[4];              // pitch_lpi, slope, center_periods, view_cone_deg
+  std::vector<double> cams_;    // Cx, Cz per position
+  std::vector<double> coeffs_;  // nx * ny correction control points
+  std::vector<std::vector<Sample>> samples_;
+  std::vector<double> m0x_, m1x_, m0y_, m1y_;
+  std::unique_ptr<ceres::CauchyLoss> loss_;  // outlives the problem that uses it
+  std::unique_ptr<ceres::Problem> problem_;
+};
+
+}  // namespace
+
+SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
+                        const std::vector<PositionData>& positions, const SolverOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LensProblem problem(nominal, start, positions, options);
+  SolverResult result;
+  // Stage 1: the linear model only, wide loss (the unmodelled warp is up to ~0.3 period).
+  problem.solve_stage(0.2, false, result);
+  problem.update_content_points();
+  // Stage 2: with the correction field.
+  problem.solve_stage(0.1, true, result);
+  problem.update_content_points();
+  // Stage 3: final robust scale, the measured noise, uncertainties.
+  problem.measure_noise(result);
+  problem.solve_stage(options.loss_scale, true, result);
+  problem.covariance(result);
+  problem.statistics(result);
   result.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

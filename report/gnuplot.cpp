@@ -1,9 +1,9 @@
-#include "validate/gnuplot.hpp"
+#include "report/gnuplot.hpp"
 
 #include <cstdlib>
 #include <iostream>
 
-namespace lfd::validate {
+namespace lfd::report {
 
 namespace {
 
@@ -44,4 +44,4 @@ bool run_gnuplot(const std::filesystem::path& dir, const std::string& script_nam
   return ok;
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

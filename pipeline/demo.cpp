@@ -1,4 +1,4 @@
-#include "validate/demo.hpp"
+#include "pipeline/demo.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -13,19 +13,20 @@
 #include "calib/synthetic_unit.hpp"
 #include "calib/display/view_count.hpp"
 #include "interlace/interlacer.hpp"
-#include "validate/numbered_quilt.hpp"
+#include "pipeline/numbered_quilt.hpp"
 #include "render/default_camera.hpp"
 #include "render/g2lf.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_io.hpp"
 #include "util/atomic_file.hpp"
+#include "util/data_dir.hpp"
 #include "util/image.hpp"
-#include "validate/demo_report.hpp"
+#include "report/demo_report.hpp"
 #include "validate/miscalibration.hpp"
-#include "validate/report.hpp"
+#include "report/validation_report.hpp"
 #include "validate/view_metrics.hpp"
 
-namespace lfd::validate {
+namespace lfd::pipeline {
 
 namespace {
 
@@ -51,13 +52,13 @@ class Step {
 
 std::filesystem::path run_demo(const DemoOptions& o) {
   namespace fs = std::filesystem;
-  const fs::path data = LFD_DATA_DIR;
+  const fs::path data = lfd::data_dir();  // installed share/lfd, or the source tree's data/
   const fs::path unit_path =
       o.unit_calibration.empty() ? data / "calibrations/LKG-2K-04409.visual.json" : o.unit_calibration;
   const fs::path scene_path = o.scene.empty() ? data / "scenes/demo.ply" : o.scene;
   const fs::path out = o.out_dir;
   fs::create_directories(out);
-  DemoReport report;
+  report::DemoReport report;
   report.unit_source = unit_path.string();
   report.scene_source = scene_path.string();
 
@@ -160,7 +161,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
       const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(fov, cw, ch), pose);
       // Which view a viewer there should see (DESIGN section 4: f_seen at the panel centre).
       const double f_seen = calib::seen_fraction(pose.position_m.x(), pose.position_m.z(), d.view_cone_deg);
-      DemoCapture cap;
+      report::DemoCapture cap;
       cap.name = name;
       cap.angle_deg = theta * 180.0 / std::numbers::pi;
       cap.expected_view = calib::LensModel::view_index(f_seen, advice.views);
@@ -175,28 +176,28 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   // 6. View separation: the unit's own calibration, its factory file, a 0.01-degree slant error.
   {
     Step step(o.verbose, "validating view separation (4 configurations)");
-    ProfileOptions po;
+    validate::ProfileOptions po;
     po.views = advice.views;
     po.panel_points = o.validation_points;
-    std::vector<ValidationCase> cases;
+    std::vector<report::ValidationCase> cases;
     const std::vector<std::pair<std::string, calib::Calibration>> configs = {
         {"recovered calibration", assumed},
         {"true calibration", truth},
         {"factory visual.json (no warp correction)", factory},
-        {"recovered, slant off by 0.01 deg", apply(assumed, Miscalibration{.slant_deg = 0.01})}};
+        {"recovered, slant off by 0.01 deg", validate::apply(assumed, validate::Miscalibration{.slant_deg = 0.01})}};
     for (const auto& [name, cal] : configs) {
-      ValidationCase c;
+      report::ValidationCase c;
       c.name = name;
       c.truth_source = "simulated unit";
       c.assumed_source = name;
-      c.profiles = measure_view_profiles(truth, cal, po);
-      c.summary = summarise(c.profiles);
+      c.profiles = validate::measure_view_profiles(truth, cal, po);
+      c.summary = validate::summarise(c.profiles);
       report.validation.push_back({name, c.summary.mean_separation, c.summary.mean_crosstalk});
       cases.push_back(std::move(c));
     }
-    write_report(out / "validation", cases);
+    report::write_report(out / "validation", cases);
   }
-  return write_demo_report(out, report);
+  return report::write_demo_report(out, report);
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::pipeline

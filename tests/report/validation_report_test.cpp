@@ -7,9 +7,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "validate/report.hpp"
+#include "report/validation_report.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 namespace {
 
 ValidationCase small_case() {
@@ -22,7 +22,7 @@ ValidationCase small_case() {
   c.profiles.theta_deg = {-5, 5};
   c.profiles.view = {{0.9, 0.1}, {0.2, 0.8}};
   c.profiles.black = {0.0, 0.0};
-  c.summary = summarise(c.profiles);
+  c.summary = validate::summarise(c.profiles);
   return c;
 }
 
@@ -45,4 +45,4 @@ TEST(ValidationReport, WritesJsonHtmlAndFigures) {
 }
 
 }  // namespace
-}  // namespace lfd::validate
+}  // namespace lfd::report

@@ -1,4 +1,4 @@
-#include "validate/calibration_figures.hpp"
+#include "report/calibration_figures.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -7,9 +7,9 @@
 #include <fmt/format.h>
 
 #include "util/atomic_file.hpp"
-#include "validate/gnuplot.hpp"
+#include "report/gnuplot.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 namespace {
 
@@ -242,4 +242,4 @@ CalibrationFigures draw_calibration_figures(const calib::CalibrationOutcome& o,
   return figures;
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-namespace lfd::validate {
+namespace lfd::pipeline {
 
 struct DemoOptions {
   std::filesystem::path out_dir = "out/demo";
@@ -25,4 +25,4 @@ struct DemoOptions {
 // Runs the demo; returns the path of the report's index.html.
 std::filesystem::path run_demo(const DemoOptions& options);
 
-}  // namespace lfd::validate
+}  // namespace lfd::pipeline

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace lfd::validate {
+namespace lfd::report {
 
 // Runs `gnuplot script` in `dir`; every figure in `outputs` (file names in `dir`) must be
 // written by the script to "<name>.tmp" and is renamed into place on success, so a failed
@@ -17,4 +17,4 @@ bool run_gnuplot(const std::filesystem::path& dir, const std::string& script_nam
 // Quotes a string for a gnuplot single-quoted literal.
 std::string gnuplot_quote(const std::string& text);
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

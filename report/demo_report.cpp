@@ -1,12 +1,12 @@
-#include "validate/demo_report.hpp"
+#include "report/demo_report.hpp"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "util/atomic_file.hpp"
-#include "validate/html.hpp"
+#include "report/html.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 std::filesystem::path write_demo_report(const std::filesystem::path& dir, const DemoReport& r) {
   nlohmann::ordered_json j;
@@ -65,4 +65,4 @@ lens-array warp that only its own calibration describes, calibrated from simulat
   return dir / "index.html";
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

@@ -1,4 +1,4 @@
-#include "validate/numbered_quilt.hpp"
+#include "pipeline/numbered_quilt.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -6,7 +6,7 @@
 
 #include <opencv2/imgproc.hpp>
 
-namespace lfd::validate {
+namespace lfd::pipeline {
 
 render::QuiltLayout layout_for_tiles(int cols, int rows, int tile_w, int tile_h, double aspect) {
   render::QuiltLayout q;
@@ -50,4 +50,4 @@ ImageF make_numbered_quilt(const render::QuiltLayout& q) {
   return to_float(out);
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::pipeline

@@ -5,7 +5,7 @@
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
 
-namespace lfd::validate {
+namespace lfd::pipeline {
 
 // `layout` must have width/height set. Values in [0, 1], row 0 = top.
 ImageF make_numbered_quilt(const render::QuiltLayout& layout);
@@ -13,4 +13,4 @@ ImageF make_numbered_quilt(const render::QuiltLayout& layout);
 // A quilt layout of tile size `tile_w` x `tile_h` for `cols` x `rows` views.
 render::QuiltLayout layout_for_tiles(int cols, int rows, int tile_w, int tile_h, double aspect);
 
-}  // namespace lfd::validate
+}  // namespace lfd::pipeline

@@ -8,7 +8,7 @@
 
 #include "calib/calibrate.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 // Writes the report into `dir` (created if needed), whether the calibration passed its gates
 // or not: a rejected calibration is when the report is needed most. Every file is written
@@ -17,4 +17,4 @@ namespace lfd::validate {
 std::filesystem::path write_calibration_report(const calib::CalibrationOutcome& outcome,
                                                const std::filesystem::path& dir);
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

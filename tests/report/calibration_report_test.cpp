@@ -14,9 +14,9 @@
 #include "calib/display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"
-#include "validate/calibration_report.hpp"
+#include "report/calibration_report.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 namespace {
 
 namespace fs = std::filesystem;
@@ -213,4 +213,4 @@ TEST(CalibrationReport, SimulatedRejectedCalibrationHasFiguresForEveryPosition) 
 }
 
 }  // namespace
-}  // namespace lfd::validate
+}  // namespace lfd::report

@@ -9,7 +9,7 @@
 
 #include "calib/calibrate.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 // Residuals at or beyond the solver's inlier bound are drawn as outliers, so the figures show
 // the samples its statistics leave out.
@@ -39,4 +39,4 @@ CalibrationFigures draw_calibration_figures(const calib::CalibrationOutcome& out
 // All PNG file names of `figures` (for checks and the page).
 std::vector<std::string> figure_files(const CalibrationFigures& figures);
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace lfd::validate {
+namespace lfd::report {
 
 struct DemoCapture {
   std::string name;
@@ -32,4 +32,4 @@ struct DemoReport {
 // Writes index.html and report.json into `dir` atomically; returns the index.html path.
 std::filesystem::path write_demo_report(const std::filesystem::path& dir, const DemoReport& report);
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

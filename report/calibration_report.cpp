@@ -1,4 +1,4 @@
-#include "validate/calibration_report.hpp"
+#include "report/calibration_report.hpp"
 
 #include <cmath>
 
@@ -7,10 +7,10 @@
 
 #include "calib/display/lens_model.hpp"
 #include "util/atomic_file.hpp"
-#include "validate/calibration_figures.hpp"
-#include "validate/html.hpp"
+#include "report/calibration_figures.hpp"
+#include "report/html.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 namespace {
 
@@ -229,4 +229,4 @@ std::filesystem::path write_calibration_report(const calib::CalibrationOutcome& 
   return index;
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

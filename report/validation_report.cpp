@@ -1,14 +1,14 @@
-#include "validate/report.hpp"
+#include "report/validation_report.hpp"
 
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "util/atomic_file.hpp"
-#include "validate/gnuplot.hpp"
-#include "validate/html.hpp"
+#include "report/gnuplot.hpp"
+#include "report/html.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 namespace {
 
@@ -17,7 +17,7 @@ nlohmann::ordered_json number(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
-std::string profiles_data(const ViewProfiles& p) {
+std::string profiles_data(const validate::ViewProfiles& p) {
   std::string s = "# theta_deg L_0 .. L_{V-1} L_K\n";
   for (size_t k = 0; k < p.theta_deg.size(); ++k) {
     s += fmt::format("{:.5f}", p.theta_deg[k]);
@@ -27,7 +27,7 @@ std::string profiles_data(const ViewProfiles& p) {
   return s;
 }
 
-std::string views_data(const ViewSummary& s) {
+std::string views_data(const validate::ViewSummary& s) {
   std::string out = "# view peak_theta_deg crosstalk adjacent_crosstalk separation\n";
   for (const auto& m : s.per_view)
     out += fmt::format("{} {:.5f} {:.6g} {:.6g} {:.6g}\n", m.view, m.peak_theta_deg,
@@ -179,4 +179,4 @@ std::filesystem::path write_report(const std::filesystem::path& dir,
   return index;
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

@@ -4,7 +4,7 @@
 // messages) must be escaped.
 #include <string>
 
-namespace lfd::validate {
+namespace lfd::report {
 
 // Escapes text for HTML element content and double-quoted attribute values.
 inline std::string html_escape(const std::string& text) {
@@ -22,4 +22,4 @@ inline std::string html_escape(const std::string& text) {
   return out;
 }
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

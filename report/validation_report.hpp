@@ -10,15 +10,15 @@
 #include "validate/view_metrics.hpp"
 #include "validate/view_profiles.hpp"
 
-namespace lfd::validate {
+namespace lfd::report {
 
 // One measured configuration: what the interlacer assumed against the true optics.
 struct ValidationCase {
   std::string name;                 // e.g. "assumed", "true"
   std::string truth_source;         // file names, for the record
   std::string assumed_source;
-  ViewProfiles profiles;
-  ViewSummary summary;
+  validate::ViewProfiles profiles;
+  validate::ViewSummary summary;
 };
 
 nlohmann::ordered_json to_json(const ValidationCase& c);
@@ -28,4 +28,4 @@ nlohmann::ordered_json to_json(const ValidationCase& c);
 std::filesystem::path write_report(const std::filesystem::path& dir,
                                    const std::vector<ValidationCase>& cases);
 
-}  // namespace lfd::validate
+}  // namespace lfd::report

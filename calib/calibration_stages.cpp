@@ -1,0 +1,415 @@
+#include "calib/calibration_stages.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <map>
+#include <numbers>
+#include <set>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "calib/coarse_start.hpp"
+#include "calib/display/lens_relations.hpp"
+#include "calib/display/view_count.hpp"
+#include "calib/fringe_registration.hpp"
+#include "util/error.hpp"
+
+namespace lfd::calib {
+
+namespace {
+
+using ojson = nlohmann::ordered_json;
+
+// Pixels of the screen in the photo (the projected panel quad, shrunk by 3 %).
+cv::Mat screen_mask(const Registration& reg, cv::Size size) {
+  std::vector<ScreenUV> uv = {{0.03, 0.03}, {0.97, 0.03}, {0.97, 0.97}, {0.03, 0.97}};
+  std::vector<cv::Point> poly;
+  for (const auto& p : reg.uv_to_image(uv)) poly.emplace_back(int(p.x), int(p.y));
+  cv::Mat mask(size, CV_8U, cv::Scalar(0));
+  cv::fillConvexPoly(mask, poly, cv::Scalar(255));
+  return mask;
+}
+
+struct Exposure {
+  double clipped_fraction = 0, mean = 0;
+};
+
+Exposure exposure(const cv::Mat& rgb, const cv::Mat& mask) {
+  Exposure e;
+  long n = 0, clipped = 0;
+  double sum = 0;
+  for (int y = 0; y < rgb.rows; y += 2) {
+    const auto* row = rgb.ptr<cv::Vec3f>(y);
+    const auto* m = mask.ptr<uint8_t>(y);
+    for (int x = 0; x < rgb.cols; x += 2) {
+      if (!m[x]) continue;
+      ++n;
+      const float mx = std::max({row[x][0], row[x][1], row[x][2]});
+      if (mx >= 0.985f) ++clipped;
+      sum += (row[x][0] + row[x][1] + row[x][2]) / 3.0;
+    }
+  }
+  if (n) e.clipped_fraction = double(clipped) / n, e.mean = sum / n;
+  return e;
+}
+
+std::string iso_time_now() {
+  const std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+}  // namespace
+
+PatternRoles::PatternRoles(const PatternSet& set)
+    : board(set.of_kind(PatternKind::kBoard).at(0)),
+      phase(set.of_kind(PatternKind::kPhase)),
+      white(set.of_kind(PatternKind::kWhite)),
+      black(set.of_kind(PatternKind::kBlack)),
+      fringe_x(set.of_kind(PatternKind::kFringeX)),
+      fringe_y(set.of_kind(PatternKind::kFringeY)) {}
+
+std::string PatternRoles::stem(const PatternInfo* p) {
+  return std::filesystem::path(p->file).stem().string();
+}
+
+LensShift::LensShift(const Calibration& nominal)
+    : display_(nominal.display), lens_(nominal.display, nominal.correction) {}
+
+double LensShift::periods(cv::Point2d px, const Eigen::Vector3d& camera) const {
+  const Eigen::Vector3d p = uv_to_display_m(display_, panel_px_to_uv(display_, px));
+  const double f_seen =
+      seen_fraction(camera.x() - p.x(), camera.z() - p.z(), display_.view_cone_deg);
+  return lens_content_shift(f_seen, display_.inv_view);
+}
+
+cv::Point2d LensShift::correction_px(cv::Point2d px, const Eigen::Vector3d& camera) const {
+  return {-periods(px, camera) / lens_.pitch_periods() * display_.screen_w, 0.0};
+}
+
+std::vector<BoardDetection> detect_boards(const PatternSet& set, const PatternRoles& roles,
+                                          const std::vector<PositionCaptures>& positions) {
+  std::vector<BoardDetection> boards;
+  const std::string stem = PatternRoles::stem(roles.board);
+  for (const auto& pc : positions) {
+    BoardDetection b = detect_board(to_gray8(pc.image(stem)), set);
+    if (b.ids.size() < 8 && b.touches_border)
+      throw_input_error(
+          "{}: the screen is partly outside the photo (the board is cut off at the image "
+          "border, {} ChArUco corners left); step back or re-aim so the whole screen shows",
+          pc.path(stem), b.ids.size());
+    if (b.ids.size() < 8)
+      throw_input_error(
+          "{}: no registration board found ({} ChArUco corners); show {} full screen, focus on "
+          "the screen and keep all of it in the photo",
+          pc.path(stem), b.ids.size(), roles.board->file);
+    boards.push_back(std::move(b));
+  }
+  return boards;
+}
+
+void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetection>& boards,
+                   const PatternSet& set, CalibrationOutcome& out) {
+  if (options.camera) {
+    out.camera = *options.camera;
+    const cv::Size s = boards[0].image_size;
+    if (out.camera.width != s.width || out.camera.height != s.height)
+      throw_input_error("camera intrinsics are for {}x{} images, the captures are {}x{}",
+                        out.camera.width, out.camera.height, s.width, s.height);
+    return;
+  }
+  double rms = 0;
+  out.camera = self_calibrate(boards, set, &rms);
+  out.camera_self_calibrated = true;
+  if (rms > 1.0)
+    out.warnings.push_back(fmt::format(
+        "camera self-calibration reprojection error {:.2f} px; a --camera file from a proper "
+        "camera calibration will give a more accurate center",
+        rms));
+}
+
+void register_position(const PositionContext& ctx, PositionState& state) {
+  const std::string board_path = ctx.captures.path(PatternRoles::stem(ctx.roles.board));
+  auto& reg = state.registration;
+  try {
+    reg.emplace(ctx.board, ctx.set, ctx.camera);
+    // The lens array shows each board corner displaced by the lens content shift along the
+    // row (lens_relations.hpp); move the corners back for the pose.
+    const Eigen::Vector3d c0 = reg->camera_position_m();
+    state.board_shift.clear();
+    for (int id : ctx.board.ids)
+      state.board_shift.push_back(ctx.shift.correction_px(ctx.set.board.corners_px.at(size_t(id)), c0));
+    reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift);
+  } catch (const InputError& e) {
+    throw_input_error("{}: {}", board_path, e.what());
+  }
+  PositionReport& rep = state.report;
+  rep.board_corners = reg->corner_count();
+  rep.reprojection_rms_px = reg->reprojection_rms_px();
+  rep.camera_m = reg->camera_position_m();
+  if (rep.camera_m.z() <= 0)
+    throw_input_error("{}: the camera is not in front of the screen", board_path);
+  const cv::Size size = ctx.board.image_size;
+  for (const auto& p : reg->uv_to_image({{0, 0}, {1, 0}, {1, 1}, {0, 1}}))
+    if (p.x < 0 || p.y < 0 || p.x > size.width - 1 || p.y > size.height - 1)
+      throw_input_error(
+          "{}: the screen is partly outside the photo (a screen corner falls at pixel "
+          "({:.0f}, {:.0f}) of a {}x{} image); step back or re-aim so the whole screen shows",
+          board_path, p.x, p.y, size.width, size.height);
+  if (rep.reprojection_rms_px > 3.0)
+    ctx.warnings.push_back(fmt::format("{}: board reprojection error {:.2f} px (focus?)",
+                                       board_path, rep.reprojection_rms_px));
+  state.screen_mask = screen_mask(*reg, size);
+}
+
+void check_exposure(const PositionContext& ctx, PositionState& state) {
+  const PositionCaptures& pc = ctx.captures;
+  const std::string white_stem = PatternRoles::stem(ctx.roles.white.at(0));
+  const std::string black_stem = PatternRoles::stem(ctx.roles.black.at(0));
+  const Exposure white = exposure(pc.image(white_stem), state.screen_mask);
+  const Exposure black = exposure(pc.image(black_stem), state.screen_mask);
+  if (white.clipped_fraction > ctx.options.max_clipped_fraction)
+    throw_input_error(
+        "{}: over-exposed: {:.0f} % of the screen is saturated; lower the exposure time or ISO "
+        "(manual exposure, set on the white pattern)",
+        pc.path(white_stem), 100 * white.clipped_fraction);
+  if (white.mean - black.mean < ctx.options.min_contrast)
+    throw_input_error(
+        "{}: under-exposed: white and black differ by {:.1f} % of full scale; raise the "
+        "exposure (manual exposure, set on the white pattern)",
+        pc.path(white_stem), 100 * (white.mean - black.mean));
+  state.report.clipped_fraction = white.clipped_fraction;
+}
+
+void identify_patterns(const PositionContext& ctx, const PositionState& state) {
+  // Pattern identity and camera motion from the corner markers. A marker farther than a
+  // tenth of the image from where the registration puts it is a false detection.
+  const PatternSet& set = ctx.set;
+  const PositionCaptures& pc = ctx.captures;
+  const Registration& reg = *state.registration;
+  const DisplayCalibration& nd = set.nominal.display;
+  const std::string board_path = pc.path(PatternRoles::stem(ctx.roles.board));
+  std::vector<cv::Point2d> predicted_markers;
+  {
+    std::vector<ScreenUV> uv;
+    for (const auto& c : set.markers.centres_px) uv.push_back(panel_px_to_uv(nd, c));
+    predicted_markers = reg.uv_to_image(uv);
+  }
+  const cv::Size size = ctx.board.image_size;
+  const double diag = std::hypot(size.width, size.height);
+  const double lens_px =
+      double(size.width) / shader_terms(nd.geometry(), nd.pitch_lpi, nd.slope).pitch_periods;
+  std::map<int, cv::Point2d> reference;
+  std::string reference_path;
+  int verified = 0;
+  for (const auto& p : set.patterns) {
+    if (p.kind == PatternKind::kBoard) continue;
+    const std::string stem = PatternRoles::stem(&p);
+    const auto markers = detect_corner_marker_corners(to_gray8(pc.image(stem)));
+    std::map<int, cv::Point2d> own;
+    std::set<int> others;
+    for (const auto& [id, corners] : markers) {
+      const cv::Point2d centre = (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25;
+      if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > 0.1 * diag) continue;
+      if (id / 4 == p.index) {
+        own[id % 4] = centre;
+      } else if (id / 4 < int(set.patterns.size())) {
+        others.insert(id / 4);
+      }
+    }
+    if (own.empty() && !others.empty())
+      throw_input_error("{}: shows pattern {}, expected {}", pc.path(stem),
+                        set.patterns[size_t(*others.begin())].file, p.file);
+    if (own.empty()) continue;
+    ++verified;
+    if (reference.empty()) {
+      reference = own;
+      reference_path = pc.path(stem);
+      // The board capture has no corner markers: check it against this one through the
+      // registration (tolerance: a lens of apparent shift plus the pose error).
+      for (const auto& [corner, centre] : own) {
+        const double moved = cv::norm(predicted_markers[size_t(corner)] - centre);
+        if (moved > 4.0 + lens_px + 0.01 * diag)
+          throw_input_error(
+              "{}: the camera moved between the board capture and {} ({:.1f} px); use a "
+              "tripod and a remote release",
+              board_path, reference_path, moved);
+      }
+      continue;
+    }
+    std::vector<double> moved;
+    for (const auto& [corner, centre] : own) {
+      auto it = reference.find(corner);
+      if (it != reference.end()) moved.push_back(cv::norm(centre - it->second));
+    }
+    if (moved.empty()) continue;
+    std::sort(moved.begin(), moved.end());
+    const double median = moved[moved.size() / 2];
+    if (median > std::max(ctx.options.max_motion_px, 0.005 * diag))
+      throw_input_error(
+          "{}: the camera moved between the captures of position {} (the corner markers are "
+          "{:.1f} px away from where {} shows them); use a tripod and a remote release",
+          pc.path(stem), pc.name, median, reference_path);
+  }
+  if (verified < int(set.patterns.size()) - 1)
+    ctx.warnings.push_back(fmt::format(
+        "{}: corner markers found in only {} of {} captures; pattern identity and camera "
+        "motion could not be checked for the others",
+        pc.name, verified, set.patterns.size() - 1));
+}
+
+void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
+  // Dense registration from the fringe patterns, if the set has them: the board's ~40
+  // corners leave the camera's lateral position a few millimetres uncertain, thousands of
+  // fringe blocks over the whole screen pin it (and the panel mapping) down.
+  if (ctx.roles.fringe_x.empty()) return;
+  const PositionCaptures& pc = ctx.captures;
+  auto images = [&](const std::vector<const PatternInfo*>& list) {
+    std::vector<cv::Mat> out_images;
+    for (const auto* p : list) out_images.push_back(pc.image(PatternRoles::stem(p)));
+    return out_images;
+  };
+  auto& reg = state.registration;
+  const FringeCorrespondences dense =
+      decode_fringes(images(ctx.roles.fringe_x), images(ctx.roles.fringe_y), *reg, ctx.set);
+  ExtraPoints extra;
+  const Eigen::Vector3d camera = reg->camera_position_m();
+  for (size_t k = 0; k < dense.image_px.size(); ++k) {
+    // Blocks where the seen view wraps mix content a lens apart: no clean position.
+    if (std::abs(ctx.shift.periods(dense.panel_px[k], camera)) > 0.4) continue;
+    extra.image_px.push_back(dense.image_px[k]);
+    extra.panel_px.push_back(dense.panel_px[k]);
+    extra.shift_px.push_back(ctx.shift.correction_px(dense.panel_px[k], camera));
+  }
+  PositionReport& rep = state.report;
+  rep.fringe_points = long(extra.image_px.size());
+  if (extra.image_px.size() >= 100) {
+    reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift, extra);
+    rep.reprojection_rms_px = reg->reprojection_rms_px();
+    rep.camera_m = reg->camera_position_m();
+  } else {
+    ctx.warnings.push_back(fmt::format(
+        "{}: only {} fringe blocks decoded; registration from the board alone (less "
+        "accurate center); check focus and exposure of the fringe photos",
+        pc.name, extra.image_px.size()));
+  }
+}
+
+DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state) {
+  const PositionCaptures& pc = ctx.captures;
+  const auto& phase_p = ctx.roles.phase;
+  std::vector<cv::Mat> captures;
+  for (const auto* p : phase_p) {
+    const std::string stem = PatternRoles::stem(p);
+    const cv::Mat& img = pc.image(stem);
+    const Exposure e = exposure(img, state.screen_mask);
+    if (e.clipped_fraction > ctx.options.max_clipped_fraction)
+      throw_input_error("{}: over-exposed: {:.0f} % of the screen is saturated; lower the "
+                        "exposure",
+                        pc.path(stem), 100 * e.clipped_fraction);
+    captures.push_back(img);
+  }
+  DecodedPhase phase = decode_phase(captures, *state.registration, ctx.set, ctx.options.decode);
+  for (size_t k = 0; k < phase_p.size(); ++k)
+    if (phase.step_correlation[k] < 0.5 && phase.samples.size() > 100)
+      throw_input_error(
+          "{}: does not look like phase step {} of {} (correlation {:.2f}); was the right "
+          "pattern shown?",
+          pc.path(PatternRoles::stem(phase_p[k])), phase_p[k]->step, ctx.set.phase_steps,
+          phase.step_correlation[k]);
+  const long min_samples = 500;
+  if (long(phase.samples.size()) < min_samples)
+    throw_input_error(
+        "{}: only {} usable phase samples of {} screen blocks ({} saturated, {} without "
+        "fringe contrast); focus on the screen, check the exposure, photograph from closer",
+        pc.name, phase.samples.size(), phase.blocks_on_panel, phase.blocks_clipped,
+        phase.blocks_low_modulation);
+  PositionReport& rep = state.report;
+  rep.samples = long(phase.samples.size());
+  rep.blocks_on_panel = phase.blocks_on_panel;
+  rep.blocks_clipped = phase.blocks_clipped;
+  rep.blocks_low_modulation = phase.blocks_low_modulation;
+  rep.median_modulation = phase.median_modulation;
+  return phase;
+}
+
+PositionData position_data(const PositionContext& ctx, const PositionState& state,
+                           const DecodedPhase& phase, bool camera_self_calibrated,
+                           const std::optional<Eigen::Vector3d>& known_camera_m) {
+  const PositionReport& rep = state.report;
+  const DisplayCalibration& nd = ctx.set.nominal.display;
+  PositionData pd;
+  pd.name = ctx.captures.name;
+  pd.samples = phase.samples;
+  pd.camera_m = rep.camera_m;
+  // Priors on the camera position from the registration's precision: planar pose is weak
+  // laterally (rotation and translation trade off, resolved only by the perspective of the
+  // board) and scales in depth with the focal length's uncertainty.
+  const double z = rep.camera_m.z(), f = ctx.camera.camera_matrix(0, 0);
+  const double extent = 0.5 * std::min(nd.width_m(), nd.height_m()) / z;
+  const double noise =
+      rep.reprojection_rms_px / std::sqrt(double(state.registration->corner_count()));
+  const double focal_rel = camera_self_calibrated ? 5e-3 : 1e-3;
+  pd.lateral_sigma_m = std::max(3e-4, 2 * z * noise / (f * extent * extent));
+  pd.depth_sigma_m = std::max(focal_rel * z, 2 * z * noise / (f * extent));
+  if (known_camera_m) {
+    pd.camera_m = *known_camera_m;
+    pd.lateral_sigma_m = pd.depth_sigma_m = 1e-4;
+  }
+  return pd;
+}
+
+void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
+                   const SolverOptions& options, CalibrationOutcome& out) {
+  std::vector<PhasePlane> planes;
+  out.coarse = coarse_start(set.nominal, data, options.fit_view_cone, &planes);
+  for (size_t i = 0; i < planes.size(); ++i) out.positions[i].plane_coherence = planes[i].coherence;
+  out.solve = solve_lens(set.nominal, out.coarse, data, options);
+  for (size_t i = 0; i < out.positions.size(); ++i) {
+    out.positions[i].camera_refined_m = out.solve.cameras_m[i];
+    out.positions[i].residual_rms_periods = out.solve.position_rms[i];
+  }
+}
+
+Calibration assemble_calibration(const PatternSet& set,
+                                 const std::vector<PositionCaptures>& positions,
+                                 const CalibrateOptions& options,
+                                 const CalibrationOutcome& out) {
+  const DisplayCalibration& nd = set.nominal.display;
+  Calibration c;
+  c.display = apply_estimate(nd, out.solve.lens);
+  c.correction = out.solve.correction;
+  if (positions.size() >= 2 && options.solver.fit_view_cone) {
+    // The measured cone is the cone; the nominal stays beside it for provenance.
+    c.view_cone_measured_deg = out.solve.lens.view_cone_deg;
+    c.view_cone_nominal_deg = nd.view_cone_deg;
+    c.display.view_cone_deg = out.solve.lens.view_cone_deg;
+  }
+  c.uncertainty = out.solve.sigma;
+  const double slope = c.display.slope;
+  if (out.solve.sigma.count("slope"))
+    c.uncertainty["slant_deg"] =
+        out.solve.sigma.at("slope") / (1 + slope * slope) * 180 / std::numbers::pi;
+  c.residuals = out.solve.residuals;
+  const ViewCountAdvice advice = recommend_view_count(c);
+  c.recommended_views = advice.views;
+  c.view_count_rule = advice.rule;
+  ojson inputs = ojson::array();
+  for (const auto& pc : positions)
+    for (const auto& [stem, path] : pc.paths) inputs.push_back(path);
+  c.provenance = {{"tool", "lfd calibrate"},
+                  {"created", iso_time_now()},
+                  {"method", "ChArUco registration; K-step phase shifting in the nominal view "
+                             "fraction; FFT coarse start; one Ceres problem (pitch, slope, "
+                             "center, view cone, B-spline correction, camera positions)"},
+                  {"positions", int(positions.size())},
+                  {"phase_steps", set.phase_steps},
+                  {"camera", out.camera_self_calibrated ? "self-calibrated" : "given"},
+                  {"inputs", inputs}};
+  return c;
+}
+
+}  // namespace lfd::calib

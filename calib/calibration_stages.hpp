@@ -1,0 +1,105 @@
+#pragma once
+// The named stages of `calibrate_display` (calibrate.cpp is the controller that runs them in
+// order, the way COLMAP's controllers are written). Each stage checks what it needs and
+// throws an InputError naming the photo and what to change; none writes files.
+//   1. detect_boards          the ChArUco board in every position's board photo
+//   2. choose_camera          the given intrinsics, or self-calibration from the boards
+//   per position:
+//   3. register_position      camera pose from the board corners (lens shift corrected)
+//   4. check_exposure         white/black contrast and saturation on the screen
+//   5. identify_patterns      corner markers: the right pattern in each photo, no motion
+//   6. refine_with_fringes    dense registration from the fringe photos
+//   7. decode_position_phase  the K-step phase, with its own checks
+//   8. position_data          the samples and the camera prior for the solver
+//   then:
+//   9. solve_display          coarse start + one Ceres problem (lens_solver.hpp)
+//  10. assemble_calibration   the calibration.json content from the solution
+//  11. QualityGates::evaluate (quality_gates.hpp)
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "calib/calibrate.hpp"
+#include "calib/display/lens_model.hpp"
+#include "calib/registration.hpp"
+
+namespace lfd::calib {
+
+// The patterns of a set by role.
+struct PatternRoles {
+  const PatternInfo* board = nullptr;
+  std::vector<const PatternInfo*> phase, white, black, fringe_x, fringe_y;
+  explicit PatternRoles(const PatternSet& set);
+  static std::string stem(const PatternInfo* p);
+};
+
+// The lens array shows a panel feature displaced by the lens content shift along the row
+// (lens_relations.hpp) for a camera at `camera` (nominal model): registration moves the
+// features back by it.
+class LensShift {
+ public:
+  explicit LensShift(const Calibration& nominal);
+  // The shift in lens periods, [-1/2, 1/2), at panel pixel `px`.
+  double periods(cv::Point2d px, const Eigen::Vector3d& camera) const;
+  // The correction to add to panel pixel `px` (panel pixels).
+  cv::Point2d correction_px(cv::Point2d px, const Eigen::Vector3d& camera) const;
+
+ private:
+  const DisplayCalibration& display_;
+  LensModel lens_;
+};
+
+// 1.
+std::vector<BoardDetection> detect_boards(const PatternSet& set, const PatternRoles& roles,
+                                          const std::vector<PositionCaptures>& positions);
+// 2. Sets outcome.camera and outcome.camera_self_calibrated (warns on a poor self-calibration).
+void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetection>& boards,
+                   const PatternSet& set, CalibrationOutcome& outcome);
+
+// What the per-position stages share.
+struct PositionContext {
+  const PatternSet& set;
+  const PatternRoles& roles;
+  const CalibrateOptions& options;
+  const LensShift& shift;
+  const PositionCaptures& captures;
+  const BoardDetection& board;
+  const CameraIntrinsics& camera;
+  std::vector<std::string>& warnings;
+};
+
+// The pose after each stage and the board-corner shifts it was fitted with.
+struct PositionState {
+  std::optional<Registration> registration;
+  std::vector<cv::Point2d> board_shift;
+  cv::Mat screen_mask;  // the screen in the photo
+  PositionReport report;
+};
+
+// 3.
+void register_position(const PositionContext& ctx, PositionState& state);
+// 4.
+void check_exposure(const PositionContext& ctx, PositionState& state);
+// 5.
+void identify_patterns(const PositionContext& ctx, const PositionState& state);
+// 6. No-op for pattern sets without fringes; warns and keeps the board pose if too few decode.
+void refine_with_fringes(const PositionContext& ctx, PositionState& state);
+// 7.
+DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state);
+// 8. `known_camera_m`: a camera position known by other means (replaces the registration's).
+PositionData position_data(const PositionContext& ctx, const PositionState& state,
+                           const DecodedPhase& phase, bool camera_self_calibrated,
+                           const std::optional<Eigen::Vector3d>& known_camera_m);
+
+// 9. Sets outcome.coarse, outcome.solve and the positions' refined cameras and residuals.
+void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
+                   const SolverOptions& options, CalibrationOutcome& outcome);
+// 10.
+Calibration assemble_calibration(const PatternSet& set,
+                                 const std::vector<PositionCaptures>& positions,
+                                 const CalibrateOptions& options,
+                                 const CalibrationOutcome& outcome);
+
+}  // namespace lfd::calib

@@ -1,0 +1,141 @@
+#include "pipeline/calibration_benchmark.hpp"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "calib/calibrate.hpp"
+#include "calib/display/visual_json.hpp"
+#include "pipeline/capture_cache.hpp"
+#include "util/error.hpp"
+
+namespace lfd::pipeline {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+const std::vector<BenchmarkDisplay>& benchmark_displays() {
+  static const std::vector<BenchmarkDisplay> displays = {
+      {"Gen1 8.9\"", "gen1-hid-00297.visual.json"},
+      {"Portrait", "LKG-PORT-portrait.visual.json"},
+      {"16\" Gen2", "LKG-APW92011.visual.json"},
+      {"16\" Gen3 portrait", "template-16in-portrait-gen3.visual.json"}};
+  return displays;
+}
+
+bool AccuracyBars::met_by(const calib::CalibrationErrors& e) const {
+  return e.slant_deg <= slant_deg && e.pitch_rel <= pitch_rel && e.center_periods <= center &&
+         e.view_cone_deg <= cone_deg && e.correction_rms_periods <= warp;
+}
+
+nlohmann::ordered_json AccuracyBars::to_json() const {
+  return {{"slant_deg", slant_deg},
+          {"pitch_rel", pitch_rel},
+          {"center_periods", center},
+          {"view_cone_deg", cone_deg},
+          {"correction_rms_periods", warp}};
+}
+
+void CalibrationBenchmarkOptions::check() const {
+  const std::string where = "calibration benchmark";
+  require_field(width_px >= 320 && width_px <= 6000, where, "width_px", "must be in 320..6000");
+  require_field(positions >= 1 && positions <= 3, where, "positions", "must be in 1..3");
+  require_field(seeds >= 1 && seeds <= 20, where, "seeds", "must be in 1..20");
+  require_field(supersample >= 1 && supersample <= 8, where, "supersample", "must be in 1..8");
+  require_field(board_squares >= 3 && board_squares <= 20, where, "board_squares",
+                "must be in 3..20");
+}
+
+nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
+  nlohmann::ordered_json row = {{"display", display}, {"file", file}, {"seed", seed},
+                                {"positions", positions},
+                                {"capture", {capture_width, capture_height}}};
+  if (!errors) {
+    row["error"] = failure;
+    return row;
+  }
+  row["errors"] = {{"slant_deg", errors->slant_deg},
+                   {"pitch_rel", errors->pitch_rel},
+                   {"center_periods", errors->center_periods},
+                   {"view_cone_deg", errors->view_cone_deg},
+                   {"correction_rms_periods", errors->correction_rms_periods},
+                   {"phase_rms_periods", errors->phase_rms_periods}};
+  row["within_bars"] = within_bars;
+  row["gate_failures"] = gate_failures;
+  row["uncertainty"] = uncertainty;
+  row["seconds"] = {{"simulate", simulate_s}, {"calibrate", calibrate_s}, {"solve", solve_s}};
+  return row;
+}
+
+std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
+    const CalibrationBenchmarkOptions& o, const AccuracyBars& bars,
+    const std::function<void(const CalibrationBenchmarkRow&)>& on_row) {
+  o.check();
+  std::vector<CalibrationBenchmarkRow> rows;
+  for (const auto& d : benchmark_displays()) {
+    if (!o.only.empty() && d.label.find(o.only) == std::string::npos) continue;
+    const auto real = calib::read_visual_json(o.data_dir / "calibrations" / d.file);
+    for (int seed = 1; seed <= o.seeds; ++seed) {
+      calib::SyntheticUnitOptions so;
+      so.seed = uint64_t(seed);
+      const calib::SyntheticUnit unit = calib::make_synthetic_unit(real, so);
+      calib::PatternOptions po;
+      po.board_squares_short = o.board_squares;
+      const calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
+      calib::CaptureRig rig = calib::make_capture_rig(unit.truth.display, o.width_px,
+                                                      o.positions, false, uint64_t(seed));
+      if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
+      rig.glare_moves = o.moving_glare;
+      rig.effects.supersample = o.supersample;
+
+      CalibrationBenchmarkRow row;
+      row.display = d.label;
+      row.file = d.file;
+      row.seed = seed;
+      row.positions = o.positions;
+      row.capture_width = rig.intrinsics.width;
+      row.capture_height = rig.intrinsics.height;
+      auto t0 = std::chrono::steady_clock::now();
+      // Every setting that changes the photos is in the cache key.
+      const std::string key = fmt::format(
+          "{}{}{}-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
+          o.moving_glare ? "-moving-glare" : "", seed, o.width_px, o.positions, o.supersample,
+          set.patterns.size());
+      const auto captures = cached_captures(o.cache_dir, key, set, unit.truth, rig);
+      row.simulate_s = seconds_since(t0);
+
+      calib::CalibrateOptions options;
+      options.camera = rig.intrinsics;
+      if (o.true_poses)
+        for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
+      t0 = std::chrono::steady_clock::now();
+      try {
+        const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
+        row.calibrate_s = seconds_since(t0);
+        row.errors = calib::compare_with_truth(out.calibration, unit.truth);
+        row.within_bars = bars.met_by(*row.errors);
+        row.gate_failures = out.gate_failures;
+        row.uncertainty = out.calibration.uncertainty;
+        row.solve_s = out.solve.solve_seconds;
+        for (size_t i = 0; i < out.positions.size(); ++i) {
+          const Eigen::Vector3d t = rig.poses[i].position_m;
+          row.poses.push_back({out.positions[i].name, t, out.positions[i].camera_m - t,
+                               out.positions[i].camera_refined_m - t,
+                               out.positions[i].residual_rms_periods});
+        }
+      } catch (const std::exception& ex) {
+        row.failure = ex.what();
+      }
+      if (on_row) on_row(row);
+      rows.push_back(std::move(row));
+    }
+  }
+  return rows;
+}
+
+}  // namespace lfd::pipeline

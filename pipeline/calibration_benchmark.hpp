@@ -1,0 +1,76 @@
+#pragma once
+// The calibration benchmark's loop (docs/calibration.md, the accuracy matrix): for each display
+// kind of the real calibrations, synthetic units (real values + a smooth warp, view cone
+// +2 degrees) are photographed by the simulator from 1-3 positions while showing patterns made
+// for a nominal description off by 1 % in pitch, 0.5 degree in slant and a random center; the
+// `lfd calibrate` pipeline recovers them and each row holds the errors against the truth.
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "calib/synthetic_unit.hpp"
+
+namespace lfd::pipeline {
+
+struct BenchmarkDisplay {
+  std::string label;  // e.g. "Portrait"
+  std::string file;   // calibrations/<file> under the data folder
+};
+// Gen1 8.9", Portrait, 16" Gen2, 16" Gen3 portrait.
+const std::vector<BenchmarkDisplay>& benchmark_displays();
+
+// The figures the calibration must reach.
+struct AccuracyBars {
+  double slant_deg = 0.001, pitch_rel = 2e-5, center = 0.005, cone_deg = 0.5, warp = 0.01;
+  bool met_by(const calib::CalibrationErrors& e) const;
+  nlohmann::ordered_json to_json() const;
+};
+
+struct CalibrationBenchmarkOptions {
+  std::filesystem::path data_dir = "../shared/data";  // holds calibrations/*.visual.json
+  int width_px = 1280;     // capture width
+  int positions = 3;       // 1-3
+  int seeds = 1;           // synthetic units per display kind
+  int supersample = 2;     // simulator samples per camera pixel per axis
+  int board_squares = 6;   // ChArUco squares along the short side
+  std::string only;        // run only displays whose label contains this
+  std::filesystem::path cache_dir;  // reuse simulated captures (empty: none)
+  bool true_poses = false;    // diagnostic: give the solver the true camera positions
+  bool no_noise = false;      // diagnostic: no sensor noise and glare
+  bool moving_glare = false;  // diagnostic: new glare in every photo
+  // Throws InputError("calibration benchmark: <field>: ...") for values out of range.
+  void check() const;
+};
+
+struct PoseError {
+  std::string name;
+  Eigen::Vector3d truth_m, registration_error_m, refined_error_m;
+  double residual_rms_periods = 0;
+};
+
+struct CalibrationBenchmarkRow {
+  std::string display, file;
+  int seed = 0, positions = 0;
+  int capture_width = 0, capture_height = 0;
+  std::optional<calib::CalibrationErrors> errors;  // absent when the calibration failed
+  std::string failure;                             // why, when it failed
+  bool within_bars = false;
+  std::vector<std::string> gate_failures;
+  std::map<std::string, double> uncertainty;
+  std::vector<PoseError> poses;
+  double simulate_s = 0, calibrate_s = 0, solve_s = 0;
+  nlohmann::ordered_json to_json() const;
+};
+
+// Runs every display x seed; `on_row` sees each row as soon as it is measured.
+std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
+    const CalibrationBenchmarkOptions& options, const AccuracyBars& bars,
+    const std::function<void(const CalibrationBenchmarkRow&)>& on_row = {});
+
+}  // namespace lfd::pipeline
