@@ -38,7 +38,7 @@ CameraSpec parse_camera_json(const std::string& text, const std::string& source)
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range: 1e999
     throw_input_error("{}: not valid JSON ({})", source, e.what());
   }
   if (!j.is_object()) throw_input_error("{}: expected a JSON object", source);

@@ -87,6 +87,8 @@ TEST(CameraJson, BadFieldsNameFileAndField) {
   expect_error_naming(R"({"position":[1,2,3],"look_at":[1,2,3],"fov_y_deg":30})", "look_at");
   expect_error_naming(R"({"position":[0,0,0],"look_at":[0,1,0],"fov_y_deg":30})", "up");
   expect_error_naming(R"({"position":[0,0,0],)", "JSON");
+  // Found by fuzz_cam_json: a number beyond double range escaped as nlohmann's out_of_range.
+  expect_error_naming(R"({"position":[0,0,-31e308],"look_at":[0,0,0],"fov_y_deg":30})", "JSON");
 }
 
 TEST(CameraJson, MissingFileIsAnInputError) {
