@@ -56,6 +56,7 @@ int RunInfo(int argc, char** argv) {
                                                  : (d.flip_subp ? "BGR stripes" : "RGB stripes")}};
   j["view_cone_deg"] = d.view_cone_deg;
   if (cal.view_cone_measured_deg) j["view_cone_measured_deg"] = *cal.view_cone_measured_deg;
+  if (cal.view_cone_nominal_deg) j["view_cone_nominal_deg"] = *cal.view_cone_nominal_deg;
   if (!cal.correction.empty())
     j["correction"] = {{"grid", fmt::format("{}x{}", cal.correction.nx(), cal.correction.ny())},
                        {"min_periods", range[0]}, {"max_periods", range[1]}};
@@ -78,9 +79,13 @@ int RunInfo(int argc, char** argv) {
   fmt::print("  center           {:.6f} lens periods{}\n", d.center_periods,
              d.inv_view ? ", views inverted (invView)" : "");
   fmt::print("  subpixels        {}\n", j["lens"]["subpixel_layout"].get<std::string>());
+  // The measured cone is the cone (display.viewCone holds it); the nominal is provenance.
   fmt::print("  view cone        {} deg{}\n", d.view_cone_deg,
-             cal.view_cone_measured_deg ? fmt::format(" (measured {:.2f})", *cal.view_cone_measured_deg)
-                                        : "");
+             cal.view_cone_measured_deg
+                 ? (cal.view_cone_nominal_deg
+                        ? fmt::format(" (measured; nominal {:.2f})", *cal.view_cone_nominal_deg)
+                        : std::string(" (measured)"))
+                 : std::string(""));
   if (!cal.correction.empty())
     fmt::print("  correction       {}x{} B-spline, {:.4f} .. {:.4f} lens periods\n",
                cal.correction.nx(), cal.correction.ny(), range[0], range[1]);
