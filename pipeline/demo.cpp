@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "calib/display/calibration_file.hpp"
+#include "calib/display/display_quilt.hpp"
 #include "calib/display/lens_relations.hpp"
 #include "calib/patterns.hpp"
 #include "calib/simulator.hpp"
@@ -103,8 +104,10 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   const calib::ViewCountAdvice advice = calib::recommend_view_count(recovered);
   report.views = advice.views;
   report.view_rule = advice.rule;
-  // The display is driven with the calibration recovered from photographs.
+  // The display is driven with the calibration recovered from photographs: it chooses the
+  // views, the tile grid and the (measured) view cone the quilt is rendered with.
   const calib::Calibration& assumed = recovered;
+  const calib::DisplayQuilt display_quilt = calib::quilt_for_display(recovered);
 
   // 3. Quilts: the bundled scene through G2LF, and the numbered test quilt.
   const double aspect = double(d.screen_w) / d.screen_h;
@@ -118,8 +121,8 @@ std::filesystem::path run_demo(const DemoOptions& o) {
     const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
     const float focal = glm::length(spec.look_at - spec.position);
     const render::QuiltGeometry geometry =
-        render::make_quilt_geometry(base, focal, float(d.view_cone_deg), advice.views);
-    layout = render::make_quilt_layout(geometry, advice.cols, advice.rows);
+        render::make_quilt_geometry(base, focal, float(display_quilt.view_cone_deg), display_quilt.views);
+    layout = render::make_quilt_layout(geometry, display_quilt.grid.cols, display_quilt.grid.rows);
     render::G2lfOptions g2lf;
     g2lf.chunks = 64;
     g2lf.plane_scale = 2;
