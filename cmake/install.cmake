@@ -37,7 +37,7 @@ endif()
 # util/data_dir.hpp relative to the program; udev rules go where udev reads them.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/lfd
   COMPONENT runtime PATTERN udev EXCLUDE)
-file(GLOB _lfd_udev_rules ${PROJECT_SOURCE_DIR}/data/udev/*.rules)
+file(GLOB _lfd_udev_rules CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/data/udev/*.rules)
 if(_lfd_udev_rules)
   install(FILES ${_lfd_udev_rules} DESTINATION ${LFD_UDEV_RULES_DIR} COMPONENT runtime)
 endif()
@@ -120,9 +120,10 @@ foreach(dir IN LISTS _lfd_library_dirs)
   foreach(header IN LISTS headers)
     set(owned TRUE)
     foreach(other IN LISTS _lfd_library_dirs)
-      string(FIND "${dir}/${header}" "${other}/" at)
-      if(NOT other STREQUAL dir AND at EQUAL 0 AND other MATCHES "^${dir}/")
-        set(owned FALSE)  # belongs to the deeper library's folder
+      string(FIND "${dir}/${header}" "${other}/" header_in_other)
+      string(FIND "${other}" "${dir}/" other_below_dir)
+      if(header_in_other EQUAL 0 AND other_below_dir EQUAL 0)
+        set(owned FALSE)  # it belongs to the library of the deeper folder
       endif()
     endforeach()
     if(owned)
@@ -297,6 +298,19 @@ set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION science)
 # headless GL is loaded at run time by libepoxy, which dpkg-shlibdeps cannot see; gnuplot draws
 # the report figures when present.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl1, libgl1-mesa-dri, gnuplot-nox")
+# With udev rules in the package, udev reads them at once (no replugging, no reboot).
+if(_lfd_udev_rules)
+  file(WRITE ${PROJECT_BINARY_DIR}/debian/postinst
+    "#!/bin/sh\n"
+    "set -e\n"
+    "if [ \"$1\" = configure ] && command -v udevadm >/dev/null 2>&1; then\n"
+    "  udevadm control --reload-rules || true\n"
+    "  udevadm trigger --action=change --subsystem-match=usb --subsystem-match=hidraw || true\n"
+    "fi\n")
+  file(CHMOD ${PROJECT_BINARY_DIR}/debian/postinst PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE
+    GROUP_READ GROUP_EXECUTE WORLD_READ WORLD_EXECUTE)
+  set(CPACK_DEBIAN_RUNTIME_PACKAGE_CONTROL_EXTRA ${PROJECT_BINARY_DIR}/debian/postinst)
+endif()
 set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
   "toolkit for lenticular light field displays\n"
   "Calibrates, renders for and validates lenticular light field displays (Looking Glass\n"
