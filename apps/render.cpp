@@ -186,12 +186,15 @@ int RunRender(int argc, char** argv) {
     const Image8 quilt8 = to_uint8(quilt);
     write_png(written, quilt8);
     if (!panel_path.empty()) {
-      // Interlace the quilt as written (8 bits), so the panel equals `lfd interlace` of the file.
+      // Interlace the quilt as written (8 bits, and the tile aspect as its name rounds it), so
+      // the panel equals `lfd interlace` of the file.
+      render::QuiltLayout as_written = layout;
+      if (const auto named = render::parse_quilt_name(written)) as_written.aspect = named->aspect;
       const calib::LensModel lens(calibration->display, calibration->correction);
       interlace::InterlaceOptions options;
       options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
       options.overscan = overscan;
-      const ImageF panel = interlace::interlace(to_float(quilt8), layout, lens, options);
+      const ImageF panel = interlace::interlace(to_float(quilt8), as_written, lens, options);
       write_png(panel_path, to_uint8(panel));
       std::cout << fmt::format("wrote {} ({}x{} panel)\n", panel_path, panel.width, panel.height);
     }
