@@ -35,17 +35,21 @@ struct Command {
 const std::vector<Command>& commands() {
   using namespace lfd::apps;
   static const std::vector<Command> table = {
+#ifndef LFD_RENDER_ONLY
       {"demo", RunDemo, "run the whole pipeline on the bundled data and write a report"},
+#endif
       {"info", RunInfo, "print the figures derived from a calibration"},
       {"interlace", RunInterlace, "interlace a quilt into a panel image for a display"},
       {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
       {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
       {"compare", RunCompare, "PSNR and SSIM between two images"},
+#ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
       {"patterns", RunPatterns, "write the calibration patterns for a display"},
       {"calibrate", RunCalibrate, "calibrate a display unit from photographs of the patterns"},
+#endif
       {"version", RunVersion, "print the version, the git commit and the data folder"},
   };
   return table;

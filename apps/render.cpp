@@ -8,6 +8,7 @@
 // measured one if present), the view count (its recommendation unless --views), the tile grid
 // and the view aspect; --panel interlaces the quilt for it in the same run.
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -161,8 +162,14 @@ int RunRender(int argc, char** argv) {
   if (focal_distance <= 0.0f) focal_distance = glm::length(spec.look_at - spec.position);
   const render::QuiltGeometry geometry =
       render::make_quilt_geometry(base, focal_distance, view_cone_deg, views);
-  if (display_quilt)
+  if (display_quilt) {
     std::cout << fmt::format("display {}: {}\n", calibration_path, display_quilt->describe());
+    const double aspect = double(base.width) / base.height;
+    if (std::abs(aspect / display_quilt->view_aspect - 1.0) > 0.01)
+      std::cerr << fmt::format("notice: views of {}x{} (aspect {:.4g}) on a display of aspect {:.4g}: "
+                               "the interlacer fits them with black bars (leave out --size to match)\n",
+                               base.width, base.height, aspect, display_quilt->view_aspect);
+  }
 
   std::string written;
   if (view >= 0) {
