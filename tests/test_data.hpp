@@ -1,6 +1,11 @@
 #pragma once
-// Where tests find data: the project's data/ and the shared real data beside the repo
-// (../shared/data). Tests that need the shared data skip with a message when it is absent.
+// Where tests find data:
+//   fixtures()      tests/data: small real files in the repository (calibrations of real units,
+//                   the three-points scenes in every format), so a fresh clone runs every test;
+//   project_data()  data/: what the program bundles (the demo scene, display templates);
+//   shared_data()   ../shared/data beside the repository: large optional files only (the
+//                   guitar scene). A test that needs one starts with LFD_REQUIRE_SHARED_FILE,
+//                   which skips it with a message when the file is absent.
 #include <unistd.h>
 #include <algorithm>
 #include <filesystem>
@@ -11,26 +16,35 @@
 
 namespace lfd::test {
 
-inline std::filesystem::path shared_data() { return LFD_SHARED_DATA_DIR; }
+inline std::filesystem::path fixtures() { return LFD_TEST_DATA_DIR; }
 inline std::filesystem::path project_data() { return LFD_DATA_DIR; }
+inline std::filesystem::path shared_data() { return LFD_TEST_SHARED_DATA_DIR; }
 
-inline bool has_shared_data() { return std::filesystem::exists(shared_data() / "calibrations"); }
+// tests/data/calibrations/<name>: visual.json files of real units.
+inline std::filesystem::path fixture_calibration(const std::string& name) {
+  return fixtures() / "calibrations" / name;
+}
+// tests/data/scenes/<name>.
+inline std::filesystem::path fixture_scene(const std::string& name) {
+  return fixtures() / "scenes" / name;
+}
 
-#define LFD_REQUIRE_SHARED_DATA()                                                         \
-  do {                                                                                    \
-    if (!::lfd::test::has_shared_data())                                                  \
-      GTEST_SKIP() << "shared data not found at " << ::lfd::test::shared_data().string()  \
-                   << " (tests that use the real calibrations and scenes need it)";       \
-  } while (0)
-
-inline std::vector<std::filesystem::path> shared_calibrations() {
+// Every calibration fixture, sorted by name.
+inline std::vector<std::filesystem::path> fixture_calibrations() {
   std::vector<std::filesystem::path> files;
-  if (!has_shared_data()) return files;
-  for (const auto& e : std::filesystem::directory_iterator(shared_data() / "calibrations"))
+  for (const auto& e : std::filesystem::directory_iterator(fixtures() / "calibrations"))
     if (e.path().extension() == ".json") files.push_back(e.path());
   std::sort(files.begin(), files.end());
   return files;
 }
+
+// The one skip helper: `relative` under ../shared/data, e.g. "scenes/guitar.compressed.ply".
+#define LFD_REQUIRE_SHARED_FILE(relative)                                                 \
+  do {                                                                                    \
+    if (!std::filesystem::exists(::lfd::test::shared_data() / (relative)))                \
+      GTEST_SKIP() << "optional shared file not found: "                                  \
+                   << (::lfd::test::shared_data() / (relative)).string();                 \
+  } while (0)
 
 // A fresh temporary directory per test.
 inline std::filesystem::path temp_dir(const std::string& name) {

@@ -84,9 +84,8 @@ TEST(Cli, InterlaceWritesAPanelOfTheDisplaySizeAndNothingOnFailure) {
 }
 
 TEST(Cli, InfoReportsDerivedFiguresAsJson) {
-  LFD_REQUIRE_SHARED_DATA();
   const Result r = run("info --json --calibration " +
-                       (lfd::test::shared_data() / "calibrations/LKG-APW92011.visual.json").string());
+                       (lfd::test::fixture_calibration("LKG-APW92011.visual.json")).string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto j = nlohmann::json::parse(r.output);
   EXPECT_NEAR(j["lens"]["lenses_across_screen"].get<double>(), 673.4608856975016, 1e-9);

@@ -1,4 +1,5 @@
-// `lfd render` and `lfd compare` end to end through the real program (small images).
+// `lfd render` and `lfd compare` end to end through the real program (small images of the
+// bundled demo scene, data/scenes/demo.ply).
 #include <unistd.h>
 #include <sys/wait.h>
 
@@ -11,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/apps/run_lfd.hpp"
+#include "tests/test_data.hpp"
 
 namespace {
 
@@ -27,7 +29,7 @@ Result run(const std::string& args) {
   return {r.exit_code, r.output};
 }
 
-const std::string kScene = std::string(LFD_SOURCE_DIR) + "/../shared/data/scenes/guitar.compressed.ply";
+const std::string kScene = (lfd::test::project_data() / "scenes" / "demo.ply").string();
 
 fs::path temp_dir() {
   const fs::path d = fs::temp_directory_path() / ("lfd_render_cli_test_" + std::to_string(::getpid()));
@@ -36,7 +38,6 @@ fs::path temp_dir() {
 }
 
 TEST(RenderCli, WritesAQuiltWithTheTilingSuffix) {
-  if (!fs::exists(kScene)) GTEST_SKIP() << "shared scene missing: " << kScene;
   const fs::path out = temp_dir() / "quilt.png";
   const Result r = run("render --scene " + kScene + " --views 8 --cols 4 --rows 2 --size 48x32 --chunks 16 --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.out;
@@ -44,7 +45,6 @@ TEST(RenderCli, WritesAQuiltWithTheTilingSuffix) {
 }
 
 TEST(RenderCli, PerViewAndG2lfQuiltsAreComparable) {
-  if (!fs::exists(kScene)) GTEST_SKIP() << "shared scene missing: " << kScene;
   const fs::path a = temp_dir() / "pv_qs3x1a1.png", b = temp_dir() / "g2_qs3x1a1.png";
   ASSERT_EQ(run("render --scene " + kScene + " --method per-view --views 3 --cols 3 --rows 1 --size 40x40 --out " + a.string()).code, 0);
   ASSERT_EQ(run("render --scene " + kScene + " --method g2lf --chunks 64 --views 3 --cols 3 --rows 1 --size 40x40 --out " + b.string()).code, 0);
@@ -59,7 +59,6 @@ TEST(RenderCli, PerViewAndG2lfQuiltsAreComparable) {
 }
 
 TEST(RenderCli, SingleViewAndCameraFile) {
-  if (!fs::exists(kScene)) GTEST_SKIP() << "shared scene missing: " << kScene;
   const fs::path cam = temp_dir() / "cam.json", out = temp_dir() / "view.png";
   std::ofstream(cam) << R"({"position":[0,0,-3],"look_at":[0,0,0],"up":[0,-1,0],"fov_y_deg":40,"width":24,"height":16})";
   const Result r = run("render --scene " + kScene + " --camera " + cam.string() + " --view 2 --out " + out.string());

@@ -10,6 +10,7 @@
 #include "calib/calibrate.hpp"
 #include "calib/synthetic_unit.hpp"
 #include "calib/display/visual_json.hpp"
+#include "tests/test_data.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -26,9 +27,8 @@ struct Fixture {
 const Fixture& fixture() {
   static const Fixture f = [] {
     Fixture x;
-    x.unit = make_synthetic_unit(read_visual_json(std::filesystem::path(LFD_SOURCE_DIR) / ".." /
-                                                  "shared" / "data" / "calibrations" /
-                                                  "LKG-PORT-portrait.visual.json"));
+    x.unit = make_synthetic_unit(
+        read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
     x.set = plan_patterns(x.unit.nominal);
     x.rig = make_capture_rig(x.unit.truth.display, 480, 1, false, 7);
     x.captures = simulate_captures(x.set, x.unit.truth, x.rig);

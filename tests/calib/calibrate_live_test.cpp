@@ -9,6 +9,7 @@
 #include "calib/live_calibration.hpp"
 #include "calib/synthetic_unit.hpp"
 #include "calib/display/visual_json.hpp"
+#include "tests/test_data.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -16,8 +17,7 @@ namespace {
 
 TEST(CalibrateLive, SimulatedRoundsRefineTheNominalModel) {
   const SyntheticUnit unit = make_synthetic_unit(read_visual_json(
-      std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" / "calibrations" /
-      "LKG-PORT-portrait.visual.json"));
+      test::fixture_calibration("LKG-PORT-portrait.visual.json")));
   LiveOptions o;
   o.rounds = 2;
   o.positions = 2;  // two distances: the view cone is measured, not assumed
@@ -57,8 +57,7 @@ struct RecordingDevices : PatternDisplay, FrameSource {
 
 TEST(CalibrateLive, EachPositionAimsOnTheBoardFixesExposureOnWhiteThenPhotographsEveryPattern) {
   const DisplayCalibration d = read_visual_json(
-      std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" / "calibrations" /
-      "LKG-PORT-portrait.visual.json");
+      test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   Calibration nominal;
   nominal.display = d;
   const PatternSet set = plan_patterns(nominal);

@@ -7,13 +7,10 @@
 #include "calib/calibrate.hpp"
 #include "calib/synthetic_unit.hpp"
 #include "calib/display/visual_json.hpp"
+#include "tests/test_data.hpp"
 
 namespace lfd::calib {
 namespace {
-
-std::filesystem::path shared_calibration(const char* name) {
-  return std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" / "calibrations" / name;
-}
 
 struct RoundTrip {
   SyntheticUnit unit;
@@ -24,7 +21,7 @@ struct RoundTrip {
 
 RoundTrip simulate(const char* file, int width_px, int positions, bool clean) {
   RoundTrip r;
-  r.unit = make_synthetic_unit(read_visual_json(shared_calibration(file)));
+  r.unit = make_synthetic_unit(read_visual_json(test::fixture_calibration(file)));
   r.set = plan_patterns(r.unit.nominal);
   r.rig = make_capture_rig(r.unit.truth.display, width_px, positions, clean);
   r.captures = simulate_captures(r.set, r.unit.truth, r.rig);

@@ -13,8 +13,7 @@ namespace lfd::calib {
 namespace {
 
 TEST(FringeRegistration, PinsTheCameraPositionToAMillimetre) {
-  LFD_REQUIRE_SHARED_DATA();
-  const auto real = read_visual_json(lfd::test::shared_data() / "calibrations" / "LKG-APW92011.visual.json");
+  const auto real = read_visual_json(lfd::test::fixture_calibration("LKG-APW92011.visual.json"));
   const SyntheticUnit unit = make_synthetic_unit(real);
   const PatternSet set = plan_patterns(unit.nominal);
   ASSERT_EQ(set.of_kind(PatternKind::kFringeX).size(), 4u);

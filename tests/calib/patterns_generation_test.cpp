@@ -10,6 +10,7 @@
 #include "calib/patterns.hpp"
 #include "calib/registration.hpp"
 #include "calib/display/visual_json.hpp"
+#include "tests/test_data.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -17,8 +18,7 @@ namespace {
 
 Calibration portrait() {
   Calibration c;
-  c.display = read_visual_json(std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" /
-                               "calibrations" / "LKG-PORT-portrait.visual.json");
+  c.display = read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   return c;
 }
 

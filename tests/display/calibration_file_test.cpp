@@ -50,8 +50,7 @@ TEST(CalibrationFile, RoundTripsEveryField) {
 }
 
 TEST(CalibrationFile, ReadsAPlainVisualJson) {
-  LFD_REQUIRE_SHARED_DATA();
-  for (const auto& file : test::shared_calibrations()) {
+  for (const auto& file : test::fixture_calibrations()) {
     const Calibration c = read_calibration(file);
     EXPECT_TRUE(c.correction.empty()) << file;
     EXPECT_GT(c.display.pitch_lpi, 0) << file;
@@ -78,6 +77,68 @@ TEST(CalibrationFile, ExportedVisualJsonHoldsTheLensFields) {
   EXPECT_EQ(v.pitch_lpi, 50.1);
   EXPECT_EQ(v.slope, -7.5);
   EXPECT_FALSE(nlohmann::json::parse(read_text_file(dir / "visual.json")).contains("correction"));
+}
+
+// A calibration as `lfd calibrate` leaves it: the measured cone replaced the nominal.
+Calibration measured_cone_calibration() {
+  Calibration c = sample_calibration();
+  c.view_cone_nominal_deg = 40.0;
+  c.view_cone_measured_deg = 38.5;
+  c.display.view_cone_deg = 38.5;
+  return c;
+}
+
+TEST(CalibrationFile, TheMeasuredConeIsTheConeAndTheNominalIsKept) {
+  const auto dir = test::temp_dir("calibration_cone");
+  write_calibration(dir / "c.json", measured_cone_calibration(), false);
+  const auto j = nlohmann::json::parse(read_text_file(dir / "c.json"));
+  EXPECT_EQ(j["display"]["viewCone"]["value"].get<double>(), 38.5);
+  EXPECT_EQ(j["view_cone_measured_deg"].get<double>(), 38.5);
+  EXPECT_EQ(j["view_cone_nominal_deg"].get<double>(), 40.0);
+  const Calibration r = read_calibration(dir / "c.json");
+  EXPECT_EQ(r.display.view_cone_deg, 38.5);
+  EXPECT_EQ(*r.view_cone_measured_deg, 38.5);
+  EXPECT_EQ(*r.view_cone_nominal_deg, 40.0);
+}
+
+TEST(CalibrationFile, AnOlderFileWithOnlyTheMeasuredConeReadsWithTheMeasuredCone) {
+  // Written before the nominal was kept beside it: display.viewCone holds the nominal.
+  auto j = to_json(measured_cone_calibration());
+  j["display"]["viewCone"]["value"] = 40.0;
+  j.erase("view_cone_nominal_deg");
+  const Calibration r = parse_calibration(j.dump(), "old.json");
+  EXPECT_EQ(r.display.view_cone_deg, 38.5);
+  EXPECT_EQ(*r.view_cone_measured_deg, 38.5);
+  EXPECT_EQ(*r.view_cone_nominal_deg, 40.0);
+}
+
+TEST(CalibrationFile, AMeasuredConeNotYetInTheDisplayKeepsTheDisplaysConeAsNominal) {
+  Calibration c = sample_calibration();  // display 40, measured 41.3, no nominal
+  ASSERT_FALSE(c.view_cone_nominal_deg);
+  const Calibration r = parse_calibration(to_json(c).dump(), "c.json");
+  EXPECT_EQ(r.display.view_cone_deg, 41.3);
+  EXPECT_EQ(*r.view_cone_nominal_deg, 40.0);
+  // With the display already at the measured cone and no nominal known, none is made up.
+  c.display.view_cone_deg = 41.3;
+  EXPECT_FALSE(parse_calibration(to_json(c).dump(), "c.json").view_cone_nominal_deg);
+}
+
+TEST(CalibrationFile, APlainVisualJsonHasNoMeasuredOrNominalCone) {
+  const Calibration c = read_calibration(test::fixture_calibration("LKG-APW92011.visual.json"));
+  EXPECT_FALSE(c.view_cone_measured_deg);
+  EXPECT_FALSE(c.view_cone_nominal_deg);
+  EXPECT_EQ(c.display.view_cone_deg, 40.0);
+}
+
+TEST(CalibrationFile, ExportedVisualJsonCarriesTheMeasuredCone) {
+  const auto dir = test::temp_dir("calibration_export_cone");
+  export_visual_json(dir / "visual.json", measured_cone_calibration(), false);
+  EXPECT_EQ(read_visual_json(dir / "visual.json").view_cone_deg, 38.5);
+  // Also when the measured cone has not replaced the display's in memory.
+  Calibration c = measured_cone_calibration();
+  c.display.view_cone_deg = 40.0;
+  export_visual_json(dir / "visual2.json", c, false);
+  EXPECT_EQ(read_visual_json(dir / "visual2.json").view_cone_deg, 38.5);
 }
 
 void expect_rejected(const std::string& text, const std::string& field) {

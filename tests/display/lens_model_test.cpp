@@ -11,14 +11,13 @@ namespace lfd::calib {
 namespace {
 
 DisplayCalibration load(const char* name) {
-  return read_visual_json(test::shared_data() / "calibrations" / name);
+  return read_visual_json(test::fixture_calibration(name));
 }
 
 double frac(double x) { return x - std::floor(x); }
 
 // Published processed shader values (reference/looking-glass.md 2.5 "Test vector").
 TEST(LensModel, ReproducesThePublishedShaderUniforms) {
-  LFD_REQUIRE_SHARED_DATA();
   const LensModel gen2(load("LKG-APW92011.visual.json"));
   EXPECT_NEAR(gen2.pitch_periods(), 673.46088569750157, 1e-9);
   EXPECT_NEAR(gen2.tilt(), -0.074780801514116493, 1e-15);
@@ -28,7 +27,6 @@ TEST(LensModel, ReproducesThePublishedShaderUniforms) {
 }
 
 TEST(LensModel, ClassicSubpixelPhaseMatchesTheVendorFormula) {
-  LFD_REQUIRE_SHARED_DATA();
   const DisplayCalibration c = load("LKG-2K-04409.visual.json");
   const LensModel lens(c);
   const double P = lens.pitch_periods(), T = lens.tilt(), s = 1.0 / (3.0 * c.screen_w);
@@ -44,7 +42,6 @@ TEST(LensModel, ClassicSubpixelPhaseMatchesTheVendorFormula) {
 }
 
 TEST(LensModel, FlipSubpSwapsRedAndBluePositions) {
-  LFD_REQUIRE_SHARED_DATA();
   DisplayCalibration c = load("LKG-2K-04409.visual.json");
   const LensModel rgb(c);
   c.flip_subp = true;
@@ -55,7 +52,6 @@ TEST(LensModel, FlipSubpSwapsRedAndBluePositions) {
 }
 
 TEST(LensModel, FlipImageXNegatesTilt) {
-  LFD_REQUIRE_SHARED_DATA();
   DisplayCalibration c = load("LKG-2K-04409.visual.json");
   const double t = LensModel(c).tilt();
   c.flip_image_x = true;
@@ -63,7 +59,6 @@ TEST(LensModel, FlipImageXNegatesTilt) {
 }
 
 TEST(LensModel, Gen3CellsUseBottomUpRowParity) {
-  LFD_REQUIRE_SHARED_DATA();
   const DisplayCalibration c = load("template-16in-portrait-gen3.visual.json");
   const LensModel lens(c);
   // Mode 4 = row parity of the bottom-up row j. The bottom image row (row H-1) has j = 0:
@@ -81,7 +76,6 @@ TEST(LensModel, Gen3CellsUseBottomUpRowParity) {
 }
 
 TEST(LensModel, CorrectionFieldShiftsThePhase) {
-  LFD_REQUIRE_SHARED_DATA();
   const DisplayCalibration c = load("LKG-APW92011.visual.json");
   std::vector<double> coeffs(5 * 4, 0.125);  // a constant B-spline is that constant
   const LensModel plain(c), corrected(c, CorrectionField(5, 4, coeffs));
@@ -91,7 +85,6 @@ TEST(LensModel, CorrectionFieldShiftsThePhase) {
 }
 
 TEST(LensModel, PhaseForFractionInvertsViewFraction) {
-  LFD_REQUIRE_SHARED_DATA();
   for (bool inv : {true, false}) {
     DisplayCalibration c = load("LKG-APW92011.visual.json");
     c.inv_view = inv;

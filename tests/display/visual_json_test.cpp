@@ -19,8 +19,7 @@ std::string trim(std::string s) {
 }
 
 TEST(VisualJson, EveryRealCalibrationRoundTripsByteForByte) {
-  LFD_REQUIRE_SHARED_DATA();
-  const auto files = test::shared_calibrations();
+  const auto files = test::fixture_calibrations();
   ASSERT_GE(files.size(), 4u);
   for (const auto& file : files) {
     SCOPED_TRACE(file.string());
@@ -38,8 +37,7 @@ TEST(VisualJson, EveryRealCalibrationRoundTripsByteForByte) {
 }
 
 TEST(VisualJson, ReadsTheValuesOfA16InchGen2Unit) {
-  LFD_REQUIRE_SHARED_DATA();
-  const auto c = read_visual_json(test::shared_data() / "calibrations/LKG-APW92011.visual.json");
+  const auto c = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
   EXPECT_EQ(c.serial, "LKG-APW92011");
   EXPECT_DOUBLE_EQ(c.pitch_lpi, 50.0693473815918);
   EXPECT_DOUBLE_EQ(c.slope, -7.521984100341797);
@@ -51,9 +49,7 @@ TEST(VisualJson, ReadsTheValuesOfA16InchGen2Unit) {
 }
 
 TEST(VisualJson, ReadsGen3CellsAndPatternMode) {
-  LFD_REQUIRE_SHARED_DATA();
-  const auto c = read_visual_json(test::shared_data() /
-                                  "calibrations/template-16in-portrait-gen3.visual.json");
+  const auto c = read_visual_json(test::fixture_calibration("template-16in-portrait-gen3.visual.json"));
   EXPECT_EQ(c.cell_pattern_mode, 4);
   ASSERT_EQ(c.subpixel_cells.size(), 2u);
   EXPECT_DOUBLE_EQ(c.subpixel_cells[0].r_x, -0.25);

@@ -127,8 +127,7 @@ TEST(Interlacer, SquareQuiltOnAWidePanelGetsBlackBarsUnlessOverscan) {
 }
 
 TEST(Interlacer, EveryRealCalibrationInterlacesToItsPanelSize) {
-  LFD_REQUIRE_SHARED_DATA();
-  for (const auto& file : test::shared_calibrations()) {
+  for (const auto& file : test::fixture_calibrations()) {
     SCOPED_TRACE(file.string());
     const DisplayCalibration c = calib::read_visual_json(file);
     const LensModel lens(c);

@@ -1,6 +1,6 @@
-// The shared fixtures: the same 3 real Gaussians as standard PLY, .splat and SPZ v3 agree to
+// The fixtures (tests/data/scenes): the same 3 real Gaussians as standard PLY, .splat and SPZ v3 agree to
 // each format's precision (reference/gaussian-splatting.md section 8), and the real PlayCanvas
-// compressed PLY loads completely.
+// compressed PLY (optional, ../shared/data) loads completely.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,15 +8,12 @@
 
 #include "render/scene_checks.hpp"
 #include "render/scene_io.hpp"
+#include "tests/test_data.hpp"
 
 namespace lfd::render {
 namespace {
 
-const std::filesystem::path kScenes = LFD_SHARED_DATA_DIR "/scenes";
-
-#define SKIP_WITHOUT_SHARED_DATA()                                                      \
-  if (!std::filesystem::exists(kScenes / "three-points.ply"))                           \
-    GTEST_SKIP() << "shared scene data not found at " << kScenes << "; skipping"
+const std::filesystem::path kScenes = test::fixtures() / "scenes";
 
 float rgb_of(const GaussianScene& s, size_t i, int ch) { return 0.5f + kShC0 * s.sh_of(i)[ch]; }
 
@@ -31,7 +28,6 @@ float quaternion_distance(const std::array<float, 4>& a, const std::array<float,
 }
 
 TEST(SceneFormats, ThreePointsPlyMatchesTheReferenceTable) {
-  SKIP_WITHOUT_SHARED_DATA();
   const GaussianScene s = load_scene(kScenes / "three-points.ply");
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s.sh_degree, 3);
@@ -51,7 +47,6 @@ TEST(SceneFormats, ThreePointsPlyMatchesTheReferenceTable) {
 }
 
 TEST(SceneFormats, SplatAgreesWithPlyToEightBits) {
-  SKIP_WITHOUT_SHARED_DATA();
   const GaussianScene ply = load_scene(kScenes / "three-points.ply");
   const GaussianScene splat = load_scene(kScenes / "three-points.splat");
   ASSERT_EQ(splat.size(), 3u);
@@ -69,7 +64,6 @@ TEST(SceneFormats, SplatAgreesWithPlyToEightBits) {
 }
 
 TEST(SceneFormats, SpzAgreesWithPlyToItsQuantisation) {
-  SKIP_WITHOUT_SHARED_DATA();
   const GaussianScene ply = load_scene(kScenes / "three-points.ply");
   const GaussianScene spz = load_scene(kScenes / "three-points.spz");
   ASSERT_EQ(spz.size(), 3u);
@@ -95,8 +89,8 @@ TEST(SceneFormats, SpzAgreesWithPlyToItsQuantisation) {
 }
 
 TEST(SceneFormats, GuitarCompressedPlyLoadsEveryGaussianFinite) {
-  SKIP_WITHOUT_SHARED_DATA();
-  const GaussianScene s = load_scene(kScenes / "guitar.compressed.ply");
+  LFD_REQUIRE_SHARED_FILE("scenes/guitar.compressed.ply");
+  const GaussianScene s = load_scene(test::shared_data() / "scenes/guitar.compressed.ply");
   ASSERT_EQ(s.size(), 90854u);
   EXPECT_EQ(s.sh_degree, 0);
   for (size_t i = 0; i < s.size(); ++i) {

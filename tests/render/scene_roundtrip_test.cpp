@@ -15,6 +15,7 @@
 #include "render/ply_writer.hpp"
 #include "render/scene_generator.hpp"
 #include "render/scene_io.hpp"
+#include "tests/test_data.hpp"
 
 namespace lfd::render {
 namespace {
@@ -109,8 +110,7 @@ std::string gunzip(const std::string& data) {
 }
 
 TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
-  const fs::path v3 = LFD_SHARED_DATA_DIR "/scenes/three-points.spz";
-  if (!fs::exists(v3)) GTEST_SKIP() << "shared scene data not found; skipping";
+  const fs::path v3 = test::fixture_scene("three-points.spz");
   const std::string raw = gunzip(read_bytes(v3));
   ASSERT_EQ(raw.size(), 211u);  // reference section 8: 16 + 27 + 3 + 9 + 9 + 12 + 135
   const uint32_t n = 3;
@@ -140,8 +140,7 @@ TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
 using lfd::test::gzip;
 
 TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
-  const fs::path v3 = LFD_SHARED_DATA_DIR "/scenes/three-points.spz";
-  if (!fs::exists(v3)) GTEST_SKIP() << "shared scene data not found; skipping";
+  const fs::path v3 = test::fixture_scene("three-points.spz");
   const GaussianScene expected = load_scene(v3);
   const std::string raw = gunzip(read_bytes(v3));
   ASSERT_EQ(raw.size(), 211u);

@@ -186,10 +186,9 @@ TEST(CalibrationReport, WithoutGnuplotThePageSaysSoAndShowsNoFigure) {
 // positions), with a residual gate no photograph can pass: the report of a rejection shows the
 // figures of every position and names the gate.
 TEST(CalibrationReport, SimulatedRejectedCalibrationHasFiguresForEveryPosition) {
-  LFD_REQUIRE_SHARED_DATA();
   REQUIRE_GNUPLOT();
   const calib::SyntheticUnit unit = calib::make_synthetic_unit(
-      calib::read_visual_json(test::shared_data() / "calibrations" / "LKG-PORT-portrait.visual.json"));
+      calib::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
   const calib::PatternSet set = calib::plan_patterns(unit.nominal);
   const calib::CaptureRig rig = calib::make_capture_rig(unit.truth.display, 480, 2);
   calib::CalibrateOptions options;

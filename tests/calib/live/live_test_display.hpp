@@ -7,8 +7,7 @@
 namespace lfd::test {
 
 inline std::filesystem::path live_test_display() {
-  return std::filesystem::path(LFD_SOURCE_DIR) / ".." / "shared" / "data" / "calibrations" /
-         "LKG-PORT-portrait.visual.json";
+  return std::filesystem::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json";
 }
 
 }  // namespace lfd::test
