@@ -1,0 +1,179 @@
+// The lens solver (calib/lens_solver.hpp) on phase samples made from a known truth by the
+// model it documents (tests/calib/synthetic_phase_samples.hpp): the truth comes back, and the
+// uncertainties it reports cover the errors.
+#include "calib/lens_solver.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "calib/display/visual_json.hpp"
+#include "tests/calib/synthetic_phase_samples.hpp"
+#include "tests/test_data.hpp"
+
+namespace lfd::calib {
+namespace {
+
+using calib::testing::make_synthetic_phase_data;
+using calib::testing::SyntheticPhaseData;
+using calib::testing::SyntheticPhaseOptions;
+using calib::testing::three_cameras;
+
+double wrapped(double x) { return x - std::round(x); }
+
+// A start within the solver's reach of the truth (what the coarse start delivers).
+LensEstimate start_near(const Calibration& truth) {
+  const DisplayCalibration& t = truth.display;
+  LensEstimate e;
+  e.pitch_lpi = t.pitch_lpi * (1 + 1e-4);
+  e.slope = slope_of_slant_deg(slant_deg_of_slope(t.slope) + 0.01);
+  e.center_periods = t.center_periods + 0.04;
+  e.view_cone_deg = t.view_cone_deg - 1.5;
+  return e;
+}
+
+struct Errors {
+  double pitch_lpi, slope, center_periods, view_cone_deg, correction_rms;
+};
+
+Errors errors_of(const SolverResult& r, const Calibration& truth) {
+  const DisplayCalibration& t = truth.display;
+  double sw = 0;
+  const int n = 32;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+      const double dw = r.correction(u, v) - truth.correction(u, v);
+      sw += dw * dw;
+    }
+  return {r.lens.pitch_lpi - t.pitch_lpi, r.lens.slope - t.slope,
+          wrapped(r.lens.center_periods - t.center_periods), r.lens.view_cone_deg - t.view_cone_deg,
+          std::sqrt(sw / (n * n))};
+}
+
+void print(const char* what, const Errors& e, const SolverResult& r) {
+  std::printf("%s: error (sigma) pitch %.2e (%.2e) lpi, slope %.2e (%.2e), center %.5f (%.5f), "
+              "cone %.4f (%.4f) deg, warp rms %.4f (%.4f); obs sigma %.4f, inflation %.2f\n",
+              what, e.pitch_lpi, r.sigma.at("pitch_lpi"), e.slope, r.sigma.at("slope"),
+              e.center_periods, r.sigma.at("center_periods"), e.view_cone_deg,
+              r.sigma.at("view_cone_deg"), e.correction_rms, r.sigma.at("correction_rms_periods"),
+              r.obs_sigma_periods, r.noise_inflation);
+}
+
+SolverOptions small_grid() {
+  SolverOptions o;
+  o.grid_nx = 6;
+  o.grid_ny = 6;
+  return o;
+}
+
+TEST(LensSolver, RecoversTheTruthFromThreePositionsWithHonestSigmas) {
+  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  SyntheticUnitOptions unit;
+  unit.warp_amplitude = 0.1;
+  const SyntheticPhaseData data = make_synthetic_phase_data(real, unit, three_cameras(real));
+  const Calibration& truth = data.unit.truth;
+  const SolverResult r =
+      solve_lens(data.unit.nominal, start_near(truth), data.positions, small_grid());
+  ASSERT_TRUE(r.converged) << r.report;
+  const Errors e = errors_of(r, truth);
+  print("three positions", e, r);
+
+  // The truth, to the accuracy the calibration needs (DESIGN section 5).
+  EXPECT_LT(std::abs(e.pitch_lpi) / truth.display.pitch_lpi, 2e-5);
+  EXPECT_LT(std::abs(slant_deg_of_slope(r.lens.slope) - slant_deg_of_slope(truth.display.slope)), 0.002);
+  EXPECT_LT(std::abs(e.center_periods), 0.01);
+  EXPECT_LT(std::abs(e.view_cone_deg), 0.5);
+  EXPECT_LT(e.correction_rms, 0.02);
+  // The sample noise is measured, not assumed.
+  EXPECT_NEAR(r.obs_sigma_periods, 0.01, 0.004);
+  EXPECT_GT(r.residuals.inlier_fraction, 0.99);
+
+  // Honest uncertainties: every error within 4 sigma, and no sigma inflated past use.
+  EXPECT_LT(std::abs(e.pitch_lpi), 4 * r.sigma.at("pitch_lpi"));
+  EXPECT_LT(std::abs(e.slope), 4 * r.sigma.at("slope"));
+  EXPECT_LT(std::abs(e.center_periods), 4 * r.sigma.at("center_periods"));
+  EXPECT_LT(std::abs(e.view_cone_deg), 4 * r.sigma.at("view_cone_deg"));
+  EXPECT_LT(e.correction_rms, 4 * r.sigma.at("correction_rms_periods"));
+  EXPECT_LT(r.sigma.at("pitch_lpi") / truth.display.pitch_lpi, 2e-5);
+  EXPECT_LT(r.sigma.at("center_periods"), 0.01);
+  EXPECT_LT(r.sigma.at("view_cone_deg"), 1.0);
+
+  // The refined cameras stay near the true ones.
+  ASSERT_EQ(r.cameras_m.size(), 3u);
+  for (size_t i = 0; i < 3; ++i)
+    EXPECT_LT((r.cameras_m[i] - data.cameras[i]).norm(), 0.01) << "camera " << i;
+}
+
+TEST(LensSolver, WithKnownCamerasTheSigmasFollowTheSampleNoise) {
+  // Cameras known to 10 micrometres (a measured rig): the sample noise alone sets the sigmas,
+  // so four times the noise gives about four times the sigmas, and they still cover the errors.
+  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  SyntheticUnitOptions unit;
+  unit.warp_amplitude = 0.1;
+  SyntheticPhaseOptions quiet, noisy;
+  quiet.lateral_sigma_m = quiet.depth_sigma_m = 1e-5;
+  noisy = quiet;
+  noisy.noise_periods = 0.04;
+  noisy.seed = 2;
+  const SyntheticPhaseData a = make_synthetic_phase_data(real, unit, three_cameras(real), quiet);
+  const SyntheticPhaseData b = make_synthetic_phase_data(real, unit, three_cameras(real), noisy);
+  const SolverResult ra = solve_lens(a.unit.nominal, start_near(a.unit.truth), a.positions, small_grid());
+  const SolverResult rb = solve_lens(b.unit.nominal, start_near(b.unit.truth), b.positions, small_grid());
+  const Errors ea = errors_of(ra, a.unit.truth), eb = errors_of(rb, b.unit.truth);
+  print("known cameras, noise 0.01", ea, ra);
+  print("known cameras, noise 0.04", eb, rb);
+  for (const char* name : {"pitch_lpi", "slope", "center_periods", "view_cone_deg"}) {
+    const double ratio = rb.sigma.at(name) / ra.sigma.at(name);
+    EXPECT_GT(ratio, 3.0) << name;
+    EXPECT_LT(ratio, 5.0) << name;
+  }
+  for (const auto& [e, r] : {std::pair{ea, &ra}, std::pair{eb, &rb}}) {
+    EXPECT_LT(std::abs(e.pitch_lpi), 4 * r->sigma.at("pitch_lpi"));
+    EXPECT_LT(std::abs(e.slope), 4 * r->sigma.at("slope"));
+    EXPECT_LT(std::abs(e.center_periods), 4 * r->sigma.at("center_periods"));
+    EXPECT_LT(std::abs(e.view_cone_deg), 4 * r->sigma.at("view_cone_deg"));
+  }
+}
+
+TEST(LensSolver, OnePositionKeepsTheNominalConeAndStillFindsTheLens) {
+  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  SyntheticUnitOptions unit;
+  unit.warp_amplitude = 0.0;
+  unit.view_cone_error_deg = 0.0;  // one position cannot measure the cone: the nominal is true
+  const SyntheticPhaseData data =
+      make_synthetic_phase_data(real, unit, {three_cameras(real)[0]});
+  const Calibration& truth = data.unit.truth;
+  LensEstimate start = start_near(truth);
+  start.view_cone_deg = truth.display.view_cone_deg;
+  const SolverResult r = solve_lens(data.unit.nominal, start, data.positions, small_grid());
+  EXPECT_EQ(r.lens.view_cone_deg, truth.display.view_cone_deg);
+  EXPECT_EQ(r.sigma.at("view_cone_deg"), 0.0);
+  const Errors e = errors_of(r, truth);
+  EXPECT_LT(std::abs(e.pitch_lpi) / truth.display.pitch_lpi, 5e-5);
+  EXPECT_LT(std::abs(e.center_periods), 0.02);
+}
+
+TEST(LensSolver, RemoveGaugeLeavesNoMeanOrTrend) {
+  std::vector<double> c(36);
+  for (size_t i = 0; i < c.size(); ++i) c[i] = 0.3 + 0.01 * double(i) + 0.02 * std::sin(double(i));
+  const CorrectionField w = remove_gauge(CorrectionField(6, 6, c));
+  double mean = 0, mu = 0, mv = 0;
+  const int n = 64;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + 0.5) / n, v = (j + 0.5) / n, x = w(u, v);
+      mean += x;
+      mu += x * (u - 0.5);
+      mv += x * (v - 0.5);
+    }
+  EXPECT_NEAR(mean / (n * n), 0.0, 1e-9);
+  EXPECT_NEAR(mu / (n * n), 0.0, 1e-9);
+  EXPECT_NEAR(mv / (n * n), 0.0, 1e-9);
+  // What is left is the bend, which the gauge must not touch.
+  EXPECT_GT(w.range()[1] - w.range()[0], 0.01);
+}
+
+}  // namespace
+}  // namespace lfd::calib

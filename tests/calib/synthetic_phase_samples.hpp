@@ -1,0 +1,86 @@
+#pragma once
+// Decoded phase samples made straight from a known truth, without images: what the lens
+// solver's model (calib/lens_solver.hpp) says a camera at C decodes at panel point P,
+//   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))  (mod 1),   s = +1 with invView, else -1,
+//   f_seen(P) = seen_fraction(Cx - Px, Cz, cone_true),   X = P + lens_content_shift / pitch',
+// plus Gaussian noise. Shared by the solver and coarse-start tests.
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "calib/display/lens_model.hpp"
+#include "calib/display/lens_relations.hpp"
+#include "calib/lens_solver.hpp"
+#include "calib/synthetic_unit.hpp"
+
+namespace lfd::calib::testing {
+
+struct SyntheticPhaseOptions {
+  int samples_u = 96, samples_v = 54;  // a jittered grid over the screen
+  double noise_periods = 0.01;         // sample noise, lens periods
+  double lateral_sigma_m = 0.001;      // registration error of the camera positions given to
+  double depth_sigma_m = 0.003;        // the solver as priors (drawn, and stated as the priors)
+  unsigned seed = 1;
+};
+
+struct SyntheticPhaseData {
+  SyntheticUnit unit;                    // truth (with its correction warp) and nominal
+  std::vector<Eigen::Vector3d> cameras;  // true camera positions
+  std::vector<PositionData> positions;   // samples + registration priors
+};
+
+// The noise-free phase a camera at `camera` decodes at physical panel point (u, v).
+inline double synthetic_psi(const SyntheticUnit& unit, const LensModel& truth,
+                            const LensModel& nominal, const Eigen::Vector3d& camera, double u,
+                            double v) {
+  const DisplayCalibration& d = unit.truth.display;
+  const double s = d.inv_view ? 1.0 : -1.0;
+  const double px = (u - 0.5) * d.width_m();
+  const double f_seen = seen_fraction(camera.x() - px, camera.z(), d.view_cone_deg);
+  const double content_u = u + lens_content_shift(f_seen, d.inv_view) / truth.pitch_periods();
+  return f_seen + s * (truth.phase(content_u, v) - nominal.phase(content_u, v));
+}
+
+inline SyntheticPhaseData make_synthetic_phase_data(const DisplayCalibration& real,
+                                                    const SyntheticUnitOptions& unit_options,
+                                                    const std::vector<Eigen::Vector3d>& cameras,
+                                                    const SyntheticPhaseOptions& o = {}) {
+  SyntheticPhaseData data;
+  data.unit = make_synthetic_unit(real, unit_options);
+  data.cameras = cameras;
+  const LensModel truth(data.unit.truth.display, data.unit.truth.correction);
+  const LensModel nominal(data.unit.nominal.display, data.unit.nominal.correction);
+  std::mt19937_64 rng(o.seed);
+  std::uniform_real_distribution<double> jitter(0.0, 1.0);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  for (size_t i = 0; i < cameras.size(); ++i) {
+    PositionData p;
+    p.name = "position ";
+    p.name += std::to_string(i);
+    for (int j = 0; j < o.samples_v; ++j)
+      for (int k = 0; k < o.samples_u; ++k) {
+        const double u = (k + jitter(rng)) / o.samples_u, v = (j + jitter(rng)) / o.samples_v;
+        double psi = synthetic_psi(data.unit, truth, nominal, cameras[i], u, v) +
+                     o.noise_periods * gauss(rng);
+        psi -= std::floor(psi);
+        p.samples.push_back({float(u), float(v), float(psi), 0.5f});
+      }
+    p.lateral_sigma_m = o.lateral_sigma_m;
+    p.depth_sigma_m = o.depth_sigma_m;
+    p.camera_m = cameras[i] + Eigen::Vector3d(o.lateral_sigma_m * gauss(rng), 0.0,
+                                              o.depth_sigma_m * gauss(rng));
+    data.positions.push_back(std::move(p));
+  }
+  return data;
+}
+
+// Three cameras where calib::make_capture_rig puts them: clearly different distances and
+// sides, which separates the view cone from the pitch.
+inline std::vector<Eigen::Vector3d> three_cameras(const DisplayCalibration& d) {
+  std::vector<Eigen::Vector3d> cameras;
+  for (const CameraPose& pose : make_capture_rig(d, 640, 3, true).poses)
+    cameras.push_back(pose.position_m);
+  return cameras;
+}
+
+}  // namespace lfd::calib::testing
