@@ -1,9 +1,15 @@
 #include "validate/view_count_check.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include <gtest/gtest.h>
+
+#include "calib/display/view_count.hpp"
+#include "calib/display/visual_json.hpp"
+#include "tests/test_data.hpp"
 
 namespace lfd::validate {
 namespace {
@@ -50,6 +56,54 @@ TEST(ParallaxBlur, BlackLevelIsSubtracted) {
   for (double& k : p.black) k = 0.2;
   EXPECT_NEAR(parallax_blur(p, 40.0), clean, 1e-12);
 }
+
+// The view-count rule picks the knee of the parallax blur, measured through the simulator: at
+// the recommended count more views no longer lower the blur by more than ~10 % (it is near its
+// floor, the blur at many views), and fewer views raise it.
+class ViewCountKnee : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ViewCountKnee, TheRecommendedCountSitsAtTheKnee) {
+  calib::Calibration truth;
+  truth.display = calib::read_visual_json(test::fixture_calibration(GetParam()));
+  const int recommended = calib::recommend_view_count(truth).views;
+  const std::vector<int> counts = {16, 24, 32, 40, 48, 64, 96};
+  ASSERT_NE(std::find(counts.begin(), counts.end(), recommended), counts.end()) << recommended;
+  ASSERT_GT(recommended, counts.front());
+  ProfileOptions options;
+  options.panel_points = 250;
+  const ViewCountSweep sweep = sweep_view_counts(truth, counts, options);
+  ASSERT_EQ(sweep.recommended, recommended);
+  auto blur_at = [&](int views) {
+    for (const auto& p : sweep.points)
+      if (p.views == views) return p.parallax_blur;
+    ADD_FAILURE() << "no point for " << views << " views";
+    return 0.0;
+  };
+  const auto at = std::find(counts.begin(), counts.end(), recommended);
+  const double blur = blur_at(recommended), fewer = blur_at(*(at - 1)), floor = sweep.blur_floor;
+  for (const auto& p : sweep.points)
+    std::printf("%s: %d views, blur %.5f (%.3f x floor)\n", GetParam(), p.views, p.parallax_blur,
+                p.parallax_blur / floor);
+  // The sweep has a knee at all: few views blur far more than many.
+  EXPECT_GT(blur_at(16), 1.25 * floor);
+  // Beyond the recommended count, at most ~10 % more to gain.
+  EXPECT_LT(blur, 1.12 * floor);
+  // Below it, the blur rises.
+  EXPECT_GT(fewer, 1.03 * blur) << *(at - 1) << " views";
+  // And the sweep's own saturation point (within 10 % of the floor) is the recommendation or
+  // the next count.
+  EXPECT_GE(sweep.saturation, recommended);
+  EXPECT_LE(sweep.saturation, *(at + 1));
+}
+
+INSTANTIATE_TEST_SUITE_P(RealUnits, ViewCountKnee,
+                         ::testing::Values("LKG-2K-04409.visual.json", "LKG-PORT-portrait.visual.json"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           name = name.substr(0, name.find('.'));
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace lfd::validate
