@@ -19,6 +19,14 @@ int RunDemo(int argc, char** argv) {
   app.add_option("--scene", scene, "Gaussian scene (default: data/scenes/demo.ply)");
   app.add_option("--warp", options.warp_amplitude_periods,
                  "lens-array warp of the simulated unit, lens periods")->capture_default_str();
+  app.add_option("--capture-width", options.capture_width,
+                 "width of the simulated photographs, pixels (smaller: faster, less accurate)")
+      ->check(CLI::Range(320, 8192))->capture_default_str();
+  app.add_option("--tile-width", options.tile_width, "quilt tile width, pixels")
+      ->check(CLI::Range(16, 4096))->capture_default_str();
+  app.add_option("--points", options.validation_points,
+                 "panel points per validation profile")->check(CLI::Range(10, 100000))
+      ->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
   options.out_dir = out;
   options.unit_calibration = unit;
