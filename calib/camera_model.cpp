@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <string_view>
 
 #include <Eigen/Geometry>
 #include <opencv2/calib3d.hpp>
@@ -18,17 +20,86 @@ namespace {
 cv::Mat read_matrix(const cv::FileStorage& fs, const std::string& file, const std::string& node) {
   const cv::FileNode n = fs[node];
   if (n.empty() || n.isNone()) throw_input_error("{}: {}: missing", file, node);
+  // OpenCV allocates the declared rows x cols (sizes) before it reads the data, and a
+  // non-numeric size reads as INT_MAX: bound them first (these matrices are 3x3 and 1x14).
+  if (n.isMap()) {
+    double elements = 1;
+    for (const char* key : {"rows", "cols"})
+      if (const cv::FileNode d = n[key]; !d.empty()) {
+        if (!d.isInt()) throw_input_error("{}: {}.{}: not a whole number", file, node, key);
+        elements *= std::abs(double(int(d)));
+      }
+    if (const cv::FileNode sizes = n["sizes"]; !sizes.empty()) {
+      if (!sizes.isSeq() || sizes.size() > 4)
+        throw_input_error("{}: {}.sizes: not a list of up to 4 sizes", file, node);
+      for (const cv::FileNode& d : sizes) {
+        if (!d.isInt()) throw_input_error("{}: {}.sizes: not a whole number", file, node);
+        elements *= std::abs(double(int(d)));
+      }
+    }
+    if (elements > 1024)
+      throw_input_error("{}: {}: {} values is not a camera matrix", file, node, elements);
+  }
   cv::Mat m;
   try {
     n >> m;
-  } catch (const cv::Exception&) {
+  } catch (const std::exception&) {  // cv::Exception, or std::bad_alloc for absurd sizes
     throw_input_error("{}: {}: not an OpenCV matrix", file, node);
   }
-  if (m.empty()) throw_input_error("{}: {}: not an OpenCV matrix", file, node);
+  if (m.empty() || m.channels() != 1) throw_input_error("{}: {}: not an OpenCV matrix", file, node);
   m.convertTo(m, CV_64F);
   for (auto it = m.begin<double>(); it != m.end<double>(); ++it)
     if (!std::isfinite(*it)) throw_input_error("{}: {}: non-finite value", file, node);
   return m;
+}
+
+// What OpenCV 4.6's FileStorage readers must not see (found by fuzz_camera_yaml): its XML
+// reader dereferences null on a truncated declaration, and its YAML reader loops forever on a
+// NUL byte and when, after a document, it meets a line that begins with '-' but not "---" (also
+// one left over in its line buffer when a document whose root is indented ends on a short
+// line). So camera files are YAML only (FileStorage picks the reader from the first bytes),
+// one document with its top level in column 1, as FileStorage writes them.
+void check_yaml_layout(const std::string& text, const std::string& file) {
+  if (text.find('\0') != std::string::npos)
+    throw_input_error("{}: not a text file (holds a NUL byte)", file);
+  std::string_view rest(text);
+  if (rest.starts_with("\xEF\xBB\xBF")) rest.remove_prefix(3);
+  if (!rest.starts_with("%YAML"))
+    throw_input_error("{}: not an OpenCV YAML file (the first line must be %YAML:1.0)", file);
+  enum class State { kPreamble, kStarted, kRoot, kEnded } state = State::kPreamble;
+  for (int number = 1; !rest.empty(); ++number) {
+    const size_t eol = rest.find('\n');
+    const std::string_view line = rest.substr(0, eol);
+    rest.remove_prefix(eol == std::string_view::npos ? rest.size() : eol + 1);
+    const size_t first = line.find_first_not_of(" \r");
+    if (first == std::string_view::npos || line[first] == '#') continue;
+    const bool end_marker = line.starts_with("---") || line.starts_with("...");
+    switch (state) {
+      case State::kEnded:
+        throw_input_error("{}: line {}: a camera file holds one YAML document", file, number);
+      case State::kRoot:
+        if (end_marker) state = State::kEnded;
+        continue;
+      case State::kPreamble:
+        if (line.starts_with("%")) continue;
+        if (line.starts_with("---")) {
+          const size_t after = line.find_first_not_of(" \r", 3);
+          if (after != std::string_view::npos && line[after] != '#')
+            throw_input_error("{}: line {}: nothing may follow \"---\" on its line", file, number);
+          state = State::kStarted;
+          continue;
+        }
+        [[fallthrough]];
+      case State::kStarted:
+        if (end_marker) {
+          state = State::kEnded;
+          continue;
+        }
+        if (first > 0)
+          throw_input_error("{}: line {}: the top level must start in column 1", file, number);
+        state = State::kRoot;
+    }
+  }
 }
 
 int read_size(const cv::FileStorage& fs, const std::string& file, const std::string& node) {
@@ -61,30 +132,42 @@ CameraIntrinsics CameraIntrinsics::from_fov(double horizontal_fov_deg, int width
 CameraIntrinsics CameraIntrinsics::read_yaml(const std::filesystem::path& path) {
   const std::string file = path.string();
   if (!std::filesystem::exists(path)) throw_input_error("{}: file not found", file);
+  check_yaml_layout(read_text_file(path), file);
   cv::FileStorage fs;
   try {
     if (!fs.open(file, cv::FileStorage::READ)) throw_input_error("{}: cannot be read", file);
-  } catch (const cv::Exception& e) {
-    throw_input_error("{}: not an OpenCV YAML/XML file", file);
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception&) {  // cv::Exception, or std::length_error from its parser
+    throw_input_error("{}: not an OpenCV YAML file", file);
   }
-  CameraIntrinsics k;
-  const cv::Mat K = read_matrix(fs, file, "camera_matrix");
-  if (K.rows != 3 || K.cols != 3) throw_input_error("{}: camera_matrix: must be 3x3", file);
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) k.camera_matrix(r, c) = K.at<double>(r, c);
-  if (!(k.camera_matrix(0, 0) > 0 && k.camera_matrix(1, 1) > 0))
-    throw_input_error("{}: camera_matrix: focal lengths must be positive", file);
+  // OpenCV asserts on what it did not expect (a top level that is not a map, a node of the
+  // wrong kind): that is the file's fault too.
+  try {
+    CameraIntrinsics k;
+    const cv::Mat K = read_matrix(fs, file, "camera_matrix");
+    if (K.rows != 3 || K.cols != 3) throw_input_error("{}: camera_matrix: must be 3x3", file);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) k.camera_matrix(r, c) = K.at<double>(r, c);
+    if (!(k.camera_matrix(0, 0) > 0 && k.camera_matrix(1, 1) > 0))
+      throw_input_error("{}: camera_matrix: focal lengths must be positive", file);
 
-  const cv::Mat D = read_matrix(fs, file, "distortion_coefficients");
-  const size_t n = D.total();
-  // cv::projectPoints accepts 4, 5, 8, 12 or 14 coefficients.
-  if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
-    throw_input_error("{}: distortion_coefficients: {} values (expected 4, 5, 8, 12 or 14)",
-                      file, n);
-  k.distortion.assign(D.begin<double>(), D.end<double>());
-  k.width = read_size(fs, file, "image_width");
-  k.height = read_size(fs, file, "image_height");
-  return k;
+    const cv::Mat D = read_matrix(fs, file, "distortion_coefficients");
+    const size_t n = D.total();
+    // cv::projectPoints accepts 4, 5, 8, 12 or 14 coefficients.
+    if (n != 4 && n != 5 && n != 8 && n != 12 && n != 14)
+      throw_input_error("{}: distortion_coefficients: {} values (expected 4, 5, 8, 12 or 14)",
+                        file, n);
+    k.distortion.assign(D.begin<double>(), D.end<double>());
+    k.width = read_size(fs, file, "image_width");
+    k.height = read_size(fs, file, "image_height");
+    return k;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception&) {
+    throw_input_error("{}: not an OpenCV camera file (camera_matrix, distortion_coefficients, "
+                      "image_width, image_height at the top level)", file);
+  }
 }
 
 void CameraIntrinsics::write_yaml(const std::filesystem::path& path) const {

@@ -20,8 +20,8 @@ struct CameraIntrinsics {
 
   // A distortion-free pinhole with the given horizontal field of view.
   static CameraIntrinsics from_fov(double horizontal_fov_deg, int width, int height);
-  // OpenCV FileStorage YAML with camera_matrix, distortion_coefficients and image_width /
-  // image_height (or the size given). Throws InputError naming the file and the missing node.
+  // OpenCV FileStorage YAML (not XML or JSON) with camera_matrix, distortion_coefficients and
+  // image_width / image_height. Throws InputError naming the file and the missing node.
   static CameraIntrinsics read_yaml(const std::filesystem::path& path);
   void write_yaml(const std::filesystem::path& path) const;
 };

@@ -246,6 +246,15 @@ ojson points_to_json(const std::vector<cv::Point2d>& points) {
   return a;
 }
 
+// Manifest sizes and indices: whole numbers in a range (nlohmann's conversion of a float such
+// as 1e300 to int is undefined; found by fuzz_capture_manifest).
+constexpr int kMaxPx = 100000;
+int int_field(const ojson& v, const std::string& where, const std::string& field, int lo, int hi) {
+  require_field(v.is_number_integer() && v.get<long long>() >= lo && v.get<long long>() <= hi,
+                where, field, fmt::format("must be a whole number in {}..{}", lo, hi));
+  return int(v.get<long long>());
+}
+
 std::vector<cv::Point2d> points_from_json(const ojson& a, const std::string& where,
                                           const std::string& field) {
   require_field(a.is_array(), where, field, "must be an array of [x, y]");
@@ -316,42 +325,47 @@ PatternSet read_pattern_set(const std::filesystem::path& dir) {
   } catch (const nlohmann::json::exception& e) {
     throw_input_error("{}: not valid JSON ({})", where, e.what());
   }
-  require_field(j.is_object() && j.value("format", "") == kManifestFormat, where, "format",
-                "is not \"lfd-patterns\"");
-  require_field(j.value("version", 0) == kManifestVersion, where, "version", "unsupported");
   PatternSet set;
-  require_field(j.contains("nominal"), where, "nominal", "is missing");
-  set.nominal = parse_calibration(j["nominal"].dump(), where + ": nominal");
-  set.phase_steps = j.value("phase_steps", 0);
-  require_field(set.phase_steps >= 3 && set.phase_steps <= 32, where, "phase_steps",
-                "must be between 3 and 32");
-  // Manifests written before the fringe patterns existed have none: board-only registration.
-  set.fringe_steps = j.value("fringe_steps", 0);
-  set.fringe_period_px = j.value("fringe_period_px", 0.0);
-  require_field(set.fringe_steps == 0 || (set.fringe_steps >= 3 && set.fringe_steps <= 32), where,
-                "fringe_steps", "must be 0 or between 3 and 32");
-  require_field(set.fringe_steps == 0 || (std::isfinite(set.fringe_period_px) &&
-                                          set.fringe_period_px >= 8),
-                where, "fringe_period_px", "must be at least 8");
   try {
+    require_field(j.is_object() && j.contains("format") && j["format"] == kManifestFormat, where,
+                  "format", "is not \"lfd-patterns\"");
+    require_field(j.contains("version") && j["version"] == kManifestVersion, where, "version",
+                  "unsupported");
+    require_field(j.contains("nominal"), where, "nominal", "is missing");
+    set.nominal = parse_calibration(j["nominal"].dump(), where + ": nominal");
+    set.phase_steps = int_field(j.value("phase_steps", ojson(0)), where, "phase_steps", 3, 32);
+    // Manifests written before the fringe patterns existed have none: board-only registration.
+    set.fringe_steps = int_field(j.value("fringe_steps", ojson(0)), where, "fringe_steps", 0, 32);
+    require_field(!j.contains("fringe_period_px") || j["fringe_period_px"].is_number(), where,
+                  "fringe_period_px", "must be a number");
+    set.fringe_period_px = j.value("fringe_period_px", 0.0);
+    require_field(set.fringe_steps == 0 || set.fringe_steps >= 3, where, "fringe_steps",
+                  "must be 0 or between 3 and 32");
+    require_field(set.fringe_steps == 0 || (std::isfinite(set.fringe_period_px) &&
+                                            set.fringe_period_px >= 8),
+                  where, "fringe_period_px", "must be at least 8");
     const auto& b = j.at("board");
-    set.board.squares_x = b.at("squares_x");
-    set.board.squares_y = b.at("squares_y");
-    set.board.square_px = b.at("square_px");
-    set.board.marker_px = b.at("marker_px");
-    set.board.origin_x_px = b.at("origin_px").at(0);
-    set.board.origin_y_px = b.at("origin_px").at(1);
+    set.board.squares_x = int_field(b.at("squares_x"), where, "board.squares_x", 2, 100);
+    set.board.squares_y = int_field(b.at("squares_y"), where, "board.squares_y", 2, 100);
+    set.board.square_px = int_field(b.at("square_px"), where, "board.square_px", 2, kMaxPx);
+    set.board.marker_px =
+        int_field(b.at("marker_px"), where, "board.marker_px", 1, set.board.square_px - 1);
+    set.board.origin_x_px =
+        int_field(b.at("origin_px").at(0), where, "board.origin_px", -kMaxPx, kMaxPx);
+    set.board.origin_y_px =
+        int_field(b.at("origin_px").at(1), where, "board.origin_px", -kMaxPx, kMaxPx);
     set.board.corners_px = points_from_json(b.at("corners_px"), where, "board.corners_px");
     const auto& m = j.at("corner_markers");
-    set.markers.side_px = m.at("side_px");
-    set.markers.quiet_px = m.at("quiet_px");
+    set.markers.side_px = int_field(m.at("side_px"), where, "corner_markers.side_px", 0, kMaxPx);
+    set.markers.quiet_px =
+        int_field(m.at("quiet_px"), where, "corner_markers.quiet_px", 0, kMaxPx);
     set.markers.centres_px = points_from_json(m.at("centres_px"), where, "corner_markers");
     for (const auto& e : j.at("patterns")) {
       PatternInfo p;
       p.file = e.at("file").get<std::string>();
       p.kind = kind_from_string(e.at("kind").get<std::string>(), where);
-      p.index = e.at("index");
-      p.step = e.value("step", 0);
+      p.index = int_field(e.at("index"), where, "patterns.index", 0, 1000);
+      p.step = int_field(e.value("step", ojson(0)), where, "patterns.step", 0, 31);
       set.patterns.push_back(p);
     }
   } catch (const nlohmann::json::exception& e) {

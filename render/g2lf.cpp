@@ -8,7 +8,8 @@
 namespace lfd::render {
 
 void G2lfOptions::check() const {
-  if (chunks < 1 || chunks > 4096) throw_input_error("G2LF options: chunks: {} is outside 1..4096", chunks);
+  if (chunks < 1 || chunks > 4096)
+    throw_input_error("G2LF options: chunks: {} is outside 1..4096", chunks);
   if (plane_scale < 1 || plane_scale > 8)
     throw_input_error("G2LF options: plane_scale: {} is outside 1..8", plane_scale);
   if (!std::isfinite(d_shift)) throw_input_error("G2LF options: d_shift: must be finite");

@@ -35,7 +35,7 @@ Calibration parse_calibration(const std::string& text, const std::string& name) 
                 "is not \"lfd-calibration\"");
   require_field(root.contains("version") && root["version"].is_number_integer(), name, "version",
                 "must be an integer");
-  const int version = root["version"].get<int>();
+  const long long version = root["version"].get<long long>();
   require_field(version >= 1 && version <= kCalibrationFormatVersion, name, "version",
                 "unsupported calibration format version " + std::to_string(version) +
                     " (this lfd reads up to " + std::to_string(kCalibrationFormatVersion) + ")");
@@ -74,7 +74,10 @@ Calibration parse_calibration(const std::string& text, const std::string& name) 
     s.rms_periods = optional_number(r, "rms_periods", name + ": residuals").value_or(0);
     s.median_abs_periods = optional_number(r, "median_abs_periods", name + ": residuals").value_or(0);
     s.inlier_fraction = optional_number(r, "inlier_fraction", name + ": residuals").value_or(1);
-    s.count = long(optional_number(r, "count", name + ": residuals").value_or(0));
+    const double count = optional_number(r, "count", name + ": residuals").value_or(0);
+    require_field(count >= 0 && count <= 1e15 && count == std::floor(count), name,
+                  "residuals.count", "must be a whole number of samples");
+    s.count = long(count);
     c.residuals = s;
   }
   if (auto v = optional_number(root, "recommended_views", name)) {
