@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "calib/live/monitor_choice.hpp"
+#include "calib/display/monitor_choice.hpp"
 
 struct GLFWmonitor;
 

@@ -2,7 +2,7 @@
 // resolution when the name does not decide, an error listing the monitors otherwise.
 #include <gtest/gtest.h>
 
-#include "calib/live/monitor_choice.hpp"
+#include "calib/display/monitor_choice.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {

@@ -1,4 +1,4 @@
-#include "calib/live/monitor_choice.hpp"
+#include "calib/display/monitor_choice.hpp"
 
 #include <fmt/format.h>
 
