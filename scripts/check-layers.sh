@@ -9,6 +9,7 @@ cd "$(dirname "$0")/.."
 declare -A ALLOWED=(
   [util]=""
   [calib/display]="util"
+  [calib/device]="util calib/display"
   [render]="util"
   [interlace]="util calib/display render"
   [calib]="util calib/display"
@@ -16,7 +17,7 @@ declare -A ALLOWED=(
   [validate]="util calib/display render interlace calib"
   [report]="util calib/display render interlace calib validate"
   [pipeline]="util calib/display render interlace calib validate report"
-  [apps]="util calib/display render interlace calib calib/live validate report pipeline"
+  [apps]="util calib/display calib/device render interlace calib calib/live validate report pipeline"
 )
 
 # The module an include path belongs to: calib/display/x.hpp -> calib/display, calib/x.hpp -> calib.
@@ -24,6 +25,7 @@ module_of() {
   case "$1" in
     calib/display/*) echo calib/display ;;
     calib/live/*) echo calib/live ;;
+    calib/device/*) echo calib/device ;;
     *) echo "${1%%/*}" ;;
   esac
 }
