@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "calib/device/device_discovery.hpp"
 #include "util/error.hpp"
 
 namespace lfd::apps {
@@ -46,6 +47,33 @@ std::vector<double> parse_numbers(const std::string& text, char sep, size_t coun
   if (values.size() != count)
     throw_input_error("{}: '{}' has {} values, expected {}", option, text, values.size(), count);
   return values;
+}
+
+void DisplaySource::add(CLI::App& app, const std::string& file_flag, const std::string& file_help) {
+  file_flag_ = file_flag;
+  file_option = app.add_option(file_flag, file, file_help);
+  device_option = app.add_option(
+      "--device", device,
+      "read the display's calibration from an attached Looking Glass: auto (the only one) or "
+      "its serial (lfd device list)");
+  file_option->excludes(device_option);
+  app.add_option("--root", root, "--device: search paths (mount table, /media, /sys) under DIR")
+      ->needs(device_option);
+}
+
+calib::Calibration DisplaySource::load() {
+  if (!file.empty()) {
+    name_ = file;
+    return calib::read_calibration(file);
+  }
+  if (device.empty()) throw_input_error("{} or --device: one is required", file_flag_);
+  device::DiscoveryOptions options;
+  options.root = root;
+  const device::Discovery found = device::discover_devices(options);
+  const device::FoundDevice& unit = device::select_device(found, device);
+  name_ = "device " + (unit.serial.empty() ? unit.source : unit.serial);
+  std::cerr << "using the calibration of " << unit.describe() << "\n";
+  return device::calibration_of(unit);
 }
 
 }  // namespace lfd::apps

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "calib/display/calibration_file.hpp"
+
 namespace lfd::apps {
 
 // Parses argv into `app`. Returns an exit code to return immediately (help printed: 0,
@@ -15,5 +17,24 @@ std::optional<int> parse(CLI::App& app, int argc, char** argv);
 // Parses "X,Y,Z" (or "WxH" with sep 'x') into numbers; throws InputError naming `option`.
 std::vector<double> parse_numbers(const std::string& text, char sep, size_t count,
                                   const std::string& option);
+
+// Where a command's display comes from: a file (--calibration or --display) or a Looking Glass
+// attached to this machine (--device auto|SERIAL, searched under --root DIR); one or the other.
+struct DisplaySource {
+  std::string file, device, root = "/";
+  CLI::Option* file_option = nullptr;
+  CLI::Option* device_option = nullptr;
+
+  // Adds `file_flag` (e.g. "--calibration"), --device and --root; the first two exclude each other.
+  void add(CLI::App& app, const std::string& file_flag, const std::string& file_help);
+  bool given() const { return !file.empty() || !device.empty(); }
+  // Reads the file or the device; InputError when neither was given (naming `file_flag`).
+  calib::Calibration load();
+  // The file, or "device LKG-2K-04409" once loaded: for messages.
+  const std::string& name() const { return name_; }
+
+ private:
+  std::string file_flag_, name_;
+};
 
 }  // namespace lfd::apps

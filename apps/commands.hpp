@@ -15,5 +15,6 @@ int RunScene(int argc, char** argv);
 int RunBench(int argc, char** argv);
 int RunPatterns(int argc, char** argv);
 int RunCalibrate(int argc, char** argv);
+int RunDevice(int argc, char** argv);
 
 }  // namespace lfd::apps

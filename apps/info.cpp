@@ -18,15 +18,17 @@ int RunInfo(int argc, char** argv) {
                "subpixels per lens, slant, view cone, recommended view count and its rule.\n"
                "\nExamples:\n"
                "  lfd info --calibration visual.json\n"
-               "  lfd info --calibration calibration.json --json",
+               "  lfd info --calibration calibration.json --json\n"
+               "  lfd info --device auto",
                "info"};
-  std::string path;
+  DisplaySource source;
   bool json = false;
-  app.add_option("--calibration", path, "calibration.json or visual.json")->required();
+  source.add(app, "--calibration", "calibration.json or visual.json");
   app.add_flag("--json", json, "machine-readable output");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration cal = calib::read_calibration(path);
+  const calib::Calibration cal = source.load();
+  const std::string& path = source.name();
   const auto& d = cal.display;
   const calib::LensModel lens(d, cal.correction);
   const calib::ViewCountAdvice views = calib::recommend_view_count(cal);

@@ -16,13 +16,14 @@ int RunInterlace(int argc, char** argv) {
                "\nExamples:\n"
                "  lfd interlace --calibration visual.json --quilt scene_qs5x9a1.6.png --out panel.png\n"
                "  lfd interlace --calibration calibration.json --quilt q.png --cols 8 --rows 6 "
-               "--blend linear --out panel.png",
+               "--blend linear --out panel.png\n"
+               "  lfd interlace --device auto --quilt q_qs8x6a0.75.png --out panel.png",
                "interlace"};
-  std::string calibration_path, quilt_path, out_path, blend = "nearest";
+  std::string quilt_path, out_path, blend = "nearest";
   interlace::QuiltOverrides overrides;
   bool overscan = false, invert = false;
-  app.add_option("--calibration", calibration_path, "calibration.json or visual.json")
-      ->required();
+  DisplaySource source;
+  source.add(app, "--calibration", "calibration.json or visual.json");
   app.add_option("--quilt", quilt_path, "quilt image (tiling from its _qsCxRaA name)")->required();
   app.add_option("--cols", overrides.cols, "quilt columns (overrides the name)");
   app.add_option("--rows", overrides.rows, "quilt rows (overrides the name)");
@@ -35,7 +36,7 @@ int RunInterlace(int argc, char** argv) {
   app.add_option("--out", out_path, "panel image to write (PNG)")->required();
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration cal = calib::read_calibration(calibration_path);
+  const calib::Calibration cal = source.load();
   const Image8 quilt8 = read_image(quilt_path, 3);
   const render::QuiltLayout layout = interlace::resolve_quilt_layout(
       quilt_path, quilt8.width, quilt8.height, overrides,

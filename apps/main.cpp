@@ -43,6 +43,7 @@ const std::vector<Command>& commands() {
       {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
       {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
       {"compare", RunCompare, "PSNR and SSIM between two images"},
+      {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},

@@ -103,13 +103,13 @@ int RunRender(int argc, char** argv) {
                  "distance to the focal (zero-parallax) plane (default |look_at - position|)");
   auto* cone_opt = app.add_option("--view-cone", view_cone_opt,
                                   "display view cone in degrees (default 40, or the calibration's)");
-  auto* calibration_opt =
-      app.add_option("--calibration", calibration_path,
-                     "the display: visual.json or calibration.json (cone, views, grid, aspect)")
-          ->excludes(cone_opt);
+  DisplaySource display_source;
+  display_source.add(app, "--calibration",
+                     "the display: visual.json or calibration.json (cone, views, grid, aspect)");
+  display_source.file_option->excludes(cone_opt);
+  display_source.device_option->excludes(cone_opt);
   app.add_option("--panel", panel_path,
-                 "also write the quilt interlaced for the --calibration display (PNG)")
-      ->needs(calibration_opt);
+                 "also write the quilt interlaced for the --calibration (or --device) display (PNG)");
   app.add_option("--blend", blend, "--panel: view selection, nearest or linear")
       ->check(CLI::IsMember({"nearest", "linear"}))->capture_default_str();
   app.add_flag("--overscan", overscan, "--panel: fill the panel and crop instead of black bars");
@@ -122,6 +122,8 @@ int RunRender(int argc, char** argv) {
   g2lf.precision = render::parse_plane_precision(precision);
   g2lf.binning = render::parse_chunk_binning(binning);
   g2lf.check();
+  if (!panel_path.empty() && !display_source.given())
+    throw_input_error("--panel: needs the display (--calibration or --device)");
   if (view >= 0 && !panel_path.empty())
     throw_input_error("--panel: needs a whole quilt; leave out --view");
   const auto bg = parse_numbers(background_text, ',', 3, "--background");
@@ -133,8 +135,9 @@ int RunRender(int argc, char** argv) {
   // The display decides the quilt when there is one; the user's options override it.
   std::optional<calib::Calibration> calibration;
   std::optional<calib::DisplayQuilt> display_quilt;
-  if (!calibration_path.empty()) {
-    calibration = calib::read_calibration(calibration_path);
+  if (display_source.given()) {
+    calibration = display_source.load();
+    calibration_path = display_source.name();
     display_quilt = calib::quilt_for_display(*calibration, views_opt);
   }
   const int views = display_quilt ? display_quilt->views : views_opt.value_or(45);
