@@ -23,11 +23,12 @@ int RunCalibrate(int argc, char** argv) {
       "  lfd calibrate unit42 --camera camera.yaml --out unit42/calibration.json\n"
       "  lfd calibrate unit42 --out cal.json --visual-json visual.json --report unit42/report\n"
       "  lfd calibrate --live --display nominal.json --camera camera.yaml --out cal.json\n"
+      "  lfd calibrate --live --device auto --camera camera.yaml --out cal.json\n"
       "  lfd calibrate --live --display nominal.json --positions 3 --camera-index 1 \\\n"
       "      --out cal.json\n"
       "  lfd calibrate --live --simulate truth.json --display nominal.json --out cal.json",
       "calibrate"};
-  std::string dir, camera_path, display_path, out_path, visual_path, report_dir, simulate_path,
+  std::string dir, camera_path, out_path, visual_path, report_dir, simulate_path,
       monitor;
   bool force = false, live = false, keep_camera_settings = false;
   int camera_index = 0, grid = 8, positions = 1, rounds = 2;
@@ -36,8 +37,11 @@ int RunCalibrate(int argc, char** argv) {
   app.add_option("--camera", camera_path,
                  "camera intrinsics (OpenCV YAML: camera_matrix, distortion_coefficients); "
                  "without it they are self-calibrated from the board at >= 3 positions");
-  app.add_option("--display", display_path,
-                 "display description (default: the one in the pattern manifest)");
+  DisplaySource display_source;
+  display_source.add(app, "--display",
+                     "display description (default: the one in the pattern manifest); with "
+                     "--device, the unit's factory calibration is the nominal to start from",
+                     false);
   app.add_option("--out", out_path, "calibration.json to write")->required();
   app.add_option("--visual-json", visual_path, "also export the lens values as visual.json");
   app.add_option("--report", report_dir, "write the report here: index.html (result, gates, per-position tables, phase and residual maps), figures, report.json");
@@ -80,9 +84,9 @@ int RunCalibrate(int argc, char** argv) {
     lo.positions = positions;
     lo.rounds = rounds;
     lo.lock_camera_settings = !keep_camera_settings;
-    if (display_path.empty())
-      throw_input_error("--live needs --display (the nominal description to start from)");
-    const calib::Calibration nominal = calib::read_calibration(display_path);
+    if (!display_source.given())
+      throw_input_error("--live needs --display or --device (the nominal description to start from)");
+    const calib::Calibration nominal = display_source.load();
     outcome = simulate_path.empty()
                   ? calib::run_live_calibration_on_hardware(nominal, lo)
                   : calib::run_live_calibration_simulated(
@@ -90,11 +94,11 @@ int RunCalibrate(int argc, char** argv) {
   } else {
     if (dir.empty()) throw_input_error("DIR is required (or --live)");
     const calib::PatternSet set = calib::read_pattern_set(dir);
-    if (!display_path.empty()) {
-      const calib::Calibration d = calib::read_calibration(display_path);
+    if (display_source.given()) {
+      const calib::Calibration d = display_source.load();
       if (d.display.screen_w != set.nominal.display.screen_w ||
           d.display.screen_h != set.nominal.display.screen_h)
-        throw_input_error("{}: is {}x{}, the patterns were made for {}x{}", display_path,
+        throw_input_error("{}: is {}x{}, the patterns were made for {}x{}", display_source.name(),
                           d.display.screen_w, d.display.screen_h, set.nominal.display.screen_w,
                           set.nominal.display.screen_h);
     }

@@ -49,14 +49,21 @@ std::vector<double> parse_numbers(const std::string& text, char sep, size_t coun
   return values;
 }
 
-void DisplaySource::add(CLI::App& app, const std::string& file_flag, const std::string& file_help) {
+void DisplaySource::add(CLI::App& app, const std::string& file_flag, const std::string& file_help,
+                        bool required) {
   file_flag_ = file_flag;
-  file_option = app.add_option(file_flag, file, file_help);
+  file_option = app.add_option(file_flag, file, file_help + (required ? " (or --device)" : ""));
   device_option = app.add_option(
       "--device", device,
       "read the display's calibration from an attached Looking Glass: auto (the only one) or "
       "its serial (lfd device list)");
   file_option->excludes(device_option);
+  if (required) {
+    // Given --device, the file is not required: cleared while parsing, before CLI11 checks.
+    file_option->required();
+    CLI::Option* file_opt = file_option;
+    device_option->trigger_on_parse()->each([file_opt](const std::string&) { file_opt->required(false); });
+  }
   app.add_option("--root", root, "--device: search paths (mount table, /media, /sys) under DIR")
       ->needs(device_option);
 }

@@ -25,8 +25,11 @@ struct DisplaySource {
   CLI::Option* file_option = nullptr;
   CLI::Option* device_option = nullptr;
 
-  // Adds `file_flag` (e.g. "--calibration"), --device and --root; the first two exclude each other.
-  void add(CLI::App& app, const std::string& file_flag, const std::string& file_help);
+  // Adds `file_flag` (e.g. "--calibration"), --device and --root; the first two exclude each
+  // other. `required`: the file is required unless --device is given (so that a missing one is
+  // reported like any required option).
+  void add(CLI::App& app, const std::string& file_flag, const std::string& file_help,
+           bool required = true);
   bool given() const { return !file.empty() || !device.empty(); }
   // Reads the file or the device; InputError when neither was given (naming `file_flag`).
   calib::Calibration load();

@@ -16,14 +16,15 @@ int RunPatterns(int argc, char** argv) {
       "run `lfd calibrate DIR`.\n"
       "\nExamples:\n"
       "  lfd patterns --display data/displays/16in-gen2.visual.json --out unit42\n"
-      "  lfd patterns --display visual.json --out unit42 --steps 12 --force",
+      "  lfd patterns --display visual.json --out unit42 --steps 12 --force\n"
+      "  lfd patterns --device auto --out unit42   (the attached unit's factory calibration)",
       "patterns"};
-  std::string display_path, out_dir;
+  std::string out_dir;
+  DisplaySource display_source;
   calib::PatternOptions options;
   bool force = false;
-  app.add_option("--display", display_path,
-                 "nominal display: visual.json (template or factory) or calibration.json")
-      ->required();
+  display_source.add(app, "--display",
+                     "nominal display: visual.json (template or factory) or calibration.json");
   app.add_option("--out", out_dir, "output folder (patterns go to OUT/patterns)")->required();
   app.add_option("--steps", options.phase_steps, "phase-shift steps K")
       ->capture_default_str()
@@ -35,7 +36,7 @@ int RunPatterns(int argc, char** argv) {
   app.add_flag("--force", force, "replace existing patterns");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration nominal = calib::read_calibration(display_path);
+  const calib::Calibration nominal = display_source.load();
   const calib::PatternSet set = calib::plan_patterns(nominal, options);
   calib::write_pattern_set(out_dir, set, force);
   std::printf("wrote %zu patterns (%dx%d) and manifest.json to %s/patterns\n", set.patterns.size(),

@@ -105,7 +105,8 @@ int RunRender(int argc, char** argv) {
                                   "display view cone in degrees (default 40, or the calibration's)");
   DisplaySource display_source;
   display_source.add(app, "--calibration",
-                     "the display: visual.json or calibration.json (cone, views, grid, aspect)");
+                     "the display: visual.json or calibration.json (cone, views, grid, aspect)",
+                     false);
   display_source.file_option->excludes(cone_opt);
   display_source.device_option->excludes(cone_opt);
   app.add_option("--panel", panel_path,

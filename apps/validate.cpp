@@ -66,13 +66,14 @@ int RunValidate(int argc, char** argv) {
       "\nExamples:\n"
       "  lfd validate --calibration LKG-APW92011.visual.json --out report/\n"
       "  lfd validate --calibration truth.json --assumed recovered.json --views 24 --out report/\n"
-      "  lfd validate --calibration LKG-APW92011.visual.json --slant-error 0.01 --out report/",
+      "  lfd validate --calibration LKG-APW92011.visual.json --slant-error 0.01 --out report/\n"
+      "  lfd validate --device auto --slant-error 0.01 --out report/",
       "validate"};
   std::string truth_path, assumed_path, out_dir;
   validate::ProfileOptions options;
   bool json = false;
-  app.add_option("--calibration", truth_path, "TRUE calibration (calibration.json or visual.json)")
-      ->required();
+  DisplaySource truth_source;
+  truth_source.add(app, "--calibration", "TRUE calibration (calibration.json or visual.json)");
   app.add_option("--assumed", assumed_path, "calibration the interlacer uses (default: the true one)");
   validate::Miscalibration error;
   app.add_option("--slant-error", error.slant_deg,
@@ -104,7 +105,8 @@ int RunValidate(int argc, char** argv) {
   options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
   options.check();
 
-  const calib::Calibration truth = calib::read_calibration(truth_path);
+  const calib::Calibration truth = truth_source.load();
+  truth_path = truth_source.name();
   if (!sweep.empty()) return RunViewCountSweep(truth, sweep, options, out_dir, json);
   if (options.views == 0) options.views = calib::recommend_view_count(truth).views;
   if (!assumed_path.empty() && !error.empty())

@@ -151,7 +151,7 @@ TEST(DeviceCli, CalibrationAndDeviceExcludeEachOther) {
   EXPECT_NE(r.output.find("excludes"), std::string::npos) << r.output;
   const auto none = test::run_lfd("info");
   EXPECT_EQ(none.exit_code, 2) << none.output;
-  EXPECT_NE(none.output.find("--calibration or --device"), std::string::npos) << none.output;
+  EXPECT_NE(none.output.find("--calibration is required"), std::string::npos) << none.output;
 }
 
 TEST(DeviceCli, RenderAndInterlaceWithDeviceEqualThemWithTheFile) {
@@ -179,6 +179,25 @@ TEST(DeviceCli, RenderAndInterlaceWithDeviceEqualThemWithTheFile) {
                                " --out " + q(dir / "d_panel.png"));
   ASSERT_EQ(d.exit_code, 0) << d.output;
   EXPECT_EQ(bytes_of(dir / "c_panel.png"), bytes_of(dir / "d_panel.png"));
+}
+
+TEST(DeviceCli, PatternsWithDeviceEqualPatternsWithTheFile) {
+  if (test::run_lfd("patterns --help").exit_code != 0) GTEST_SKIP() << "renderer-only lfd: no patterns";
+  const fs::path root = tree_with_unit("cli_patterns");
+  const fs::path dir = root.parent_path();
+  const fs::path file = dir / "unit.visual.json";
+  test::write_file(file, small_unit_text());
+  const auto a = test::run_lfd("patterns --device auto --root " + q(root) + " --out " + q(dir / "a"));
+  ASSERT_EQ(a.exit_code, 0) << a.output;
+  const auto b = test::run_lfd("patterns --display " + q(file) + " --out " + q(dir / "b"));
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  size_t compared = 0;
+  for (const auto& e : fs::directory_iterator(dir / "b" / "patterns")) {
+    if (e.path().extension() != ".png") continue;
+    EXPECT_EQ(bytes_of(e.path()), bytes_of(dir / "a" / "patterns" / e.path().filename())) << e.path();
+    ++compared;
+  }
+  EXPECT_GT(compared, 10u);
 }
 
 TEST(DeviceCli, RenderWithDeviceOnAnEmptyRootSaysNothingFound) {
