@@ -2,6 +2,7 @@
 // and that nothing is written on failure.
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -34,9 +35,14 @@ TEST(Cli, HelpExitsZeroAndUnknownCommandTwo) {
 }
 
 TEST(Cli, MissingRequiredOptionIsExitTwo) {
-  const Result r = run("interlace --quilt q.png");
+  Result r = run("interlace --quilt q.png");  // neither --calibration nor --out
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find("required"), std::string::npos) << r.output;
+  const auto out = lfd::test::temp_dir("cli_missing_option") / "panel.png";
+  r = run("interlace --quilt q.png --out " + out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find("--calibration"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
 }
 
 TEST(Cli, MissingCalibrationFileIsNamed) {

@@ -25,11 +25,11 @@ struct Simulated {
 // The round trip's three positions, `side` times further to the side: a planar board fixes
 // the focal length only through its perspective, which views within a few degrees of head-on
 // hardly show (see DISABLED_HeadOnPositionsAreRefusedOrHonest below).
-Simulated simulate(int width_px, double side) {
+Simulated simulate(int width_px, double side, int positions = 3) {
   Simulated s;
   s.unit = make_synthetic_unit(read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
   s.set = plan_patterns(s.unit.nominal);
-  s.rig = make_capture_rig(s.unit.truth.display, width_px, 3, false);
+  s.rig = make_capture_rig(s.unit.truth.display, width_px, positions, false);
   for (CameraPose& pose : s.rig.poses) {
     pose.position_m.x() *= side;
     pose.position_m.y() *= side;
@@ -38,11 +38,6 @@ Simulated simulate(int width_px, double side) {
   return s;
 }
 
-// Three positions about 20 degrees apart, simulated once for the tests below.
-const Simulated& tilted() {
-  static const Simulated s = simulate(480, 3.0);
-  return s;
-}
 
 void expect_camera_near(const CameraIntrinsics& estimate, const CameraIntrinsics& truth, double rel) {
   const cv::Matx33d& t = truth.camera_matrix;
@@ -56,7 +51,7 @@ void expect_camera_near(const CameraIntrinsics& estimate, const CameraIntrinsics
 }
 
 TEST(CalibrateSelfCalibration, ThreePositionsWithoutIntrinsicsRecoverCameraAndLens) {
-  const Simulated& s = tilted();
+  const Simulated s = simulate(480, 3.0);  // three positions about 20 degrees apart
   const CalibrateOptions options;  // no camera: self-calibrated from the boards
   ASSERT_FALSE(options.camera);
   const CalibrationOutcome out = calibrate_display(s.set, s.captures, options);
@@ -76,10 +71,9 @@ TEST(CalibrateSelfCalibration, ThreePositionsWithoutIntrinsicsRecoverCameraAndLe
 }
 
 TEST(CalibrateSelfCalibration, FewerThanThreePositionsWithoutIntrinsicsIsRefused) {
-  const Simulated& s = tilted();
-  const std::vector<PositionCaptures> two(s.captures.begin(), s.captures.begin() + 2);
+  const Simulated s = simulate(480, 3.0, 2);
   try {
-    calibrate_display(s.set, two, CalibrateOptions{});
+    calibrate_display(s.set, s.captures, CalibrateOptions{});
     FAIL() << "calibrated two positions without intrinsics";
   } catch (const InputError& e) {
     const std::string what = e.what();

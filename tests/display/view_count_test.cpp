@@ -5,6 +5,7 @@
 #include "calib/display/view_count.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
