@@ -7,9 +7,10 @@
 #   scripts/fuzz.sh                 every target, 60 s each
 #   scripts/fuzz.sh 300 fuzz_visual_json fuzz_scene_spz
 # Environment: LFD_FUZZ_BUILD_DIR (default build-fuzz), LFD_FUZZ_JOBS (build jobs, default all
-# cores), LFD_RENDER_ONLY=ON (no OpenCV/Ceres: the scene, cam.json and display-file targets).
+# cores), LFD_RENDER_ONLY=ON (no OpenCV/Ceres: the scene, cam.json and display-file targets;
+# read when the build folder is first configured, so give it its own LFD_FUZZ_BUILD_DIR).
 # New inputs that reach new code go to $BUILD/fuzz-corpus/<target>/, not into the repo; add
-# small interesting ones to fuzz/corpus/<target>/ by hand.
+# small interesting ones to fuzz/corpus/<target>/ by hand. docs/fuzzing.md: what each covers.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
