@@ -54,7 +54,10 @@ class LensShift {
 // 1.
 std::vector<BoardDetection> detect_boards(const PatternSet& set, const PatternRoles& roles,
                                           const std::vector<PositionCaptures>& positions);
-// 2. Sets outcome.camera and outcome.camera_self_calibrated (warns on a poor self-calibration).
+// A self-calibrated focal length less certain than this (relative, 1 sigma) is refused.
+inline constexpr double kMaxSelfCalibrationFocalSigma = 0.10;
+// 2. Sets outcome.camera and outcome.camera_self_calibrated (warns on a poor self-calibration;
+// refuses boards that leave the focal length undetermined).
 void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetection>& boards,
                    const PatternSet& set, CalibrationOutcome& outcome);
 

@@ -41,10 +41,11 @@ struct ExtraPoints {
   std::vector<cv::Point2d> shift_px;  // as panel_shift_px, one per point (or empty)
 };
 
-// Intrinsics from the boards of >= 3 positions (cv::aruco::calibrateCameraCharuco).
-// Throws InputError if fewer than 3 usable boards.
+// Intrinsics from the boards of >= 3 positions (cv::calibrateCamera, k1 and k2). Throws
+// InputError if fewer than 3 usable boards. `focal_sigma_rel`: the focal length's relative
+// 1-sigma uncertainty, from the curvature of the reprojection error around the solution.
 CameraIntrinsics self_calibrate(const std::vector<BoardDetection>& boards, const PatternSet& set,
-                                double* rms_px = nullptr);
+                                double* rms_px = nullptr, double* focal_sigma_rel = nullptr);
 
 // Panel pixel (OpenCV coordinates) <-> screen (u, v) <-> display-frame metres.
 ScreenUV panel_px_to_uv(const DisplayCalibration& d, cv::Point2d px);
