@@ -2,6 +2,7 @@
 // (DESIGN section 5). Thin: the pipeline is calib::calibrate_display.
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
@@ -76,6 +77,9 @@ int RunCalibrate(int argc, char** argv) {
   options.solver.grid_nx = options.solver.grid_ny = grid < 4 ? 0 : grid;
 
   calib::CalibrationOutcome outcome;
+  // The unit's own description (its factory calibration with --device): the report compares
+  // the recovered lens with it.
+  std::optional<report::ReferenceCalibration> reference;
   if (live) {
     calib::LiveOptions lo;
     lo.calibrate = options;
@@ -87,6 +91,7 @@ int RunCalibrate(int argc, char** argv) {
     if (!display_source.given())
       throw_input_error("--live needs --display or --device (the nominal description to start from)");
     const calib::Calibration nominal = display_source.load();
+    reference = report::ReferenceCalibration{nominal, display_source.name()};
     outcome = simulate_path.empty()
                   ? calib::run_live_calibration_on_hardware(nominal, lo)
                   : calib::run_live_calibration_simulated(
@@ -96,6 +101,7 @@ int RunCalibrate(int argc, char** argv) {
     const calib::PatternSet set = calib::read_pattern_set(dir);
     if (display_source.given()) {
       const calib::Calibration d = display_source.load();
+      reference = report::ReferenceCalibration{d, display_source.name()};
       if (d.display.screen_w != set.nominal.display.screen_w ||
           d.display.screen_h != set.nominal.display.screen_h)
         throw_input_error("{}: is {}x{}, the patterns were made for {}x{}", display_source.name(),
@@ -108,7 +114,8 @@ int RunCalibrate(int argc, char** argv) {
     outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   }
   for (const auto& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
-  if (!report_dir.empty()) report::write_calibration_report(outcome, report_dir);
+  if (!report_dir.empty())
+    report::write_calibration_report(outcome, report_dir, reference ? &*reference : nullptr);
   calib::enforce_gates(outcome);
 
   const auto& c = outcome.calibration;

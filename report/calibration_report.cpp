@@ -44,6 +44,44 @@ std::string xyz(const Eigen::Vector3d& p) {
   return fmt::format("{:+.4f}, {:+.4f}, {:.4f}", p.x(), p.y(), p.z());
 }
 
+// The recovered lens against a reference calibration of the same unit (its factory
+// calibration, read from the device or a file): the difference, and in units of the recovered
+// value's 1-sigma where the solve gave one.
+std::string reference_section(const calib::Calibration& c, const ReferenceCalibration& ref) {
+  const calib::DisplayCalibration& d = c.display;
+  const calib::DisplayCalibration& f = ref.calibration.display;
+  auto row = [&](const char* name, double recovered, double factory, double difference,
+                 const char* sigma_key, int decimals) {
+    const auto it = c.uncertainty.find(sigma_key);
+    const std::string in_sigmas =
+        it != c.uncertainty.end() && it->second > 0 && std::isfinite(it->second)
+            ? fmt::format("{:.1f}", difference / it->second)
+            : std::string("n/a");
+    return fmt::format("<tr><td class=\"l\">{}</td><td>{:.{}f}</td><td>{:.{}f}</td><td>{:+.{}f}"
+                       "</td><td>{}</td></tr>\n",
+                       name, factory, decimals, recovered, decimals, difference, decimals,
+                       in_sigmas);
+  };
+  double center_difference = d.center_periods - f.center_periods;
+  center_difference -= std::round(center_difference);  // the center is a phase, modulo 1
+  std::string h = fmt::format(
+      "<h2>Against {}</h2>\n<table><tr><th class=\"l\">parameter</th><th>reference</th>"
+      "<th>recovered</th><th>difference</th><th>in 1-sigma</th></tr>\n",
+      html_escape(ref.name));
+  h += row("pitch (lenticules per inch)", d.pitch_lpi, f.pitch_lpi, d.pitch_lpi - f.pitch_lpi,
+           "pitch_lpi", 5);
+  h += row("slant from vertical (degrees)", slant_deg(d, d.slope), slant_deg(f, f.slope),
+           slant_deg(d, d.slope) - slant_deg(f, f.slope), "slant_deg", 5);
+  h += row("center (lens periods)", d.center_periods, f.center_periods, center_difference,
+           "center_periods", 4);
+  h += row("view cone (degrees)", d.view_cone_deg, f.view_cone_deg,
+           d.view_cone_deg - f.view_cone_deg, "view_cone_deg", 2);
+  h += "</table>\n<p>A difference of many sigmas means the unit has drifted from its reference "
+       "(or the reference belongs to another unit); the recovered calibration is what the "
+       "photographs show.</p>\n";
+  return h;
+}
+
 std::string result_section(const calib::CalibrationOutcome& o) {
   const calib::Calibration& c = o.calibration;
   const calib::DisplayCalibration& d = c.display;
@@ -195,7 +233,8 @@ std::string solver_section(const calib::CalibrationOutcome& o) {
   return h;
 }
 
-std::string calibration_page(const calib::CalibrationOutcome& o, const CalibrationFigures& f) {
+std::string calibration_page(const ReferenceCalibration* reference,
+                             const calib::CalibrationOutcome& o, const CalibrationFigures& f) {
   const auto& d = o.calibration.display;
   std::string h = "<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>lfd calibrate: "
                   "calibration report</title>\n" +
@@ -209,6 +248,7 @@ std::string calibration_page(const calib::CalibrationOutcome& o, const Calibrati
   h += gates_section(o);
   h += warnings_section(o, !f.drawn && !figure_files(f).empty());
   h += result_section(o);
+  if (reference) h += reference_section(o.calibration, *reference);
   h += positions_section(o);
   h += figures_section(o, f);
   h += solver_section(o);
@@ -218,14 +258,18 @@ std::string calibration_page(const calib::CalibrationOutcome& o, const Calibrati
 }  // namespace
 
 std::filesystem::path write_calibration_report(const calib::CalibrationOutcome& outcome,
-                                               const std::filesystem::path& dir) {
+                                               const std::filesystem::path& dir,
+                                               const ReferenceCalibration* reference) {
   std::filesystem::create_directories(dir);
   const CalibrationFigures figures = draw_calibration_figures(outcome, dir);
   nlohmann::ordered_json j = calib::outcome_report(outcome);
   j["figures"] = figures.drawn ? figure_files(figures) : std::vector<std::string>{};
+  if (reference)
+    j["reference"] = {{"name", reference->name},
+                      {"calibration", calib::to_json(reference->calibration)}};
   write_text_atomic(dir / "report.json", j.dump(2) + "\n");
   const auto index = dir / "index.html";
-  write_text_atomic(index, calibration_page(outcome, figures));
+  write_text_atomic(index, calibration_page(reference, outcome, figures));
   return index;
 }
 

@@ -111,6 +111,27 @@ TEST(CalibrationReport, PageNamesEveryPositionAndFigure) {
   fs::remove_all(dir);
 }
 
+// With the unit's factory calibration (from --device or --display), the page and report.json
+// compare the recovered lens with it: the differences, and in units of the recovered sigmas.
+TEST(CalibrationReport, ComparesWithTheFactoryCalibration) {
+  const calib::CalibrationOutcome outcome = outcome_with_two_positions();
+  ReferenceCalibration factory{outcome.calibration, "the factory calibration (device TEST-1)"};
+  factory.calibration.display.pitch_lpi = outcome.calibration.display.pitch_lpi - 0.25;
+  factory.calibration.display.center_periods = outcome.calibration.display.center_periods + 0.98;
+  const fs::path dir = test::temp_dir("calibration_report_factory");
+  write_calibration_report(outcome, dir, &factory);
+  const std::string html = read_file(dir / "index.html");
+  EXPECT_NE(html.find("Against the factory calibration (device TEST-1)"), std::string::npos);
+  EXPECT_NE(html.find("+0.25000"), std::string::npos) << "the pitch difference";
+  EXPECT_NE(html.find("+0.0200"), std::string::npos) << "the center difference, modulo 1";
+  const auto j = nlohmann::json::parse(read_file(dir / "report.json"));
+  EXPECT_EQ(j["reference"]["name"], "the factory calibration (device TEST-1)");
+  // Without one the page has no comparison.
+  write_calibration_report(outcome, dir);
+  EXPECT_EQ(read_file(dir / "index.html").find("Against"), std::string::npos);
+  fs::remove_all(dir);
+}
+
 TEST(CalibrationReport, EveryFigureOnThePageIsAReadablePng) {
   REQUIRE_GNUPLOT();
   const fs::path dir = test::temp_dir("calibration_report_png");
