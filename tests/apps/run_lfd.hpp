@@ -12,16 +12,20 @@ struct RunResult {
   std::string output;  // stdout + stderr
 };
 
-inline RunResult run_lfd(const std::string& args) {
+// Runs a shell command line (stdout + stderr captured).
+inline RunResult run_command(const std::string& command) {
   RunResult r;
-  const std::string cmd = std::string(LFD_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
   if (!pipe) return r;
   std::array<char, 4096> buf;
   while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
   const int status = pclose(pipe);
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+inline RunResult run_lfd(const std::string& args) {
+  return run_command(std::string(LFD_EXE) + " " + args);
 }
 
 }  // namespace lfd::test

@@ -32,18 +32,6 @@ std::string data_folder(const std::string& output) {
   return output.substr(begin, output.find('\n', begin) - begin);
 }
 
-// Runs `command` (a program other than LFD_EXE, with environment settings in front).
-lfd::test::RunResult run_command(const std::string& command) {
-  lfd::test::RunResult r;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
 TEST(VersionCli, VersionFlagPrintsOneVersionLineAndExitsZero) {
   const auto r = lfd::test::run_lfd("--version");
   EXPECT_EQ(r.exit_code, 0);
@@ -81,12 +69,12 @@ TEST(VersionCli, InstalledProgramFindsShareLfdBesideItsBinFolder) {
   if (ec) fs::copy_file(LFD_EXE, prefix / "bin/lfd");
   const std::string exe = (prefix / "bin/lfd").string();
 
-  const auto installed = run_command(exe + " version");
+  const auto installed = lfd::test::run_command(exe + " version");
   EXPECT_EQ(installed.exit_code, 0);
   EXPECT_EQ(data_folder(installed.output), (prefix / "share/lfd").string()) << installed.output;
 
   // $LFD_DATA_DIR overrides it.
-  const auto overridden = run_command("LFD_DATA_DIR=/opt/lfd-data " + exe + " version");
+  const auto overridden = lfd::test::run_command("LFD_DATA_DIR=/opt/lfd-data " + exe + " version");
   EXPECT_EQ(data_folder(overridden.output), "/opt/lfd-data") << overridden.output;
   fs::remove_all(prefix);
 }
