@@ -1,0 +1,58 @@
+#pragma once
+// Headless OpenGL 4.5 core contexts through EGL (DESIGN section 7): the EGL device platform
+// (EGL_EXT_platform_device; NVIDIA's driver without an X server) or Mesa's surfaceless platform
+// (llvmpipe on machines without a GPU). Rendering goes to framebuffer objects only, so no
+// surface is needed. Windows (GLFW) make their own context and use the same renderer code.
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "util/error.hpp"
+
+namespace lfd::gpu {
+
+// No usable OpenGL 4.5 core context: an input error (exit 2) with the reason on one line.
+class GlUnavailable : public InputError {
+ public:
+  using InputError::InputError;
+};
+
+// What the current context is (for notices, reports and memory checks).
+struct GlInfo {
+  std::string vendor, renderer, version;
+  std::string platform;          // "EGL device", "EGL surfaceless", "GLFW window"
+  bool software = false;         // llvmpipe/softpipe: report ratios only
+  long long max_ssbo_bytes = 0;  // GL_MAX_SHADER_STORAGE_BLOCK_SIZE
+  int max_texture_size = 0;
+  int max_array_layers = 0;
+  // Free GPU memory when the driver says (NVX/ATI meminfo); none on llvmpipe.
+  std::optional<long long> free_memory_bytes;
+  std::string summary() const;  // "NVIDIA H100 (OpenGL 4.5.0 NVIDIA ..., EGL device)"
+};
+
+// Reads GlInfo from the context current on this thread.
+GlInfo query_gl_info(const std::string& platform);
+
+class HeadlessContext {
+ public:
+  // Tries the EGL device platform, then the surfaceless platform (EGL_PLATFORM=surfaceless
+  // tries it first). Throws GlUnavailable naming what each try gave.
+  HeadlessContext();
+  ~HeadlessContext();
+  HeadlessContext(const HeadlessContext&) = delete;
+  HeadlessContext& operator=(const HeadlessContext&) = delete;
+
+  void make_current() const;
+  const GlInfo& info() const { return info_; }
+
+ private:
+  void* display_ = nullptr;  // EGLDisplay
+  void* context_ = nullptr;  // EGLContext
+  GlInfo info_;
+};
+
+// Whether a headless context can be made here; `why` gets the reason when not. Makes (and
+// drops) a context, so call it once, e.g. for `--backend auto`.
+bool headless_gl_available(std::string* why = nullptr);
+
+}  // namespace lfd::gpu

@@ -1,0 +1,275 @@
+#include "gpu/gl_objects.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace lfd::gpu {
+namespace {
+
+std::atomic<size_t> g_bytes{0};
+std::atomic<size_t> g_peak{0};
+
+void count_alloc(size_t bytes) {
+  const size_t now = g_bytes += bytes;
+  size_t peak = g_peak.load();
+  while (now > peak && !g_peak.compare_exchange_weak(peak, now)) {
+  }
+}
+void count_free(size_t bytes) { g_bytes -= bytes; }
+
+const char* gl_error_name(GLenum e) {
+  switch (e) {
+    case GL_INVALID_ENUM: return "GL_INVALID_ENUM";
+    case GL_INVALID_VALUE: return "GL_INVALID_VALUE";
+    case GL_INVALID_OPERATION: return "GL_INVALID_OPERATION";
+    case GL_INVALID_FRAMEBUFFER_OPERATION: return "GL_INVALID_FRAMEBUFFER_OPERATION";
+    case GL_OUT_OF_MEMORY: return "GL_OUT_OF_MEMORY";
+    default: return "GL error";
+  }
+}
+
+}  // namespace
+
+void check_gl(const char* what) {
+  const GLenum e = glGetError();
+  if (e == GL_NO_ERROR) return;
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  throw std::runtime_error(fmt::format("{} (0x{:x}) after {}", gl_error_name(e), e, what));
+}
+
+void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+void delete_program(GLuint id) { glDeleteProgram(id); }
+void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+
+size_t gpu_bytes_allocated() { return g_bytes.load(); }
+size_t gpu_bytes_peak() { return g_peak.load(); }
+void reset_gpu_peak() { g_peak = g_bytes.load(); }
+
+// ---- Buffer ----
+
+Buffer::Buffer(size_t bytes, const void* data) {
+  ensure(std::max<size_t>(bytes, 4));
+  if (data && bytes) upload(data, bytes);
+}
+
+Buffer::Buffer(Buffer&& o) noexcept : name_(std::move(o.name_)), bytes_(std::exchange(o.bytes_, 0)) {}
+
+Buffer& Buffer::operator=(Buffer&& o) noexcept {
+  if (this != &o) {
+    count_free(bytes_);
+    name_ = std::move(o.name_);
+    bytes_ = std::exchange(o.bytes_, 0);
+  }
+  return *this;
+}
+
+Buffer::~Buffer() { count_free(bytes_); }
+
+void Buffer::ensure(size_t bytes) {
+  if (name_ && bytes <= bytes_) return;
+  count_free(bytes_);
+  name_.reset();
+  bytes_ = 0;
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  name_ = GlName<delete_buffer>(id);
+  glNamedBufferStorage(id, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw std::runtime_error(fmt::format("GPU out of memory allocating a {:.1f} MiB buffer",
+                                         bytes / 1048576.0));
+  bytes_ = bytes;
+  count_alloc(bytes_);
+}
+
+void Buffer::upload(const void* data, size_t bytes, size_t offset) {
+  if (!data || !bytes) return;
+  if (offset + bytes > bytes_) throw std::logic_error("Buffer::upload past the end");
+  glNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+}
+
+void Buffer::download(void* data, size_t bytes, size_t offset) const {
+  if (!bytes) return;
+  if (offset + bytes > bytes_) throw std::logic_error("Buffer::download past the end");
+  glGetNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
+}
+
+void Buffer::bind_storage(GLuint binding) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, id());
+}
+
+// ---- Texture ----
+
+size_t bytes_per_texel(GLenum f) {
+  switch (f) {
+    case GL_RGBA8: case GL_R32F: case GL_R32UI: case GL_RGBA8UI: case GL_RG16F: return 4;
+    case GL_RGBA16F: case GL_RG32F: return 8;
+    case GL_RGBA32F: return 16;
+    case GL_R8: return 1;
+    case GL_R16F: case GL_RG8: return 2;
+    default: return 16;
+  }
+}
+
+Texture::Texture(GLenum internal_format, int width, int height, int layers)
+    : format_(internal_format), width_(width), height_(height), layers_(layers) {
+  GLuint id = 0;
+  glCreateTextures(layers ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D, 1, &id);
+  name_ = GlName<delete_texture>(id);
+  if (layers)
+    glTextureStorage3D(id, 1, internal_format, width, height, layers);
+  else
+    glTextureStorage2D(id, 1, internal_format, width, height);
+  if (const GLenum e = glGetError(); e != GL_NO_ERROR)
+    throw std::runtime_error(fmt::format(
+        "GPU could not allocate a {}x{}x{} texture ({:.1f} MiB): {}", width, height,
+        std::max(layers, 1), double(width) * height * std::max(layers, 1) * bytes_per_texel(internal_format) / 1048576.0,
+        gl_error_name(e)));
+  bytes_ = size_t(width) * height * std::max(layers, 1) * bytes_per_texel(internal_format);
+  count_alloc(bytes_);
+  set_filter(GL_NEAREST);
+}
+
+Texture::Texture(Texture&& o) noexcept
+    : name_(std::move(o.name_)), format_(o.format_), width_(o.width_), height_(o.height_),
+      layers_(o.layers_), bytes_(std::exchange(o.bytes_, 0)) {}
+
+Texture& Texture::operator=(Texture&& o) noexcept {
+  if (this != &o) {
+    count_free(bytes_);
+    name_ = std::move(o.name_);
+    format_ = o.format_;
+    width_ = o.width_;
+    height_ = o.height_;
+    layers_ = o.layers_;
+    bytes_ = std::exchange(o.bytes_, 0);
+  }
+  return *this;
+}
+
+Texture::~Texture() { count_free(bytes_); }
+
+void Texture::set_filter(GLenum min_mag) const {
+  glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(min_mag));
+  glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(min_mag));
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+std::vector<float> read_texture_rgba(const Texture& texture, int layer) {
+  const size_t count = size_t(texture.width()) * texture.height() * 4;
+  std::vector<float> out(count);
+  glGetTextureSubImage(texture.id(), 0, 0, 0, texture.layers() ? layer : 0, texture.width(),
+                       texture.height(), 1, GL_RGBA, GL_FLOAT, GLsizei(count * sizeof(float)),
+                       out.data());
+  check_gl("reading a texture back");
+  return out;
+}
+
+// ---- Framebuffer, VertexArray ----
+
+Framebuffer::Framebuffer() {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  name_ = GlName<delete_framebuffer>(id);
+}
+
+void Framebuffer::attach(int index, const Texture& texture) const {
+  glNamedFramebufferTexture(id(), GLenum(GL_COLOR_ATTACHMENT0 + index), texture.id(), 0);
+}
+
+void Framebuffer::finish(int count) const {
+  std::vector<GLenum> buffers;
+  for (int i = 0; i < count; ++i) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + i));
+  glNamedFramebufferDrawBuffers(id(), GLsizei(buffers.size()), buffers.data());
+  const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error(fmt::format("framebuffer incomplete (0x{:x})", status));
+}
+
+VertexArray::VertexArray() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  name_ = GlName<delete_vertex_array>(id);
+}
+
+// ---- Program ----
+
+Program::Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
+                 const std::vector<std::string>& defines)
+    : label_(label) {
+  std::string header = "#version 450 core\n";
+  for (const std::string& d : defines) header += "#define " + d + "\n";
+  header += "#line 1\n";
+  const GLuint program = glCreateProgram();
+  name_ = GlName<delete_program>(program);
+  std::vector<GLuint> shaders;
+  for (const auto& [type, source] : stages) {
+    const GLuint shader = glCreateShader(type);
+    const char* parts[] = {header.c_str(), source};
+    glShaderSource(shader, 2, parts, nullptr);
+    glCompileShader(shader);
+    GLint ok = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      GLint length = 0;
+      glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+      std::string log(size_t(std::max(length, 1)), '\0');
+      glGetShaderInfoLog(shader, length, nullptr, log.data());
+      glDeleteShader(shader);
+      for (GLuint s : shaders) glDeleteShader(s);
+      throw std::runtime_error(fmt::format("shader '{}' does not compile: {}", label, log.c_str()));
+    }
+    glAttachShader(program, shader);
+    shaders.push_back(shader);
+  }
+  glLinkProgram(program);
+  for (GLuint s : shaders) glDeleteShader(s);
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    throw std::runtime_error(fmt::format("program '{}' does not link: {}", label, log.c_str()));
+  }
+}
+
+void Program::use() const { glUseProgram(id()); }
+
+GLint Program::uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+
+void Program::dispatch_1d(size_t items, int local_size) const {
+  const size_t groups = (items + size_t(local_size) - 1) / size_t(local_size);
+  if (groups == 0) return;
+  // Beyond the 65535-group limit of one dimension, spread over y (shaders use gl_NumWorkGroups).
+  const GLuint x = GLuint(std::min<size_t>(groups, 65535));
+  const GLuint y = GLuint((groups + 65534) / 65535);
+  glDispatchCompute(x, y, 1);
+}
+
+// ---- GpuTimer ----
+
+GpuTimer::GpuTimer() {
+  GLuint id = 0;
+  glCreateQueries(GL_TIME_ELAPSED, 1, &id);
+  name_ = GlName<delete_query>(id);
+}
+
+void GpuTimer::begin() const { glBeginQuery(GL_TIME_ELAPSED, name_.id()); }
+void GpuTimer::end() const { glEndQuery(GL_TIME_ELAPSED); }
+
+double GpuTimer::seconds() const {
+  GLuint64 ns = 0;
+  glGetQueryObjectui64v(name_.id(), GL_QUERY_RESULT, &ns);
+  return double(ns) * 1e-9;
+}
+
+}  // namespace lfd::gpu
