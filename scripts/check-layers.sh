@@ -13,12 +13,13 @@ declare -A ALLOWED=(
   [render]="util"
   [interlace]="util calib/display render"
   [gpu]="util calib/display render interlace"
+  [viewer]="util calib/display render interlace gpu"
   [calib]="util calib/display"
-  [calib/live]="util calib/display calib"
+  [calib/live]="util calib/display render interlace gpu calib"
   [validate]="util calib/display render interlace calib"
   [report]="util calib/display render interlace calib validate"
   [pipeline]="util calib/display render interlace gpu calib validate report"
-  [apps]="util calib/display calib/device render interlace gpu calib calib/live validate report pipeline"
+  [apps]="util calib/display calib/device render interlace gpu viewer calib calib/live validate report pipeline"
 )
 
 # The module an include path belongs to: calib/display/x.hpp -> calib/display, calib/x.hpp -> calib.

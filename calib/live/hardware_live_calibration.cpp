@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "calib/live/console_prompt.hpp"
-#include "calib/live/glfw_session.hpp"
+#include "gpu/glfw_session.hpp"
 #include "calib/live/pattern_window.hpp"
 #include "calib/live/video_capture_source.hpp"
 #include "util/error.hpp"
@@ -37,7 +37,9 @@ CalibrationOutcome run_live_calibration_on_hardware(const Calibration& nominal,
         "(--positions 3)",
         options.positions);
 
-  const GlfwSession glfw;  // "no display: ..." first: nothing to show the patterns on
+  const gpu::GlfwSession glfw(
+      "--live shows the patterns on the display's monitor, so run it in the desktop session the "
+      "display is connected to (or use --simulate)");  // "no display: ..." first: nothing to show the patterns on
   GLFWmonitor* monitor = glfw.find_display_monitor(options.monitor_prefix, d.screen_w, d.screen_h);
 
   VideoCaptureOptions vo;

@@ -62,7 +62,7 @@ void on_key(GLFWwindow* window, int key, int, int action, int) {
 
 }  // namespace
 
-PatternWindow::PatternWindow(const GlfwSession&, GLFWmonitor* monitor, int width_px,
+PatternWindow::PatternWindow(const gpu::GlfwSession&, GLFWmonitor* monitor, int width_px,
                              int height_px, std::chrono::milliseconds settle)
     : width_(width_px), height_(height_px), settle_(settle) {
   const GLFWvidmode* mode = glfwGetVideoMode(monitor);
@@ -92,7 +92,7 @@ PatternWindow::PatternWindow(const GlfwSession&, GLFWmonitor* monitor, int width
   window_ = glfwCreateWindow(width_px, height_px, "lfd calibrate --live", monitor, nullptr);
   if (!window_)
     throw_input_error("cannot open a full-screen OpenGL 3.3 core window on \"{}\": {}",
-                      name ? name : "", GlfwSession::last_error());
+                      name ? name : "", gpu::GlfwSession::last_error());
   int fb_w = 0, fb_h = 0;
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
   if (fb_w != width_px || fb_h != height_px) {

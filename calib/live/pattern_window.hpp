@@ -6,7 +6,7 @@
 // different phase pattern.
 #include <chrono>
 
-#include "calib/live/glfw_session.hpp"
+#include "gpu/glfw_session.hpp"
 #include "calib/live_devices.hpp"
 
 struct GLFWwindow;
@@ -15,11 +15,11 @@ namespace lfd::calib {
 
 class PatternWindow : public PatternDisplay {
  public:
-  // Opens the window on `monitor` (GlfwSession::find_display_monitor), which must be
+  // Opens the window on `monitor` (gpu::GlfwSession::find_display_monitor), which must be
   // width_px x height_px with a framebuffer of that size (no desktop scaling). `settle` is
   // how long show() waits once the pattern is on screen (the panel's response). Throws
   // InputError when the window or a GL 3.3 core context cannot be made.
-  PatternWindow(const GlfwSession& session, GLFWmonitor* monitor, int width_px, int height_px,
+  PatternWindow(const gpu::GlfwSession& session, GLFWmonitor* monitor, int width_px, int height_px,
                 std::chrono::milliseconds settle = std::chrono::milliseconds(0));
   ~PatternWindow() override;
   PatternWindow(const PatternWindow&) = delete;

@@ -3,7 +3,7 @@
 // calibration recovers the truth only if the window showed each pattern exactly.
 #include <gtest/gtest.h>
 
-#include "calib/live/glfw_session.hpp"
+#include "gpu/glfw_session.hpp"
 #include "calib/live/pattern_window.hpp"
 #include "calib/live_calibration.hpp"
 #include "calib/simulated_live_devices.hpp"
@@ -16,7 +16,7 @@ namespace {
 TEST(LiveCalibrationOnScreen, RecoversTheTruthFromPhotographsOfTheWindow) {
   const SyntheticUnit unit = make_synthetic_unit(read_visual_json(test::live_test_display()));
   const DisplayCalibration& d = unit.truth.display;
-  const GlfwSession glfw;
+  const gpu::GlfwSession glfw;
   PatternWindow window(glfw, glfw.find_display_monitor("LKG", d.screen_w, d.screen_h),
                        d.screen_w, d.screen_h);
   // The sizes and bounds of the simulated live test (calibrate_live_test.cpp), in one round:

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/live/glfw_session.hpp"
+#include "gpu/glfw_session.hpp"
 #include "calib/live/pattern_window.hpp"
 #include "calib/patterns.hpp"
 #include "calib/display/visual_json.hpp"
@@ -33,7 +33,7 @@ long differing_bytes(const Image8& a, const Image8& b) {
 
 TEST(PatternWindow, ShowsThePatternByteForByteOnTheWholeScreen) {
   const DisplayCalibration d = read_visual_json(test::live_test_display());
-  const GlfwSession glfw;
+  const gpu::GlfwSession glfw;
   // Xvfb's monitor is not named LKG...: the resolution finds it.
   PatternWindow window(glfw, glfw.find_display_monitor("LKG", d.screen_w, d.screen_h),
                        d.screen_w, d.screen_h);
@@ -49,7 +49,7 @@ TEST(PatternWindow, ShowsThePatternByteForByteOnTheWholeScreen) {
 }
 
 TEST(PatternWindow, FindsItsMonitorByNamePrefix) {
-  const GlfwSession glfw;
+  const gpu::GlfwSession glfw;
   const auto monitors = glfw.monitors();
   ASSERT_FALSE(monitors.empty());
   ASSERT_FALSE(monitors[0].name.empty());
@@ -58,7 +58,7 @@ TEST(PatternWindow, FindsItsMonitorByNamePrefix) {
 }
 
 TEST(PatternWindow, NoMonitorOfTheDisplaysSizeIsAnInputErrorListingTheMonitors) {
-  const GlfwSession glfw;
+  const gpu::GlfwSession glfw;
   const auto monitors = glfw.monitors();
   ASSERT_FALSE(monitors.empty());
   try {
@@ -77,7 +77,7 @@ TEST(PatternWindow, NoMonitorOfTheDisplaysSizeIsAnInputErrorListingTheMonitors) 
 
 TEST(PatternWindow, RefusesAPatternOfAnotherSize) {
   const DisplayCalibration d = read_visual_json(test::live_test_display());
-  const GlfwSession glfw;
+  const gpu::GlfwSession glfw;
   PatternWindow window(glfw, glfw.find_display_monitor("LKG", d.screen_w, d.screen_h),
                        d.screen_w, d.screen_h);
   EXPECT_THROW(window.show(Image8(d.screen_w / 2, d.screen_h, 3)), InputError);

@@ -1,10 +1,10 @@
-#include "calib/live/glfw_session.hpp"
+#include "gpu/glfw_session.hpp"
 
 #include <GLFW/glfw3.h>
 
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::gpu {
 namespace {
 
 std::string& last_glfw_error() {
@@ -18,14 +18,12 @@ void remember_error(int, const char* description) {
 
 }  // namespace
 
-GlfwSession::GlfwSession() {
+GlfwSession::GlfwSession(const std::string& hint) {
   glfwSetErrorCallback(remember_error);
   last_glfw_error().clear();
   if (!glfwInit())
-    throw_input_error(
-        "no display: {}; --live shows the patterns on the display's monitor, so run it in the "
-        "desktop session the display is connected to (or use --simulate)",
-        last_error().empty() ? "GLFW could not start" : last_error());
+    throw_input_error("no display: {}; {}",
+                      last_error().empty() ? "GLFW could not start" : last_error(), hint);
 }
 
 GlfwSession::~GlfwSession() { glfwTerminate(); }
@@ -51,7 +49,7 @@ std::vector<MonitorInfo> GlfwSession::monitors() const {
 
 GLFWmonitor* GlfwSession::find_display_monitor(const std::string& name_prefix, int width_px,
                                                int height_px) const {
-  const size_t index = choose_monitor(monitors(), name_prefix, width_px, height_px);
+  const size_t index = calib::choose_monitor(monitors(), name_prefix, width_px, height_px);
   int count = 0;
   GLFWmonitor** handles = glfwGetMonitors(&count);
   if (int(index) >= count)  // unplugged just now
@@ -59,4 +57,4 @@ GLFWmonitor* GlfwSession::find_display_monitor(const std::string& name_prefix, i
   return handles[index];
 }
 
-}  // namespace lfd::calib
+}  // namespace lfd::gpu

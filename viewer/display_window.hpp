@@ -1,0 +1,48 @@
+#pragma once
+// The window that shows the interlaced panel. On the display's monitor: borderless full screen
+// at the panel's native resolution, one framebuffer pixel per panel pixel (anything else
+// scrambles the views, so a scaled or non-native mode is refused). Without a display: a normal
+// window showing the panel fitted, as a simulated display. It owns the GL 4.5 core context every
+// renderer of the viewer draws with; the control window shares its textures.
+#include <memory>
+#include <vector>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/glfw_session.hpp"
+#include "util/image.hpp"
+
+struct GLFWwindow;
+struct GLFWmonitor;
+
+namespace lfd::viewer {
+
+class DisplayWindow {
+ public:
+  // `monitor` null: the simulated display window (panel fitted in at most `max_window_px`).
+  // Throws InputError naming the monitor and its mode when the framebuffer does not come out at
+  // the panel's size, and "no GL: ..." when no GL 4.5 core context can be made.
+  DisplayWindow(const gpu::GlfwSession& session, GLFWmonitor* monitor, int panel_w, int panel_h,
+                int max_window_px = 1024);
+  ~DisplayWindow();
+  DisplayWindow(const DisplayWindow&) = delete;
+  DisplayWindow& operator=(const DisplayWindow&) = delete;
+
+  GLFWwindow* handle() const { return window_; }
+  bool on_display() const { return on_display_; }
+  void make_current() const;
+  bool should_close() const;
+  // Draws the panel texture (panel-size) into the back buffer: 1:1 on the display, fitted
+  // (linear filter, black bars) in the simulated window.
+  void draw(const gpu::Texture& panel);
+  // What draw() put in the back buffer, rows top-down (the screenshot of the window).
+  Image8 read_back_buffer() const;
+  void swap();
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  bool on_display_ = false;
+  int panel_w_ = 0, panel_h_ = 0;
+  std::unique_ptr<gpu::Framebuffer> read_fbo_;  // reads the panel texture for the blit
+};
+
+}  // namespace lfd::viewer
