@@ -1,0 +1,33 @@
+// Radix sort pass 2 (gpu/gl_radix_sort.hpp): one work group per digit turns its row of block
+// counts into exclusive offsets and writes the digit's total.
+layout(local_size_x = 256) in;
+
+layout(std430, binding = 1) buffer BlockCounts { uint block_counts[]; };
+layout(std430, binding = 2) writeonly buffer DigitTotals { uint digit_totals[]; };
+
+uniform uint block_count;
+
+shared uint partial[256];
+
+void main() {
+  uint tid = gl_LocalInvocationID.x;
+  uint row = gl_WorkGroupID.x * block_count;
+  uint carry = 0u;
+  for (uint base = 0u; base < block_count; base += 256u) {
+    uint i = base + tid;
+    uint v = i < block_count ? block_counts[row + i] : 0u;
+    partial[tid] = v;
+    barrier();
+    // Hillis-Steele inclusive scan of 256 values.
+    for (uint offset = 1u; offset < 256u; offset <<= 1) {
+      uint add = tid >= offset ? partial[tid - offset] : 0u;
+      barrier();
+      partial[tid] += add;
+      barrier();
+    }
+    if (i < block_count) block_counts[row + i] = carry + partial[tid] - v;
+    carry += partial[255];
+    barrier();
+  }
+  if (tid == 0u) digit_totals[gl_WorkGroupID.x] = carry;
+}

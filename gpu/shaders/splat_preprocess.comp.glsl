@@ -1,0 +1,162 @@
+// Per-Gaussian preprocess: the GLSL twin of render/preprocess.cpp (forward.cu preprocessCUDA;
+// reference/gaussian-splatting.md section 3). Written operation for operation as the CPU code so
+// the two agree to rounding; `precise` keeps the compiler from fusing multiply-adds where an
+// integer (radius, tile rectangle) is derived from the result.
+// Needs splat_record.glsl prepended.
+layout(local_size_x = 128) in;
+
+layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
+layout(std430, binding = 1) readonly buffer Scales { vec4 scales[]; };
+layout(std430, binding = 2) readonly buffer Rotations { vec4 rotations[]; };  // w, x, y, z
+layout(std430, binding = 3) readonly buffer Sh { vec4 sh[]; };
+layout(std430, binding = 4) writeonly buffer Records { SplatRecord records[]; };
+layout(std430, binding = 5) writeonly buffer Keys { uint keys[]; };
+layout(std430, binding = 6) writeonly buffer Values { uint values[]; };
+layout(std430, binding = 7) buffer Draw { uint draw_count; uint draw_instances; uint draw_first; uint draw_base; };
+
+uniform uint gaussian_count;
+uniform mat3 world_to_camera;
+uniform vec3 camera_position;
+uniform vec2 tan_half_fov;
+uniform vec2 focal_px;
+uniform vec2 shift_ndc;
+uniform ivec2 image_size;
+uniform ivec2 tile_grid;
+uniform float dilation_px2;
+uniform float scale_modifier;
+uniform int sh_degree;
+uniform int sh_stride;  // vec4s per Gaussian
+uniform vec3 sh_origin;
+
+const int kTileSize = 16;
+
+// Section 3.2: Sigma = R S S^T R^T of the unit quaternion (w, x, y, z); R in GLSL column order.
+mat3 covariance_3d(vec3 scale, vec4 q) {
+  float r = q.x, x = q.y, y = q.z, z = q.w;
+  mat3 R;
+  R[0] = vec3(1.0 - 2.0 * (y * y + z * z), 2.0 * (x * y + r * z), 2.0 * (x * z - r * y));
+  R[1] = vec3(2.0 * (x * y - r * z), 1.0 - 2.0 * (x * x + z * z), 2.0 * (y * z + r * x));
+  R[2] = vec3(2.0 * (x * z + r * y), 2.0 * (y * z - r * x), 1.0 - 2.0 * (x * x + y * y));
+  mat3 S = mat3(0.0);
+  S[0][0] = scale_modifier * scale.x;
+  S[1][1] = scale_modifier * scale.y;
+  S[2][2] = scale_modifier * scale.z;
+  mat3 M = R * S;
+  return M * transpose(M);
+}
+
+// Section 3.3 with the principal-point shift (the clamp window follows the shifted frustum,
+// 0.3 tan beyond each side; the reference's 1.3 tan when the shift is 0).
+vec3 covariance_2d(vec3 t, mat3 cov3d) {
+  float lim_x_pos = (1.0 - shift_ndc.x) * tan_half_fov.x + 0.3 * tan_half_fov.x;
+  float lim_x_neg = (1.0 + shift_ndc.x) * tan_half_fov.x + 0.3 * tan_half_fov.x;
+  float lim_y_pos = (1.0 - shift_ndc.y) * tan_half_fov.y + 0.3 * tan_half_fov.y;
+  float lim_y_neg = (1.0 + shift_ndc.y) * tan_half_fov.y + 0.3 * tan_half_fov.y;
+  float txtz = t.x / t.z, tytz = t.y / t.z;
+  t.x = min(lim_x_pos, max(-lim_x_neg, txtz)) * t.z;
+  t.y = min(lim_y_pos, max(-lim_y_neg, tytz)) * t.z;
+  mat3 J = mat3(0.0);  // J[col][row]
+  J[0][0] = focal_px.x / t.z;
+  J[2][0] = -(focal_px.x * t.x) / (t.z * t.z);
+  J[1][1] = focal_px.y / t.z;
+  J[2][1] = -(focal_px.y * t.y) / (t.z * t.z);
+  mat3 T = J * world_to_camera;
+  mat3 cov = T * cov3d * transpose(T);
+  return vec3(cov[0][0] + dilation_px2, cov[1][0], cov[1][1] + dilation_px2);
+}
+
+// SH coefficient k (RGB) of Gaussian g: floats 3k..3k+2 of its vec4-packed block.
+vec3 sh_coefficient(uint g, int k) {
+  uint base = g * uint(sh_stride);
+  int f = 3 * k;
+  return vec3(sh[base + uint(f >> 2)][f & 3], sh[base + uint((f + 1) >> 2)][(f + 1) & 3],
+              sh[base + uint((f + 2) >> 2)][(f + 2) & 3]);
+}
+
+// Section 6 (forward.cu computeColorFromSH), as render/spherical_harmonics.cpp.
+vec3 sh_color(uint g, vec3 dir) {
+  const float C0 = 0.28209479177387814;
+  const float C1 = 0.4886025119029199;
+  const float C2[5] = float[5](1.0925484305920792, -1.0925484305920792, 0.31539156525252005,
+                               -1.0925484305920792, 0.5462742152960396);
+  const float C3[7] = float[7](-0.5900435899266435, 2.890611442640554, -0.4570457994644658,
+                               0.3731763325901154, -0.4570457994644658, 1.445305721320277,
+                               -0.5900435899266435);
+  vec3 result = C0 * sh_coefficient(g, 0);
+  if (sh_degree > 0) {
+    float x = dir.x, y = dir.y, z = dir.z;
+    result = result - C1 * y * sh_coefficient(g, 1) + C1 * z * sh_coefficient(g, 2) -
+             C1 * x * sh_coefficient(g, 3);
+    if (sh_degree > 1) {
+      float xx = x * x, yy = y * y, zz = z * z;
+      float xy = x * y, yz = y * z, xz = x * z;
+      result = result + C2[0] * xy * sh_coefficient(g, 4) + C2[1] * yz * sh_coefficient(g, 5) +
+               C2[2] * (2.0 * zz - xx - yy) * sh_coefficient(g, 6) +
+               C2[3] * xz * sh_coefficient(g, 7) + C2[4] * (xx - yy) * sh_coefficient(g, 8);
+      if (sh_degree > 2) {
+        result = result + C3[0] * y * (3.0 * xx - yy) * sh_coefficient(g, 9) +
+                 C3[1] * xy * z * sh_coefficient(g, 10) +
+                 C3[2] * y * (4.0 * zz - xx - yy) * sh_coefficient(g, 11) +
+                 C3[3] * z * (2.0 * zz - 3.0 * xx - 3.0 * yy) * sh_coefficient(g, 12) +
+                 C3[4] * x * (4.0 * zz - xx - yy) * sh_coefficient(g, 13) +
+                 C3[5] * z * (xx - yy) * sh_coefficient(g, 14) +
+                 C3[6] * x * (xx - 3.0 * yy) * sh_coefficient(g, 15);
+      }
+    }
+  }
+  result += 0.5;
+  return max(result, vec3(0.0));
+}
+
+void cull(uint i) {
+  records[i] = SplatRecord(vec4(0.0), vec4(0.0), vec4(0.0), ivec4(0));
+  keys[i] = 0xFFFFFFFFu;
+  values[i] = i;
+}
+
+void main() {
+  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  if (i >= gaussian_count) return;
+  vec4 position_opacity = positions[i];
+  vec3 mean = position_opacity.xyz;
+  precise vec3 t = world_to_camera * (mean - camera_position);
+  if (t.z <= 0.2) {  // in_frustum: near cull only (section 3.1)
+    cull(i);
+    return;
+  }
+  mat3 cov3d = covariance_3d(scales[i].xyz, rotations[i]);
+  precise vec3 cov = covariance_2d(t, cov3d);
+  precise float det = cov.x * cov.z - cov.y * cov.y;
+  if (det == 0.0) {
+    cull(i);
+    return;
+  }
+  float det_inv = 1.0 / det;
+  vec3 conic = vec3(cov.z * det_inv, -cov.y * det_inv, cov.x * det_inv);
+
+  precise float mid = 0.5 * (cov.x + cov.z);
+  precise float lambda1 = mid + sqrt(max(0.1, mid * mid - det));
+  precise float lambda2 = mid - sqrt(max(0.1, mid * mid - det));
+  precise float radius = ceil(3.0 * sqrt(max(lambda1, lambda2)));
+  // Camera::project_ndc: the reference's full_proj_transform, / (w + 1e-7), then ndc2Pix.
+  precise float inv_w = 1.0 / (t.z + 1e-7);
+  precise vec2 ndc = vec2((t.x / tan_half_fov.x + shift_ndc.x * t.z) * inv_w,
+                          (t.y / tan_half_fov.y + shift_ndc.y * t.z) * inv_w);
+  precise vec2 px = vec2(((ndc.x + 1.0) * float(image_size.x) - 1.0) * 0.5,
+                         ((ndc.y + 1.0) * float(image_size.y) - 1.0) * 0.5);
+  // getRect (auxiliary.h): int() truncates toward zero, as in CUDA and C++.
+  ivec2 rmin = ivec2(min(tile_grid.x, max(0, int((px.x - radius) / float(kTileSize)))),
+                     min(tile_grid.y, max(0, int((px.y - radius) / float(kTileSize)))));
+  ivec2 rmax = ivec2(min(tile_grid.x, max(0, int((px.x + radius + float(kTileSize - 1)) / float(kTileSize)))),
+                     min(tile_grid.y, max(0, int((px.y + radius + float(kTileSize - 1)) / float(kTileSize)))));
+  if ((rmax.x - rmin.x) * (rmax.y - rmin.y) == 0) {
+    cull(i);
+    return;
+  }
+  vec3 color = sh_color(i, normalize(mean - sh_origin));
+  records[i] = SplatRecord(vec4(px, t.z, position_opacity.w), vec4(conic, radius), vec4(color, 0.0),
+                           ivec4(rmin, rmax));
+  keys[i] = floatBitsToUint(t.z);
+  values[i] = i;
+  atomicAdd(draw_instances, 1u);
+}

@@ -1,0 +1,135 @@
+// The GPU radix sort against std::stable_sort (gpu/gl_radix_sort.hpp), on llvmpipe.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <cstdint>
+#include <numeric>
+#include <random>
+#include <vector>
+
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_radix_sort.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+struct Sorted {
+  std::vector<uint32_t> keys, values;
+};
+
+// std::stable_sort of (key, index) pairs by the key's low `key_bits` bits.
+Sorted expected_sort(const std::vector<uint32_t>& keys, int key_bits = 32) {
+  const uint32_t mask = key_bits == 32 ? 0xFFFFFFFFu : ((1u << key_bits) - 1u);
+  std::vector<uint32_t> order(keys.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint32_t a, uint32_t b) { return (keys[a] & mask) < (keys[b] & mask); });
+  Sorted s;
+  for (uint32_t i : order) {
+    s.keys.push_back(keys[i]);
+    s.values.push_back(i);
+  }
+  return s;
+}
+
+// Sorts `keys` with values 0..n-1 on the GPU; the buffers hold `slack` more elements, which must
+// stay untouched.
+Sorted gpu_sort(GlRadixSort& sorter, const std::vector<uint32_t>& keys, int key_bits = 32, size_t slack = 3) {
+  const size_t n = keys.size();
+  std::vector<uint32_t> k = keys, v(n);
+  std::iota(v.begin(), v.end(), 0u);
+  for (size_t i = 0; i < slack; ++i) {
+    k.push_back(0u);
+    v.push_back(0xABCD0000u + uint32_t(i));
+  }
+  Buffer key_buffer(k.size() * 4, k.data()), value_buffer(v.size() * 4, v.data());
+  sorter.sort(key_buffer, value_buffer, uint32_t(n), key_bits);
+  Sorted s;
+  s.keys = key_buffer.download_as<uint32_t>(k.size());
+  s.values = value_buffer.download_as<uint32_t>(v.size());
+  for (size_t i = 0; i < slack; ++i) {
+    EXPECT_EQ(s.keys[n + i], 0u) << "past the count";
+    EXPECT_EQ(s.values[n + i], 0xABCD0000u + uint32_t(i)) << "past the count";
+  }
+  s.keys.resize(n);
+  s.values.resize(n);
+  return s;
+}
+
+std::vector<uint32_t> random_keys(size_t n, uint32_t seed, uint32_t modulo = 0) {
+  std::mt19937 rng(seed);
+  std::vector<uint32_t> keys(n);
+  for (auto& k : keys) k = modulo ? rng() % modulo : rng();
+  return keys;
+}
+
+void expect_same(const Sorted& got, const Sorted& want, const char* what) {
+  ASSERT_EQ(got.keys.size(), want.keys.size()) << what;
+  for (size_t i = 0; i < want.keys.size(); ++i) {
+    ASSERT_EQ(got.keys[i], want.keys[i]) << what << " key at " << i;
+    ASSERT_EQ(got.values[i], want.values[i]) << what << " value at " << i << " (not stable?)";
+  }
+}
+
+TEST(GlRadixSort, SortsAnyCountIncludingEmptyOneAndPartialTiles) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  for (size_t n : {0, 1, 2, 255, 256, 257, 1000, 4097, 65537}) {
+    const auto keys = random_keys(n, uint32_t(n) + 1);
+    expect_same(gpu_sort(sorter, keys), expected_sort(keys), "random");
+  }
+}
+
+TEST(GlRadixSort, IsStableOnDuplicatesAllEqualAndMaximalKeys) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  const auto few = random_keys(5000, 7, 16);
+  expect_same(gpu_sort(sorter, few), expected_sort(few), "16 distinct keys");
+  const std::vector<uint32_t> equal(3000, 0x3F800000u);
+  expect_same(gpu_sort(sorter, equal), expected_sort(equal), "all equal");
+  // Culled splats carry 0xFFFFFFFF and must come after every depth key, in index order.
+  auto culled = random_keys(4000, 9);
+  for (size_t i = 0; i < culled.size(); i += 3) culled[i] = 0xFFFFFFFFu;
+  const Sorted got = gpu_sort(sorter, culled);
+  expect_same(got, expected_sort(culled), "with 0xFFFFFFFF");
+  EXPECT_EQ(got.keys.back(), 0xFFFFFFFFu);
+}
+
+TEST(GlRadixSort, SortsFloatDepthBitsInDepthOrder) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> depth(0.2f, 1000.0f);
+  std::vector<uint32_t> keys(20000);
+  std::vector<float> depths(keys.size());
+  for (size_t i = 0; i < keys.size(); ++i) {
+    depths[i] = depth(rng);
+    std::memcpy(&keys[i], &depths[i], 4);
+  }
+  const Sorted got = gpu_sort(sorter, keys);
+  for (size_t i = 1; i < got.values.size(); ++i)
+    ASSERT_LE(depths[got.values[i - 1]], depths[got.values[i]]) << i;
+}
+
+TEST(GlRadixSort, SortsByTheLowBytesOnlyWithAnOddNumberOfPasses) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  const auto keys = random_keys(10000, 11);
+  const Sorted got = gpu_sort(sorter, keys, 24);
+  const Sorted want = expected_sort(keys, 24);
+  expect_same(got, want, "24-bit keys");
+  const Sorted got8 = gpu_sort(sorter, keys, 8);
+  expect_same(got8, expected_sort(keys, 8), "8-bit keys");
+}
+
+TEST(GlRadixSort, SortsBlocksOfSeveralTiles) {
+  // Beyond 256 * 1024 keys each work group ranks several tiles in sequence.
+  HeadlessContext context;
+  GlRadixSort sorter;
+  const auto keys = random_keys(300001, 5, 1u << 20);
+  expect_same(gpu_sort(sorter, keys), expected_sort(keys), "300001 keys");
+}
+
+}  // namespace
+}  // namespace lfd::gpu

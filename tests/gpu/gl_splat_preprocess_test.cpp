@@ -1,0 +1,126 @@
+// The GL preprocess pass against render::preprocess, Gaussian by Gaussian
+// (gpu/gl_splat_preprocess.hpp), on llvmpipe.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "../render/render_test_scenes.hpp"
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_scene.hpp"
+#include "gpu/gl_splat_preprocess.hpp"
+#include "render/preprocess.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/scene_generator.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+struct GpuPreprocess {
+  std::vector<SplatRecord> records;
+  std::vector<uint32_t> keys, values;
+  DrawArraysIndirect draw{};
+};
+
+GpuPreprocess run_gpu(const HeadlessContext& context, const render::GaussianScene& scene,
+                      const render::Camera& camera, const render::RasterSettings& settings) {
+  GlScene gl_scene(scene, context.info());
+  GlSplatPreprocess preprocess;
+  SplatBuffers buffers;
+  preprocess.run(gl_scene, camera, settings, buffers);
+  GpuPreprocess out;
+  out.records = buffers.records.download_as<SplatRecord>(scene.size());
+  out.keys = buffers.keys.download_as<uint32_t>(scene.size());
+  out.values = buffers.values.download_as<uint32_t>(scene.size());
+  buffers.draw.download(&out.draw, sizeof(out.draw));
+  return out;
+}
+
+float relative(float a, float b) { return std::abs(a - b) / std::max(1e-6f, std::max(std::abs(a), std::abs(b))); }
+
+// Every Gaussian: culled alike, same radius and tile rectangle (an integer from a float: one in
+// a thousand may land on the other side of a rounding boundary, and then by one), mean, conic,
+// depth and colour to float rounding; keys and values as documented; the visible count.
+void expect_matches_cpu(const HeadlessContext& context, const render::GaussianScene& scene,
+                        const render::Camera& camera, const render::RasterSettings& settings) {
+  const auto cpu = render::preprocess(scene, camera, settings);
+  const GpuPreprocess gpu = run_gpu(context, scene, camera, settings);
+  size_t visible = 0, integer_mismatches = 0;
+  for (size_t i = 0; i < scene.size(); ++i) {
+    const render::ProjectedGaussian& c = cpu[i];
+    const SplatRecord& g = gpu.records[i];
+    ASSERT_EQ(gpu.values[i], i);
+    const bool gpu_visible = g.radius_px > 0.0f;
+    if ((c.radius_px > 0) != gpu_visible) {
+      ++integer_mismatches;
+      continue;
+    }
+    if (!gpu_visible) {
+      ASSERT_EQ(gpu.keys[i], 0xFFFFFFFFu) << i;
+      continue;
+    }
+    ++visible;
+    uint32_t depth_bits;
+    std::memcpy(&depth_bits, &g.depth, 4);
+    ASSERT_EQ(gpu.keys[i], depth_bits) << i;
+    if (int(g.radius_px) != c.radius_px || g.rect_min[0] != c.rect_min.x || g.rect_min[1] != c.rect_min.y ||
+        g.rect_max[0] != c.rect_max.x || g.rect_max[1] != c.rect_max.y) {
+      ++integer_mismatches;
+      EXPECT_LE(std::abs(int(g.radius_px) - c.radius_px), 1) << i;
+    }
+    EXPECT_NEAR(g.mean_px[0], c.mean_px.x, 2e-3f) << i;
+    EXPECT_NEAR(g.mean_px[1], c.mean_px.y, 2e-3f) << i;
+    EXPECT_LT(relative(g.depth, c.depth), 1e-6f) << i;
+    EXPECT_EQ(g.opacity, c.opacity) << i;
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LT(relative(g.conic[k], c.conic[k]), 2e-4f) << i << " conic " << k;
+      EXPECT_NEAR(g.color[k], c.color[k], 2e-5f) << i << " colour " << k;
+    }
+  }
+  EXPECT_LE(integer_mismatches, scene.size() / 1000) << "radius or rectangle differs";
+  EXPECT_GT(visible, scene.size() / 4) << "the test scene should be mostly visible";
+  EXPECT_LT(visible, scene.size()) << "the test scene should have culled Gaussians";
+  EXPECT_EQ(gpu.draw.count, 4u);
+  EXPECT_NEAR(double(gpu.draw.instance_count), double(visible), double(integer_mismatches));
+}
+
+TEST(GlSplatPreprocess, MatchesTheCpuPreprocessOnARandomCloudWithNearCulls) {
+  HeadlessContext context;
+  // Depths from 0.05: the Gaussians before z = 0.2 are culled; many others fall off the image.
+  const auto scene = render::testing::random_cloud(3000, 0.05f, 12.0f, 17);
+  const auto camera = render::make_look_at_camera({0.3f, 0.1f, -0.5f}, {0, 0, 6}, {0, 1, 0}, 0.7f, 128, 96);
+  expect_matches_cpu(context, scene, camera, {});
+}
+
+TEST(GlSplatPreprocess, MatchesTheCpuPreprocessAtShDegree3OffAxisWithEverySetting) {
+  HeadlessContext context;
+  render::SceneGeneratorOptions options;
+  options.count = 3000;
+  options.sh_degree = 3;
+  options.seed = 5;
+  const auto scene = render::generate_scene(options);
+  const auto base = render::make_look_at_camera({0, -1, -5}, {0, 0, 0}, {0, -1, 0}, 0.8f, 128, 112);
+  const auto geometry = render::make_quilt_geometry(base, 5.1f, 40.0f, 9);
+  const render::Camera off_axis = geometry.view_camera(0);
+  ASSERT_NE(off_axis.shift_x_ndc, 0.0f);
+  expect_matches_cpu(context, scene, off_axis, {});
+  render::RasterSettings settings;
+  settings.dilation_px2 = 0.7f;
+  settings.scale_modifier = 1.3f;
+  settings.sh_degree = 2;
+  settings.sh_origin = glm::vec3(0.5f, -1.0f, -6.0f);
+  expect_matches_cpu(context, scene, geometry.view_camera(7), settings);
+}
+
+TEST(GlSplatPreprocess, AnEmptySceneDrawsNothing) {
+  HeadlessContext context;
+  render::GaussianScene empty;
+  const auto camera = render::make_look_at_camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0.7f, 32, 32);
+  const GpuPreprocess gpu = run_gpu(context, empty, camera, {});
+  EXPECT_EQ(gpu.draw.count, 4u);
+  EXPECT_EQ(gpu.draw.instance_count, 0u);
+}
+
+}  // namespace
+}  // namespace lfd::gpu
