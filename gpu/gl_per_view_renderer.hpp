@@ -1,0 +1,93 @@
+#pragma once
+// The GL per-view 3DGS renderer (issue #9 "Per-view renderer"; paper: the conventional quilt,
+// the ground truth of Table 1): per view, the three passes of the reference forward pass,
+// pass for pass beside the CPU stages (render/rasterizer_cpu.hpp):
+//   preprocess  GlSplatPreprocess   (render::preprocess)
+//   sort        GlRadixSort         (render::bin_and_sort; one global depth order, the per-tile
+//                                    lists are what the quads cover)
+//   raster      GlSplatRaster       (render::blend)
+// with no CPU round trip inside a view or a quilt. The scene (GlScene) is uploaded once and
+// shared with other renderers.
+#include <cstddef>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_radix_sort.hpp"
+#include "gpu/gl_scene.hpp"
+#include "gpu/gl_splat_preprocess.hpp"
+#include "gpu/gl_splat_raster.hpp"
+#include "render/blend.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/quilt_layout.hpp"
+#include "util/image.hpp"
+
+namespace lfd::gpu {
+
+// GPU seconds of the last render_view or render_quilt (summed over its views; 0 unless
+// GlPerViewOptions::gpu_timers) and the renderer's GPU memory (scene, scratch, targets).
+struct GlPerViewStats {
+  double preprocess_s = 0.0, sort_s = 0.0, raster_s = 0.0;
+  size_t memory_bytes = 0;
+  int views = 0;
+};
+
+struct GlPerViewOptions {
+  // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
+  // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
+  GLenum accumulation_format = GL_RGBA32F;
+  // Time each pass with GL_TIME_ELAPSED queries (read at the end of a render call, which waits
+  // for the GPU: for benchmarks, not for interactive frames).
+  bool gpu_timers = false;
+};
+
+class GlPerViewRenderer {
+ public:
+  // Needs a current context; `scene` must outlive the renderer.
+  explicit GlPerViewRenderer(const GlScene& scene, const GlPerViewOptions& options = {});
+
+  // Renders one view into a texture of the camera's size in the accumulation format, GL rows
+  // bottom-up (texel row 0 = the image's bottom row): rgb = C + T background (not clamped),
+  // alpha = the final transmittance T. Valid until the next call.
+  const Texture& render_view(const render::Camera& camera, const render::RasterSettings& settings = {});
+  // render_view read back as the CPU reference's image (row 0 = top).
+  render::RasterImage render_view_image(const render::Camera& camera, const render::RasterSettings& settings = {});
+
+  // Every view of `geometry` into its tile of `quilt` (layout.width x layout.height; RGBA8,
+  // RGBA16F or RGBA32F), as render::render_quilt_per_view places them: view 0 in the
+  // bottom-left tile, tiles row-major upward; the texture is bottom-up, so read back and
+  // flipped (read_quilt_image) it equals the CPU's top-down quilt. Outside the tiles: 0.
+  // Alpha is 1 in the tiles. Float quilts are drawn into directly (each view's viewport is its
+  // tile); RGBA8 ones through a float view target, then composited into the tile.
+  void render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+                    const render::RasterSettings& settings, Texture& quilt);
+
+  const GlPerViewStats& stats() const { return stats_; }
+
+ private:
+  struct ViewTimers {
+    GpuTimer preprocess, sort, raster;
+  };
+  // Preprocess and sort the view of `camera` into buffers_.
+  void prepare(const render::Camera& camera, const render::RasterSettings& settings, ViewTimers* timers);
+  void ensure_view_target(int width, int height);
+  ViewTimers* timers_for(int view);
+  void finish_stats(int views);
+
+  const GlScene& scene_;
+  GlPerViewOptions options_;
+  GlSplatPreprocess preprocess_;
+  GlRadixSort sort_;
+  GlSplatRaster raster_;
+  SplatBuffers buffers_;
+  Texture view_target_;
+  Framebuffer view_framebuffer_;
+  std::vector<ViewTimers> timers_;
+  GlPerViewStats stats_;
+};
+
+// A texture read back as a top-down image (row 0 = the top) with `channels` (3 or 4) of RGBA.
+ImageF read_image_top_down(const Texture& texture, int channels = 3);
+
+}  // namespace lfd::gpu

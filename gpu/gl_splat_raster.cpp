@@ -1,0 +1,133 @@
+#include "gpu/gl_splat_raster.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/shaders/splat_composite.frag.glsl.hpp"
+#include "gpu/shaders/splat_composite.vert.glsl.hpp"
+#include "gpu/shaders/splat_raster.frag.glsl.hpp"
+#include "gpu/shaders/splat_raster.vert.glsl.hpp"
+#include "gpu/shaders/splat_record.glsl.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+Program splat_program(bool layered) {
+  // #extension must precede every declaration, so it goes before the prepended record.
+  const std::string vertex =
+      std::string(layered ? "#extension GL_ARB_shader_viewport_layer_array : require\n" : "") +
+      splat_record_glsl + splat_raster_vert_glsl;
+  return Program(layered ? "splat raster (layered)" : "splat raster",
+                 {{GL_VERTEX_SHADER, vertex.c_str()}, {GL_FRAGMENT_SHADER, splat_raster_frag_glsl}},
+                 layered ? std::vector<std::string>{"LAYERED 1"} : std::vector<std::string>{});
+}
+
+glm::ivec4 region(const SplatRasterTarget& t) {
+  return t.scissor.z > 0 ? t.scissor : glm::ivec4(t.viewport_origin, t.image_size);
+}
+
+}  // namespace
+
+GlSplatRaster::GlSplatRaster()
+    : splats_(splat_program(false)),
+      composite_blend_("splat composite (in place)",
+                       {{GL_VERTEX_SHADER, splat_composite_vert_glsl}, {GL_FRAGMENT_SHADER, splat_composite_frag_glsl}}),
+      composite_copy_("splat composite (from a texture)",
+                      {{GL_VERTEX_SHADER, splat_composite_vert_glsl}, {GL_FRAGMENT_SHADER, splat_composite_frag_glsl}},
+                      {"FROM_TEXTURE 1"}) {
+  if (epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")) splats_layered_ = splat_program(true);
+}
+
+void GlSplatRaster::begin(const SplatRasterTarget& target) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+  glViewport(target.viewport_origin.x, target.viewport_origin.y, target.image_size.x, target.image_size.y);
+  const glm::ivec4 r = region(target);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(r.x, r.y, r.z, r.w);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_CULL_FACE);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glBindVertexArray(vertex_array_.id());
+}
+
+void GlSplatRaster::end() const {
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void GlSplatRaster::clear(const SplatRasterTarget& target) const {
+  begin(target);
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // C = 0, T = 1
+  glClearBufferfv(GL_COLOR, 0, empty);
+  end();
+  check_gl("clearing a splat target");
+}
+
+void GlSplatRaster::draw(const Buffer& records, const Buffer& sorted_ids, const Buffer& indirect,
+                         const SplatRasterTarget& target, const Buffer* layers) const {
+  const Program& program = layers ? splats_layered_ : splats_;
+  if (!program.id())
+    throw std::runtime_error("layered splat raster needs GL_ARB_shader_viewport_layer_array");
+  begin(target);
+  records.bind_storage(kSplatRecords);
+  sorted_ids.bind_storage(kSplatValues);
+  if (layers) layers->bind_storage(kSplatLayers);
+  glProgramUniform2i(program.id(), program.uniform("image_size"), target.image_size.x, target.image_size.y);
+  glProgramUniform2f(program.id(), program.uniform("viewport_origin"), float(target.viewport_origin.x),
+                     float(target.viewport_origin.y));
+  program.use();
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect.id());
+  glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  end();
+  check_gl("drawing splats");
+}
+
+void GlSplatRaster::draw(const SplatBuffers& buffers, const SplatRasterTarget& target, const Buffer* layers) const {
+  draw(buffers.records, buffers.values, buffers.draw, target, layers);
+}
+
+void GlSplatRaster::composite_background(const SplatRasterTarget& target, const glm::vec3& background,
+                                         bool keep_transmittance) const {
+  begin(target);
+  const GLuint p = composite_blend_.id();
+  glProgramUniform3fv(p, composite_blend_.uniform("background"), 1, glm::value_ptr(background));
+  glProgramUniform1f(p, composite_blend_.uniform("alpha_out"), keep_transmittance ? 0.0f : 1.0f);
+  composite_blend_.use();
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  // rgb: bg * T + C; alpha: T kept (0 * 0 + T) or 1 * 1 + 0.
+  glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, keep_transmittance ? GL_ZERO : GL_ONE,
+                      keep_transmittance ? GL_ONE : GL_ZERO);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  end();
+  check_gl("compositing the background");
+}
+
+void GlSplatRaster::composite_from(const Texture& accumulation, const SplatRasterTarget& target,
+                                   const glm::vec3& background) const {
+  begin(target);
+  const GLuint p = composite_copy_.id();
+  glProgramUniform3fv(p, composite_copy_.uniform("background"), 1, glm::value_ptr(background));
+  glProgramUniform2i(p, composite_copy_.uniform("viewport_origin"), target.viewport_origin.x,
+                     target.viewport_origin.y);
+  glProgramUniform1i(p, composite_copy_.uniform("accumulation"), 0);
+  glBindTextureUnit(0, accumulation.id());
+  composite_copy_.use();
+  glDisable(GL_BLEND);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindTextureUnit(0, 0);
+  end();
+  check_gl("compositing into the target");
+}
+
+}  // namespace lfd::gpu

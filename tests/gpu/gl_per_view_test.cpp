@@ -1,0 +1,238 @@
+// The GL per-view renderer against the CPU reference rasterizer (gpu/gl_per_view_renderer.hpp),
+// on llvmpipe: views and quilts by PSNR (issue #9: >= 40 dB), the layered raster of G2LF's
+// planes against the CPU's subsets, and scenes too large for the GPU.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <string>
+
+#include "../test_data.hpp"
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_per_view_renderer.hpp"
+#include "render/default_camera.hpp"
+#include "render/image_metrics.hpp"
+#include "render/per_view_quilt.hpp"
+#include "render/rasterizer_cpu.hpp"
+#include "render/scene_generator.hpp"
+#include "render/scene_io.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+constexpr double kMinPsnrDb = 40.0;
+
+ImageF to_image(const std::vector<float>& values, int width, int height, int channels) {
+  ImageF image(width, height, channels);
+  image.pixels = values;
+  return image;
+}
+
+ImageF rgb_of(const render::RasterImage& r) { return to_image(r.rgb, r.width, r.height, 3); }
+
+render::GaussianScene generated_scene(int sh_degree, size_t count = 4000) {
+  render::SceneGeneratorOptions options;
+  options.count = count;
+  options.sh_degree = sh_degree;
+  options.seed = 3;
+  return render::generate_scene(options);
+}
+
+render::Camera tabletop_camera(int width = 128, int height = 128) {
+  return render::make_look_at_camera({0, -1, -5}, {0, 0, 0}, {0, -1, 0}, 0.8f, width, height);
+}
+
+// GL and CPU images of one view; PSNR of the colour (printed for docs/gpu.md) and the
+// transmittance.
+double compare_view(GlPerViewRenderer& renderer, const render::GaussianScene& scene,
+                    const render::Camera& camera, const render::RasterSettings& settings, const std::string& what) {
+  const render::RasterImage cpu = render::rasterize(scene, camera, settings);
+  const render::RasterImage gl = renderer.render_view_image(camera, settings);
+  EXPECT_EQ(gl.width, cpu.width);
+  EXPECT_EQ(gl.height, cpu.height);
+  const double colour = render::psnr(rgb_of(gl), rgb_of(cpu));
+  const double transmittance = render::psnr(to_image(gl.transmittance, gl.width, gl.height, 1),
+                                            to_image(cpu.transmittance, cpu.width, cpu.height, 1));
+  std::printf("[ psnr ] %s: colour %.1f dB, transmittance %.1f dB\n", what.c_str(), colour, transmittance);
+  EXPECT_GE(colour, kMinPsnrDb) << what;
+  EXPECT_GE(transmittance, kMinPsnrDb) << what;
+  return colour;
+}
+
+TEST(GlPerView, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
+  HeadlessContext context;
+  const auto scene = generated_scene(3);
+  GlScene gl_scene(scene, context.info());
+  GlPerViewRenderer renderer(gl_scene);
+  const auto base = tabletop_camera();
+  const auto geometry = render::make_quilt_geometry(base, 5.1f, 40.0f, 9);
+  for (int degree : {0, 3}) {
+    render::RasterSettings settings;
+    settings.sh_degree = degree;
+    const std::string d = " sh" + std::to_string(degree);
+    compare_view(renderer, scene, base, settings, "generated centre" + d);
+    compare_view(renderer, scene, geometry.view_camera(0), settings, "generated off-axis view 0/9" + d);
+    settings.background = {1.0f, 0.5f, 0.25f};
+    compare_view(renderer, scene, geometry.view_camera(8), settings, "generated off-axis view 8/9, background" + d);
+  }
+  // Not square, not a multiple of the 16-pixel tiles.
+  compare_view(renderer, scene, tabletop_camera(100, 77), {}, "generated 100x77");
+}
+
+TEST(GlPerView, TheFixtureAndDemoScenesMatchTheCpu) {
+  HeadlessContext context;
+  for (const auto& path : {test::fixture_scene("three-points.ply"), test::project_data() / "scenes" / "demo.ply"}) {
+    const auto scene = render::load_scene(path);
+    const auto camera = render::camera_from_spec(render::frame_scene(scene), 128, 128);
+    GlScene gl_scene(scene, context.info());
+    GlPerViewRenderer renderer(gl_scene);
+    compare_view(renderer, scene, camera, {}, path.filename().string());
+    const auto geometry = render::make_quilt_geometry(camera, glm::length(render::frame_scene(scene).look_at -
+                                                                          render::frame_scene(scene).position),
+                                                      40.0f, 9);
+    compare_view(renderer, scene, geometry.view_camera(1), {}, path.filename().string() + " off-axis view 1/9");
+  }
+}
+
+TEST(GlPerView, Rgba16fAccumulationStaysAbove40Db) {
+  HeadlessContext context;
+  const auto scene = generated_scene(1);
+  GlScene gl_scene(scene, context.info());
+  GlPerViewOptions options;
+  options.accumulation_format = GL_RGBA16F;
+  GlPerViewRenderer renderer(gl_scene, options);
+  compare_view(renderer, scene, tabletop_camera(), {}, "generated, RGBA16F target");
+}
+
+// The quilt as render::render_quilt_per_view lays it out: 9 views in a 4x3 grid, so the last
+// row is partly empty and a wrong row order would show.
+void compare_quilt(GLenum format, const std::string& what) {
+  HeadlessContext context;
+  const auto scene = generated_scene(2, 3000);
+  const auto geometry = render::make_quilt_geometry(tabletop_camera(96, 80), 5.1f, 40.0f, 9);
+  const auto layout = render::make_quilt_layout(geometry, 4, 3);
+  const ImageF cpu = render::render_quilt_per_view(scene, geometry, layout);
+  GlScene gl_scene(scene, context.info());
+  GlPerViewOptions options;
+  options.gpu_timers = true;
+  GlPerViewRenderer renderer(gl_scene, options);
+  Texture quilt(format, layout.width, layout.height);
+  renderer.render_quilt(geometry, layout, {}, quilt);
+  const ImageF gl = read_image_top_down(quilt);
+  const double whole = render::psnr(gl, cpu);
+  std::printf("[ psnr ] quilt %s: %.1f dB\n", what.c_str(), whole);
+  EXPECT_GE(whole, kMinPsnrDb) << what;
+  for (int view = 0; view < geometry.views; ++view)
+    EXPECT_GE(render::psnr(render::extract_view(gl, layout, view), render::extract_view(cpu, layout, view)), kMinPsnrDb)
+        << what << " view " << view;
+  EXPECT_EQ(renderer.stats().views, 9);
+  EXPECT_GE(renderer.stats().memory_bytes, gl_scene.bytes());
+}
+
+TEST(GlPerView, FloatQuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA32F, "RGBA32F"); }
+TEST(GlPerView, Rgba8QuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA8, "RGBA8"); }
+
+// G2LF's use: one draw routes each sorted splat to a layer; with a zero background each layer
+// holds (C, T) of its splats, as render::rasterize of that subset.
+TEST(GlPerView, LayeredRasterDrawsEachSplatIntoItsLayer) {
+  HeadlessContext context;
+  const auto scene = generated_scene(1, 3000);
+  const auto camera = tabletop_camera(96, 96);
+  GlScene gl_scene(scene, context.info());
+  GlSplatPreprocess preprocess;
+  GlRadixSort sort;
+  GlSplatRaster raster;
+  SplatBuffers buffers;
+  preprocess.run(gl_scene, camera, {}, buffers);
+  sort.sort(buffers.keys, buffers.values, uint32_t(scene.size()));
+  DrawArraysIndirect draw{};
+  buffers.draw.download(&draw, sizeof(draw));
+  const auto sorted = buffers.values.download_as<uint32_t>(draw.instance_count);
+  // Alternate layers in blocks of 100 along the depth order: both layers overlap in depth.
+  std::vector<uint32_t> layers(sorted.size());
+  std::vector<uint32_t> subsets[2];
+  for (size_t i = 0; i < sorted.size(); ++i) {
+    layers[i] = uint32_t((i / 100) % 2);
+    subsets[layers[i]].push_back(sorted[i]);
+  }
+  Buffer layer_buffer(layers.size() * 4, layers.data());
+  Texture planes(GL_RGBA32F, camera.width, camera.height, 2);
+  Framebuffer framebuffer;
+  framebuffer.attach(0, planes);
+  framebuffer.finish(1);
+  SplatRasterTarget target;
+  target.framebuffer = framebuffer.id();
+  target.image_size = {camera.width, camera.height};
+  raster.clear(target);
+  raster.draw(buffers, target, &layer_buffer);
+  for (int layer = 0; layer < 2; ++layer) {
+    std::sort(subsets[layer].begin(), subsets[layer].end());
+    const render::RasterImage cpu = render::rasterize(scene, camera, {}, subsets[layer]);
+    const std::vector<float> texels = read_texture_rgba(planes, layer);
+    ImageF gl_c(camera.width, camera.height, 3), gl_t(camera.width, camera.height, 1);
+    for (int y = 0; y < camera.height; ++y)
+      for (int x = 0; x < camera.width; ++x) {
+        const float* t = texels.data() + (size_t(camera.height - 1 - y) * camera.width + x) * 4;
+        for (int c = 0; c < 3; ++c) gl_c.at(x, y, c) = t[c];
+        gl_t.at(x, y, 0) = t[3];
+      }
+    const double c_db = render::psnr(gl_c, rgb_of(cpu));
+    const double t_db = render::psnr(gl_t, to_image(cpu.transmittance, cpu.width, cpu.height, 1));
+    std::printf("[ psnr ] layer %d: C %.1f dB, T %.1f dB\n", layer, c_db, t_db);
+    EXPECT_GE(c_db, kMinPsnrDb) << layer;
+    EXPECT_GE(t_db, kMinPsnrDb) << layer;
+  }
+}
+
+TEST(GlPerView, ASceneTooLargeIsOneInputErrorLineNamingTheNumbersAndTheRemedy) {
+  HeadlessContext context;
+  GlInfo small = context.info();
+  small.max_ssbo_bytes = 128ll << 20;
+  try {
+    check_scene_fits(3'000'000, 3, small);
+    FAIL() << "3M Gaussians at SH degree 3 fit 128 MiB buffers";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("3000000"), std::string::npos) << message;
+    EXPECT_NE(message.find("--sh-degree"), std::string::npos) << message;
+    EXPECT_NE(message.find("128 MiB"), std::string::npos) << message;
+  }
+  GlInfo little_memory = context.info();
+  little_memory.free_memory_bytes = 64ll << 20;
+  EXPECT_THROW(check_scene_fits(1'000'000, 0, little_memory), InputError);
+  EXPECT_NO_THROW(check_scene_fits(100'000, 0, little_memory));
+  // The constructor checks before it allocates anything.
+  GlInfo tiny = context.info();
+  tiny.max_ssbo_bytes = 1024;
+  const size_t before = gpu_bytes_allocated();
+  EXPECT_THROW(GlScene(generated_scene(3, 100), tiny), InputError);
+  EXPECT_EQ(gpu_bytes_allocated(), before);
+  // Lowering the degree is the remedy the message names.
+  GlSceneOptions degree0;
+  degree0.max_sh_degree = 0;
+  tiny.max_ssbo_bytes = 100 * 64;
+  EXPECT_NO_THROW(GlScene(generated_scene(3, 100), tiny, degree0));
+}
+
+TEST(GlPerView, UploadReportsProgressAndTheUploadedDegree) {
+  HeadlessContext context;
+  const auto scene = generated_scene(3, 500);
+  size_t last = 0;
+  GlSceneOptions options;
+  options.max_sh_degree = 1;
+  options.progress = [&](size_t done, size_t total) {
+    EXPECT_EQ(total, scene.size());
+    EXPECT_GT(done, last);
+    last = done;
+  };
+  GlScene gl_scene(scene, context.info(), options);
+  EXPECT_EQ(last, scene.size());
+  EXPECT_EQ(gl_scene.sh_degree(), 1);
+  EXPECT_EQ(gl_scene.sh().bytes(), scene.size() * 3 * 16);
+}
+
+}  // namespace
+}  // namespace lfd::gpu
