@@ -1,0 +1,69 @@
+#pragma once
+// The sweeping planes of G2LF on the GPU (paper Alg. 1 lines 4-5; the GL twin of
+// render/sweeping_planes.hpp): one layer of a 2D array texture per plane, RGBA = premultiplied
+// colour C_k and transmittance T_k, rows bottom-up as GL draws them (texel row Hp - 1 - r holds
+// row r of the CPU's plane, whose row 0 is the top of the reference image), and beside it the plane table the binning pass writes on the GPU: how many
+// planes there are this frame and their base-camera depths d_k. The array has a layer for every
+// possible plane (N_chunk); which are used is known only on the GPU, so no frame waits for it.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "gpu/gl_objects.hpp"
+#include "render/sweeping_planes.hpp"
+
+namespace lfd::gpu {
+
+// Texel format of the planes. kRgba8 is the CPU's kU8 (the paper's default), kRgba32f its kF32;
+// kRgba16f halves kRgba32f's memory (no CPU twin).
+enum class PlaneFormat { kRgba8, kRgba16f, kRgba32f };
+
+GLenum gl_internal_format(PlaneFormat format);
+size_t bytes_per_plane_texel(PlaneFormat format);
+PlaneFormat plane_format_for(render::PlanePrecision precision);
+// "u8" | "f16" | "f32"; InputError "G2LF options: precision: ..." otherwise.
+PlaneFormat parse_plane_format(const std::string& name);
+const char* plane_format_name(PlaneFormat format);
+
+// Layout of the plane table buffer (std430): the header, then d_k of every plane, then the first
+// sorted splat of every plane and one past the last (plane_begin[count] = splats binned).
+struct PlaneTableHeader {
+  uint32_t plane_count = 0;
+  uint32_t splats_binned = 0;  // Gaussians whose centre lies in the reference frustum
+  uint32_t pad[2] = {0, 0};
+};
+inline size_t plane_table_depth_offset() { return sizeof(PlaneTableHeader); }
+inline size_t plane_table_begin_offset(int max_planes) {
+  return sizeof(PlaneTableHeader) + sizeof(float) * size_t(max_planes);
+}
+inline size_t plane_table_bytes(int max_planes) {
+  return plane_table_begin_offset(max_planes) + sizeof(uint32_t) * (size_t(max_planes) + 1);
+}
+
+struct GlPlanes {
+  PlaneFormat format = PlaneFormat::kRgba8;
+  int max_planes = 0, width = 0, height = 0;
+  Texture texels;  // GL_TEXTURE_2D_ARRAY, max_planes layers
+  Buffer table;    // PlaneTableHeader, float depth[max_planes], uint begin[max_planes + 1]
+
+  GlPlanes() = default;
+  GlPlanes(PlaneFormat format, int max_planes, int width, int height);
+  // Bytes of the texels of `planes` layers.
+  size_t layer_bytes(int planes) const;
+
+  // Reads the table back (tests and reports only: it waits for the GPU).
+  PlaneTableHeader read_header() const;
+  std::vector<float> read_depths() const;
+  std::vector<uint32_t> read_begins() const;
+};
+
+// The texels `planes` needs for `max_planes` layers of `width` x `height` in `format`.
+size_t plane_texture_bytes(PlaneFormat format, int max_planes, int width, int height);
+
+// CPU planes on the GPU (to swizzle them there: tests, and the stage-by-stage comparison). The
+// format follows the CPU precision unless `format` says otherwise (f32 planes into RGBA16F).
+GlPlanes upload_planes(const render::SweepingPlanes& planes);
+GlPlanes upload_planes(const render::SweepingPlanes& planes, PlaneFormat format);
+
+}  // namespace lfd::gpu

@@ -1,0 +1,93 @@
+#include "gpu/gl_swizzle.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gpu/shaders/swizzle.comp.glsl.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+const char* image_format_qualifier(GLenum format) {
+  switch (format) {
+    case GL_RGBA8: return "rgba8";
+    case GL_RGBA16F: return "rgba16f";
+    case GL_RGBA32F: return "rgba32f";
+    default: throw std::logic_error("quilt texture: use GL_RGBA8, GL_RGBA16F or GL_RGBA32F");
+  }
+}
+
+}  // namespace
+
+const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_format) {
+  const auto key = std::make_pair(int(filter), quilt_format);
+  auto it = programs_.find(key);
+  if (it == programs_.end()) {
+    const bool bilinear = filter == render::PlaneFilter::kBilinear;
+    Program p(std::string("g2lf swizzle (") + (bilinear ? "bilinear" : "nearest") + ")",
+              {{GL_COMPUTE_SHADER, swizzle_comp_glsl}},
+              {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
+               std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format)});
+    it = programs_.emplace(key, std::move(p)).first;
+  }
+  return it->second;
+}
+
+void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometry,
+                    const render::ReferenceCamera& ref, const render::QuiltLayout& layout,
+                    render::PlaneFilter filter, const glm::vec3& background, const Texture& quilt) {
+  if (quilt.width() != layout.width || quilt.height() != layout.height || quilt.layers() != 0)
+    throw std::logic_error("GlSwizzle: the quilt texture does not have the layout's size");
+  const int V = geometry.views;
+  if (V > layout.cols * layout.rows) throw std::logic_error("GlSwizzle: more views than tiles");
+  // dx_j as the CPU computes them (std::tan), so both sample the same plane positions.
+  std::vector<float> offsets(static_cast<size_t>(V));
+  for (int j = 0; j < V; ++j) offsets[size_t(j)] = geometry.view_offset(j);
+  view_offsets_.ensure(offsets.size() * sizeof(float));
+  view_offsets_.upload(offsets.data(), offsets.size() * sizeof(float));
+
+  const Program& p = program(filter, quilt.internal_format());
+  p.use();
+  glBindTextureUnit(0, planes.texels.id());
+  glBindImageTexture(0, quilt.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, quilt.internal_format());
+  planes.table.bind_storage(0);
+  view_offsets_.bind_storage(1);
+  const int W = geometry.base.width, H = geometry.base.height;
+  glUniform2i(p.uniform("view_size"), W, H);
+  glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
+  glUniform3i(p.uniform("tiles"), layout.cols, layout.tile_width(), layout.tile_height());
+  glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
+  glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
+  glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
+  glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
+  glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
+  glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  glUniform3f(p.uniform("background"), background.x, background.y, background.z);
+  glDispatchCompute(GLuint((W + 15) / 16), GLuint((H + 7) / 8), GLuint(V));
+  // The quilt is read next by texture fetches (interlacing) or a read-back.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  check_gl("the G2LF swizzle pass");
+}
+
+Texture make_quilt_texture(const render::QuiltLayout& layout, GLenum internal_format) {
+  Texture quilt(internal_format, layout.width, layout.height);
+  const float zero[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  check_gl("clearing the quilt texture");
+  return quilt;
+}
+
+ImageF read_quilt_texture(const Texture& quilt) {
+  const std::vector<float> rgba = read_texture_rgba(quilt);
+  ImageF out(quilt.width(), quilt.height(), 3);
+  for (int y = 0; y < quilt.height(); ++y) {
+    const float* src = rgba.data() + size_t(quilt.height() - 1 - y) * quilt.width() * 4;
+    for (int x = 0; x < quilt.width(); ++x)
+      for (int c = 0; c < 3; ++c) out.at(x, y, c) = src[4 * x + c];
+  }
+  return out;
+}
+
+}  // namespace lfd::gpu

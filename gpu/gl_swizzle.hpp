@@ -1,0 +1,46 @@
+#pragma once
+// G2LF stage 3 on the GPU (paper section "Swizzle blending", Alg. 1 lines 6-12): the twin of
+// render/swizzle_blend.hpp. A compute pass composites the sweeping planes of a GlPlanes front to
+// back into every view's tile of a quilt texture, reading the plane count and depths from the
+// plane table on the GPU (so it follows the binning pass without a read-back).
+//
+// Quilt textures are GL_TEXTURE_2D with rows bottom-up (GL's convention): view 0's tile is at
+// the bottom left, as in the quilt file seen upright (render/quilt_layout.hpp). Texels outside
+// the tiles are left as they are (the caller clears them once; the CPU's are 0).
+#include <map>
+#include <utility>
+
+#include <glm/glm.hpp>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_planes.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/quilt_layout.hpp"
+#include "render/swizzle_blend.hpp"
+#include "util/image.hpp"
+
+namespace lfd::gpu {
+
+class GlSwizzle {
+ public:
+  GlSwizzle() = default;
+
+  // Writes every view of `geometry` into `quilt` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F; the
+  // layout's size). Enqueues GPU work only.
+  void run(const GlPlanes& planes, const render::QuiltGeometry& geometry,
+           const render::ReferenceCamera& ref, const render::QuiltLayout& layout,
+           render::PlaneFilter filter, const glm::vec3& background, const Texture& quilt);
+
+ private:
+  const Program& program(render::PlaneFilter filter, GLenum quilt_format);
+  std::map<std::pair<int, GLenum>, Program> programs_;
+  Buffer view_offsets_;
+};
+
+// A quilt texture of the layout's size, cleared to 0 (as the CPU's quilt image).
+Texture make_quilt_texture(const render::QuiltLayout& layout, GLenum internal_format = GL_RGBA8);
+
+// The quilt texture as the CPU's image: RGB float, rows top-down (waits for the GPU).
+ImageF read_quilt_texture(const Texture& quilt);
+
+}  // namespace lfd::gpu
