@@ -42,36 +42,30 @@ size_t plane_texture_bytes(PlaneFormat format, int max_planes, int width, int he
   return size_t(width) * size_t(height) * size_t(max_planes) * bytes_per_plane_texel(format);
 }
 
-GlPlanes::GlPlanes(PlaneFormat f, int planes, int w, int h)
-    : format(f), max_planes(planes), width(w), height(h),
-      texels(gl_internal_format(f), w, h, planes), table(plane_table_bytes(planes)) {
-  // Texels are read with texelFetch (the swizzle filters by hand, as the CPU), so the sampler
-  // state only matters to other readers.
-  texels.set_filter(GL_NEAREST);
-  const std::vector<uint8_t> zero(table.bytes(), 0);
-  table.upload(zero.data(), zero.size());
+GlPlaneTable::GlPlaneTable(int planes) : max_planes(planes), buffer(plane_table_bytes(planes)) {
+  const std::vector<uint8_t> zero(buffer.bytes(), 0);
+  buffer.upload(zero.data(), zero.size());
 }
 
-size_t GlPlanes::layer_bytes(int planes) const { return plane_texture_bytes(format, planes, width, height); }
-
-PlaneTableHeader GlPlanes::read_header() const {
+PlaneTableHeader GlPlaneTable::read_header() const {
   PlaneTableHeader h;
-  table.download(&h, sizeof(h));
+  buffer.download(&h, sizeof(h));
   return h;
 }
 
-std::vector<float> GlPlanes::read_depths() const {
+std::vector<PlaneTableEntry> GlPlaneTable::read_entries() const {
   const uint32_t count = read_header().plane_count;
-  std::vector<float> out(count);
-  table.download(out.data(), count * sizeof(float), plane_table_depth_offset());
+  std::vector<PlaneTableEntry> out(count + 1);
+  buffer.download(out.data(), out.size() * sizeof(PlaneTableEntry), sizeof(PlaneTableHeader));
   return out;
 }
 
-std::vector<uint32_t> GlPlanes::read_begins() const {
-  const uint32_t count = read_header().plane_count;
-  std::vector<uint32_t> out(count + 1);
-  table.download(out.data(), out.size() * sizeof(uint32_t), plane_table_begin_offset(max_planes));
-  return out;
+GlPlanes::GlPlanes(PlaneFormat f, int planes, int w, int h)
+    : format(f), max_planes(planes), width(w), height(h),
+      texels(gl_internal_format(f), w, h, planes), table(planes) {
+  // Texels are read with texelFetch (the swizzle filters by hand, as the CPU), so the sampler
+  // state only matters to other readers.
+  texels.set_filter(GL_NEAREST);
 }
 
 GlPlanes upload_planes(const render::SweepingPlanes& planes) {
@@ -99,9 +93,10 @@ GlPlanes upload_planes(const render::SweepingPlanes& planes, PlaneFormat format)
   check_gl("uploading sweeping planes");
   PlaneTableHeader header;
   header.plane_count = uint32_t(planes.count);
-  out.table.upload(&header, sizeof(header));
-  out.table.upload(planes.plane_depth.data(), planes.plane_depth.size() * sizeof(float),
-                   plane_table_depth_offset());
+  out.table.buffer.upload(&header, sizeof(header));
+  std::vector<PlaneTableEntry> entries(size_t(planes.count) + 1);
+  for (int k = 0; k < planes.count; ++k) entries[size_t(k)].depth = planes.plane_depth[size_t(k)];
+  out.table.buffer.upload(entries.data(), entries.size() * sizeof(PlaneTableEntry), sizeof(header));
   return out;
 }
 

@@ -26,36 +26,42 @@ PlaneFormat plane_format_for(render::PlanePrecision precision);
 PlaneFormat parse_plane_format(const std::string& name);
 const char* plane_format_name(PlaneFormat format);
 
-// Layout of the plane table buffer (std430): the header, then d_k of every plane, then the first
-// sorted splat of every plane and one past the last (plane_begin[count] = splats binned).
+// Layout of the plane table buffer (std430): the header, then one entry per plane and one past
+// the last: entry k holds d_k and the first sorted splat of plane k; entry plane_count holds
+// begin = splats_binned (the end of the last plane).
 struct PlaneTableHeader {
   uint32_t plane_count = 0;
   uint32_t splats_binned = 0;  // Gaussians whose centre lies in the reference frustum
   uint32_t pad[2] = {0, 0};
 };
-inline size_t plane_table_depth_offset() { return sizeof(PlaneTableHeader); }
-inline size_t plane_table_begin_offset(int max_planes) {
-  return sizeof(PlaneTableHeader) + sizeof(float) * size_t(max_planes);
-}
+struct PlaneTableEntry {
+  float depth = 0.0f;   // d_k, base-camera depth (Eq. u_prime)
+  uint32_t begin = 0;   // first sorted splat of the plane
+};
 inline size_t plane_table_bytes(int max_planes) {
-  return plane_table_begin_offset(max_planes) + sizeof(uint32_t) * (size_t(max_planes) + 1);
+  return sizeof(PlaneTableHeader) + sizeof(PlaneTableEntry) * (size_t(max_planes) + 1);
 }
+
+// The plane table on the GPU (written by the binning, read by the swizzle).
+struct GlPlaneTable {
+  int max_planes = 0;
+  Buffer buffer;  // PlaneTableHeader, PlaneTableEntry[max_planes + 1]
+
+  GlPlaneTable() = default;
+  explicit GlPlaneTable(int max_planes);  // zeroed: no planes
+  // Read-backs for tests and reports (they wait for the GPU).
+  PlaneTableHeader read_header() const;
+  std::vector<PlaneTableEntry> read_entries() const;  // the plane_count + 1 in use
+};
 
 struct GlPlanes {
   PlaneFormat format = PlaneFormat::kRgba8;
   int max_planes = 0, width = 0, height = 0;
   Texture texels;  // GL_TEXTURE_2D_ARRAY, max_planes layers
-  Buffer table;    // PlaneTableHeader, float depth[max_planes], uint begin[max_planes + 1]
+  GlPlaneTable table;
 
   GlPlanes() = default;
   GlPlanes(PlaneFormat format, int max_planes, int width, int height);
-  // Bytes of the texels of `planes` layers.
-  size_t layer_bytes(int planes) const;
-
-  // Reads the table back (tests and reports only: it waits for the GPU).
-  PlaneTableHeader read_header() const;
-  std::vector<float> read_depths() const;
-  std::vector<uint32_t> read_begins() const;
 };
 
 // The texels `planes` needs for `max_planes` layers of `width` x `height` in `format`.

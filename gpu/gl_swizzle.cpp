@@ -51,7 +51,7 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   p.use();
   glBindTextureUnit(0, planes.texels.id());
   glBindImageTexture(0, quilt.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, quilt.internal_format());
-  planes.table.bind_storage(0);
+  planes.table.buffer.bind_storage(0);
   view_offsets_.bind_storage(1);
   const int W = geometry.base.width, H = geometry.base.height;
   glUniform2i(p.uniform("view_size"), W, H);

@@ -13,12 +13,16 @@ layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0) uniform sampler2DArray planes;
 layout(QUILT_FORMAT, binding = 0) uniform writeonly image2D quilt;
 
-// The plane table (gpu/gl_planes.hpp): header, then d_k per plane.
+// The plane table (gpu/gl_planes.hpp): header, then d_k and the first splat per plane.
+struct PlaneEntry {
+  float depth;
+  uint begin;
+};
 layout(std430, binding = 0) readonly buffer PlaneTable {
   uint plane_count;
   uint splats_binned;
   uint pad0, pad1;
-  float plane_depth[];
+  PlaneEntry plane[];
 };
 layout(std430, binding = 1) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
 
@@ -51,7 +55,7 @@ void main() {
   float t = 1.0;
   const uint count = plane_count;
   for (uint k = 0u; k < count && t >= kMinTransmittance; ++k) {
-    const float d = plane_depth[k];
+    const float d = plane[k].depth;
     precise const float depth_ref = d - d_forward_eff;
     precise const float parallax = (focal_distance - d) / focal_distance / (depth_ref * tan_rx);
     precise const float scale_x = d * tan_x / (depth_ref * tan_rx);

@@ -2,6 +2,7 @@
 // on the CPU's own planes, the depth binning, and the whole renderer, on real EGL contexts
 // (llvmpipe here). Images are small: llvmpipe runs compute shaders on the CPU.
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -9,13 +10,18 @@
 #include <gtest/gtest.h>
 
 #include "gpu/gl_context.hpp"
+#include "gpu/gl_depth_binning.hpp"
 #include "gpu/gl_planes.hpp"
+#include "gpu/gl_radix_sort.hpp"
+#include "gpu/gl_scene.hpp"
 #include "gpu/gl_swizzle.hpp"
 #include "render/depth_binning.hpp"
 #include "render/g2lf.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
+#include "render/scene_io.hpp"
+#include "../test_data.hpp"
 #include "../render/render_test_scenes.hpp"
 
 namespace lfd::gpu {
@@ -31,7 +37,7 @@ HeadlessContext& context() {
 }
 
 // A scene seen through one quilt geometry, with its reference camera for some G2LF options.
-struct Setup {
+struct TestScene {
   std::string name;
   render::GaussianScene scene;
   render::QuiltGeometry geometry;
@@ -40,9 +46,9 @@ struct Setup {
 };
 
 // Random Gaussians in front of a camera at the origin; 9 views of 64x48 in a 3x3 quilt.
-const Setup& cloud() {
-  static const Setup s = [] {
-    Setup s;
+const TestScene& cloud() {
+  static const TestScene s = [] {
+    TestScene s;
     s.name = "cloud";
     s.scene = render::testing::random_cloud(3000, 2.5f, 6.0f, 11);
     const auto base = render::make_look_at_camera({0, 0, 0}, {0, 0, 3.5f}, {0, 1, 0}, 0.6f, 64, 48);
@@ -55,9 +61,9 @@ const Setup& cloud() {
 
 // The generated tabletop (ground, objects at several depths, background), 10 views of 56x40 in
 // a 4x3 quilt with a margin (the tiles do not fill the texture) and a grey background.
-const Setup& tabletop() {
-  static const Setup s = [] {
-    Setup s;
+const TestScene& tabletop() {
+  static const TestScene s = [] {
+    TestScene s;
     s.name = "tabletop";
     render::SceneGeneratorOptions g;
     g.count = 4000;
@@ -74,7 +80,7 @@ const Setup& tabletop() {
   return s;
 }
 
-render::ReferenceCamera reference_camera(const Setup& s, const render::G2lfOptions& o) {
+render::ReferenceCamera reference_camera(const TestScene& s, const render::G2lfOptions& o) {
   const float d_shift = o.d_shift >= 0.0f ? o.d_shift
                                           : render::make_reference_camera(s.geometry, 0.0f, 1).d_forward;
   return render::make_reference_camera(s.geometry, d_shift, o.plane_scale);
@@ -82,7 +88,7 @@ render::ReferenceCamera reference_camera(const Setup& s, const render::G2lfOptio
 
 // Fraction of a tile-covered quilt's pixels that differ from the background: a comparison
 // of two empty quilts would prove nothing.
-double scene_pixel_fraction(const ImageF& quilt, const Setup& s) {
+double scene_pixel_fraction(const ImageF& quilt, const TestScene& s) {
   size_t differ = 0, total = 0;
   for (int j = 0; j < s.geometry.views; ++j)
     for (int y = 0; y < s.geometry.base.height; ++y)
@@ -99,7 +105,7 @@ double scene_pixel_fraction(const ImageF& quilt, const Setup& s) {
 // ---- Stage 3: the swizzle pass on the CPU's planes ----
 
 struct SwizzleCase {
-  const Setup& (*setup)();
+  const TestScene& (*setup)();
   int plane_scale;
   float d_shift;
   PlanePrecision precision;
@@ -108,7 +114,7 @@ struct SwizzleCase {
 
 double swizzle_psnr(const SwizzleCase& c, double* max_error) {
   context();
-  const Setup& s = c.setup();
+  const TestScene& s = c.setup();
   render::G2lfOptions o;
   o.chunks = 24;
   o.plane_scale = c.plane_scale;
@@ -156,6 +162,104 @@ INSTANTIATE_TEST_SUITE_P(
                       SwizzleCase{tabletop, 2, 0.0f, PlanePrecision::kU8, PlaneFilter::kBilinear},
                       SwizzleCase{tabletop, 1, -1.0f, PlanePrecision::kF32, PlaneFilter::kNearest},
                       SwizzleCase{tabletop, 1, -1.0f, PlanePrecision::kF32, PlaneFilter::kBilinear}));
+
+// ---- Stage 1: depth binning ----
+
+// Gaussians on a few exact depths (a grid of equal z per layer) and some outside the reference
+// frustum: ties and the frustum test are what a GPU binning could get wrong.
+const TestScene& ties() {
+  static const TestScene s = [] {
+    TestScene s;
+    s.name = "ties";
+    for (int layer = 0; layer < 5; ++layer)
+      for (int i = 0; i < 40; ++i)
+        render::testing::add_gaussian(s.scene, {float(i % 8) * 0.3f - 1.2f, float(i / 8) * 0.3f - 0.6f, 3.0f + float(layer)},
+                                      {0.05f, 0.05f, 0.05f}, 0.8f, {0.5f, 0.2f, 0.1f});
+    for (int i = 0; i < 30; ++i)  // beside, behind and in front of the near plane
+      render::testing::add_gaussian(s.scene, {30.0f, 0.0f, 4.0f}, {0.05f, 0.05f, 0.05f}, 0.8f, {0.1f, 0.2f, 0.3f});
+    render::testing::add_gaussian(s.scene, {0.0f, 0.0f, -1.0f}, {0.05f, 0.05f, 0.05f}, 0.8f, {0.1f, 0.2f, 0.3f});
+    const auto base = render::make_look_at_camera({0, 0, 0}, {0, 0, 3.5f}, {0, 1, 0}, 0.6f, 32, 24);
+    s.geometry = render::make_quilt_geometry(base, 3.5f, 40.0f, 5);
+    s.layout = render::make_quilt_layout(s.geometry, 5, 1);
+    return s;
+  }();
+  return s;
+}
+
+// The three-points fixture (tests/data/scenes), framed from its front.
+const TestScene& three_points() {
+  static const TestScene s = [] {
+    TestScene s;
+    s.name = "three-points";
+    s.scene = render::load_scene(test::fixture_scene("three-points.ply"));
+    const auto base = render::make_look_at_camera({0, 0, -4}, {0, 0, 0}, {0, -1, 0}, 0.7f, 32, 24);
+    s.geometry = render::make_quilt_geometry(base, 4.0f, 40.0f, 5);
+    s.layout = render::make_quilt_layout(s.geometry, 5, 1);
+    return s;
+  }();
+  return s;
+}
+
+struct BinningCase {
+  const TestScene& (*setup)();
+  int chunks;
+  ChunkBinning binning;
+  float d_shift;
+};
+
+class GlG2lfBinning : public ::testing::TestWithParam<BinningCase> {};
+
+TEST_P(GlG2lfBinning, SameChunksAndPlaneDepthsAsTheCpu) {
+  const BinningCase& c = GetParam();
+  const TestScene& s = c.setup();
+  HeadlessContext& ctx = context();
+  render::G2lfOptions o;
+  o.d_shift = c.d_shift;
+  const render::ReferenceCamera ref = reference_camera(s, o);
+  const render::DepthChunks cpu = render::bin_by_depth(s.scene, s.geometry, ref, c.chunks, c.binning);
+
+  const GlScene scene(s.scene, ctx.info());
+  GlPlaneTable table(c.chunks);
+  GlDepthBinning binning;
+  GlRadixSort sort;
+  Buffer keys(4), values(4), layers(4);
+  binning.run(scene, ref, c.chunks, c.binning, sort, keys, values, layers, table);
+
+  const PlaneTableHeader header = table.read_header();
+  const std::vector<PlaneTableEntry> entries = table.read_entries();
+  const auto sorted = values.download_as<uint32_t>(s.scene.size());
+  const auto layer_of = layers.download_as<uint32_t>(header.splats_binned);
+  size_t cpu_binned = 0;
+  for (const auto& m : cpu.members) cpu_binned += m.size();
+  ASSERT_EQ(header.splats_binned, cpu_binned);
+  ASSERT_EQ(header.plane_count, cpu.members.size());
+  EXPECT_EQ(entries.back().begin, header.splats_binned);
+  for (size_t k = 0; k < cpu.members.size(); ++k) {
+    // Bit-exact depths: the same float operations as the CPU.
+    EXPECT_EQ(entries[k].depth, cpu.plane_depth[k]) << "plane " << k;
+    std::vector<uint32_t> members(sorted.begin() + entries[k].begin, sorted.begin() + entries[k + 1].begin);
+    std::sort(members.begin(), members.end());
+    EXPECT_EQ(members, cpu.members[k]) << "plane " << k;
+    for (uint32_t i = entries[k].begin; i < entries[k + 1].begin; ++i) ASSERT_EQ(layer_of[i], k) << i;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, GlG2lfBinning,
+    ::testing::Values(BinningCase{cloud, 64, ChunkBinning::kQuantile, -1.0f},
+                      BinningCase{cloud, 64, ChunkBinning::kMixed, -1.0f},
+                      BinningCase{cloud, 7, ChunkBinning::kMixed, 0.5f},
+                      BinningCase{cloud, 1, ChunkBinning::kQuantile, -1.0f},
+                      BinningCase{cloud, 1, ChunkBinning::kMixed, -1.0f},
+                      BinningCase{cloud, 2, ChunkBinning::kMixed, -1.0f},
+                      BinningCase{cloud, 4096, ChunkBinning::kQuantile, 0.0f},
+                      BinningCase{cloud, 4096, ChunkBinning::kMixed, 0.0f},
+                      BinningCase{tabletop, 64, ChunkBinning::kQuantile, 0.0f},
+                      BinningCase{tabletop, 512, ChunkBinning::kMixed, -1.0f},
+                      BinningCase{ties, 12, ChunkBinning::kQuantile, -1.0f},
+                      BinningCase{ties, 12, ChunkBinning::kMixed, -1.0f},
+                      BinningCase{three_points, 4, ChunkBinning::kMixed, -1.0f},
+                      BinningCase{three_points, 8, ChunkBinning::kQuantile, -1.0f}));
 
 }  // namespace
 }  // namespace lfd::gpu
