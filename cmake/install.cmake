@@ -171,7 +171,7 @@ set(_lfd_dependency_table
 set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev"
   "hidapi-hidraw|libhidapi-dev" "libusb-1.0|libusb-1.0-0-dev" "zlib|zlib1g-dev" "glm|libglm-dev"
-  "egl|libegl-dev")
+  "egl|libegl-dev" "libpng16|libpng-dev")
 
 set(_lfd_links)
 foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)

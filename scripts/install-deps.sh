@@ -14,7 +14,7 @@ PACKAGES=(
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth libx11-dev
   # formats and utilities
-  nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libzstd-dev zlib1g-dev
+  nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libpng-dev libzstd-dev zlib1g-dev
   libtbb-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "util/huge_pages.hpp"
+
 namespace lfd {
 
 template <typename T>
@@ -15,8 +17,10 @@ struct ImageT {
   std::vector<T> pixels;
 
   ImageT() = default;
-  ImageT(int w, int h, int c, T fill = T{})
-      : width(w), height(h), channels(c), pixels(size_t(w) * size_t(h) * size_t(c), fill) {}
+  // Quilts and panels are large: their pixels go on huge pages (util/huge_pages.hpp).
+  ImageT(int w, int h, int c, T fill = T{}) : width(w), height(h), channels(c) {
+    assign_large(pixels, size_t(w) * size_t(h) * size_t(c), fill);
+  }
 
   bool empty() const { return pixels.empty(); }
   T& at(int x, int y, int c) { return pixels[(size_t(y) * width + x) * channels + c]; }
@@ -28,11 +32,15 @@ struct ImageT {
 using Image8 = ImageT<uint8_t>;
 using ImageF = ImageT<float>;
 
-// Reads a PNG (or any format stb_image reads) as `channels` channels (1, 3 or 4).
-// Throws InputError naming the file when it is missing or not a readable image.
+// Reads a PNG (libpng) or any other format stb_image reads, as `channels` channels (1, 3 or 4),
+// with stb_image's conversions (util/png_codec.hpp). Throws InputError naming the file when it
+// is missing or not a readable image.
 Image8 read_image(const std::filesystem::path& path, int channels = 3);
 
-// Writes a PNG atomically (temp file + rename). Throws on I/O failure.
+// Writes an 8-bit PNG (1 to 4 channels) atomically (temp file + rename; util/atomic_file.hpp),
+// fast (util/png_codec.hpp). Throws InputError naming the file when it cannot be created (its
+// folder cannot be made, the path is a folder), std::runtime_error on a write error; neither
+// leaves a file behind.
 void write_png(const std::filesystem::path& path, const Image8& image);
 
 // Conversions between 8-bit values and floats in [0, 1] (no colour-space change).
