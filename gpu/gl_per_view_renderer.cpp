@@ -18,22 +18,22 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
     throw std::invalid_argument("per-view renderer: the accumulation target must be GL_RGBA16F or GL_RGBA32F");
 }
 
-GlPerViewRenderer::ViewTimers* GlPerViewRenderer::timers_for(int view) {
-  if (!options_.gpu_timers) return nullptr;
-  while (int(timers_.size()) <= view) timers_.emplace_back();
-  return &timers_[size_t(view)];
+void GlPerViewRenderer::stamp(size_t index) {
+  if (!options_.gpu_timers) return;
+  while (timestamps_.size() <= index) {
+    GLuint id = 0;
+    glGenQueries(1, &id);
+    timestamps_.emplace_back(id);
+  }
+  glQueryCounter(timestamps_[index].id(), GL_TIMESTAMP);
 }
 
-void GlPerViewRenderer::prepare(const render::Camera& camera, const render::RasterSettings& settings,
-                                ViewTimers* timers) {
-  if (timers) timers->preprocess.begin();
+void GlPerViewRenderer::prepare(const render::Camera& camera, const render::RasterSettings& settings, int view) {
+  stamp(4 * size_t(view));
   preprocess_.run(scene_, camera, settings, buffers_);
-  if (timers) {
-    timers->preprocess.end();
-    timers->sort.begin();
-  }
+  stamp(4 * size_t(view) + 1);
   sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()));
-  if (timers) timers->sort.end();
+  stamp(4 * size_t(view) + 2);
 }
 
 void GlPerViewRenderer::ensure_view_target(int width, int height) {
@@ -46,12 +46,19 @@ void GlPerViewRenderer::ensure_view_target(int width, int height) {
 void GlPerViewRenderer::finish_stats(int views) {
   stats_ = {};
   stats_.views = views;
-  if (options_.gpu_timers)
-    for (int v = 0; v < views; ++v) {
-      stats_.preprocess_s += timers_[size_t(v)].preprocess.seconds();
-      stats_.sort_s += timers_[size_t(v)].sort.seconds();
-      stats_.raster_s += timers_[size_t(v)].raster.seconds();
+  if (options_.gpu_timers) {
+    const auto at = [&](size_t index) {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(timestamps_[index].id(), GL_QUERY_RESULT, &ns);
+      return double(ns) * 1e-9;
+    };
+    for (size_t v = 0; v < size_t(views); ++v) {
+      const double t0 = at(4 * v), t1 = at(4 * v + 1), t2 = at(4 * v + 2), t3 = at(4 * v + 3);
+      stats_.preprocess_s += t1 - t0;
+      stats_.sort_s += t2 - t1;
+      stats_.raster_s += t3 - t2;
     }
+  }
   stats_.memory_bytes = scene_.bytes() + buffers_.bytes() + sort_.scratch_bytes() + view_target_.bytes();
 }
 
@@ -59,16 +66,14 @@ const Texture& GlPerViewRenderer::render_view(const render::Camera& camera, cons
   if (camera.width <= 0 || camera.height <= 0)
     throw_input_error("per-view renderer: image size {}x{} is not positive", camera.width, camera.height);
   ensure_view_target(camera.width, camera.height);
-  ViewTimers* timers = timers_for(0);
-  prepare(camera, settings, timers);
+  prepare(camera, settings, 0);
   SplatRasterTarget target;
   target.framebuffer = view_framebuffer_.id();
   target.image_size = {camera.width, camera.height};
-  if (timers) timers->raster.begin();
   raster_.clear(target);
   raster_.draw(buffers_, target);
   raster_.composite_background(target, settings.background, /*keep_transmittance=*/true);
-  if (timers) timers->raster.end();
+  stamp(3);
   finish_stats(1);
   return view_target_;
 }
@@ -108,8 +113,7 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
 
   const int tile_w = layout.tile_width(), tile_h = layout.tile_height();
   for (int view = 0; view < geometry.views; ++view) {
-    ViewTimers* timers = timers_for(view);
-    prepare(geometry.view_camera(view), settings, timers);
+    prepare(geometry.view_camera(view), settings, view);
     // The tile in GL window coordinates (bottom-up: tile row r starts at r * tile_h). The view's
     // top row goes to the tile's top row and a view larger than the tile is cropped at its
     // right and bottom, as render::place_view copies it.
@@ -119,7 +123,6 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
     tile.image_size = {W, H};
     tile.viewport_origin = {x0, y0 + tile_h - H};
     tile.scissor = {x0, y0 + tile_h - std::min(tile_h, H), std::min(tile_w, W), std::min(tile_h, H)};
-    if (timers) timers->raster.begin();
     if (direct) {
       raster_.clear(tile);
       raster_.draw(buffers_, tile);
@@ -132,7 +135,7 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
       raster_.draw(buffers_, view_target);
       raster_.composite_from(view_target_, tile, settings.background);
     }
-    if (timers) timers->raster.end();
+    stamp(4 * size_t(view) + 3);
   }
   finish_stats(geometry.views);
 }

@@ -37,8 +37,9 @@ struct GlPerViewOptions {
   // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
   // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
   GLenum accumulation_format = GL_RGBA32F;
-  // Time each pass with GL_TIME_ELAPSED queries (read at the end of a render call, which waits
-  // for the GPU: for benchmarks, not for interactive frames).
+  // Time each pass with GL_TIMESTAMP queries (read at the end of a render call, which waits
+  // for the GPU: for benchmarks, not for interactive frames). Timestamps, not GL_TIME_ELAPSED:
+  // llvmpipe's elapsed-time queries read 0 around compute dispatches.
   bool gpu_timers = false;
 };
 
@@ -66,13 +67,11 @@ class GlPerViewRenderer {
   const GlPerViewStats& stats() const { return stats_; }
 
  private:
-  struct ViewTimers {
-    GpuTimer preprocess, sort, raster;
-  };
-  // Preprocess and sort the view of `camera` into buffers_.
-  void prepare(const render::Camera& camera, const render::RasterSettings& settings, ViewTimers* timers);
+  // Preprocess and sort the view of `camera` into buffers_ (timestamps 4 view .. 4 view + 2).
+  void prepare(const render::Camera& camera, const render::RasterSettings& settings, int view);
   void ensure_view_target(int width, int height);
-  ViewTimers* timers_for(int view);
+  // Records timestamp `index` when timing (4 per view: start, preprocessed, sorted, drawn).
+  void stamp(size_t index);
   void finish_stats(int views);
 
   const GlScene& scene_;
@@ -83,7 +82,7 @@ class GlPerViewRenderer {
   SplatBuffers buffers_;
   Texture view_target_;
   Framebuffer view_framebuffer_;
-  std::vector<ViewTimers> timers_;
+  std::vector<GlName<delete_query>> timestamps_;
   GlPerViewStats stats_;
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <vector>
 
@@ -78,6 +79,8 @@ void expect_matches_cpu(const HeadlessContext& context, const render::GaussianSc
       EXPECT_NEAR(g.color[k], c.color[k], 2e-5f) << i << " colour " << k;
     }
   }
+  std::printf("[ preprocess ] %zu Gaussians, %zu visible, %zu differ in radius or rectangle\n", scene.size(),
+              visible, integer_mismatches);
   EXPECT_LE(integer_mismatches, scene.size() / 1000) << "radius or rectangle differs";
   EXPECT_GT(visible, scene.size() / 4) << "the test scene should be mostly visible";
   EXPECT_LT(visible, scene.size()) << "the test scene should have culled Gaussians";
