@@ -1,0 +1,26 @@
+#pragma once
+// `--backend cpu|gl|auto` for the commands that render or interlace: which implementation runs.
+// gl needs an OpenGL 4.5 core context (headless EGL); without one it is an input error (exit 2,
+// one line). auto takes the GPU when a context can be made and otherwise the CPU, saying why.
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "gpu/gl_context.hpp"
+
+namespace lfd::apps {
+
+enum class Backend { kCpu, kGl, kAuto };
+
+Backend parse_backend(const std::string& name);  // InputError for another name
+
+// Adds `--backend` (choices cpu, gl, auto) to `app`, bound to `name`.
+CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::string& help);
+
+// What will run: a headless context for gl (GlUnavailable propagates: exit 2), for auto a context
+// or, when none can be made, null with a notice on stderr naming the reason; null for cpu.
+// With a context, prints "backend: gl on <renderer>" to stdout.
+std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend);
+
+}  // namespace lfd::apps
