@@ -83,15 +83,16 @@ TEST(GlPerView, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
 
 TEST(GlPerView, TheFixtureAndDemoScenesMatchTheCpu) {
   HeadlessContext context;
-  for (const auto& path : {test::fixture_scene("three-points.ply"), test::project_data() / "scenes" / "demo.ply"}) {
+  const auto demo = test::project_data() / "scenes" / "demo.ply";
+  for (const auto& path : {test::fixture_scene("three-points.ply"), demo}) {
     const auto scene = render::load_scene(path);
-    const auto camera = render::camera_from_spec(render::frame_scene(scene), 128, 128);
+    const render::CameraSpec framing = render::frame_scene(scene);
+    const auto camera = render::camera_from_spec(framing, 128, 128);
     GlScene gl_scene(scene, context.info());
     GlPerViewRenderer renderer(gl_scene);
     compare_view(renderer, scene, camera, {}, path.filename().string());
-    const auto geometry = render::make_quilt_geometry(camera, glm::length(render::frame_scene(scene).look_at -
-                                                                          render::frame_scene(scene).position),
-                                                      40.0f, 9);
+    const float focal_distance = glm::length(framing.look_at - framing.position);
+    const auto geometry = render::make_quilt_geometry(camera, focal_distance, 40.0f, 9);
     compare_view(renderer, scene, geometry.view_camera(1), {}, path.filename().string() + " off-axis view 1/9");
   }
 }

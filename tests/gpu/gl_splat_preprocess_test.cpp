@@ -90,7 +90,7 @@ void expect_matches_cpu(const HeadlessContext& context, const render::GaussianSc
 
 TEST(GlSplatPreprocess, MatchesTheCpuPreprocessOnARandomCloudWithNearCulls) {
   HeadlessContext context;
-  // Depths from 0.05: the Gaussians before z = 0.2 are culled; many others fall off the image.
+  // Depths from 0.05: the Gaussians before z = 0.2 are culled.
   const auto scene = render::testing::random_cloud(3000, 0.05f, 12.0f, 17);
   const auto camera = render::make_look_at_camera({0.3f, 0.1f, -0.5f}, {0, 0, 6}, {0, 1, 0}, 0.7f, 128, 96);
   expect_matches_cpu(context, scene, camera, {});
