@@ -79,15 +79,4 @@ Texture make_quilt_texture(const render::QuiltLayout& layout, GLenum internal_fo
   return quilt;
 }
 
-ImageF read_quilt_texture(const Texture& quilt) {
-  const std::vector<float> rgba = read_texture_rgba(quilt);
-  ImageF out(quilt.width(), quilt.height(), 3);
-  for (int y = 0; y < quilt.height(); ++y) {
-    const float* src = rgba.data() + size_t(quilt.height() - 1 - y) * quilt.width() * 4;
-    for (int x = 0; x < quilt.width(); ++x)
-      for (int c = 0; c < 3; ++c) out.at(x, y, c) = src[4 * x + c];
-  }
-  return out;
-}
-
 }  // namespace lfd::gpu

@@ -17,7 +17,6 @@
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
 #include "render/swizzle_blend.hpp"
-#include "util/image.hpp"
 
 namespace lfd::gpu {
 
@@ -39,8 +38,6 @@ class GlSwizzle {
 
 // A quilt texture of the layout's size, cleared to 0 (as the CPU's quilt image).
 Texture make_quilt_texture(const render::QuiltLayout& layout, GLenum internal_format = GL_RGBA8);
-
-// The quilt texture as the CPU's image: RGB float, rows top-down (waits for the GPU).
-ImageF read_quilt_texture(const Texture& quilt);
+// Read back as the CPU's top-down image: read_image_top_down (gpu/gl_per_view_renderer.hpp).
 
 }  // namespace lfd::gpu

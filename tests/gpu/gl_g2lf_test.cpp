@@ -7,10 +7,13 @@
 #include <memory>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_depth_binning.hpp"
+#include "gpu/gl_g2lf.hpp"
+#include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_radix_sort.hpp"
 #include "gpu/gl_scene.hpp"
@@ -23,6 +26,7 @@
 #include "render/scene_io.hpp"
 #include "../test_data.hpp"
 #include "../render/render_test_scenes.hpp"
+#include "util/error.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -132,7 +136,7 @@ double swizzle_psnr(const SwizzleCase& c, double* max_error) {
   const Texture quilt = make_quilt_texture(s.layout, GL_RGBA32F);
   GlSwizzle swizzle;
   swizzle.run(gl_planes, s.geometry, ref, s.layout, c.filter, s.background, quilt);
-  const ImageF gl = read_quilt_texture(quilt);
+  const ImageF gl = read_image_top_down(quilt);
   EXPECT_GT(scene_pixel_fraction(cpu, s), 0.2) << "the planes must show the scene";
   *max_error = 0.0;
   for (size_t i = 0; i < gl.pixels.size(); ++i)
@@ -260,6 +264,146 @@ INSTANTIATE_TEST_SUITE_P(
                       BinningCase{ties, 12, ChunkBinning::kMixed, -1.0f},
                       BinningCase{three_points, 4, ChunkBinning::kMixed, -1.0f},
                       BinningCase{three_points, 8, ChunkBinning::kQuantile, -1.0f}));
+
+// ---- The whole renderer against render::render_quilt_g2lf ----
+
+struct RendererCase {
+  const TestScene& (*setup)();
+  int chunks;
+  ChunkBinning binning;
+  PlaneFilter filter;
+  int plane_scale;
+  PlanePrecision precision;
+  float d_shift;
+  bool adaptive_filter = true;
+};
+
+std::string describe(const RendererCase& c) {
+  return fmt::format("{} N={} {} {} P_s={} {} D_shift={}{}", c.setup().name, c.chunks,
+                     c.binning == ChunkBinning::kMixed ? "mixed" : "quantile",
+                     c.filter == PlaneFilter::kNearest ? "nearest" : "bilinear", c.plane_scale,
+                     c.precision == PlanePrecision::kU8 ? "u8" : "f32", c.d_shift,
+                     c.adaptive_filter ? "" : " constant filter");
+}
+
+render::G2lfOptions g2lf_options(const RendererCase& c) {
+  render::G2lfOptions o;
+  o.chunks = c.chunks;
+  o.binning = c.binning;
+  o.filter = c.filter;
+  o.plane_scale = c.plane_scale;
+  o.precision = c.precision;
+  o.d_shift = c.d_shift;
+  o.adaptive_filter = c.adaptive_filter;
+  return o;
+}
+
+class GlG2lfRendering : public ::testing::TestWithParam<RendererCase> {};
+
+TEST_P(GlG2lfRendering, MatchesTheCpuG2lfQuilt) {
+  const RendererCase& c = GetParam();
+  const TestScene& s = c.setup();
+  HeadlessContext& ctx = context();
+  GlG2lfOptions options;
+  options.g2lf = g2lf_options(c);
+  options.gpu_timers = true;
+  render::RasterSettings settings;
+  settings.background = s.background;
+  render::G2lfStats cpu_stats;
+  const ImageF cpu = render::render_quilt_g2lf(s.scene, s.geometry, s.layout, options.g2lf, settings, &cpu_stats);
+
+  const GlScene scene(s.scene, ctx.info());
+  GlG2lfRenderer renderer(scene, ctx.info());
+  const Texture quilt = make_quilt_texture(s.layout, GL_RGBA32F);
+  renderer.render_quilt(s.geometry, s.layout, options, settings, quilt);
+  const ImageF gl = read_image_top_down(quilt);
+  const double p = render::psnr(gl, cpu);
+  std::printf("G2LF %s: PSNR GL vs CPU %.2f dB (%d planes)\n", describe(c).c_str(), p, renderer.stats().planes);
+  EXPECT_GE(p, 40.0);
+  EXPECT_GT(scene_pixel_fraction(cpu, s), 0.01) << "the quilt must show the scene";
+  EXPECT_EQ(renderer.stats().planes, cpu_stats.planes);
+  EXPECT_EQ(renderer.stats().gaussians_in_frustum, cpu_stats.gaussians_in_frustum);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cases, GlG2lfRendering,
+    ::testing::Values(
+        RendererCase{cloud, 64, ChunkBinning::kQuantile, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f},
+        RendererCase{cloud, 64, ChunkBinning::kMixed, PlaneFilter::kBilinear, 2, PlanePrecision::kF32, 1.0f},
+        RendererCase{cloud, 16, ChunkBinning::kMixed, PlaneFilter::kNearest, 2, PlanePrecision::kU8, 0.0f},
+        RendererCase{cloud, 32, ChunkBinning::kQuantile, PlaneFilter::kBilinear, 1, PlanePrecision::kF32, -1.0f},
+        RendererCase{tabletop, 64, ChunkBinning::kMixed, PlaneFilter::kBilinear, 1, PlanePrecision::kU8, -1.0f},
+        RendererCase{tabletop, 32, ChunkBinning::kQuantile, PlaneFilter::kBilinear, 2, PlanePrecision::kU8, 0.5f},
+        RendererCase{tabletop, 64, ChunkBinning::kQuantile, PlaneFilter::kNearest, 1, PlanePrecision::kF32, -1.0f},
+        RendererCase{tabletop, 24, ChunkBinning::kMixed, PlaneFilter::kNearest, 2, PlanePrecision::kF32, 0.0f},
+        RendererCase{tabletop, 24, ChunkBinning::kMixed, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f, false},
+        RendererCase{three_points, 4, ChunkBinning::kMixed, PlaneFilter::kBilinear, 1, PlanePrecision::kU8, -1.0f},
+        RendererCase{tabletop, 2, ChunkBinning::kQuantile, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f},
+        RendererCase{cloud, 1, ChunkBinning::kMixed, PlaneFilter::kBilinear, 1, PlanePrecision::kU8, -1.0f}));
+
+TEST(GlG2lfRenderer, HalfFloatPlanesStayCloseToTheCpuFloatPlanes) {
+  const TestScene& s = tabletop();
+  context();
+  GlG2lfOptions options;
+  options.g2lf.chunks = 32;
+  options.g2lf.precision = PlanePrecision::kF32;
+  options.plane_format = PlaneFormat::kRgba16f;
+  render::RasterSettings settings;
+  settings.background = s.background;
+  const ImageF cpu = render::render_quilt_g2lf(s.scene, s.geometry, s.layout, options.g2lf, settings);
+  const ImageF gl = render_quilt_g2lf_gl(s.scene, s.geometry, s.layout, options, settings);
+  const double p = render::psnr(gl, cpu);
+  std::printf("G2LF RGBA16F planes vs CPU f32: PSNR %.2f dB\n", p);
+  EXPECT_GE(p, 40.0);
+}
+
+TEST(GlG2lfRenderer, RefusesPlanesBeyondTheMemoryBudgetNamingTheOptions) {
+  const TestScene& s = cloud();
+  HeadlessContext& ctx = context();
+  const GlScene scene(s.scene, ctx.info());
+  GlG2lfRenderer renderer(scene, ctx.info());
+  GlG2lfOptions options;
+  options.g2lf.chunks = 64;
+  options.g2lf.plane_scale = 2;
+  // 64 planes of 128x96 RGBA8 = 3 MiB: a 2 MiB budget cannot hold them.
+  options.memory_budget_bytes = size_t(2) << 20;
+  const Texture quilt = make_quilt_texture(s.layout);
+  try {
+    renderer.render_quilt(s.geometry, s.layout, options, {}, quilt);
+    FAIL() << "planes beyond the budget were allocated";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    std::printf("%s\n", what.c_str());
+    EXPECT_NE(what.find("--chunks"), std::string::npos) << what;
+    EXPECT_NE(what.find("--plane-scale"), std::string::npos) << what;
+    EXPECT_NE(what.find("--precision"), std::string::npos) << what;
+    EXPECT_NE(what.find("MiB"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << "one line";
+  }
+  // Fewer chunks fit the same budget.
+  options.g2lf.chunks = 16;
+  EXPECT_NO_THROW(renderer.render_quilt(s.geometry, s.layout, options, {}, quilt));
+}
+
+TEST(GlG2lfRenderer, RefusesMoreChunksThanArrayLayers) {
+  const TestScene& s = cloud();
+  const HeadlessContext& ctx = context();
+  GlG2lfOptions options;
+  options.g2lf.chunks = 4096;
+  if (ctx.info().max_array_layers >= options.g2lf.chunks) GTEST_SKIP() << "this GPU has 4096 layers";
+  EXPECT_THROW(check_g2lf_fits(options, s.geometry, s.scene.size(), ctx.info(), std::nullopt), InputError);
+}
+
+TEST(GlG2lfRenderer, RefusesOptionsTheCpuRefuses) {
+  const TestScene& s = cloud();
+  HeadlessContext& ctx = context();
+  const GlScene scene(s.scene, ctx.info());
+  GlG2lfRenderer renderer(scene, ctx.info());
+  GlG2lfOptions options;
+  options.g2lf.d_shift = 100.0f;  // beyond D_forward
+  const Texture quilt = make_quilt_texture(s.layout);
+  EXPECT_THROW(renderer.render_quilt(s.geometry, s.layout, options, {}, quilt), InputError);
+}
 
 }  // namespace
 }  // namespace lfd::gpu

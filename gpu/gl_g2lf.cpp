@@ -1,0 +1,174 @@
+#include "gpu/gl_g2lf.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "gpu/gl_per_view_renderer.hpp"
+#include "util/error.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+double mib(double bytes) { return bytes / 1048576.0; }
+
+// D_shift < 0 means D_forward (render::render_quilt_g2lf).
+render::ReferenceCamera reference_camera(const render::G2lfOptions& o, const render::QuiltGeometry& g) {
+  const float d_shift = o.d_shift >= 0.0f ? o.d_shift : render::make_reference_camera(g, 0.0f, 1).d_forward;
+  return render::make_reference_camera(g, d_shift, o.plane_scale);
+}
+
+}  // namespace
+
+size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
+  const int s = options.g2lf.plane_scale;
+  return plane_texture_bytes(options.format(), options.g2lf.chunks, geometry.base.width * s,
+                             geometry.base.height * s) +
+         plane_table_bytes(options.g2lf.chunks);
+}
+
+size_t g2lf_buffer_bytes(size_t gaussians) {
+  // records (64), keys, values, their sort copies, layers (4 each).
+  return gaussians * (sizeof(SplatRecord) + 5 * sizeof(uint32_t));
+}
+
+void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
+                     size_t gaussians, const GlInfo& info, std::optional<long long> free_bytes) {
+  const render::G2lfOptions& o = options.g2lf;
+  const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
+  if (info.max_array_layers > 0 && o.chunks > info.max_array_layers)
+    throw_input_error("G2LF on the GPU: --chunks {} is more planes than this GPU's {} texture array "
+                      "layers (GL_MAX_ARRAY_TEXTURE_LAYERS); use --chunks {} or fewer",
+                      o.chunks, info.max_array_layers, info.max_array_layers);
+  if (info.max_texture_size > 0 && std::max(wp, hp) > info.max_texture_size)
+    throw_input_error("G2LF on the GPU: planes of {}x{} (--plane-scale {} x {}x{}) exceed this GPU's "
+                      "texture size {}; lower --plane-scale",
+                      wp, hp, o.plane_scale, geometry.base.width, geometry.base.height, info.max_texture_size);
+  const double planes = double(g2lf_plane_array_bytes(options, geometry));
+  const double buffers = double(g2lf_buffer_bytes(gaussians));
+  std::optional<double> budget;
+  std::string what;
+  if (options.memory_budget_bytes > 0) {
+    budget = double(options.memory_budget_bytes);
+    what = fmt::format("the memory budget is {:.1f} MiB", mib(*budget));
+  } else if (free_bytes) {
+    budget = double(*free_bytes);
+    what = fmt::format("this GPU has {:.1f} MiB free", mib(*budget));
+  }
+  if (budget && planes + buffers > *budget)
+    throw_input_error("G2LF on the GPU needs {:.1f} MiB ({} planes of {}x{} {}: {:.1f} MiB, "
+                      "per-Gaussian buffers: {:.1f} MiB) but {}; lower --chunks, --plane-scale or "
+                      "--precision",
+                      mib(planes + buffers), o.chunks, wp, hp, plane_format_name(options.format()),
+                      mib(planes), mib(buffers), what);
+}
+
+GlG2lfRenderer::GlG2lfRenderer(const GlScene& scene, const GlInfo& info) : scene_(scene), info_(info) {}
+
+void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
+  const render::G2lfOptions& o = options.g2lf;
+  const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
+  const bool same = planes_.texels.id() && planes_.format == options.format() &&
+                    planes_.max_planes == o.chunks && planes_.width == wp && planes_.height == hp;
+  const size_t held = same ? 0 : planes_.texels.bytes() + planes_.table.buffer.bytes() + buffers_.bytes() +
+                                     layers_.bytes() + sort_.scratch_bytes();
+  // What the driver says is free, plus what this renderer would give back before allocating.
+  std::optional<long long> free_bytes;
+  if (!same && options.memory_budget_bytes == 0) {
+    free_bytes = query_gl_info(info_.platform).free_memory_bytes;
+    if (free_bytes) *free_bytes += (long long)held;
+  }
+  check_g2lf_fits(options, geometry, scene_.size(), info_, free_bytes);
+  if (same) return;
+  planes_ = GlPlanes();  // free the old array before the new one: a lower peak
+  planes_ = GlPlanes(options.format(), o.chunks, wp, hp);
+  plane_framebuffer_ = Framebuffer();
+  plane_framebuffer_.attach(0, planes_.texels);  // every layer: layered rendering
+  plane_framebuffer_.finish(1);
+}
+
+void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+                                  const GlG2lfOptions& options, const render::RasterSettings& settings,
+                                  const Texture& quilt) {
+  const render::G2lfOptions& o = options.g2lf;
+  o.check(geometry);
+  layout.check("quilt");
+  if (quilt.width() != layout.width || quilt.height() != layout.height || quilt.layers() != 0)
+    throw_input_error("G2LF on the GPU: the quilt texture is {}x{}, the layout {}x{}", quilt.width(),
+                      quilt.height(), layout.width, layout.height);
+  if (geometry.views > layout.cols * layout.rows)
+    throw_input_error("G2LF on the GPU: {} views do not fit a quilt of {} tiles", geometry.views,
+                      layout.cols * layout.rows);
+  ensure_planes(options, geometry);
+  const render::ReferenceCamera ref = reference_camera(o, geometry);
+
+  // The planes' rasterizer settings, as render_quilt_g2lf and render_sweeping_planes set them.
+  render::RasterSettings plane_settings = settings;
+  if (o.adaptive_filter)
+    plane_settings.dilation_px2 =
+        render::adaptive_filter_variance(geometry, ref, o.plane_scale, settings.dilation_px2);
+  plane_settings.background = glm::vec3(0.0f);
+  plane_settings.sh_origin = geometry.base.position_world;
+
+  const bool timed = options.gpu_timers;
+  if (timed) timers_.preprocess.begin();
+  preprocess_.run(scene_, ref.camera, plane_settings, buffers_);
+  if (timed) {
+    timers_.preprocess.end();
+    timers_.binning.begin();
+  }
+  // Overwrites the preprocess's keys and values (the planes need the binning's order) and sets
+  // the draw's instance count to the binned count; culled records are zero and draw nothing.
+  binning_.run(scene_, ref, o.chunks, o.binning, sort_, buffers_.keys, buffers_.values, layers_,
+               planes_.table, &buffers_.draw);
+  if (timed) {
+    timers_.binning.end();
+    timers_.raster.begin();
+  }
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // C = 0, T = 1 in every layer
+  glClearTexImage(planes_.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
+  SplatRasterTarget target;
+  target.framebuffer = plane_framebuffer_.id();
+  target.image_size = {planes_.width, planes_.height};
+  raster_.draw(buffers_.records, buffers_.values, buffers_.draw, target, &layers_);
+  if (timed) {
+    timers_.raster.end();
+    timers_.swizzle.begin();
+  }
+  const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
+  glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
+  swizzle_.run(planes_, geometry, ref, layout, o.filter, settings.background, quilt);
+  if (timed) timers_.swizzle.end();
+  check_gl("a G2LF frame");
+
+  stats_ = {};
+  stats_.plane_bytes = planes_.texels.bytes();
+  stats_.gpu_bytes = scene_.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() +
+                     buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes();
+  stats_.gpu_bytes_peak = gpu_bytes_peak();
+  if (timed) {
+    const PlaneTableHeader header = planes_.table.read_header();
+    stats_.gaussians_in_frustum = header.splats_binned;
+    stats_.planes = int(header.plane_count);
+    stats_.plane_bytes_used = plane_texture_bytes(planes_.format, stats_.planes, planes_.width, planes_.height);
+    stats_.seconds_planes = timers_.preprocess.seconds() + timers_.raster.seconds();
+    stats_.seconds_binning = timers_.binning.seconds();
+    stats_.seconds_swizzle = timers_.swizzle.seconds();
+  }
+}
+
+ImageF render_quilt_g2lf_gl(const render::GaussianScene& scene, const render::QuiltGeometry& geometry,
+                            const render::QuiltLayout& layout, const GlG2lfOptions& options,
+                            const render::RasterSettings& settings, GlG2lfStats* stats) {
+  options.g2lf.check(geometry);
+  const GlInfo info = query_gl_info("current context");
+  const GlScene gl_scene(scene, info);
+  GlG2lfRenderer renderer(gl_scene, info);
+  const Texture quilt = make_quilt_texture(layout, GL_RGBA32F);
+  renderer.render_quilt(geometry, layout, options, settings, quilt);
+  if (stats) *stats = renderer.stats();
+  return read_image_top_down(quilt, 3);
+}
+
+}  // namespace lfd::gpu

@@ -1,0 +1,113 @@
+#pragma once
+// G2LF on the GPU (paper Alg. 1; issue #9 "G2LF on the GPU"): the twin of render/g2lf.hpp,
+// the orchestrator of its stages, each behind its own header, pass for pass beside the CPU's:
+//   preprocess  GlSplatPreprocess from the reference camera, dilation = the adaptive filter
+//               variance of Eq. gs_prefilter_fix, SH seen from the base camera centre
+//               (render::render_sweeping_planes' settings)
+//   binning     GlDepthBinning (render::bin_by_depth): cull, one sort by reference depth,
+//               chunk cuts, plane table, per-splat layer
+//   planes      GlSplatRaster layered: every chunk in ONE instanced indirect draw into the layers
+//               of a 2D array texture (premultiplied colour + transmittance, zero background)
+//   swizzle     GlSwizzle (render::swizzle_blend) into the quilt texture
+// One frame is GPU work only: the plane count, the binned count and the draw's instance count
+// stay on the GPU, so nothing waits for a read-back (GpuTimer reads and stats excepted).
+#include <cstddef>
+#include <optional>
+
+#include <epoxy/gl.h>
+
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_depth_binning.hpp"
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_planes.hpp"
+#include "gpu/gl_radix_sort.hpp"
+#include "gpu/gl_scene.hpp"
+#include "gpu/gl_splat_preprocess.hpp"
+#include "gpu/gl_splat_raster.hpp"
+#include "gpu/gl_swizzle.hpp"
+#include "render/g2lf.hpp"
+#include "util/image.hpp"
+
+namespace lfd::gpu {
+
+struct GlG2lfOptions {
+  render::G2lfOptions g2lf;  // every option of the CPU path, with its defaults
+  // Plane texel format; unset: the CPU precision's (u8 -> RGBA8, f32 -> RGBA32F). RGBA16F
+  // exists only here.
+  std::optional<PlaneFormat> plane_format;
+  // GPU bytes G2LF may allocate (planes + per-Gaussian buffers); 0: the free memory the driver
+  // reports, no limit beyond the texture limits when it reports none (llvmpipe).
+  size_t memory_budget_bytes = 0;
+  // Per-stage GPU timers, the plane and binned counts in the stats: read at the end of a frame,
+  // which waits for the GPU (benchmarks, tests; not interactive frames).
+  bool gpu_timers = false;
+
+  PlaneFormat format() const { return plane_format.value_or(plane_format_for(g2lf.precision)); }
+};
+
+struct GlG2lfStats {
+  size_t gaussians_in_frustum = 0;  // binned (gpu_timers only)
+  int planes = 0;                   // planes used this frame (gpu_timers only)
+  size_t plane_bytes = 0;           // the plane array: N_chunk layers (what is allocated)
+  size_t plane_bytes_used = 0;      // the layers in use (gpu_timers only; the CPU's plane_bytes)
+  double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;  // GPU time (gpu_timers)
+  size_t gpu_bytes = 0;       // held by the scene and this renderer now
+  size_t gpu_bytes_peak = 0;  // the process's peak of GPU allocations (gpu_bytes_peak())
+};
+
+// GPU bytes a frame needs beyond the scene: the plane array (N_chunk layers of P_s W x P_s H)
+// and the per-Gaussian buffers (records, keys, values, layers, the sort's copies).
+size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
+size_t g2lf_buffer_bytes(size_t gaussians);
+
+// Throws InputError (one line: what is needed, what there is, which option lowers it) when the
+// planes exceed the texture limits of `info` (GL_MAX_TEXTURE_SIZE, GL_MAX_ARRAY_TEXTURE_LAYERS)
+// or the budget: options.memory_budget_bytes, else `free_bytes` (the driver's figure) if known.
+void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
+                     size_t gaussians, const GlInfo& info, std::optional<long long> free_bytes);
+
+class GlG2lfRenderer {
+ public:
+  // Needs a current context; `scene` must outlive the renderer; `info` the context's limits.
+  GlG2lfRenderer(const GlScene& scene, const GlInfo& info);
+
+  // Alg. 1 into `quilt` (layout.width x layout.height; RGBA8, RGBA16F or RGBA32F; rows
+  // bottom-up, view 0 bottom-left): rgb = the CPU's render_quilt_g2lf, alpha 1, 0 outside the
+  // tiles. `settings.background` is the background. Checks options.g2lf against `geometry` and
+  // the planes against the GPU first (InputError). Planes are kept between frames and
+  // reallocated when N_chunk, P_s, the view size or the format change.
+  void render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+                    const GlG2lfOptions& options, const render::RasterSettings& settings,
+                    const Texture& quilt);
+
+  const GlG2lfStats& stats() const { return stats_; }
+  const GlPlanes& planes() const { return planes_; }  // the last frame's
+
+ private:
+  struct Timers {
+    GpuTimer preprocess, binning, raster, swizzle;
+  };
+  void ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
+
+  const GlScene& scene_;
+  GlInfo info_;
+  GlSplatPreprocess preprocess_;
+  GlRadixSort sort_;
+  GlDepthBinning binning_;
+  GlSplatRaster raster_;
+  GlSwizzle swizzle_;
+  SplatBuffers buffers_;
+  Buffer layers_;
+  GlPlanes planes_;
+  Framebuffer plane_framebuffer_;
+  Timers timers_;
+  GlG2lfStats stats_;
+};
+
+// render::render_quilt_g2lf on the GPU of the current context, for one-off renders: uploads the
+// scene, renders into an RGBA32F quilt and reads it back (RGB, rows top-down, not clamped).
+ImageF render_quilt_g2lf_gl(const render::GaussianScene& scene, const render::QuiltGeometry& geometry,
+                            const render::QuiltLayout& layout, const GlG2lfOptions& options,
+                            const render::RasterSettings& settings = {}, GlG2lfStats* stats = nullptr);
+
+}  // namespace lfd::gpu
