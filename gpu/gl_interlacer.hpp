@@ -1,0 +1,70 @@
+#pragma once
+// The interlacing shader (DESIGN section 6): the GLSL twin of the CPU reference
+// interlace::Interlacer, reading a quilt texture and writing the panel, so a frame can go
+// scene -> quilt -> panel on the GPU with no CPU round trip. Its constants come from
+// calib::LensModel, the one definition of the lens phase, view fraction and view index; the
+// shader (gpu/shaders/interlace.frag.glsl) repeats LensModel's arithmetic line by line in double
+// precision. It matches interlace::interlace within 1/255 on all but a negligible fraction of
+// subpixels (tests/gpu/gl_interlacer_test.cpp, docs/rendering.md).
+#include <epoxy/gl.h>
+
+#include "calib/display/lens_model.hpp"
+#include "gpu/gl_objects.hpp"
+#include "interlace/interlacer.hpp"
+#include "render/quilt_layout.hpp"
+#include "util/image.hpp"
+
+namespace lfd::gpu {
+
+// The correction field w(u, v) is sampled bilinearly from a grid fine enough that the
+// interpolation stays within this many lens periods (a view boundary moves by as much, so about
+// 2 V times this fraction of subpixels may show the neighbouring view), with at most
+// kMaxCorrectionGridPoints per axis (64 MiB).
+inline constexpr double kCorrectionGridTolerancePeriods = 1e-6;
+inline constexpr int kMaxCorrectionGridPoints = 4096;
+
+class GlInterlacer {
+ public:
+  // Needs a current GL 4.5 context. Uploads the per-display constants and the correction grid
+  // once. Throws InputError if the layout is unusable (as the CPU interlacer does).
+  GlInterlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+               interlace::InterlaceOptions options = {});
+
+  // quilt: layout.width x layout.height, rows bottom-up as rendered (view 0 in the bottom-left
+  // tile), any sampleable format. panel: screenW x screenH, any colour-renderable format
+  // (RGBA8, RGBA16F, RGBA32F), rows bottom-up; alpha is 1. Throws InputError on wrong sizes.
+  void interlace(const Texture& quilt, Texture& panel);
+  // Draws the panel into the framebuffer bound now (a window's, say) with the viewport set to
+  // the panel size; blending, depth and scissor tests are switched off.
+  void draw(const Texture& quilt) const;
+
+  int panel_width() const { return panel_width_; }
+  int panel_height() const { return panel_height_; }
+  // w(u, v) at grid point (i, j) = (u, v) = (i / (width - 1), j / (height - 1)), R32F;
+  // 2 x 2 zeros without a correction field.
+  const Texture& correction_grid() const { return correction_; }
+
+ private:
+  void check_quilt(const Texture& quilt) const;
+
+  render::QuiltLayout layout_;
+  int panel_width_ = 0, panel_height_ = 0;
+  Program program_;
+  VertexArray triangle_;
+  Framebuffer target_;
+  Texture correction_;
+};
+
+// A top-down image as an RGBA32F texture with rows bottom-up (GL's orientation, so a quilt
+// image becomes what a renderer writes); one channel is replicated into RGB, alpha is 1.
+Texture texture_from_image(const ImageF& image);
+// The RGB of a texture as a top-down image.
+ImageF image_from_texture(const Texture& texture);
+
+// Convenience for files and tests: uploads the quilt, interlaces on the GPU, reads the panel
+// back (float, top-down like interlace::interlace). Needs a current context.
+ImageF interlace_on_gpu(const ImageF& quilt, const render::QuiltLayout& layout,
+                        const calib::LensModel& lens,
+                        const interlace::InterlaceOptions& options = {});
+
+}  // namespace lfd::gpu
