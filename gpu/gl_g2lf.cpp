@@ -66,6 +66,23 @@ void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& 
 
 GlG2lfRenderer::GlG2lfRenderer(const GlScene& scene, const GlInfo& info) : scene_(scene), info_(info) {}
 
+void GlG2lfRenderer::stamp(Stamp at) {
+  if (!timed_) return;
+  while (stamps_.size() < kStamps) {
+    GLuint id = 0;
+    glGenQueries(1, &id);
+    stamps_.emplace_back(id);
+  }
+  glQueryCounter(stamps_[at].id(), GL_TIMESTAMP);
+}
+
+double GlG2lfRenderer::seconds_between(Stamp a, Stamp b) const {
+  GLuint64 ns_a = 0, ns_b = 0;
+  glGetQueryObjectui64v(stamps_[a].id(), GL_QUERY_RESULT, &ns_a);
+  glGetQueryObjectui64v(stamps_[b].id(), GL_QUERY_RESULT, &ns_b);
+  return double(ns_b - ns_a) * 1e-9;
+}
+
 void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
   const render::G2lfOptions& o = options.g2lf;
   const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
@@ -111,35 +128,26 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   plane_settings.background = glm::vec3(0.0f);
   plane_settings.sh_origin = geometry.base.position_world;
 
-  const bool timed = options.gpu_timers;
-  if (timed) timers_.preprocess.begin();
+  timed_ = options.gpu_timers;
+  stamp(kStart);
   preprocess_.run(scene_, ref.camera, plane_settings, buffers_);
-  if (timed) {
-    timers_.preprocess.end();
-    timers_.binning.begin();
-  }
+  stamp(kPreprocessed);
   // Overwrites the preprocess's keys and values (the planes need the binning's order) and sets
   // the draw's instance count to the binned count; culled records are zero and draw nothing.
   binning_.run(scene_, ref, o.chunks, o.binning, sort_, buffers_.keys, buffers_.values, layers_,
                planes_.table, &buffers_.draw);
-  if (timed) {
-    timers_.binning.end();
-    timers_.raster.begin();
-  }
+  stamp(kBinned);
   const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // C = 0, T = 1 in every layer
   glClearTexImage(planes_.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
   SplatRasterTarget target;
   target.framebuffer = plane_framebuffer_.id();
   target.image_size = {planes_.width, planes_.height};
   raster_.draw(buffers_.records, buffers_.values, buffers_.draw, target, &layers_);
-  if (timed) {
-    timers_.raster.end();
-    timers_.swizzle.begin();
-  }
+  stamp(kRasterised);
   const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
   glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
   swizzle_.run(planes_, geometry, ref, layout, o.filter, settings.background, quilt);
-  if (timed) timers_.swizzle.end();
+  stamp(kSwizzled);
   check_gl("a G2LF frame");
 
   stats_ = {};
@@ -147,14 +155,14 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   stats_.gpu_bytes = scene_.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() +
                      buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes();
   stats_.gpu_bytes_peak = gpu_bytes_peak();
-  if (timed) {
+  if (timed_) {
     const PlaneTableHeader header = planes_.table.read_header();
     stats_.gaussians_in_frustum = header.splats_binned;
     stats_.planes = int(header.plane_count);
     stats_.plane_bytes_used = plane_texture_bytes(planes_.format, stats_.planes, planes_.width, planes_.height);
-    stats_.seconds_planes = timers_.preprocess.seconds() + timers_.raster.seconds();
-    stats_.seconds_binning = timers_.binning.seconds();
-    stats_.seconds_swizzle = timers_.swizzle.seconds();
+    stats_.seconds_planes = seconds_between(kStart, kPreprocessed) + seconds_between(kBinned, kRasterised);
+    stats_.seconds_binning = seconds_between(kPreprocessed, kBinned);
+    stats_.seconds_swizzle = seconds_between(kRasterised, kSwizzled);
   }
 }
 

@@ -13,6 +13,7 @@
 // stay on the GPU, so nothing waits for a read-back (GpuTimer reads and stats excepted).
 #include <cstddef>
 #include <optional>
+#include <vector>
 
 #include <epoxy/gl.h>
 
@@ -84,9 +85,10 @@ class GlG2lfRenderer {
   const GlPlanes& planes() const { return planes_; }  // the last frame's
 
  private:
-  struct Timers {
-    GpuTimer preprocess, binning, raster, swizzle;
-  };
+  // GL_TIMESTAMP queries between the stages (llvmpipe's GL_TIME_ELAPSED reads 0 around compute).
+  enum Stamp { kStart, kPreprocessed, kBinned, kRasterised, kSwizzled, kStamps };
+  void stamp(Stamp at);
+  double seconds_between(Stamp a, Stamp b) const;  // waits for the GPU
   void ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
 
   const GlScene& scene_;
@@ -100,7 +102,8 @@ class GlG2lfRenderer {
   Buffer layers_;
   GlPlanes planes_;
   Framebuffer plane_framebuffer_;
-  Timers timers_;
+  std::vector<GlName<delete_query>> stamps_;
+  bool timed_ = false;
   GlG2lfStats stats_;
 };
 
