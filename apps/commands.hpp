@@ -10,6 +10,7 @@ int RunSimulate(int argc, char** argv);
 int RunValidate(int argc, char** argv);
 int RunDemo(int argc, char** argv);
 int RunRender(int argc, char** argv);
+int RunView(int argc, char** argv);
 int RunCompare(int argc, char** argv);
 int RunScene(int argc, char** argv);
 int RunBench(int argc, char** argv);

@@ -42,6 +42,7 @@ const std::vector<Command>& commands() {
       {"interlace", RunInterlace, "interlace a quilt into a panel image for a display"},
       {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
       {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
+      {"view", RunView, "show a Gaussian scene on the display in real time (GL, with controls)"},
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres

@@ -15,11 +15,16 @@
 
 #include <fmt/format.h>
 
+#include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/display/calibration_file.hpp"
 #include "calib/display/display_quilt.hpp"
 #include "calib/display/lens_model.hpp"
+#include "gpu/gl_g2lf.hpp"
+#include "gpu/gl_interlacer.hpp"
+#include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl_scene.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
@@ -47,6 +52,30 @@ std::string quilt_file_name(const std::string& out, const render::QuiltLayout& q
   return (p.parent_path() / name).string();
 }
 
+// The quilt (or one view) on the GPU of the current context: the same image the CPU gives, to
+// within the tolerances of tests/gpu (>= 40 dB; typically 60-85 dB).
+ImageF render_on_gpu(const gpu::HeadlessContext& context, const render::GaussianScene& scene,
+                     const render::QuiltGeometry& geometry, const render::QuiltLayout* layout, int view,
+                     const std::string& method, const render::G2lfOptions& g2lf,
+                     const render::RasterSettings& settings) {
+  if (method == "g2lf" && layout) {
+    gpu::GlG2lfOptions options;
+    options.g2lf = g2lf;
+    return gpu::render_quilt_g2lf_gl(scene, geometry, *layout, options, settings);
+  }
+  const gpu::GlScene gl_scene(scene, context.info());
+  gpu::GlPerViewRenderer renderer(gl_scene);
+  if (!layout) {
+    const render::RasterImage img = renderer.render_view_image(geometry.view_camera(view), settings);
+    ImageF f(img.width, img.height, 3);
+    f.pixels = img.rgb;
+    return f;
+  }
+  gpu::Texture quilt(GL_RGBA32F, layout->width, layout->height);
+  renderer.render_quilt(geometry, *layout, settings, quilt);
+  return gpu::read_image_top_down(quilt, 3);
+}
+
 }  // namespace
 
 int RunRender(int argc, char** argv) {
@@ -64,7 +93,7 @@ int RunRender(int argc, char** argv) {
                "render"};
   std::string scene_path, method = "g2lf", size_text, out, camera_path, calibration_path;
   std::string filter = "nearest", precision = "u8", binning = "mixed", background_text = "0,0,0";
-  std::string panel_path, blend = "nearest";
+  std::string panel_path, blend = "nearest", backend_name = "cpu";
   std::optional<int> views_opt, cols_opt, rows_opt;
   int view = -1;
   bool overscan = false;
@@ -116,6 +145,9 @@ int RunRender(int argc, char** argv) {
   app.add_flag("--overscan", overscan, "--panel: fill the panel and crop instead of black bars");
   app.add_option("--background", background_text, "background colour R,G,B in [0, 1]")->capture_default_str();
   app.add_option("--view", view, "render only this view (0 = leftmost) into --out");
+  add_backend_option(app, backend_name,
+                     "cpu (the reference), gl (OpenGL 4.5 through headless EGL; exit 2 without it) or "
+                     "auto (gl when a context can be made, else the CPU with a notice)");
   app.add_option("--out", out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix")->required();
   if (auto code = parse(app, argc, argv)) return *code;
 
@@ -146,6 +178,7 @@ int RunRender(int argc, char** argv) {
   const float view_cone_deg =
       display_quilt ? float(display_quilt->view_cone_deg) : view_cone_opt.value_or(40.0f);
 
+  const auto context = open_backend(parse_backend(backend_name));
   const auto t0 = std::chrono::steady_clock::now();
   const render::GaussianScene scene = render::load_scene(scene_path);
   const render::CameraSpec spec =
@@ -178,9 +211,14 @@ int RunRender(int argc, char** argv) {
   std::string written;
   if (view >= 0) {
     if (view >= views) throw_input_error("--view: {} is outside 0..{}", view, views - 1);
-    const render::RasterImage img = render::render_view(scene, geometry, view, settings);
-    ImageF f(img.width, img.height, 3);
-    f.pixels = img.rgb;
+    ImageF f;
+    if (context) {
+      f = render_on_gpu(*context, scene, geometry, nullptr, view, method, g2lf, settings);
+    } else {
+      const render::RasterImage img = render::render_view(scene, geometry, view, settings);
+      f = ImageF(img.width, img.height, 3);
+      f.pixels = img.rgb;
+    }
     written = out;
     write_png(written, to_uint8(f));
   } else {
@@ -191,9 +229,10 @@ int RunRender(int argc, char** argv) {
       throw_input_error("--cols/--rows: {}x{} tiles cannot hold {} views", grid.cols, grid.rows, views);
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     written = quilt_file_name(out, layout);
-    const ImageF quilt = method == "per-view"
-                             ? render::render_quilt_per_view(scene, geometry, layout, settings)
-                             : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);
+    const ImageF quilt =
+        context ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, settings)
+        : method == "per-view" ? render::render_quilt_per_view(scene, geometry, layout, settings)
+                               : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);
     const Image8 quilt8 = to_uint8(quilt);
     write_png(written, quilt8);
     if (!panel_path.empty()) {
@@ -205,14 +244,16 @@ int RunRender(int argc, char** argv) {
       interlace::InterlaceOptions options;
       options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
       options.overscan = overscan;
-      const ImageF panel = interlace::interlace(to_float(quilt8), as_written, lens, options);
+      const ImageF panel = context ? gpu::interlace_on_gpu(to_float(quilt8), as_written, lens, options)
+                                   : interlace::interlace(to_float(quilt8), as_written, lens, options);
       write_png(panel_path, to_uint8(panel));
       std::cout << fmt::format("wrote {} ({}x{} panel)\n", panel_path, panel.width, panel.height);
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << fmt::format("wrote {} ({} Gaussians, {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
+  std::cout << fmt::format("wrote {} ({} Gaussians, {} on the {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
                            written, scene.size(), view >= 0 ? fmt::format("view {}", view) : method,
+                           context ? "GPU" : "CPU",
                            view >= 0 ? 1 : views, base.width, base.height, view_cone_deg, seconds);
   return 0;
 }

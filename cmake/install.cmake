@@ -169,7 +169,7 @@ set(_lfd_dependency_table
   "^opencv_|find_dependency(OpenCV 4 COMPONENTS @OPENCV_COMPONENTS@)|libopencv-dev, libopencv-contrib-dev"
 )
 set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
-  "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev"
+  "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev" "imgui|libimgui-dev"
   "hidapi-hidraw|libhidapi-dev" "libusb-1.0|libusb-1.0-0-dev" "zlib|zlib1g-dev" "glm|libglm-dev"
   "egl|libegl-dev" "libpng16|libpng-dev")
 

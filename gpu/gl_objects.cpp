@@ -258,18 +258,20 @@ void Program::dispatch_1d(size_t items, int local_size) const {
 // ---- GpuTimer ----
 
 GpuTimer::GpuTimer() {
-  GLuint id = 0;
-  glCreateQueries(GL_TIME_ELAPSED, 1, &id);
-  name_ = GlName<delete_query>(id);
+  GLuint ids[2] = {0, 0};
+  glCreateQueries(GL_TIMESTAMP, 2, ids);
+  start_ = GlName<delete_query>(ids[0]);
+  stop_ = GlName<delete_query>(ids[1]);
 }
 
-void GpuTimer::begin() const { glBeginQuery(GL_TIME_ELAPSED, name_.id()); }
-void GpuTimer::end() const { glEndQuery(GL_TIME_ELAPSED); }
+void GpuTimer::begin() const { glQueryCounter(start_.id(), GL_TIMESTAMP); }
+void GpuTimer::end() const { glQueryCounter(stop_.id(), GL_TIMESTAMP); }
 
 double GpuTimer::seconds() const {
-  GLuint64 ns = 0;
-  glGetQueryObjectui64v(name_.id(), GL_QUERY_RESULT, &ns);
-  return double(ns) * 1e-9;
+  GLuint64 t0 = 0, t1 = 0;
+  glGetQueryObjectui64v(start_.id(), GL_QUERY_RESULT, &t0);
+  glGetQueryObjectui64v(stop_.id(), GL_QUERY_RESULT, &t1);
+  return t1 > t0 ? double(t1 - t0) * 1e-9 : 0.0;
 }
 
 }  // namespace lfd::gpu

@@ -153,7 +153,8 @@ class Program {
   std::string label_;
 };
 
-// GPU time of a span of commands (GL_TIME_ELAPSED), read back after the frame.
+// GPU time of a span of commands, read back after the frame. Two GL_TIMESTAMP queries rather
+// than GL_TIME_ELAPSED: llvmpipe reads 0 for elapsed-time queries around compute dispatches.
 class GpuTimer {
  public:
   GpuTimer();
@@ -162,7 +163,7 @@ class GpuTimer {
   double seconds() const;  // waits for the result
 
  private:
-  GlName<delete_query> name_;
+  GlName<delete_query> start_, stop_;
 };
 
 // The 2D image of a texture (level 0; one layer of an array), RGBA float, rows bottom-up.

@@ -59,6 +59,17 @@ CameraSpec parse_camera_json(const std::string& text, const std::string& source)
   return s;
 }
 
+std::string camera_json_text(const CameraSpec& spec) {
+  nlohmann::json j;
+  j["position"] = {spec.position.x, spec.position.y, spec.position.z};
+  j["look_at"] = {spec.look_at.x, spec.look_at.y, spec.look_at.z};
+  j["up"] = {spec.up.x, spec.up.y, spec.up.z};
+  j["fov_y_deg"] = spec.fov_y_deg;
+  if (spec.width) j["width"] = *spec.width;
+  if (spec.height) j["height"] = *spec.height;
+  return j.dump(2) + "\n";
+}
+
 CameraSpec read_camera_json(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw_input_error("{}: cannot open camera file", path.string());

@@ -3,6 +3,7 @@
 // "up" defaults to [0,1,0]; width/height may be omitted when the caller supplies a size.
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "render/camera.hpp"
 
@@ -21,6 +22,9 @@ struct CameraSpec {
 CameraSpec read_camera_json(const std::filesystem::path& path);
 // Parses the JSON text; `source` names it in error messages.
 CameraSpec parse_camera_json(const std::string& text, const std::string& source);
+
+// cam.json text of a spec (what parse_camera_json reads back); the size only when it has one.
+std::string camera_json_text(const CameraSpec& spec);
 
 // The camera of a spec; `width`/`height` override the spec's size when given.
 Camera camera_from_spec(const CameraSpec& spec, std::optional<int> width = {},

@@ -54,12 +54,15 @@ ControlWindow::ControlWindow(const gpu::GlfwSession&, GLFWwindow* share) {
 
 ControlWindow::~ControlWindow() {
   if (!window_) return;
+  // The display window's objects are destroyed after this: give its context back.
+  GLFWwindow* previous = glfwGetCurrentContext();
   glfwMakeContextCurrent(window_);
   ImGui::SetCurrentContext(static_cast<ImGuiContext*>(imgui_context_));
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext(static_cast<ImGuiContext*>(imgui_context_));
   glfwDestroyWindow(window_);
+  glfwMakeContextCurrent(previous != window_ ? previous : nullptr);
 }
 
 bool ControlWindow::should_close() const { return glfwWindowShouldClose(window_); }

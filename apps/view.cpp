@@ -1,0 +1,57 @@
+// `lfd view`: the real-time viewer (viewer/viewer.hpp).
+//   lfd view scene.ply --device auto
+//   lfd view scene.ply --calibration visual.json --monitor LKG
+//   lfd view scene.ply --calibration visual.json --frames 30 --screenshot panel.png --quilt q.png
+#include <iostream>
+
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "viewer/viewer.hpp"
+
+namespace lfd::apps {
+
+int RunView(int argc, char** argv) {
+  CLI::App app{"Show a Gaussian scene on the display in real time: the interlaced G2LF (or per-view)\n"
+               "frame every vsync, full screen on the display's monitor, with a control window.\n"
+               "Without the display's monitor: a simulated display in a window.\n"
+               "Mouse: drag orbits, right drag pans, wheel zooms; keys: arrows, WASD, +/-, R resets,\n"
+               "Esc quits; drop a scene file on a window to load it.\n"
+               "Examples:\n"
+               "  lfd view scene.ply --device auto\n"
+               "  lfd view scene.ply --calibration visual.json --method per-view\n"
+               "  lfd view scene.ply --calibration visual.json --frames 30 --screenshot panel.png --quilt q.png",
+               "view"};
+  viewer::ViewerOptions options;
+  std::string scene, method, camera, settings, screenshot, quilt, camera_out;
+  app.add_option("scene", scene, "scene file (.ply, compressed .ply, .splat, .spz)")->required();
+  DisplaySource display_source;
+  display_source.add(app, "--calibration", "the display: visual.json or calibration.json");
+  app.add_option("--monitor", options.monitor_prefix, "the display's monitor name prefix")->capture_default_str();
+  app.add_flag("--simulated", options.simulated_display, "show a simulated display in a window even if the display is connected");
+  app.add_option("--method", method, "g2lf or per-view (default: the saved setting, else g2lf)")
+      ->check(CLI::IsMember({"g2lf", "per-view"}));
+  app.add_option("--camera", camera, "cam.json to start from (default: framing the scene)");
+  app.add_option("--settings", settings, "settings file (default: one per display under ~/.config/lfd/viewer)");
+  app.add_option("--frames", options.frames, "render this many frames, then write the outputs and quit (0: until closed)")
+      ->check(CLI::NonNegativeNumber);
+  app.add_option("--screenshot", screenshot, "after the last frame: the panel as shown (PNG)");
+  app.add_option("--quilt", quilt, "after the last frame: the quilt (PNG; _qs suffix added)");
+  app.add_option("--camera-out", camera_out, "after the last frame: the camera as cam.json");
+  bool no_controls = false;
+  app.add_flag("--no-controls", no_controls, "only the display window");
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  options.scene_path = scene;
+  options.calibration = display_source.load();
+  options.display_name = display_source.name();
+  options.controls = !no_controls;
+  if (!method.empty()) options.method = viewer::parse_method(method);
+  if (!camera.empty()) options.camera_path = camera;
+  if (!settings.empty()) options.settings_path = settings;
+  options.screenshot_path = screenshot;
+  options.quilt_path = quilt;
+  options.camera_out_path = camera_out;
+  return viewer::run_viewer(options);
+}
+
+}  // namespace lfd::apps

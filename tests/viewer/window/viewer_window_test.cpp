@@ -1,0 +1,145 @@
+// `lfd view` in a real GLFW window under Xvfb: the window's screenshot equals the headless EGL
+// render of the same camera and settings; the control state (N_chunk, focal distance) changes
+// the frame measurably; bad input is one line.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "calib/display/calibration_file.hpp"
+#include "gpu/gl_context.hpp"
+#include "render/camera_json.hpp"
+#include "render/default_camera.hpp"
+#include "render/image_metrics.hpp"
+#include "render/ply_writer.hpp"
+#include "render/scene_generator.hpp"
+#include "util/atomic_file.hpp"
+#include "util/error.hpp"
+#include "viewer/light_field_frame.hpp"
+#include "viewer/viewer.hpp"
+
+namespace lfd::viewer {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDir = fs::temp_directory_path() / "lfd_viewer_window_test";
+
+calib::Calibration test_display() {
+  // The Xvfb screen is this panel's size (CMakeLists.txt), so the viewer finds its "monitor".
+  return calib::read_calibration(fs::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json");
+}
+
+render::GaussianScene test_scene() {
+  render::SceneGeneratorOptions o;
+  o.count = 3000;
+  o.sh_degree = 1;
+  return render::generate_scene(o);
+}
+
+// Small quilts so llvmpipe keeps up: 8 views of 96 px height.
+ViewerSettings small_settings() {
+  ViewerSettings s;
+  s.views = 8;
+  s.view_height_px = 96;
+  s.g2lf.chunks = 16;
+  return s;
+}
+
+struct Files {
+  fs::path scene, settings, camera, screenshot;
+};
+
+Files write_inputs(const ViewerSettings& s, const std::string& tag) {
+  fs::create_directories(kDir);
+  Files f;
+  f.scene = kDir / "scene.ply";
+  if (!fs::exists(f.scene)) write_text_atomic(f.scene, render::encode_ply(test_scene()));
+  f.settings = kDir / (tag + ".settings.json");
+  save_settings(f.settings, s);
+  f.camera = kDir / "cam.json";
+  write_text_atomic(f.camera, render::camera_json_text(render::frame_scene(test_scene())));
+  f.screenshot = kDir / (tag + ".png");
+  fs::remove(f.screenshot);
+  return f;
+}
+
+ViewerOptions scripted(const Files& f) {
+  ViewerOptions o;
+  o.scene_path = f.scene;
+  o.calibration = test_display();
+  o.display_name = "LKG-PORT-portrait (test)";
+  o.camera_path = f.camera;
+  o.settings_path = f.settings;
+  o.frames = 3;
+  o.screenshot_path = f.screenshot;
+  return o;
+}
+
+ImageF headless_panel(const ViewerSettings& s) {
+  gpu::HeadlessContext context;
+  LightFieldFrame frame(test_scene(), test_display(), context.info());
+  frame.render(render::frame_scene(test_scene()), s);
+  return gpu::image_from_texture(frame.panel());
+}
+
+TEST(ViewerWindow, TheWindowShowsTheHeadlessRenderOnTheDisplaysMonitor) {
+  for (Method method : {Method::kG2lf, Method::kPerView}) {
+    ViewerSettings s = small_settings();
+    s.method = method;
+    const Files f = write_inputs(s, "same-" + method_name(method));
+    const ImageF expected = headless_panel(s);
+    ASSERT_EQ(run_viewer(scripted(f)), 0);
+    const Image8 shown = read_image(f.screenshot);
+    ASSERT_EQ(shown.width, 1536);  // the panel 1:1: the window is on the display's monitor
+    ASSERT_EQ(shown.height, 2048);
+    const double psnr = render::psnr(to_float(shown), expected);
+    EXPECT_GE(psnr, 40.0) << method_name(method);
+  }
+}
+
+TEST(ViewerWindow, ControlStateChangesTheFrame) {
+  ViewerSettings base = small_settings();
+  ViewerSettings fewer_chunks = base;
+  fewer_chunks.g2lf.chunks = 2;
+  ViewerSettings nearer_focus = base;
+  nearer_focus.focal_fraction = 0.5f;
+  auto shot = [](const ViewerSettings& s, const std::string& tag) {
+    const Files f = write_inputs(s, tag);
+    EXPECT_EQ(run_viewer(scripted(f)), 0);
+    return to_float(read_image(f.screenshot));
+  };
+  const ImageF a = shot(base, "base"), b = shot(fewer_chunks, "chunks"), c = shot(nearer_focus, "focus");
+  EXPECT_LT(render::psnr(a, b), 40.0) << "N_chunk 16 -> 2 left the frame unchanged";
+  EXPECT_LT(render::psnr(a, c), 40.0) << "moving the focal plane left the frame unchanged";
+}
+
+TEST(ViewerWindow, BadSceneIsOneLineNamingTheFile) {
+  const Files f = write_inputs(small_settings(), "bad");
+  std::ofstream(kDir / "broken.ply") << "ply\nformat nonsense\n";
+  ViewerOptions o = scripted(f);
+  o.scene_path = kDir / "broken.ply";
+  try {
+    run_viewer(o);
+    FAIL() << "a broken scene was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.ply"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ViewerWindow, NoDesktopIsOneLine) {
+  const Files f = write_inputs(small_settings(), "nodisplay");
+  const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
+  unsetenv("DISPLAY");
+  unsetenv("WAYLAND_DISPLAY");
+  try {
+    run_viewer(scripted(f));
+    ADD_FAILURE() << "the viewer ran without a desktop";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no display"), std::string::npos) << e.what();
+  }
+  setenv("DISPLAY", display.c_str(), 1);
+}
+
+}  // namespace
+}  // namespace lfd::viewer

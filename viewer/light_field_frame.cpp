@@ -1,0 +1,99 @@
+#include "viewer/light_field_frame.hpp"
+
+#include <glm/glm.hpp>
+
+#include "calib/display/display_quilt.hpp"
+#include "render/per_view_quilt.hpp"
+#include "util/error.hpp"
+
+namespace lfd::viewer {
+
+FramePlan plan_frame(const calib::Calibration& calibration, const render::CameraSpec& camera,
+                     const ViewerSettings& s) {
+  FramePlan plan;
+  plan.display_quilt = calib::quilt_for_display(
+      calibration, s.views > 0 ? std::optional<int>(s.views) : std::nullopt);
+  const calib::ViewSize size = calib::view_size_for_display(plan.display_quilt, s.view_height_px);
+  const render::Camera base = render::camera_from_spec(camera, size.width, size.height);
+  const float distance = glm::length(camera.look_at - camera.position);
+  const double cone = (s.view_cone_deg > 0 ? s.view_cone_deg : plan.display_quilt.view_cone_deg) * s.depthiness;
+  plan.geometry = render::make_quilt_geometry(base, s.focal_fraction * distance, float(cone),
+                                              plan.display_quilt.views);
+  plan.layout = render::make_quilt_layout(plan.geometry, plan.display_quilt.grid.cols,
+                                          plan.display_quilt.grid.rows);
+  return plan;
+}
+
+LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
+                                 const gpu::GlInfo& info)
+    : calibration_(calibration), lens_(calibration.display, calibration.correction), info_(info) {
+  replace_scene(scene);
+  panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
+}
+
+LightFieldFrame::~LightFieldFrame() = default;
+
+void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
+  // Renderers hold the scene by reference: drop them first.
+  g2lf_.reset();
+  per_view_.reset();
+  scene_ = std::make_unique<gpu::GlScene>(scene, info_);
+}
+
+void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSettings& settings,
+                             FrameReport* report) {
+  plan_ = plan_frame(calibration_, camera, settings);
+  const render::QuiltLayout& layout = plan_.layout;
+  if (quilt_.width() != layout.width || quilt_.height() != layout.height)
+    quilt_ = gpu::Texture(GL_RGBA8, layout.width, layout.height);
+  if (!interlacer_layout_ || interlacer_layout_->width != layout.width ||
+      interlacer_layout_->height != layout.height || interlacer_layout_->cols != layout.cols ||
+      interlacer_layout_->rows != layout.rows || interlacer_layout_->views != layout.views ||
+      interlacer_layout_->aspect != layout.aspect) {
+    interlacer_ = std::make_unique<gpu::GlInterlacer>(lens_, layout);
+    interlacer_layout_ = layout;
+  }
+  render::RasterSettings raster;
+  raster.background = settings.background;
+  const bool timed = report != nullptr;
+  if (settings.method == Method::kG2lf) {
+    if (!g2lf_) g2lf_ = std::make_unique<gpu::GlG2lfRenderer>(*scene_, info_);
+    gpu::GlG2lfOptions o;
+    o.g2lf = settings.g2lf;
+    o.gpu_timers = timed;
+    g2lf_->render_quilt(plan_.geometry, layout, o, raster, quilt_);
+  } else {
+    if (!per_view_) {
+      gpu::GlPerViewOptions o;
+      o.gpu_timers = timed;
+      per_view_ = std::make_unique<gpu::GlPerViewRenderer>(*scene_, o);
+    }
+    per_view_->render_quilt(plan_.geometry, layout, raster, quilt_);
+  }
+  if (timed) interlace_timer_.begin();
+  interlacer_->interlace(quilt_, panel_);
+  if (timed) interlace_timer_.end();
+
+  if (!report) return;
+  report->interlace_seconds = interlace_timer_.seconds();
+  if (settings.method == Method::kG2lf) {
+    const auto& st = g2lf_->stats();
+    report->binning_seconds = st.seconds_binning;
+    report->planes_seconds = st.seconds_planes;
+    report->swizzle_seconds = st.seconds_swizzle;
+    report->plane_bytes = st.plane_bytes;
+  } else {
+    const auto& st = per_view_->stats();
+    report->raster_seconds = st.preprocess_s + st.sort_s + st.raster_s;
+    report->plane_bytes = 0;
+  }
+  report->gpu_peak_bytes = gpu::gpu_bytes_peak();
+  report->views = layout.views;
+  report->cols = layout.cols;
+  report->rows = layout.rows;
+  report->view_width = plan_.geometry.base.width;
+  report->view_height = plan_.geometry.base.height;
+  report->view_cone_deg = glm::degrees(plan_.geometry.view_cone_rad);
+}
+
+}  // namespace lfd::viewer

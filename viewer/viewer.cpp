@@ -1,0 +1,228 @@
+#include "viewer/viewer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <deque>
+#include <iostream>
+
+#include <epoxy/gl.h>  // before GLFW, which would include GL/gl.h
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include "gpu/gl_context.hpp"
+#include "gpu/glfw_session.hpp"
+#include "render/default_camera.hpp"
+#include "render/scene_io.hpp"
+#include "util/atomic_file.hpp"
+#include "util/error.hpp"
+#include "viewer/control_window.hpp"
+#include "viewer/display_window.hpp"
+#include "viewer/input.hpp"
+#include "viewer/light_field_frame.hpp"
+#include "viewer/orbit_camera.hpp"
+
+namespace lfd::viewer {
+namespace {
+
+// Mouse and key state of both windows, filled by GLFW callbacks (user pointer).
+struct InputCollector {
+  InputEvents events;
+  double last_x = 0, last_y = 0;
+  bool have_last = false;
+  bool left = false, right = false, shift = false;
+  const ControlWindow* controls = nullptr;  // its ImGui may own the mouse
+  GLFWwindow* control_window = nullptr;
+  std::optional<std::string> dropped;
+
+  bool ignore(GLFWwindow* w) const { return controls && w == control_window && controls->wants_mouse(); }
+};
+
+InputCollector* collector(GLFWwindow* w) { return static_cast<InputCollector*>(glfwGetWindowUserPointer(w)); }
+
+void install_callbacks(GLFWwindow* w, InputCollector* in, bool chain_imgui) {
+  glfwSetWindowUserPointer(w, in);
+  // On the control window ImGui installed its callbacks first (chained); only add the camera's
+  // through the polling below, so ImGui keeps working.
+  if (chain_imgui) return;
+  glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int button, int action, int mods) {
+    InputCollector* c = collector(win);
+    const bool down = action == GLFW_PRESS;
+    c->shift = mods & GLFW_MOD_SHIFT;
+    if (button == GLFW_MOUSE_BUTTON_LEFT) c->left = down;
+    if (button == GLFW_MOUSE_BUTTON_RIGHT) c->right = down;
+    c->have_last = false;
+  });
+  glfwSetCursorPosCallback(w, [](GLFWwindow* win, double x, double y) {
+    InputCollector* c = collector(win);
+    if (c->have_last && (c->left || c->right)) {
+      const bool pan = c->right || c->shift;
+      (pan ? c->events.pan_dx_px : c->events.drag_dx_px) += x - c->last_x;
+      (pan ? c->events.pan_dy_px : c->events.drag_dy_px) += y - c->last_y;
+    }
+    c->last_x = x;
+    c->last_y = y;
+    c->have_last = true;
+  });
+  glfwSetScrollCallback(w, [](GLFWwindow* win, double, double dy) { collector(win)->events.wheel_steps += dy; });
+  glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
+    if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(win, GLFW_TRUE);
+    if (action == GLFW_PRESS && key == GLFW_KEY_R) collector(win)->events.reset = true;
+  });
+  glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
+    if (count > 0) collector(win)->dropped = paths[0];
+  });
+}
+
+// Keys held now (polled, so holding a key moves smoothly).
+void poll_keys(GLFWwindow* w, InputEvents& e) {
+  auto held = [&](int key) { return glfwGetKey(w, key) == GLFW_PRESS; };
+  e.orbit_keys_x += held(GLFW_KEY_RIGHT) - held(GLFW_KEY_LEFT);
+  e.orbit_keys_y += held(GLFW_KEY_UP) - held(GLFW_KEY_DOWN);
+  e.pan_keys_x += held(GLFW_KEY_D) - held(GLFW_KEY_A);
+  e.pan_keys_y += held(GLFW_KEY_W) - held(GLFW_KEY_S);
+  e.zoom_keys += (held(GLFW_KEY_EQUAL) || held(GLFW_KEY_KP_ADD)) - (held(GLFW_KEY_MINUS) || held(GLFW_KEY_KP_SUBTRACT));
+}
+
+std::string timestamp() {
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return std::to_string(std::chrono::duration_cast<std::chrono::seconds>(now).count());
+}
+
+std::filesystem::path quilt_path_with_suffix(const std::filesystem::path& out, const render::QuiltLayout& q) {
+  if (render::parse_quilt_name(out.filename().string())) return out;
+  return out.parent_path() / (out.stem().string() + render::quilt_suffix(q.cols, q.rows, q.aspect) +
+                              (out.has_extension() ? out.extension().string() : std::string(".png")));
+}
+
+void write_quilt(const LightFieldFrame& frame, const std::filesystem::path& out) {
+  const auto path = quilt_path_with_suffix(out, frame.layout());
+  write_png(path, to_uint8(gpu::image_from_texture(frame.quilt())));
+  std::cout << fmt::format("wrote {}\n", path.string());
+}
+
+void write_screenshot(const DisplayWindow& window, const LightFieldFrame& frame, const std::filesystem::path& out) {
+  // On the display the window holds exactly the panel; a simulated window is scaled, so the
+  // panel texture is the screenshot there.
+  write_png(out, window.on_display() ? window.read_back_buffer() : to_uint8(gpu::image_from_texture(frame.panel())));
+  std::cout << fmt::format("wrote {}\n", out.string());
+}
+
+}  // namespace
+
+int run_viewer(const ViewerOptions& options) {
+  const auto& d = options.calibration.display;
+  render::GaussianScene scene = render::load_scene(options.scene_path);
+  const std::filesystem::path settings_path =
+      options.settings_path.value_or(settings_path_for_display(options.display_name));
+  ViewerSettings settings = load_settings(settings_path, ViewerSettings{});
+  if (options.method) settings.method = *options.method;
+  const render::CameraSpec start =
+      options.camera_path ? render::read_camera_json(*options.camera_path) : render::frame_scene(scene);
+  OrbitCamera camera(start);
+
+  const gpu::GlfwSession session("lfd view needs a desktop session (X11 or Wayland) to open its windows");
+  GLFWmonitor* monitor = nullptr;
+  if (!options.simulated_display) {
+    try {
+      monitor = session.find_display_monitor(options.monitor_prefix, d.screen_w, d.screen_h);
+    } catch (const InputError& e) {
+      std::cerr << fmt::format("notice: no monitor for the display ({}); showing a simulated display in a window\n",
+                               e.what());
+    }
+  }
+  DisplayWindow display(session, monitor, d.screen_w, d.screen_h);
+  const gpu::GlInfo info = gpu::query_gl_info("GLFW window");
+  std::cout << fmt::format("display {} on {}; rendering with {}\n", options.display_name,
+                           display.on_display() ? "its monitor" : "a simulated display window", info.summary());
+  LightFieldFrame frame(scene, options.calibration, info);
+  std::optional<ControlWindow> controls;
+  if (options.controls) controls.emplace(session, display.handle());
+
+  InputCollector input;
+  install_callbacks(display.handle(), &input, false);
+  if (controls) {
+    input.controls = &*controls;
+    input.control_window = controls->handle();
+    glfwSetWindowUserPointer(controls->handle(), &input);
+    glfwSetDropCallback(controls->handle(), [](GLFWwindow* win, int count, const char** paths) {
+      if (count > 0) collector(win)->dropped = paths[0];
+    });
+  }
+
+  FrameReport report;
+  report.renderer = info.summary();
+  report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
+  std::deque<double> frame_times;
+  auto last = std::chrono::steady_clock::now();
+  float seen_from_deg = 0.0f;
+  for (int frame_index = 0; options.frames == 0 || frame_index < options.frames; ++frame_index) {
+    glfwPollEvents();
+    if (display.should_close() || (controls && controls->should_close())) break;
+    const auto now = std::chrono::steady_clock::now();
+    const double dt = std::chrono::duration<double>(now - last).count();
+    last = now;
+    if (frame_index > 0) {
+      frame_times.push_back(dt);
+      if (frame_times.size() > 30) frame_times.pop_front();
+      std::vector<double> sorted(frame_times.begin(), frame_times.end());
+      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+      report.frame_seconds = sorted[sorted.size() / 2];
+    }
+    poll_keys(display.handle(), input.events);
+    if (controls && !controls->wants_keyboard()) poll_keys(controls->handle(), input.events);
+    int fb_w = 0, fb_h = 0;
+    glfwGetFramebufferSize(display.handle(), &fb_w, &fb_h);
+    apply_input(input.events, fb_h, std::min(dt, 0.1), camera);
+    input.events = InputEvents{};
+    if (input.dropped) {
+      try {
+        scene = render::load_scene(*input.dropped);
+        display.make_current();
+        frame.replace_scene(scene);
+        camera = OrbitCamera(render::frame_scene(scene));
+        std::cout << fmt::format("loaded {} ({} Gaussians)\n", *input.dropped, scene.size());
+      } catch (const InputError& e) {
+        std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
+      }
+      input.dropped.reset();
+    }
+
+    display.make_current();
+    try {
+      settings.check("settings");
+      frame.render(camera.spec(), settings, &report);
+    } catch (const InputError& e) {
+      if (frame_index == 0) throw;
+      std::cerr << fmt::format("notice: {}\n", e.what());  // e.g. planes too large: keep the last frame
+    }
+    display.draw(frame.panel());
+    const bool last_frame = options.frames > 0 && frame_index + 1 == options.frames;
+    if (last_frame && !options.screenshot_path.empty()) write_screenshot(display, frame, options.screenshot_path);
+    display.swap();
+
+    if (controls) {
+      const ControlActions a = controls->draw(settings, camera, seen_from_deg, report, &frame.quilt(),
+                                              nullptr, display.handle());
+      if (a.reset_camera) camera.reset();
+      if (a.screenshot) write_screenshot(display, frame, "lfd-view-" + timestamp() + ".png");
+      if (a.save_quilt) write_quilt(frame, "lfd-view-" + timestamp() + ".png");
+      if (a.save_camera) {
+        write_text_atomic("cam.json", render::camera_json_text(camera.spec()));
+        std::cout << "wrote cam.json\n";
+      }
+      if (a.save_settings) {
+        save_settings(settings_path, settings);
+        std::cout << fmt::format("wrote {}\n", settings_path.string());
+      }
+    }
+  }
+  display.make_current();
+  if (!options.quilt_path.empty()) write_quilt(frame, options.quilt_path);
+  if (!options.camera_out_path.empty()) {
+    write_text_atomic(options.camera_out_path, render::camera_json_text(camera.spec()));
+    std::cout << fmt::format("wrote {}\n", options.camera_out_path.string());
+  }
+  return 0;
+}
+
+}  // namespace lfd::viewer
