@@ -2,6 +2,9 @@
 // binning so each chunk holds about the same number of Gaussians; plane = median depth).
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include <parallel/algorithm>  // libstdc++'s OpenMP sort
 
 #include "render/depth_binning.hpp"
 #include "util/error.hpp"
@@ -12,15 +15,22 @@ DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geomet
                          const ReferenceCamera& ref, int chunks, ChunkBinning binning) {
   const Camera& cam = ref.camera;
   const float lim_x = 1.3f * cam.tan_half_fov_x(), lim_y = 1.3f * cam.tan_half_fov_y();
+  // Cull in parallel into a depth per Gaussian (NaN: outside), then gather in scene order.
+  const long n_scene = long(scene.size());
+  std::vector<float> depth(scene.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n_scene; ++i) {
+    const auto& p = scene.positions[size_t(i)];
+    const glm::vec3 t = cam.to_camera(glm::vec3(p[0], p[1], p[2]));
+    const bool outside = !(t.z > 0.2f) || std::fabs(t.x) > lim_x * t.z || std::fabs(t.y) > lim_y * t.z;
+    depth[size_t(i)] = outside ? std::numeric_limits<float>::quiet_NaN() : t.z;
+  }
   std::vector<std::pair<float, uint32_t>> depth_index;
   depth_index.reserve(scene.size());
-  for (uint32_t i = 0; i < scene.size(); ++i) {
-    const auto& p = scene.positions[i];
-    const glm::vec3 t = cam.to_camera(glm::vec3(p[0], p[1], p[2]));
-    if (!(t.z > 0.2f) || std::fabs(t.x) > lim_x * t.z || std::fabs(t.y) > lim_y * t.z) continue;
-    depth_index.emplace_back(t.z, i);
-  }
-  std::sort(depth_index.begin(), depth_index.end());
+  for (uint32_t i = 0; i < scene.size(); ++i)
+    if (!std::isnan(depth[i])) depth_index.emplace_back(depth[i], i);
+  // (depth, index) pairs are unique, so the parallel sort's order is the serial one.
+  __gnu_parallel::sort(depth_index.begin(), depth_index.end());
 
   // Cuts: indices into the sorted list where a chunk begins.
   const size_t n = depth_index.size();
@@ -43,11 +53,18 @@ DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geomet
     cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   }
 
+  // The non-empty chunks [begin, end) of the sorted list, front to back.
+  std::vector<std::pair<size_t, size_t>> ranges;
+  for (size_t c = 0; c + 1 < cuts.size(); ++c)
+    if (cuts[c] != cuts[c + 1]) ranges.emplace_back(cuts[c], cuts[c + 1]);
   DepthChunks out;
-  for (size_t c = 0; c + 1 < cuts.size(); ++c) {
-    const size_t b = cuts[c], e = cuts[c + 1];
-    if (b == e) continue;
-    std::vector<uint32_t> ids(e - b);
+  out.members.resize(ranges.size());
+  out.plane_depth.resize(ranges.size());
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long c = 0; c < long(ranges.size()); ++c) {
+    const auto [b, e] = ranges[size_t(c)];
+    std::vector<uint32_t>& ids = out.members[size_t(c)];
+    ids.resize(e - b);
     for (size_t i = b; i < e; ++i) ids[i - b] = depth_index[i].second;
     // Keep scene order inside a chunk: the rasterizer sorts by depth itself, and scene order
     // makes its depth ties resolve as for the whole scene.
@@ -55,8 +72,7 @@ DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geomet
     const size_t m = b + (e - b - 1) / 2;
     const float median = (e - b) % 2 ? depth_index[m].first
                                      : 0.5f * (depth_index[m].first + depth_index[m + 1].first);
-    out.members.push_back(std::move(ids));
-    out.plane_depth.push_back(median + ref.d_forward_eff);  // reference depth -> base depth
+    out.plane_depth[size_t(c)] = median + ref.d_forward_eff;  // reference depth -> base depth
   }
   return out;
 }
