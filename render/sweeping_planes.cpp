@@ -1,6 +1,7 @@
 // Alg. 1 lines 4-5: every chunk rasterised into its own plane from the reference camera with the
 // reference rasterizer (background 0, so the colour is premultiplied and T is the chunk's
-// transmittance). Chunks run in parallel; the rasterizer inside each runs on one thread.
+// transmittance). Chunks run in parallel, largest first; the rasterizer inside each runs on one
+// thread.
 #include <algorithm>
 #include <cmath>
 
@@ -15,6 +16,38 @@ size_t SweepingPlanes::bytes() const {
   return texels_u8.size() + texels_f32.size() * sizeof(float) +
          (row_first.size() + row_last.size()) * sizeof(int32_t);
 }
+
+namespace {
+
+// The chunks in decreasing order of their estimated rasterisation cost, so that they can be
+// handed out largest first (LPT scheduling): a far chunk of few but huge Gaussians (a sky dome)
+// can cost several near ones, and started last it runs alone on one core while the others
+// idle (14 % of the planes' time in one chunk on a 150k tabletop). Estimate: per member one
+// unit plus the pixels of its 3-sigma square, at most the image.
+std::vector<int> largest_first(const GaussianScene& scene, const Camera& camera, const DepthChunks& chunks) {
+  const int count = int(chunks.members.size());
+  const double image_px = double(camera.width) * camera.height;
+  const double focal_px = std::max(camera.focal_x_px(), camera.focal_y_px());
+  std::vector<double> cost(static_cast<size_t>(count), 0.0);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int k = 0; k < count; ++k) {
+    double c = 0.0;
+    for (uint32_t i : chunks.members[size_t(k)]) {
+      const auto& p = scene.positions[i];
+      const auto& s = scene.scales[i];
+      const float z = std::max(camera.to_camera(glm::vec3(p[0], p[1], p[2])).z, 1e-3f);
+      const double radius_px = 3.0 * std::max({s[0], s[1], s[2]}) * focal_px / z;
+      c += 1.0 + std::min(image_px, 4.0 * radius_px * radius_px);
+    }
+    cost[size_t(k)] = c;
+  }
+  std::vector<int> order(static_cast<size_t>(count));
+  for (int k = 0; k < count; ++k) order[size_t(k)] = k;
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return cost[size_t(a)] > cost[size_t(b)]; });
+  return order;
+}
+
+}  // namespace
 
 SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
                                       const ReferenceCamera& ref, const DepthChunks& chunks,
@@ -40,8 +73,10 @@ SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeo
   chunk_settings.sh_origin = geometry.base.position_world;
 
   Progress progress("sweeping planes", planes.count);
+  const std::vector<int> order = largest_first(scene, ref.camera, chunks);
 #pragma omp parallel for schedule(dynamic, 1)
-  for (int k = 0; k < planes.count; ++k) {
+  for (int n = 0; n < planes.count; ++n) {
+    const int k = order[size_t(n)];
     const RasterImage img = rasterize(scene, ref.camera, chunk_settings, chunks.members[size_t(k)]);
     for (int y = 0; y < planes.height; ++y) {
       int first = planes.width, last = -1;
