@@ -20,8 +20,11 @@ struct Bench {
 
 const std::vector<Bench>& benches() {
   static const std::vector<Bench> table = {
+      {"render", RunBenchRender, "per-view quilts vs G2LF: the paper's Table 1 (--backend cpu)"},
+#ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
       {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},
+#endif
   };
   return table;
 }

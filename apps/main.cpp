@@ -45,10 +45,10 @@ const std::vector<Command>& commands() {
       {"view", RunView, "show a Gaussian scene on the display in real time (GL, with controls)"},
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
+      {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
-      {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
       {"patterns", RunPatterns, "write the calibration patterns for a display"},
       {"calibrate", RunCalibrate, "calibrate a display unit from photographs of the patterns"},
 #endif

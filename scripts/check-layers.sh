@@ -19,7 +19,8 @@ declare -A ALLOWED=(
   [validate]="util calib/display render interlace calib"
   [report]="util calib/display render interlace calib validate"
   [pipeline]="util calib/display render interlace gpu calib validate report"
-  [apps]="util calib/display calib/device render interlace gpu viewer calib calib/live validate report pipeline"
+  [bench]="util calib/display render interlace gpu"
+  [apps]="util calib/display calib/device render interlace gpu viewer bench calib calib/live validate report pipeline"
 )
 
 # The module an include path belongs to: calib/display/x.hpp -> calib/display, calib/x.hpp -> calib.

@@ -1,0 +1,51 @@
+#pragma once
+// `lfd bench render`: per-view quilt rendering against G2LF, both on one backend
+// (bench/quilt_renderer.hpp) in one process on the same scenes: per configuration the median
+// frame time of repeated runs after warm-up and its spread, FPS, the speed-up over the per-view
+// quilt, the time with the PNG written (what `lfd render` spends after loading the scene),
+// PSNR / SSIM against the per-view quilt, plane memory and peak memory. Prints Markdown tables
+// as rows finish; returns the figures as JSON.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/quilt_renderer.hpp"
+
+namespace lfd::bench {
+
+// A scene file, or a generated tabletop scene (render/scene_generator.hpp) of `generated`
+// Gaussians.
+struct SceneSource {
+  std::string path;
+  size_t generated = 0;
+  std::string label() const;
+};
+
+struct RenderBenchOptions {
+  std::vector<SceneSource> scenes;
+  std::vector<int> views = {45, 90};
+  int size = 512;               // views of size x size pixels
+  float view_cone_deg = 40.0f;
+  float shift_fraction = 1.0f;  // D_shift / D_forward (1: reference camera at the base camera)
+  std::vector<std::string> binnings = {"quantile"};  // the paper's
+  // Configuration sets (bench/render_configs.hpp); `only_chunks` > 0 keeps those with that N_chunk.
+  std::vector<std::string> config_sets = {"table1", "chunks", "f32", "density"};
+  int only_chunks = 0;
+  int runs = 0;         // timed frames per configuration; 0: the backend's default
+  int warmup = 1;       // untimed frames before them
+  int png_runs = 3;     // the first png_runs timed frames also write the quilt PNG (0: never)
+  bool per_view = true; // false: G2LF only (no speed-up, PSNR or SSIM)
+  // Generated scenes: a person's tabletop framing (elevated, objects filling the view) instead
+  // of the default framing (render/default_camera.hpp).
+  bool tabletop_camera = false;
+
+  // InputError "render benchmark: <field>: ..." for a value out of range.
+  void check() const;
+};
+
+nlohmann::ordered_json run_render_benchmark(QuiltRenderer& renderer,
+                                            const RenderBenchOptions& options);
+
+}  // namespace lfd::bench
