@@ -28,9 +28,20 @@ size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltG
          plane_table_bytes(options.g2lf.chunks);
 }
 
-size_t g2lf_buffer_bytes(size_t gaussians) {
+namespace {
+int batch_layers_for(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
+  const int s = options.g2lf.plane_scale;
+  return plane_batch_layers(options.format(), options.g2lf.chunks, geometry.base.width * s,
+                            geometry.base.height * s, options.accumulation_budget_bytes);
+}
+}  // namespace
+
+size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians) {
+  const int s = options.g2lf.plane_scale;
   // records (64), keys, values, their sort copies, layers (4 each).
-  return gaussians * (sizeof(SplatRecord) + 5 * sizeof(uint32_t));
+  return gaussians * (sizeof(SplatRecord) + 5 * sizeof(uint32_t)) +
+         plane_raster_bytes(options.format(), batch_layers_for(options, geometry), geometry.base.width * s,
+                            geometry.base.height * s, gaussians);
 }
 
 void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
@@ -46,7 +57,7 @@ void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& 
                       "texture size {}; lower --plane-scale",
                       wp, hp, o.plane_scale, geometry.base.width, geometry.base.height, info.max_texture_size);
   const double planes = double(g2lf_plane_array_bytes(options, geometry));
-  const double buffers = double(g2lf_buffer_bytes(gaussians));
+  const double buffers = double(g2lf_other_bytes(options, geometry, gaussians));
   std::optional<double> budget;
   std::string what;
   if (options.memory_budget_bytes > 0) {
@@ -58,7 +69,7 @@ void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& 
   }
   if (budget && planes + buffers > *budget)
     throw_input_error("G2LF on the GPU needs {:.1f} MiB ({} planes of {}x{} {}: {:.1f} MiB, "
-                      "per-Gaussian buffers: {:.1f} MiB) but {}; lower --chunks, --plane-scale or "
+                      "buffers: {:.1f} MiB) but {}; lower --chunks, --plane-scale or "
                       "--precision",
                       mib(planes + buffers), o.chunks, wp, hp, plane_format_name(options.format()),
                       mib(planes), mib(buffers), what);
@@ -89,7 +100,7 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::Q
   const bool same = planes_.texels.id() && planes_.format == options.format() &&
                     planes_.max_planes == o.chunks && planes_.width == wp && planes_.height == hp;
   const size_t held = same ? 0 : planes_.texels.bytes() + planes_.table.buffer.bytes() + buffers_.bytes() +
-                                     layers_.bytes() + sort_.scratch_bytes();
+                                     layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
   // What the driver says is free, plus what this renderer would give back before allocating.
   std::optional<long long> free_bytes;
   if (!same && options.memory_budget_bytes == 0) {
@@ -100,9 +111,6 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::Q
   if (same) return;
   planes_ = GlPlanes();  // free the old array before the new one: a lower peak
   planes_ = GlPlanes(options.format(), o.chunks, wp, hp);
-  plane_framebuffer_ = Framebuffer();
-  plane_framebuffer_.attach(0, planes_.texels);  // every layer: layered rendering
-  plane_framebuffer_.finish(1);
 }
 
 void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
@@ -137,12 +145,8 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   binning_.run(scene_, ref, o.chunks, o.binning, sort_, buffers_.keys, buffers_.values, layers_,
                planes_.table, &buffers_.draw);
   stamp(kBinned);
-  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // C = 0, T = 1 in every layer
-  glClearTexImage(planes_.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
-  SplatRasterTarget target;
-  target.framebuffer = plane_framebuffer_.id();
-  target.image_size = {planes_.width, planes_.height};
-  raster_.draw(buffers_.records, buffers_.values, buffers_.draw, target, &layers_);
+  plane_raster_.run(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(),
+                    batch_layers_for(options, geometry), planes_);
   stamp(kRasterised);
   const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
   glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
@@ -153,7 +157,7 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   stats_ = {};
   stats_.plane_bytes = planes_.texels.bytes();
   stats_.gpu_bytes = scene_.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() +
-                     buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes();
+                     buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
   stats_.gpu_bytes_peak = gpu_bytes_peak();
   if (timed_) {
     const PlaneTableHeader header = planes_.table.read_header();

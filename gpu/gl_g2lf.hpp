@@ -6,8 +6,10 @@
 //               (render::render_sweeping_planes' settings)
 //   binning     GlDepthBinning (render::bin_by_depth): cull, one sort by reference depth,
 //               chunk cuts, plane table, per-splat layer
-//   planes      GlSplatRaster layered: every chunk in ONE instanced indirect draw into the layers
-//               of a 2D array texture (premultiplied colour + transmittance, zero background)
+//   planes      GlPlaneRaster (render::render_sweeping_planes): GlSplatRaster's layered draw,
+//               every chunk in one instanced indirect draw into the layers of a 2D array texture
+//               (premultiplied colour + transmittance, zero background); 8/16-bit planes are
+//               blended in float a batch of layers at a time and rounded once, as the CPU's
 //   swizzle     GlSwizzle (render::swizzle_blend) into the quilt texture
 // One frame is GPU work only: the plane count, the binned count and the draw's instance count
 // stay on the GPU, so nothing waits for a read-back (GpuTimer reads and stats excepted).
@@ -20,6 +22,7 @@
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_depth_binning.hpp"
 #include "gpu/gl_objects.hpp"
+#include "gpu/gl_plane_raster.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_radix_sort.hpp"
 #include "gpu/gl_scene.hpp"
@@ -39,6 +42,9 @@ struct GlG2lfOptions {
   // GPU bytes G2LF may allocate (planes + per-Gaussian buffers); 0: the free memory the driver
   // reports, no limit beyond the texture limits when it reports none (llvmpipe).
   size_t memory_budget_bytes = 0;
+  // Float accumulation for RGBA8/RGBA16F planes: layers of P_s W x P_s H x 16 bytes that fit
+  // this (at least one); more layers, fewer batches (draws) per frame.
+  size_t accumulation_budget_bytes = size_t(64) << 20;
   // Per-stage GPU timers, the plane and binned counts in the stats: read at the end of a frame,
   // which waits for the GPU (benchmarks, tests; not interactive frames).
   bool gpu_timers = false;
@@ -56,10 +62,11 @@ struct GlG2lfStats {
   size_t gpu_bytes_peak = 0;  // the process's peak of GPU allocations (gpu_bytes_peak())
 };
 
-// GPU bytes a frame needs beyond the scene: the plane array (N_chunk layers of P_s W x P_s H)
-// and the per-Gaussian buffers (records, keys, values, layers, the sort's copies).
+// GPU bytes a frame needs beyond the scene: the plane array (N_chunk layers of P_s W x P_s H),
+// and the rest: per-Gaussian buffers (records, keys, values, layers, the sort's copies, batch
+// lists) and the float accumulation layers.
 size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
-size_t g2lf_buffer_bytes(size_t gaussians);
+size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians);
 
 // Throws InputError (one line: what is needed, what there is, which option lowers it) when the
 // planes exceed the texture limits of `info` (GL_MAX_TEXTURE_SIZE, GL_MAX_ARRAY_TEXTURE_LAYERS)
@@ -96,12 +103,11 @@ class GlG2lfRenderer {
   GlSplatPreprocess preprocess_;
   GlRadixSort sort_;
   GlDepthBinning binning_;
-  GlSplatRaster raster_;
+  GlPlaneRaster plane_raster_;
   GlSwizzle swizzle_;
   SplatBuffers buffers_;
   Buffer layers_;
   GlPlanes planes_;
-  Framebuffer plane_framebuffer_;
   std::vector<GlName<delete_query>> stamps_;
   bool timed_ = false;
   GlG2lfStats stats_;

@@ -357,6 +357,29 @@ TEST(GlG2lfRenderer, HalfFloatPlanesStayCloseToTheCpuFloatPlanes) {
   EXPECT_GE(p, 40.0);
 }
 
+TEST(GlG2lfRenderer, BatchesOfAccumulationLayersGiveTheSamePlanes) {
+  const TestScene& s = tabletop();
+  HeadlessContext& ctx = context();
+  const GlScene scene(s.scene, ctx.info());
+  GlG2lfRenderer renderer(scene, ctx.info());
+  GlG2lfOptions options;
+  options.g2lf.chunks = 24;  // 23 planes (mixed)
+  options.gpu_timers = true;
+  render::RasterSettings settings;
+  settings.background = s.background;
+  const Texture quilt = make_quilt_texture(s.layout, GL_RGBA32F);
+  renderer.render_quilt(s.geometry, s.layout, options, settings, quilt);
+  const ImageF one_batch = read_image_top_down(quilt);
+  ASSERT_EQ(renderer.stats().planes, 23);
+  // Five layers of 56x40 RGBA32F: 23 planes in five batches, the last one partly used.
+  options.accumulation_budget_bytes = 5 * 56 * 40 * 16;
+  ASSERT_EQ(plane_batch_layers(options.format(), 24, 56, 40, options.accumulation_budget_bytes), 5);
+  renderer.render_quilt(s.geometry, s.layout, options, settings, quilt);
+  const ImageF five_batches = read_image_top_down(quilt);
+  EXPECT_EQ(five_batches.pixels, one_batch.pixels);
+  EXPECT_GT(scene_pixel_fraction(one_batch, s), 0.05);
+}
+
 TEST(GlG2lfRenderer, RefusesPlanesBeyondTheMemoryBudgetNamingTheOptions) {
   const TestScene& s = cloud();
   HeadlessContext& ctx = context();
@@ -365,8 +388,10 @@ TEST(GlG2lfRenderer, RefusesPlanesBeyondTheMemoryBudgetNamingTheOptions) {
   GlG2lfOptions options;
   options.g2lf.chunks = 64;
   options.g2lf.plane_scale = 2;
-  // 64 planes of 128x96 RGBA8 = 3 MiB: a 2 MiB budget cannot hold them.
+  // 64 planes of 128x96 RGBA8 = 3 MiB: a 2 MiB budget cannot hold them. One float
+  // accumulation layer (192 KiB).
   options.memory_budget_bytes = size_t(2) << 20;
+  options.accumulation_budget_bytes = size_t(256) << 10;
   const Texture quilt = make_quilt_texture(s.layout);
   try {
     renderer.render_quilt(s.geometry, s.layout, options, {}, quilt);

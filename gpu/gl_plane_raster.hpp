@@ -1,0 +1,59 @@
+#pragma once
+// G2LF stage 2 on the GPU (paper Alg. 1 lines 4-5; the twin of render/sweeping_planes.hpp):
+// every chunk rasterised from the reference camera into its plane, with GlSplatRaster's layered
+// draw (gl_Layer = the splat's plane), zero background, so each layer holds (C_k, T_k).
+//
+// The CPU blends in float and rounds a plane to 8 bits once; blending straight into an RGBA8
+// (or RGBA16F) layer would round every blend step (measured: 42-58 dB against the CPU's u8
+// planes instead of ~100). So only RGBA32F planes are drawn into directly, in one instanced
+// draw. Other formats go through an RGBA32F accumulation array of `batch_layers` layers: per
+// batch of planes, a compute pass copies the batch's splats (a contiguous run of the sorted list,
+// found on the GPU from the plane table) and writes its indirect draw, one layered draw blends
+// them in float, and a convert pass rounds each layer into its plane as the CPU does
+// (round(clamp(v, 0, 1) 255) for RGBA8) and resets the accumulation layer. The batch count
+// follows from N_chunk on the CPU; batches beyond the frame's planes draw nothing.
+#include <cstddef>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_planes.hpp"
+#include "gpu/gl_splat_preprocess.hpp"
+#include "gpu/gl_splat_raster.hpp"
+
+namespace lfd::gpu {
+
+// Storage-buffer bindings of the plane passes beside the splat (0-8) and binning (9-10) ones.
+constexpr GLuint kPlaneBatches = 11;
+constexpr GLuint kPlaneBatchDraw = 12;
+constexpr GLuint kPlaneBatchIds = 13;
+constexpr GLuint kPlaneBatchLayers = 14;
+
+// Accumulation layers for `format` planes of `width` x `height` within `budget_bytes` (at least
+// one, at most `max_planes`); 0 for RGBA32F (drawn into directly).
+int plane_batch_layers(PlaneFormat format, int max_planes, int width, int height, size_t budget_bytes);
+// GPU bytes of the accumulation array and the per-Gaussian batch buffers.
+size_t plane_raster_bytes(PlaneFormat format, int batch_layers, int width, int height, size_t gaussians);
+
+class GlPlaneRaster {
+ public:
+  GlPlaneRaster();  // needs a current context and GL_ARB_shader_viewport_layer_array
+
+  // Rasterises the binned splats into `planes`: `records` (GlSplatPreprocess from the reference
+  // camera), `sorted_ids` and `layers` (GlDepthBinning) and `draw` (its instance count = the
+  // binned count) for `gaussians` Gaussians. `batch_layers`: plane_batch_layers(...).
+  void run(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
+           size_t gaussians, int batch_layers, GlPlanes& planes);
+
+  size_t bytes() const;
+
+ private:
+  void ensure(const GlPlanes& planes, int batch_layers, size_t gaussians);
+
+  GlSplatRaster raster_;
+  Program batches_, copy_, convert_u8_, convert_f16_;
+  Framebuffer direct_framebuffer_, accumulation_framebuffer_;
+  bool direct_ready_ = false;
+  Texture accumulation_;
+  Buffer batch_commands_, batch_draw_, batch_ids_, batch_layers_;
+};
+
+}  // namespace lfd::gpu

@@ -1,0 +1,37 @@
+// G2LF planes through float accumulation (gpu/gl_plane_raster.hpp), pass 1, one invocation per
+// batch of `batch_layers` planes: the batch's splats are the sorted run from the first splat of
+// its first plane to the first splat past its last plane (plane_count's entry holds the binned
+// count, so the last batch ends there). Writes the run and the copy pass's indirect dispatch
+// (at least one group, so the copy always writes the batch's draw command).
+layout(local_size_x = 64) in;
+
+struct PlaneEntry {
+  float depth;
+  uint begin;
+};
+layout(std430, binding = 9) readonly buffer PlaneTable {
+  uint plane_count;
+  uint splats_binned;
+  uint pad0, pad1;
+  PlaneEntry plane[];
+};
+struct Batch {
+  uint groups_x, groups_y, groups_z;  // DispatchIndirectCommand of the copy pass
+  uint first;                         // first sorted splat of the batch
+  uint count;                         // its splats
+  uint pad0, pad1, pad2;
+};
+layout(std430, binding = 11) writeonly buffer Batches { Batch batches[]; };
+
+uniform uint batch_count;
+uniform uint batch_layers;
+
+void main() {
+  const uint b = gl_GlobalInvocationID.x;
+  if (b >= batch_count) return;
+  const uint count = plane_count;
+  const uint first = plane[min(b * batch_layers, count)].begin;
+  const uint last = plane[min((b + 1u) * batch_layers, count)].begin;
+  const uint n = last - first;
+  batches[b] = Batch(max(1u, (n + 255u) / 256u), 1u, 1u, first, n, 0u, 0u, 0u);
+}
