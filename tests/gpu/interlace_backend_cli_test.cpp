@@ -1,0 +1,108 @@
+// `lfd interlace --backend cpu|gl|auto` through the real program: gl writes the CPU's panel
+// (within 1/255), no GL is one line and exit 2 for gl and a notice plus the CPU's panel for auto.
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "calib/display/visual_json.hpp"
+#include "tests/apps/run_lfd.hpp"
+#include "tests/test_data.hpp"
+#include "util/image.hpp"
+
+namespace lfd {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+// libglvnd finds no EGL vendor: a real "no GL here" (HeadlessContext fails as on a machine
+// without Mesa or a driver), not a switch in lfd.
+const char* kNoGl = "EGL_PLATFORM=nonexistent __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent ";
+
+class InterlaceBackendCli : public testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = test::temp_dir("interlace_backend");
+    // A real unit's lens on a 320 x 200 panel.
+    calib::DisplayCalibration c =
+        calib::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json"));
+    c.screen_w /= 8;
+    c.screen_h /= 8;
+    calib::write_visual_json(dir_ / "small.visual.json", c);
+    // 45 tiles of 40 x 24 with content that differs per view and channel.
+    Image8 quilt(200, 216, 3);
+    for (int y = 0; y < quilt.height; ++y)
+      for (int x = 0; x < quilt.width; ++x)
+        for (int ch = 0; ch < 3; ++ch) {
+          const int view = x / 40 + 5 * ((quilt.height - 1 - y) / 24);
+          quilt.at(x, y, ch) = uint8_t(127.5 + 120 * std::sin(0.15 * x + 0.4 * view + ch) *
+                                                   std::cos(0.2 * y - 0.3 * ch));
+        }
+    write_png(dir_ / "q_qs5x9a1.6.png", quilt);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string interlace_args(const std::string& out, const std::string& extra) const {
+    return "interlace --calibration " + q(dir_ / "small.visual.json") + " --quilt " +
+           q(dir_ / "q_qs5x9a1.6.png") + " --out " + q(dir_ / out) + " " + extra;
+  }
+
+  // Fraction of the two panels' subpixels within 1 of 255.
+  double fraction_within_one(const std::string& a, const std::string& b) const {
+    const Image8 x = read_image(dir_ / a, 3), y = read_image(dir_ / b, 3);
+    EXPECT_EQ(x.width, y.width);
+    EXPECT_EQ(x.height, y.height);
+    if (x.pixels.size() != y.pixels.size()) return 0;
+    size_t close = 0;
+    for (size_t i = 0; i < x.pixels.size(); ++i) close += std::abs(x.pixels[i] - y.pixels[i]) <= 1;
+    return double(close) / double(x.pixels.size());
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(InterlaceBackendCli, GlWritesTheCpuPanel) {
+  for (const std::string options : {"", "--blend linear --overscan --invert"}) {
+    SCOPED_TRACE(options);
+    const auto cpu = test::run_lfd(interlace_args("cpu.png", options + " --backend cpu"));
+    ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+    const auto gl = test::run_lfd(interlace_args("gl.png", options + " --backend gl"));
+    ASSERT_EQ(gl.exit_code, 0) << gl.output;
+    EXPECT_NE(gl.output.find("backend: gl on "), std::string::npos) << gl.output;
+    EXPECT_GE(fraction_within_one("gl.png", "cpu.png"), 0.999);
+  }
+}
+
+TEST_F(InterlaceBackendCli, GlWithoutGlIsOneLineAndExit2) {
+  const auto r = test::run_command(kNoGl + std::string(LFD_EXE) + " " +
+                                   interlace_args("gl.png", "--backend gl"));
+  if (r.exit_code == 0) GTEST_SKIP() << "this EGL is not libglvnd: the variables do not hide GL";
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  std::istringstream lines(r.output);
+  std::string first, second;
+  std::getline(lines, first);
+  EXPECT_FALSE(std::getline(lines, second)) << r.output;
+  EXPECT_NE(first.find("lfd interlace: error: "), std::string::npos) << first;
+  EXPECT_NE(first.find("GL"), std::string::npos) << first;
+  EXPECT_FALSE(fs::exists(dir_ / "gl.png"));
+}
+
+TEST_F(InterlaceBackendCli, AutoWithoutGlFallsBackToTheCpuWithANotice) {
+  const auto r = test::run_command(kNoGl + std::string(LFD_EXE) + " " +
+                                   interlace_args("auto.png", "--backend auto"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  if (r.output.find("backend: gl on ") != std::string::npos)
+    GTEST_SKIP() << "this EGL is not libglvnd: the variables do not hide GL";
+  EXPECT_NE(r.output.find("notice: --backend auto: running on the CPU ("), std::string::npos)
+      << r.output;
+  ASSERT_EQ(test::run_lfd(interlace_args("cpu.png", "")).exit_code, 0);
+  EXPECT_EQ(fraction_within_one("auto.png", "cpu.png"), 1.0);
+}
+
+}  // namespace
+}  // namespace lfd
