@@ -19,7 +19,7 @@ CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::str
   return app.add_option("--backend", name, help)->check(CLI::IsMember({"cpu", "gl", "auto"}))->capture_default_str();
 }
 
-std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend) {
+std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend, bool verbose) {
   if (backend == Backend::kCpu) return nullptr;
   std::unique_ptr<gpu::HeadlessContext> context;
   try {
@@ -29,7 +29,7 @@ std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend) {
     std::cerr << fmt::format("notice: --backend auto: running on the CPU ({})\n", e.what());
     return nullptr;
   }
-  std::cout << fmt::format("backend: gl on {}\n", context->info().summary());
+  if (verbose) std::cout << fmt::format("backend: gl on {}\n", context->info().summary());
   return context;
 }
 

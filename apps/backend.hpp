@@ -20,7 +20,8 @@ CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::str
 
 // What will run: a headless context for gl (GlUnavailable propagates: exit 2), for auto a context
 // or, when none can be made, null with a notice on stderr naming the reason; null for cpu.
-// With a context, prints "backend: gl on <renderer>" to stdout.
-std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend);
+// With a context and `verbose`, prints "backend: gl on <GlInfo::summary()>" to stdout (a command
+// that reports the renderer itself, such as a benchmark table, passes false).
+std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend, bool verbose = true);
 
 }  // namespace lfd::apps
