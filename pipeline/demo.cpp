@@ -1,6 +1,8 @@
 #include "pipeline/demo.hpp"
 
 #include <chrono>
+#include <iostream>
+#include <memory>
 #include <cmath>
 #include <numbers>
 
@@ -13,6 +15,9 @@
 #include "calib/simulator.hpp"
 #include "calib/synthetic_unit.hpp"
 #include "calib/display/view_count.hpp"
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_g2lf.hpp"
+#include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "pipeline/numbered_quilt.hpp"
 #include "render/default_camera.hpp"
@@ -114,8 +119,19 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   const int tile_h = int(std::lround(o.tile_width / aspect));
   render::QuiltLayout layout;
   ImageF scene_quilt;
+  // The GPU path when a context can be made; the CPU reference otherwise (same images to within
+  // the GL tests' tolerances).
+  std::unique_ptr<gpu::HeadlessContext> gl;
+  if (o.use_gpu) {
+    try {
+      gl = std::make_unique<gpu::HeadlessContext>();
+    } catch (const gpu::GlUnavailable& e) {
+      if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", e.what());
+    }
+  }
   {
-    Step step(o.verbose, "rendering the scene with G2LF");
+    Step step(o.verbose, gl ? "rendering the scene with G2LF on the GPU (" + gl->info().renderer + ")"
+                            : std::string("rendering the scene with G2LF on the CPU"));
     const render::GaussianScene scene = render::load_scene(scene_path);
     const render::CameraSpec spec = render::frame_scene(scene, 40.0f, 0.0f);
     const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
@@ -127,7 +143,13 @@ std::filesystem::path run_demo(const DemoOptions& o) {
     g2lf.chunks = 64;
     g2lf.plane_scale = 2;
     g2lf.filter = render::PlaneFilter::kBilinear;
-    scene_quilt = render::render_quilt_g2lf(scene, geometry, layout, g2lf);
+    if (gl) {
+      gpu::GlG2lfOptions options;
+      options.g2lf = g2lf;
+      scene_quilt = gpu::render_quilt_g2lf_gl(scene, geometry, layout, options);
+    } else {
+      scene_quilt = render::render_quilt_g2lf(scene, geometry, layout, g2lf);
+    }
     report.scene_gaussians = scene.size();
   }
   const std::string suffix = render::quilt_suffix(layout.cols, layout.rows, layout.aspect);
@@ -140,8 +162,8 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   {
     Step step(o.verbose, "interlacing");
     const calib::LensModel lens(assumed.display, assumed.correction);
-    scene_panel = interlace::interlace(scene_quilt, layout, lens);
-    numbered_panel = interlace::interlace(numbered, layout, lens);
+    scene_panel = gl ? gpu::interlace_on_gpu(scene_quilt, layout, lens) : interlace::interlace(scene_quilt, layout, lens);
+    numbered_panel = gl ? gpu::interlace_on_gpu(numbered, layout, lens) : interlace::interlace(numbered, layout, lens);
     write_png(out / "scene_panel.png", to_uint8(scene_panel));
     write_png(out / "numbered_panel.png", to_uint8(numbered_panel));
   }

@@ -20,6 +20,9 @@ struct DemoOptions {
   int validation_points = 600;             // panel points per validation profile
   int capture_width = 1280;
   bool verbose = true;
+  // Render and interlace on the GPU when an OpenGL context can be made (headless EGL), else on
+  // the CPU with a notice; false: the CPU always.
+  bool use_gpu = true;
 };
 
 // Runs the demo; returns the path of the report's index.html.
