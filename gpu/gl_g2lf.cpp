@@ -19,6 +19,12 @@ render::ReferenceCamera reference_camera(const render::G2lfOptions& o, const ren
   return render::make_reference_camera(g, d_shift, o.plane_scale);
 }
 
+int batch_layers_for(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
+  const int s = options.g2lf.plane_scale;
+  return plane_batch_layers(options.format(), options.g2lf.chunks, geometry.base.width * s,
+                            geometry.base.height * s, options.accumulation_budget_bytes);
+}
+
 }  // namespace
 
 size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
@@ -27,14 +33,6 @@ size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltG
                              geometry.base.height * s) +
          plane_table_bytes(options.g2lf.chunks);
 }
-
-namespace {
-int batch_layers_for(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
-  const int s = options.g2lf.plane_scale;
-  return plane_batch_layers(options.format(), options.g2lf.chunks, geometry.base.width * s,
-                            geometry.base.height * s, options.accumulation_budget_bytes);
-}
-}  // namespace
 
 size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians) {
   const int s = options.g2lf.plane_scale;
@@ -97,8 +95,10 @@ double GlG2lfRenderer::seconds_between(Stamp a, Stamp b) const {
 void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
   const render::G2lfOptions& o = options.g2lf;
   const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
+  const int batch_layers = batch_layers_for(options, geometry);
   const bool same = planes_.texels.id() && planes_.format == options.format() &&
-                    planes_.max_planes == o.chunks && planes_.width == wp && planes_.height == hp;
+                    planes_.max_planes == o.chunks && planes_.width == wp && planes_.height == hp &&
+                    batch_layers_ == batch_layers;
   const size_t held = same ? 0 : planes_.texels.bytes() + planes_.table.buffer.bytes() + buffers_.bytes() +
                                      layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
   // What the driver says is free, plus what this renderer would give back before allocating.
@@ -111,6 +111,7 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::Q
   if (same) return;
   planes_ = GlPlanes();  // free the old array before the new one: a lower peak
   planes_ = GlPlanes(options.format(), o.chunks, wp, hp);
+  batch_layers_ = batch_layers;  // GlPlaneRaster sizes its accumulation array to it
 }
 
 void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
@@ -146,7 +147,7 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
                planes_.table, &buffers_.draw);
   stamp(kBinned);
   plane_raster_.run(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(),
-                    batch_layers_for(options, geometry), planes_);
+                    batch_layers_, planes_);
   stamp(kRasterised);
   const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
   glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);

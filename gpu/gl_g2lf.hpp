@@ -108,6 +108,7 @@ class GlG2lfRenderer {
   SplatBuffers buffers_;
   Buffer layers_;
   GlPlanes planes_;
+  int batch_layers_ = -1;  // float accumulation layers (0: RGBA32F planes, drawn directly)
   std::vector<GlName<delete_query>> stamps_;
   bool timed_ = false;
   GlG2lfStats stats_;
