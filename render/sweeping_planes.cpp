@@ -1,7 +1,9 @@
 // Alg. 1 lines 4-5: every chunk rasterised into its own plane from the reference camera with the
 // reference rasterizer (background 0, so the colour is premultiplied and T is the chunk's
-// transmittance). Chunks run in parallel, largest first; the rasterizer inside each runs on one
-// thread.
+// transmittance). Chunks run in parallel, largest first, the rasterizer inside each on one
+// thread; with fewer chunks than threads, one after another on all threads.
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -74,7 +76,10 @@ SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeo
 
   Progress progress("sweeping planes", planes.count);
   const std::vector<int> order = largest_first(scene, ref.camera, chunks);
-#pragma omp parallel for schedule(dynamic, 1)
+  // Fewer chunks than threads: one chunk at a time, each rasterised on all threads (the
+  // rasterizer's stages are parallel and deterministic), instead of idle threads.
+  const bool chunks_in_parallel = planes.count >= omp_get_max_threads();
+#pragma omp parallel for schedule(dynamic, 1) if (chunks_in_parallel)
   for (int n = 0; n < planes.count; ++n) {
     const int k = order[size_t(n)];
     const RasterImage img = rasterize(scene, ref.camera, chunk_settings, chunks.members[size_t(k)]);
