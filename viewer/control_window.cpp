@@ -70,9 +70,8 @@ bool ControlWindow::should_close() const { return glfwWindowShouldClose(window_)
 bool ControlWindow::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
 bool ControlWindow::wants_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
 
-ControlActions ControlWindow::draw(ViewerSettings& s, OrbitCamera& camera, float& seen_from_deg,
-                                   const FrameReport& r, const gpu::Texture* quilt,
-                                   const gpu::Texture* seen, GLFWwindow* restore) {
+ControlActions ControlWindow::draw(ViewerSettings& s, const FrameReport& r, const gpu::Texture* quilt,
+                                   GLFWwindow* restore) {
   ControlActions actions;
   glfwMakeContextCurrent(window_);
   ImGui::SetCurrentContext(static_cast<ImGuiContext*>(imgui_context_));
@@ -134,16 +133,11 @@ ControlActions ControlWindow::draw(ViewerSettings& s, OrbitCamera& camera, float
   ImGui::SameLine();
   if (ImGui::Button("save cam.json")) actions.save_camera = true;
   if (ImGui::Button("remember these settings for this display")) actions.save_settings = true;
-  (void)camera;
 
-  const float preview_width = ImGui::GetContentRegionAvail().x;
   if (quilt) {
     section("Quilt");
-    show_texture(*quilt, preview_width);
+    show_texture(*quilt, ImGui::GetContentRegionAvail().x);
   }
-  section("Seen from");
-  ImGui::SliderFloat("angle", &seen_from_deg, -30.0f, 30.0f, "%.1f deg");
-  if (seen) show_texture(*seen, preview_width * 0.6f);
   ImGui::End();
 
   ImGui::Render();

@@ -1,13 +1,12 @@
 #pragma once
 // The viewer's control window (Dear ImGui, on the main monitor): frame time per stage, the G2LF
-// and quilt parameters, the camera, a quilt preview and a "seen from" preview, and the buttons
-// that save a screenshot, the quilt and cam.json. It shares the display window's GL objects.
+// and quilt parameters, a quilt preview, and the buttons that save a screenshot, the quilt,
+// cam.json and the settings. It shares the display window's GL objects.
 #include <optional>
 #include <string>
 
 #include "gpu/gl_objects.hpp"
 #include "gpu/glfw_session.hpp"
-#include "viewer/orbit_camera.hpp"
 #include "viewer/viewer_settings.hpp"
 
 struct GLFWwindow;
@@ -35,7 +34,7 @@ struct ControlActions {
 
 class ControlWindow {
  public:
-  // Shares `share`'s GL objects (textures) so the quilt and seen-from previews draw directly.
+  // Shares `share`'s GL objects (textures) so the quilt preview draws directly.
   ControlWindow(const gpu::GlfwSession& session, GLFWwindow* share);
   ~ControlWindow();
   ControlWindow(const ControlWindow&) = delete;
@@ -43,11 +42,10 @@ class ControlWindow {
 
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
-  // One ImGui frame: edits `settings` and `camera`; `quilt` and `seen` (optional) are shown
-  // scaled. Returns the buttons pressed. Leaves the display window's context current.
-  ControlActions draw(ViewerSettings& settings, OrbitCamera& camera, float& seen_from_deg,
-                      const FrameReport& report, const gpu::Texture* quilt,
-                      const gpu::Texture* seen, GLFWwindow* restore);
+  // One ImGui frame: edits `settings`; `quilt` (optional) is shown scaled. Returns the buttons
+  // pressed. Makes `restore` (the display window's context) current again.
+  ControlActions draw(ViewerSettings& settings, const FrameReport& report, const gpu::Texture* quilt,
+                      GLFWwindow* restore);
   // Whether ImGui wants the mouse/keyboard (then the camera controls leave them alone).
   bool wants_mouse() const;
   bool wants_keyboard() const;

@@ -154,7 +154,6 @@ int run_viewer(const ViewerOptions& options) {
   report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
   std::deque<double> frame_times;
   auto last = std::chrono::steady_clock::now();
-  float seen_from_deg = 0.0f;
   for (int frame_index = 0; options.frames == 0 || frame_index < options.frames; ++frame_index) {
     glfwPollEvents();
     if (display.should_close() || (controls && controls->should_close())) break;
@@ -201,8 +200,7 @@ int run_viewer(const ViewerOptions& options) {
     display.swap();
 
     if (controls) {
-      const ControlActions a = controls->draw(settings, camera, seen_from_deg, report, &frame.quilt(),
-                                              nullptr, display.handle());
+      const ControlActions a = controls->draw(settings, report, &frame.quilt(), display.handle());
       if (a.reset_camera) camera.reset();
       if (a.screenshot) write_screenshot(display, frame, "lfd-view-" + timestamp() + ".png");
       if (a.save_quilt) write_quilt(frame, "lfd-view-" + timestamp() + ".png");
