@@ -7,7 +7,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "calib/camera_effects.hpp"
-#include "calib/lens_optics.hpp"
+#include "calib/display/lens_optics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {

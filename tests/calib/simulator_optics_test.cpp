@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/lens_optics.hpp"
+#include "calib/display/lens_optics.hpp"
 #include "calib/simulator.hpp"
 #include "simulator_test_support.hpp"
 #include "util/error.hpp"

@@ -1,4 +1,4 @@
-#include "calib/phase_kernel.hpp"
+#include "calib/display/phase_kernel.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "calib/lens_optics.hpp"
+#include "calib/display/lens_optics.hpp"
 
 #include <algorithm>
 #include <cmath>

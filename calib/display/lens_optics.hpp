@@ -6,7 +6,7 @@
 
 #include "calib/display/lens_model.hpp"
 #include "calib/display/lens_relations.hpp"
-#include "calib/phase_kernel.hpp"
+#include "calib/display/phase_kernel.hpp"
 #include "util/image.hpp"
 
 namespace lfd::calib {
