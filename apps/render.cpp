@@ -24,6 +24,7 @@
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl_planes.hpp"
 #include "gpu/gl_scene.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/camera_json.hpp"
@@ -57,10 +58,11 @@ std::string quilt_file_name(const std::string& out, const render::QuiltLayout& q
 ImageF render_on_gpu(const gpu::HeadlessContext& context, const render::GaussianScene& scene,
                      const render::QuiltGeometry& geometry, const render::QuiltLayout* layout, int view,
                      const std::string& method, const render::G2lfOptions& g2lf,
-                     const render::RasterSettings& settings) {
+                     std::optional<gpu::PlaneFormat> plane_format, const render::RasterSettings& settings) {
   if (method == "g2lf" && layout) {
     gpu::GlG2lfOptions options;
     options.g2lf = g2lf;
+    options.plane_format = plane_format;
     return gpu::render_quilt_g2lf_gl(scene, geometry, *layout, options, settings);
   }
   const gpu::GlScene gl_scene(scene, context.info());
@@ -116,8 +118,9 @@ int RunRender(int argc, char** argv) {
   app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
   app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")
       ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
-  app.add_option("--precision", precision, "G2LF: plane storage, u8 or f32")
-      ->check(CLI::IsMember({"u8", "f32"}))->capture_default_str();
+  app.add_option("--precision", precision,
+                 "G2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F), or f16 (RGBA16F, --backend gl only)")
+      ->check(CLI::IsMember({"u8", "f16", "f32"}))->capture_default_str();
   app.add_option("--binning", binning,
                  "G2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
                  "quantile (the paper's equal counts)")
@@ -152,7 +155,10 @@ int RunRender(int argc, char** argv) {
   if (auto code = parse(app, argc, argv)) return *code;
 
   g2lf.filter = render::parse_plane_filter(filter);
-  g2lf.precision = render::parse_plane_precision(precision);
+  // f16 exists only as a GPU texture format; the CPU planes are u8 or f32.
+  const std::optional<gpu::PlaneFormat> plane_format =
+      precision == "f16" ? std::optional(gpu::PlaneFormat::kRgba16f) : std::nullopt;
+  g2lf.precision = render::parse_plane_precision(precision == "f16" ? "f32" : precision);
   g2lf.binning = render::parse_chunk_binning(binning);
   g2lf.check();
   if (!panel_path.empty() && !display_source.given())
@@ -179,6 +185,8 @@ int RunRender(int argc, char** argv) {
       display_quilt ? float(display_quilt->view_cone_deg) : view_cone_opt.value_or(40.0f);
 
   const auto context = open_backend(parse_backend(backend_name));
+  if (plane_format && !context)
+    throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
   const auto t0 = std::chrono::steady_clock::now();
   const render::GaussianScene scene = render::load_scene(scene_path);
   const render::CameraSpec spec =
@@ -213,7 +221,7 @@ int RunRender(int argc, char** argv) {
     if (view >= views) throw_input_error("--view: {} is outside 0..{}", view, views - 1);
     ImageF f;
     if (context) {
-      f = render_on_gpu(*context, scene, geometry, nullptr, view, method, g2lf, settings);
+      f = render_on_gpu(*context, scene, geometry, nullptr, view, method, g2lf, plane_format, settings);
     } else {
       const render::RasterImage img = render::render_view(scene, geometry, view, settings);
       f = ImageF(img.width, img.height, 3);
@@ -230,7 +238,7 @@ int RunRender(int argc, char** argv) {
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     written = quilt_file_name(out, layout);
     const ImageF quilt =
-        context ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, settings)
+        context ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, plane_format, settings)
         : method == "per-view" ? render::render_quilt_per_view(scene, geometry, layout, settings)
                                : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);
     const Image8 quilt8 = to_uint8(quilt);

@@ -1,0 +1,59 @@
+// `lfd render --backend gl` through the real program: the GL quilt is the CPU's (PSNR >= 40 dB)
+// for each plane storage, including f16 (RGBA16F planes), which exists only on the GPU; asking
+// the CPU for f16 is one line and exit 2, with nothing written.
+#include <filesystem>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "render/image_metrics.hpp"
+#include "tests/apps/run_lfd.hpp"
+#include "tests/test_data.hpp"
+#include "util/image.hpp"
+
+namespace lfd {
+namespace {
+
+namespace fs = std::filesystem;
+
+class RenderBackendCli : public testing::Test {
+ protected:
+  void SetUp() override { dir_ = test::temp_dir("render_backend"); }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // A small G2LF quilt of the bundled demo scene; returns the program's result.
+  test::RunResult render(const std::string& out, const std::string& extra) const {
+    return test::run_lfd("render --scene '" + (test::project_data() / "scenes" / "demo.ply").string() +
+                         "' --views 6 --cols 3 --rows 2 --size 48x32 --chunks 16 --out '" +
+                         (dir_ / out).string() + "' " + extra);
+  }
+  ImageF quilt(const std::string& name) const { return to_float(read_image(dir_ / name, 3)); }
+
+  fs::path dir_;
+};
+
+TEST_F(RenderBackendCli, EveryPlaneStorageOnTheGpuMatchesTheCpu) {
+  ASSERT_EQ(render("cpu.png", "--backend cpu --precision f32").exit_code, 0);
+  for (const std::string precision : {"u8", "f16", "f32"}) {
+    SCOPED_TRACE(precision);
+    const auto r = render("gl_" + precision + ".png", "--backend gl --precision " + precision);
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    EXPECT_NE(r.output.find("on the GPU"), std::string::npos) << r.output;
+    EXPECT_GE(render::psnr(quilt("gl_" + precision + "_qs3x2a1.5.png"), quilt("cpu_qs3x2a1.5.png")), 40.0);
+  }
+}
+
+TEST_F(RenderBackendCli, F16OnTheCpuIsOneLineAndExit2) {
+  const auto r = render("cpu16.png", "--backend cpu --precision f16");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  std::istringstream lines(r.output);
+  std::string first, second;
+  std::getline(lines, first);
+  EXPECT_FALSE(std::getline(lines, second)) << r.output;
+  EXPECT_NE(first.find("--precision"), std::string::npos) << first;
+  EXPECT_FALSE(fs::exists(dir_ / "cpu16_qs3x2a1.5.png"));
+}
+
+}  // namespace
+}  // namespace lfd
