@@ -9,8 +9,6 @@
 
 namespace lfd::calib {
 
-namespace {
-
 cv::Mat read_capture(const std::filesystem::path& path) {
   cv::Mat raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
   if (raw.empty()) throw_input_error("{}: not an image OpenCV can read", path.string());
@@ -30,8 +28,6 @@ cv::Mat read_capture(const std::filesystem::path& path) {
   rgb.convertTo(out, CV_32FC3, scale);
   return out;
 }
-
-}  // namespace
 
 const cv::Mat& PositionCaptures::image(const std::string& stem) const {
   auto it = images.find(stem);

@@ -33,6 +33,11 @@ std::vector<PositionCaptures> read_captures(const std::filesystem::path& dir,
                                             const PatternSet& set,
                                             std::vector<std::string>& warnings);
 
+// One photograph as CV_32FC3 RGB in [0, 1] (8- or 16-bit, grey, BGR or BGRA files). EXIF
+// orientation is not applied: a phone's photos keep the sensor's orientation, so a camera
+// file and the photos it is used with agree. InputError naming the file if unreadable.
+cv::Mat read_capture(const std::filesystem::path& path);
+
 // cv::Mat (CV_32FC3 RGB) <-> the project's float images.
 cv::Mat to_mat(const ImageF& image);
 // 8-bit grey of a float RGB photo (what the marker and board detectors take).

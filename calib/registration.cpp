@@ -8,6 +8,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "calib/charuco_detection.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -23,14 +24,10 @@ Eigen::Vector3d uv_to_display_m(const DisplayCalibration& d, ScreenUV uv) {
 BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
   BoardDetection out;
   out.image_size = gray8.size();
-  auto board = make_board(set.board);
-  auto params = cv::aruco::DetectorParameters::create();
-  params->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
-  std::vector<std::vector<cv::Point2f>> marker_corners, rejected;
-  std::vector<int> marker_ids;
-  cv::aruco::detectMarkers(gray8, board->dictionary, marker_corners, marker_ids, params,
-                           rejected);
-  out.markers = int(marker_ids.size());
+  const CharucoCorners charuco = detect_charuco_corners(gray8, make_board(set.board));
+  out.markers = charuco.markers;
+  out.image_px = charuco.image_px;
+  out.ids = charuco.ids;
   // The lit screen (the board's white) reaching the image border means it is cut off; the
   // bezel and the room around it are dark.
   double max_value = 0;
@@ -51,20 +48,6 @@ BoardDetection detect_board(const cv::Mat& gray8, const PatternSet& set) {
       std::max({longest_lit_run(gray8.row(0)), longest_lit_run(gray8.row(gray8.rows - 1)),
                 longest_lit_run(gray8.col(0).clone()), longest_lit_run(gray8.col(gray8.cols - 1).clone())});
   out.touches_border = max_value > 20 && lit > 0.25;
-  if (marker_ids.size() < 4) return out;
-  cv::aruco::interpolateCornersCharuco(marker_corners, marker_ids, gray8, board, out.image_px,
-                                       out.ids, cv::noArray(), cv::noArray(), 2);
-  // The interpolated corners of OpenCV 4.6 sit about half a pixel off (measured on rendered
-  // boards); a saddle-point refinement of our own removes that bias.
-  if (!out.image_px.empty()) {
-    const auto& e = out.image_px;
-    double spacing = 1e9;  // window: a third of the nearest corner spacing, 2..8 px
-    for (size_t i = 0; i < e.size(); ++i)
-      for (size_t j = i + 1; j < e.size(); ++j) spacing = std::min(spacing, double(cv::norm(e[i] - e[j])));
-    const int win = std::clamp(int(spacing / 3), 2, 8);
-    cv::cornerSubPix(gray8, out.image_px, cv::Size(win, win), cv::Size(-1, -1),
-                     cv::TermCriteria(cv::TermCriteria::EPS + cv::TermCriteria::COUNT, 50, 1e-3));
-  }
   return out;
 }
 
