@@ -9,7 +9,6 @@ namespace lfd::gpu {
 namespace {
 
 constexpr size_t kRecordBytes = 64;            // SplatRecord (gl_splat_preprocess.hpp)
-constexpr size_t kUploadChunk = size_t(1) << 20;  // Gaussians per upload step
 
 double mib(double bytes) { return bytes / 1048576.0; }
 
@@ -51,6 +50,11 @@ void check_scene_fits(size_t gaussians, int sh_degree, const GlInfo& info) {
   if (info.free_memory_bytes) {
     const double scene = double(gaussians) * scene_bytes_per_gaussian(sh_degree);
     const double scratch = double(gaussians) * per_view_scratch_bytes_per_gaussian();
+    if (scene + scratch > double(*info.free_memory_bytes) && sh_degree == 0)
+      throw_input_error(
+          "scene of {} Gaussians at SH degree 0 needs {:.0f} MiB of GPU memory (scene {:.0f} + "
+          "render buffers {:.0f}) but {:.0f} MiB are free; use a smaller scene",
+          gaussians, mib(scene + scratch), mib(scene), mib(scratch), mib(double(*info.free_memory_bytes)));
     if (scene + scratch > double(*info.free_memory_bytes))
       throw_input_error(
           "scene of {} Gaussians at SH degree {} needs {:.0f} MiB of GPU memory (scene {:.0f} + "
@@ -62,11 +66,26 @@ void check_scene_fits(size_t gaussians, int sh_degree, const GlInfo& info) {
   }
 }
 
+int fitting_sh_degree(size_t gaussians, int scene_degree, const GlInfo& info) {
+  for (int degree = std::max(scene_degree, 0); degree > 0; --degree) {
+    try {
+      check_scene_fits(gaussians, degree, info);
+      return degree;
+    } catch (const InputError&) {
+      // the next lower degree stores fewer coefficients per Gaussian
+    }
+  }
+  check_scene_fits(gaussians, 0, info);
+  return 0;
+}
+
 GlScene::GlScene(const render::GaussianScene& scene, const GlInfo& info, const GlSceneOptions& options)
     : count_(scene.size()),
       sh_degree_(options.max_sh_degree < 0 ? scene.sh_degree
                                            : std::min(options.max_sh_degree, scene.sh_degree)) {
   check_scene_fits(count_, sh_degree_, info);
+  if (options.chunk_gaussians == 0) throw_input_error("scene upload: chunk_gaussians: 0 (expected > 0)");
+  const size_t chunk = options.chunk_gaussians;
   const int stride = gpu::sh_vec4_stride(sh_degree_);
   const int scene_coeffs = scene.sh_coeffs(), coeffs = (sh_degree_ + 1) * (sh_degree_ + 1);
   positions_ = Buffer(count_ * 16);
@@ -76,8 +95,8 @@ GlScene::GlScene(const render::GaussianScene& scene, const GlInfo& info, const G
 
   // Packed on the CPU a chunk at a time so a large scene never holds a second full copy.
   std::vector<float> pos, scl, rot, shc;
-  for (size_t begin = 0; begin < count_; begin += kUploadChunk) {
-    const size_t n = std::min(kUploadChunk, count_ - begin);
+  for (size_t begin = 0; begin < count_; begin += chunk) {
+    const size_t n = std::min(chunk, count_ - begin);
     pos.assign(n * 4, 0.0f);
     scl.assign(n * 4, 0.0f);
     rot.assign(n * 4, 0.0f);

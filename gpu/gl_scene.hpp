@@ -39,10 +39,18 @@ size_t per_view_scratch_bytes_per_gaussian();
 // memory the driver reports, or more than 2^32 - 1 Gaussians (32-bit indices).
 void check_scene_fits(size_t gaussians, int sh_degree, const GlInfo& info);
 
+// The largest SH degree <= `scene_degree` (3 -> 2 -> 1 -> 0) at which `gaussians` pass
+// check_scene_fits: a viewer shows a big scene with fewer colour coefficients rather than not at
+// all. When even degree 0 does not fit, throws check_scene_fits' refusal at degree 0.
+int fitting_sh_degree(size_t gaussians, int scene_degree, const GlInfo& info);
+
 struct GlSceneOptions {
   int max_sh_degree = -1;  // -1: the scene's degree; lower to upload fewer coefficients
-  // Called after each uploaded chunk with (Gaussians uploaded, total); may be empty.
+  // Called after each uploaded chunk with (Gaussians uploaded, total); may be empty. A viewer
+  // draws its progress bar there (the upload is GL calls on the caller's thread).
   std::function<void(size_t done, size_t total)> progress;
+  // Gaussians packed and uploaded per step: smaller steps, finer progress; same buffers.
+  size_t chunk_gaussians = size_t(1) << 20;
 };
 
 class GlScene {

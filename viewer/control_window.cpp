@@ -1,5 +1,6 @@
 #include "viewer/control_window.hpp"
 
+#include <algorithm>
 #include <cstdint>
 
 #include <epoxy/gl.h>
@@ -70,9 +71,7 @@ bool ControlWindow::should_close() const { return glfwWindowShouldClose(window_)
 bool ControlWindow::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
 bool ControlWindow::wants_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
 
-ControlActions ControlWindow::draw(ViewerSettings& s, const FrameReport& r, const gpu::Texture* quilt,
-                                   GLFWwindow* restore) {
-  ControlActions actions;
+void ControlWindow::begin_frame() {
   glfwMakeContextCurrent(window_);
   ImGui::SetCurrentContext(static_cast<ImGuiContext*>(imgui_context_));
   ImGui_ImplOpenGL3_NewFrame();
@@ -83,6 +82,32 @@ ControlActions ControlWindow::draw(ViewerSettings& s, const FrameReport& r, cons
   ImGui::SetNextWindowPos(ImVec2(0, 0));
   ImGui::SetNextWindowSize(ImVec2(float(w), float(h)));
   ImGui::Begin("lfd view", nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove);
+}
+
+void ControlWindow::end_frame(GLFWwindow* restore) {
+  ImGui::End();
+  ImGui::Render();
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  glViewport(0, 0, w, h);
+  glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  glfwSwapBuffers(window_);
+  glfwMakeContextCurrent(restore);
+}
+
+void ControlWindow::draw_progress(const std::string& what, double fraction, GLFWwindow* restore) {
+  begin_frame();
+  ImGui::TextUnformatted(what.c_str());
+  ImGui::ProgressBar(float(std::clamp(fraction, 0.0, 1.0)), ImVec2(-1.0f, 0.0f));
+  end_frame(restore);
+}
+
+ControlActions ControlWindow::draw(ViewerSettings& s, SeenFromControls& seen, const FrameReport& r,
+                                   const ControlImages& images, GLFWwindow* restore) {
+  ControlActions actions;
+  begin_frame();
 
   ImGui::TextUnformatted(r.display.c_str());
   ImGui::TextUnformatted(r.renderer.c_str());
@@ -95,6 +120,9 @@ ControlActions ControlWindow::draw(ViewerSettings& s, const FrameReport& r, cons
   ImGui::Text("%d views (%dx%d of %dx%d), cone %.1f deg; planes %.1f MiB, GPU peak %.1f MiB", r.views,
               r.cols, r.rows, r.view_width, r.view_height, r.view_cone_deg, r.plane_bytes / 1048576.0,
               r.gpu_peak_bytes / 1048576.0);
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+  for (const std::string& notice : r.fit_notices) ImGui::TextWrapped("fit: %s", notice.c_str());
+  ImGui::PopStyleColor();
 
   section("Method");
   int method = s.method == Method::kG2lf ? 0 : 1;
@@ -134,19 +162,28 @@ ControlActions ControlWindow::draw(ViewerSettings& s, const FrameReport& r, cons
   if (ImGui::Button("save cam.json")) actions.save_camera = true;
   if (ImGui::Button("remember these settings for this display")) actions.save_settings = true;
 
-  if (quilt) {
-    section("Quilt");
-    show_texture(*quilt, ImGui::GetContentRegionAvail().x);
+  section("Seen from");
+  ImGui::Checkbox("show what an eye at this place sees (lfd simulate's optics)", &seen.visible);
+  if (seen.visible) {
+    const float reach = float(std::max(r.view_cone_deg, 10.0));  // a little past the cone's edges
+    float angle = float(seen.eye.angle_deg), distance = float(seen.eye.distance_m), height = float(seen.eye.height_m);
+    ImGui::SliderFloat("angle", &angle, -reach, reach, "%.1f deg");
+    ImGui::SliderFloat("distance", &distance, 0.1f, 3.0f, "%.2f m", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("height", &height, -1.0f, 1.0f, "%.2f m");
+    seen.eye = SeenFromEye{angle, std::max(distance, 0.01f), height};
+    if (images.seen_from) {
+      ImGui::Text("updated %.1f s ago (at most 4 times a second, when the frame or the eye moves)",
+                  std::max(images.seen_from_age_s, 0.0));
+      show_texture(*images.seen_from, std::min(ImGui::GetContentRegionAvail().x, float(images.seen_from->width())));
+    } else {
+      ImGui::TextUnformatted("computing...");
+    }
   }
-  ImGui::End();
-
-  ImGui::Render();
-  glViewport(0, 0, w, h);
-  glClearColor(0.1f, 0.1f, 0.1f, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT);
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  glfwSwapBuffers(window_);
-  glfwMakeContextCurrent(restore);
+  if (images.quilt) {
+    section("Quilt");
+    show_texture(*images.quilt, ImGui::GetContentRegionAvail().x);
+  }
+  end_frame(restore);
   return actions;
 }
 

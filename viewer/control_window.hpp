@@ -4,9 +4,11 @@
 // cam.json and the settings. It shares the display window's GL objects.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gpu/gl_objects.hpp"
 #include "gpu/glfw_session.hpp"
+#include "viewer/seen_from_preview.hpp"
 #include "viewer/viewer_settings.hpp"
 
 struct GLFWwindow;
@@ -24,6 +26,21 @@ struct FrameReport {
   double view_cone_deg = 0;
   std::string renderer;  // GlInfo-like summary
   std::string display;   // the display's name and where its calibration came from
+  std::vector<std::string> fit_notices;  // what was lowered to fit (SH degree, plane precision)
+};
+
+// The "seen from" preview's controls (not remembered per display: where one looks from is not
+// a setting of the display).
+struct SeenFromControls {
+  bool visible = true;
+  SeenFromEye eye;
+};
+
+// The images the control window shows, made in the display window's (shared) context.
+struct ControlImages {
+  const gpu::Texture* quilt = nullptr;
+  const gpu::Texture* seen_from = nullptr;
+  double seen_from_age_s = -1;  // since the preview was computed; < 0: not yet
 };
 
 // Buttons pressed this frame.
@@ -42,15 +59,21 @@ class ControlWindow {
 
   GLFWwindow* handle() const { return window_; }
   bool should_close() const;
-  // One ImGui frame: edits `settings`; `quilt` (optional) is shown scaled. Returns the buttons
-  // pressed. Makes `restore` (the display window's context) current again.
-  ControlActions draw(ViewerSettings& settings, const FrameReport& report, const gpu::Texture* quilt,
-                      GLFWwindow* restore);
+  // One ImGui frame: edits `settings` and `seen_from`; shows the images scaled. Returns the
+  // buttons pressed. Makes `restore` (the display window's context) current again.
+  ControlActions draw(ViewerSettings& settings, SeenFromControls& seen_from, const FrameReport& report,
+                      const ControlImages& images, GLFWwindow* restore);
+  // One frame with only `what` and a progress bar (`fraction` in [0, 1]), between the pieces of
+  // a long upload, so the window stays alive and says what it waits for.
+  void draw_progress(const std::string& what, double fraction, GLFWwindow* restore);
   // Whether ImGui wants the mouse/keyboard (then the camera controls leave them alone).
   bool wants_mouse() const;
   bool wants_keyboard() const;
 
  private:
+  void begin_frame();
+  void end_frame(GLFWwindow* restore);
+
   GLFWwindow* window_ = nullptr;
   void* imgui_context_ = nullptr;
 };

@@ -1,5 +1,6 @@
 #include "viewer/light_field_frame.hpp"
 
+#include <fmt/format.h>
 #include <glm/glm.hpp>
 
 #include "calib/display/display_quilt.hpp"
@@ -7,6 +8,22 @@
 #include "util/error.hpp"
 
 namespace lfd::viewer {
+namespace {
+
+double mib(double bytes) { return bytes / 1048576.0; }
+
+double scene_gpu_bytes(size_t gaussians, int sh_degree) {
+  return double(gaussians) * double(gpu::scene_bytes_per_gaussian(sh_degree) + gpu::per_view_scratch_bytes_per_gaussian());
+}
+
+std::string limit_text(const gpu::GlInfo& info) {
+  std::string text;
+  if (info.free_memory_bytes) text += fmt::format("; {:.0f} MiB free", mib(double(*info.free_memory_bytes)));
+  if (info.max_ssbo_bytes > 0) text += fmt::format("; buffers of at most {:.0f} MiB", mib(double(info.max_ssbo_bytes)));
+  return text;
+}
+
+}  // namespace
 
 FramePlan plan_frame(const calib::Calibration& calibration, const render::CameraSpec& camera,
                      const ViewerSettings& s) {
@@ -25,8 +42,11 @@ FramePlan plan_frame(const calib::Calibration& calibration, const render::Camera
 }
 
 LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
-                                 const gpu::GlInfo& info)
-    : calibration_(calibration), lens_(calibration.display, calibration.correction), info_(info) {
+                                 const gpu::GlInfo& info, FrameOptions options)
+    : calibration_(calibration),
+      lens_(calibration.display, calibration.correction),
+      info_(info),
+      options_(std::move(options)) {
   replace_scene(scene);
   panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
@@ -37,7 +57,43 @@ void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
   // Renderers hold the scene by reference: drop them first.
   g2lf_.reset();
   per_view_.reset();
-  scene_ = std::make_unique<gpu::GlScene>(scene, info_);
+  gpu::GlSceneOptions o;
+  o.max_sh_degree = gpu::fitting_sh_degree(scene.size(), scene.sh_degree, info_);  // refuses: old scene kept
+  o.progress = options_.upload_progress;
+  o.chunk_gaussians = kUploadPieceGaussians;
+  scene_fit_notice_.clear();
+  if (o.max_sh_degree < scene.sh_degree)
+    scene_fit_notice_ = fmt::format(
+        "scene of {} Gaussians shown at SH degree {} (its own: {}): {:.0f} MiB on the GPU instead of {:.0f} MiB{}",
+        scene.size(), o.max_sh_degree, scene.sh_degree, mib(scene_gpu_bytes(scene.size(), o.max_sh_degree)),
+        mib(scene_gpu_bytes(scene.size(), scene.sh_degree)), limit_text(info_));
+  scene_.reset();  // the old buffers go before the new ones are allocated: a lower peak
+  scene_ = std::make_unique<gpu::GlScene>(scene, info_, o);
+}
+
+void LightFieldFrame::render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster,
+                                  bool timed) {
+  if (!g2lf_) g2lf_ = std::make_unique<gpu::GlG2lfRenderer>(*scene_, info_);
+  gpu::GlG2lfOptions o;
+  o.g2lf = settings.g2lf;
+  o.gpu_timers = timed;
+  o.memory_budget_bytes = options_.g2lf_memory_budget_bytes;
+  o.accumulation_budget_bytes = options_.g2lf_accumulation_budget_bytes;
+  plane_fit_notice_.clear();
+  try {
+    g2lf_->render_quilt(plan_.geometry, plan_.layout, o, raster, quilt_);
+  } catch (const InputError& refused) {
+    // The memory check runs before anything is allocated or drawn: RGBA8 planes (a quarter of
+    // the bytes, plus a bounded float accumulation array) may fit where RGBA32F ones do not.
+    if (o.g2lf.precision == render::PlanePrecision::kU8) throw;
+    o.g2lf.precision = render::PlanePrecision::kU8;
+    try {
+      g2lf_->render_quilt(plan_.geometry, plan_.layout, o, raster, quilt_);
+    } catch (const InputError&) {
+      throw refused;
+    }
+    plane_fit_notice_ = fmt::format("RGBA32F planes do not fit, so RGBA8 planes are shown ({})", refused.what());
+  }
 }
 
 void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSettings& settings,
@@ -57,11 +113,7 @@ void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSetti
   raster.background = settings.background;
   const bool timed = report != nullptr;
   if (settings.method == Method::kG2lf) {
-    if (!g2lf_) g2lf_ = std::make_unique<gpu::GlG2lfRenderer>(*scene_, info_);
-    gpu::GlG2lfOptions o;
-    o.g2lf = settings.g2lf;
-    o.gpu_timers = timed;
-    g2lf_->render_quilt(plan_.geometry, layout, o, raster, quilt_);
+    render_g2lf(settings, raster, timed);
   } else {
     if (!per_view_) {
       gpu::GlPerViewOptions o;

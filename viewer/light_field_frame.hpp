@@ -3,8 +3,10 @@
 // (interlacing shader), with no CPU round trip. The same class renders in the display window
 // and in a headless context, which is how the viewer's test checks the window against the
 // headless render of the same camera and settings.
+#include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "calib/display/calibration_file.hpp"
 #include "calib/display/display_quilt.hpp"
@@ -32,17 +34,39 @@ struct FramePlan {
 FramePlan plan_frame(const calib::Calibration& calibration, const render::CameraSpec& camera,
                      const ViewerSettings& settings);
 
+// The scene goes to the GPU in pieces of this many Gaussians (progress four times a million).
+inline constexpr size_t kUploadPieceGaussians = size_t(1) << 18;
+// Called between the pieces of a scene upload with (Gaussians uploaded, total).
+using UploadProgress = std::function<void(size_t done, size_t total)>;
+
+struct FrameOptions {
+  UploadProgress upload_progress;  // may be empty
+  // GPU bytes G2LF may allocate; 0: the free memory the driver reports (tests inject a budget).
+  size_t g2lf_memory_budget_bytes = 0;
+  // The float accumulation array of RGBA8 planes (gpu::GlG2lfOptions).
+  size_t g2lf_accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
+};
+
 class LightFieldFrame {
  public:
-  // Needs a current GL 4.5 context (`info` describes it). Uploads the scene once.
+  // Needs a current GL 4.5 context (`info` describes it, its limits included). Uploads the scene
+  // once, at the largest SH degree that fits (gpu::fitting_sh_degree).
   LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
-                  const gpu::GlInfo& info);
+                  const gpu::GlInfo& info, FrameOptions options = {});
   ~LightFieldFrame();
 
   // Renders the quilt and the panel for `camera` with `settings`; fills `report`'s GPU stage
   // times when `timers` (which waits for the GPU: fine once a frame in the viewer).
+  // RGBA32F planes that do not fit fall back to RGBA8 when those fit (fit_notice() says so).
   void render(const render::CameraSpec& camera, const ViewerSettings& settings, FrameReport* report = nullptr);
   void replace_scene(const render::GaussianScene& scene);
+
+  // The SH degree the scene was uploaded at, and what was lowered to fit (empty: nothing).
+  int scene_sh_degree() const { return scene_->sh_degree(); }
+  const std::string& scene_fit_notice() const { return scene_fit_notice_; }
+  const std::string& plane_fit_notice() const { return plane_fit_notice_; }
+  const calib::LensModel& lens() const { return lens_; }
+  const calib::Calibration& calibration() const { return calibration_; }
 
   const gpu::Texture& quilt() const { return quilt_; }
   const gpu::Texture& panel() const { return panel_; }
@@ -50,9 +74,13 @@ class LightFieldFrame {
   const FramePlan& plan() const { return plan_; }
 
  private:
+  void render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster, bool timed);
+
   calib::Calibration calibration_;
   calib::LensModel lens_;
   gpu::GlInfo info_;
+  FrameOptions options_;
+  std::string scene_fit_notice_, plane_fit_notice_;
   std::unique_ptr<gpu::GlScene> scene_;
   std::unique_ptr<gpu::GlPerViewRenderer> per_view_;
   std::unique_ptr<gpu::GlG2lfRenderer> g2lf_;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <deque>
 #include <iostream>
+#include <memory>
 
 #include <epoxy/gl.h>  // before GLFW, which would include GL/gl.h
 #include <GLFW/glfw3.h>
@@ -15,11 +16,13 @@
 #include "render/scene_io.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
+#include "util/progress.hpp"
 #include "viewer/control_window.hpp"
 #include "viewer/display_window.hpp"
 #include "viewer/input.hpp"
 #include "viewer/light_field_frame.hpp"
 #include "viewer/orbit_camera.hpp"
+#include "viewer/seen_from_previewer.hpp"
 
 namespace lfd::viewer {
 namespace {
@@ -107,6 +110,35 @@ void write_screenshot(const DisplayWindow& window, const LightFieldFrame& frame,
   std::cout << fmt::format("wrote {}\n", out.string());
 }
 
+// Terminal (lfd::Progress: a bar on a terminal, silent in logs) and, when it is open, the
+// control window, between the pieces of an upload of more than one piece.
+UploadProgress upload_progress(ControlWindow* controls, GLFWwindow* display) {
+  struct Bar {
+    std::unique_ptr<Progress> terminal;
+    size_t done = 0;
+  };
+  auto bar = std::make_shared<Bar>();
+  return [controls, display, bar](size_t done, size_t total) {
+    if (total <= kUploadPieceGaussians) return;  // one piece: nothing to show between pieces
+    if (!bar->terminal) {
+      bar->terminal = std::make_unique<Progress>("uploading the scene", long(total));
+      bar->done = 0;
+    }
+    bar->terminal->advance(long(done - bar->done));
+    bar->done = done;
+    if (controls) {
+      glfwPollEvents();  // keep both windows responsive
+      controls->draw_progress(fmt::format("uploading the scene: {} of {} Gaussians", done, total),
+                              double(done) / double(total), display);
+    }
+    if (done == total) bar->terminal.reset();  // ends the terminal line
+  };
+}
+
+void report_fit(const std::string& notice) {
+  if (!notice.empty()) std::cerr << fmt::format("notice: {}\n", notice);
+}
+
 }  // namespace
 
 int run_viewer(const ViewerOptions& options) {
@@ -134,9 +166,14 @@ int run_viewer(const ViewerOptions& options) {
   const gpu::GlInfo info = gpu::query_gl_info("GLFW window");
   std::cout << fmt::format("display {} on {}; rendering with {}\n", options.display_name,
                            display.on_display() ? "its monitor" : "a simulated display window", info.summary());
-  LightFieldFrame frame(scene, options.calibration, info);
+  // Before the scene, so a long upload shows its progress there.
   std::optional<ControlWindow> controls;
   if (options.controls) controls.emplace(session, display.handle());
+  display.make_current();
+  FrameOptions frame_options;
+  frame_options.upload_progress = upload_progress(controls ? &*controls : nullptr, display.handle());
+  LightFieldFrame frame(scene, options.calibration, info, frame_options);
+  report_fit(frame.scene_fit_notice());
 
   InputCollector input;
   install_callbacks(display.handle(), &input, false);
@@ -149,6 +186,9 @@ int run_viewer(const ViewerOptions& options) {
     });
   }
 
+  SeenFromControls seen_from;
+  SeenFromPreviewer previewer(frame.calibration());
+  std::string plane_notice;
   FrameReport report;
   report.renderer = info.summary();
   report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
@@ -178,6 +218,7 @@ int run_viewer(const ViewerOptions& options) {
         scene = render::load_scene(*input.dropped);
         display.make_current();
         frame.replace_scene(scene);
+        report_fit(frame.scene_fit_notice());
         camera = OrbitCamera(render::frame_scene(scene));
         std::cout << fmt::format("loaded {} ({} Gaussians)\n", *input.dropped, scene.size());
       } catch (const InputError& e) {
@@ -194,13 +235,25 @@ int run_viewer(const ViewerOptions& options) {
       if (frame_index == 0) throw;
       std::cerr << fmt::format("notice: {}\n", e.what());  // e.g. planes too large: keep the last frame
     }
+    if (frame.plane_fit_notice() != plane_notice) {
+      plane_notice = frame.plane_fit_notice();
+      report_fit(plane_notice);
+    }
+    report.fit_notices.clear();
+    for (const std::string& notice : {frame.scene_fit_notice(), plane_notice})
+      if (!notice.empty()) report.fit_notices.push_back(notice);
+    if (controls) previewer.update(seen_from, frame, camera.spec(), settings);
     display.draw(frame.panel());
     const bool last_frame = options.frames > 0 && frame_index + 1 == options.frames;
     if (last_frame && !options.screenshot_path.empty()) write_screenshot(display, frame, options.screenshot_path);
     display.swap();
 
     if (controls) {
-      const ControlActions a = controls->draw(settings, report, &frame.quilt(), display.handle());
+      ControlImages images;
+      images.quilt = &frame.quilt();
+      images.seen_from = previewer.texture();
+      images.seen_from_age_s = previewer.age_seconds();
+      const ControlActions a = controls->draw(settings, seen_from, report, images, display.handle());
       if (a.reset_camera) camera.reset();
       if (a.screenshot) write_screenshot(display, frame, "lfd-view-" + timestamp() + ".png");
       if (a.save_quilt) write_quilt(frame, "lfd-view-" + timestamp() + ".png");

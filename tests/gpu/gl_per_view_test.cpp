@@ -252,5 +252,54 @@ TEST(GlPerView, UploadReportsProgressAndTheUploadedDegree) {
   EXPECT_EQ(gl_scene.sh().bytes(), scene.size() * 3 * 16);
 }
 
+TEST(GlPerView, TheLargestShDegreeThatFitsIsChosen) {
+  // 1000 Gaussians need 48 + 192/112/48/16 bytes of scene and 80 of render buffers each at SH
+  // degree 3/2/1/0: 320, 240, 176 and 144 kB.
+  GlInfo info;
+  EXPECT_EQ(fitting_sh_degree(1000, 3, info), 3);  // no limits known
+  info.free_memory_bytes = 320'000;
+  EXPECT_EQ(fitting_sh_degree(1000, 3, info), 3);
+  info.free_memory_bytes = 319'999;
+  EXPECT_EQ(fitting_sh_degree(1000, 3, info), 2);
+  info.free_memory_bytes = 200'000;
+  EXPECT_EQ(fitting_sh_degree(1000, 3, info), 1);
+  EXPECT_EQ(fitting_sh_degree(1000, 0, info), 0);  // never above the scene's own degree
+  info.free_memory_bytes = 150'000;
+  EXPECT_EQ(fitting_sh_degree(1000, 3, info), 0);
+  info.free_memory_bytes = 100'000;
+  try {
+    fitting_sh_degree(1000, 3, info);
+    FAIL() << "1000 Gaussians fit 100 kB at degree 0";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("SH degree 0"), std::string::npos) << e.what();
+  }
+  // A per-buffer limit: the SH buffer of degree 3 (12 vec4s, 192 B) and 2 (112 B) exceed
+  // 100 kB for 1000 Gaussians, degree 1 (48 kB) and the records (64 kB) do not.
+  GlInfo buffers;
+  buffers.max_ssbo_bytes = 100'000;
+  EXPECT_EQ(fitting_sh_degree(1000, 3, buffers), 1);
+  buffers.max_ssbo_bytes = 60'000;  // the 64 kB record buffer fits at no degree
+  EXPECT_THROW(fitting_sh_degree(1000, 3, buffers), InputError);
+}
+
+TEST(GlPerView, UploadInSmallPiecesGivesTheSameBuffers) {
+  HeadlessContext context;
+  const auto scene = generated_scene(3, 1000);
+  const GlScene whole(scene, context.info());
+  GlSceneOptions pieces;
+  pieces.chunk_gaussians = 128;
+  int calls = 0;
+  pieces.progress = [&](size_t, size_t) { ++calls; };
+  const GlScene chunked(scene, context.info(), pieces);
+  EXPECT_EQ(calls, 8);  // ceil(1000 / 128)
+  auto same = [](const Buffer& a, const Buffer& b) {
+    return a.download_as<float>(a.bytes() / 4) == b.download_as<float>(b.bytes() / 4);
+  };
+  EXPECT_TRUE(same(whole.positions(), chunked.positions()));
+  EXPECT_TRUE(same(whole.scales(), chunked.scales()));
+  EXPECT_TRUE(same(whole.rotations(), chunked.rotations()));
+  EXPECT_TRUE(same(whole.sh(), chunked.sh()));
+}
+
 }  // namespace
 }  // namespace lfd::gpu

@@ -1,0 +1,119 @@
+// A scene or planes too large for the GPU: the frame lowers the SH degree (3 -> 2 -> 1 -> 0) and
+// the plane precision (RGBA32F -> RGBA8) to the largest that fits, says so, and still refuses
+// (one line with the numbers) when even the lowest does not fit. The budgets are injected
+// (llvmpipe reports no free memory).
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "calib/display/calibration_file.hpp"
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_g2lf.hpp"
+#include "gpu/gl_interlacer.hpp"
+#include "gpu/gl_scene.hpp"
+#include "render/default_camera.hpp"
+#include "render/scene_generator.hpp"
+#include "util/error.hpp"
+#include "viewer/light_field_frame.hpp"
+
+namespace lfd::viewer {
+namespace {
+
+calib::Calibration test_display() {
+  return calib::read_calibration(std::filesystem::path(LFD_TEST_DATA_DIR) / "calibrations" /
+                                 "LKG-PORT-portrait.visual.json");
+}
+
+render::GaussianScene test_scene() {
+  render::SceneGeneratorOptions o;
+  o.count = 3000;
+  o.sh_degree = 3;
+  return render::generate_scene(o);
+}
+
+ViewerSettings small_settings() {
+  ViewerSettings s;
+  s.views = 8;
+  s.view_height_px = 64;
+  s.g2lf.chunks = 8;
+  return s;
+}
+
+size_t needed_bytes(size_t gaussians, int sh_degree) {
+  return gaussians * (gpu::scene_bytes_per_gaussian(sh_degree) + gpu::per_view_scratch_bytes_per_gaussian());
+}
+
+TEST(LightFieldFrameFit, ASceneAboveTheFreeMemoryIsShownAtTheLargestShDegreeThatFits) {
+  gpu::HeadlessContext context;
+  const render::GaussianScene scene = test_scene();
+  gpu::GlInfo info = context.info();
+  info.free_memory_bytes = (long long)needed_bytes(scene.size(), 1);  // degree 2 and 3 do not fit
+  LightFieldFrame frame(scene, test_display(), info);
+  EXPECT_EQ(frame.scene_sh_degree(), 1);
+  EXPECT_NE(frame.scene_fit_notice().find("SH degree 1 (its own: 3)"), std::string::npos)
+      << frame.scene_fit_notice();
+  frame.render(render::frame_scene(scene), small_settings());
+  const ImageF panel = gpu::image_from_texture(frame.panel());
+  double sum = 0;
+  for (float value : panel.pixels) sum += value;
+  EXPECT_GT(sum, 0.0) << "the lowered scene rendered nothing";
+}
+
+TEST(LightFieldFrameFit, ASceneThatFitsIsUploadedWhole) {
+  gpu::HeadlessContext context;
+  LightFieldFrame frame(test_scene(), test_display(), context.info());
+  EXPECT_EQ(frame.scene_sh_degree(), 3);
+  EXPECT_TRUE(frame.scene_fit_notice().empty());
+}
+
+TEST(LightFieldFrameFit, ASceneAboveTheMemoryEvenAtDegreeZeroIsRefusedWithTheNumbers) {
+  gpu::HeadlessContext context;
+  gpu::GlInfo info = context.info();
+  info.free_memory_bytes = (long long)needed_bytes(3000, 0) - 1;
+  try {
+    LightFieldFrame frame(test_scene(), test_display(), info);
+    FAIL() << "a scene above the memory at SH degree 0 was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("3000 Gaussians at SH degree 0"), std::string::npos) << message;
+  }
+}
+
+TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
+  gpu::HeadlessContext context;
+  const render::GaussianScene scene = test_scene();
+  ViewerSettings s = small_settings();
+  s.g2lf.precision = render::PlanePrecision::kF32;
+  const FramePlan plan = plan_frame(test_display(), render::frame_scene(scene), s);
+  // RGBA8 planes add a float accumulation array: one layer here (on a real frame the 64 MiB
+  // budget caps it), so RGBA8 needs less than RGBA32F.
+  gpu::GlG2lfOptions f32, u8;
+  f32.g2lf = u8.g2lf = s.g2lf;
+  f32.accumulation_budget_bytes = u8.accumulation_budget_bytes = 1;
+  u8.g2lf.precision = render::PlanePrecision::kU8;
+  auto need = [&](const gpu::GlG2lfOptions& o) {
+    return gpu::g2lf_plane_array_bytes(o, plan.geometry) + gpu::g2lf_other_bytes(o, plan.geometry, scene.size());
+  };
+  ASSERT_LT(need(u8), need(f32));
+  FrameOptions options;
+  options.g2lf_memory_budget_bytes = need(u8);
+  options.g2lf_accumulation_budget_bytes = 1;
+  LightFieldFrame frame(scene, test_display(), context.info(), options);
+  frame.render(render::frame_scene(scene), s);
+  EXPECT_NE(frame.plane_fit_notice().find("RGBA8"), std::string::npos) << frame.plane_fit_notice();
+  // Below the RGBA8 planes too: the RGBA32F refusal, naming the options that lower it.
+  FrameOptions tight;
+  tight.g2lf_memory_budget_bytes = need(u8) - 1;
+  tight.g2lf_accumulation_budget_bytes = 1;
+  LightFieldFrame refused(scene, test_display(), context.info(), tight);
+  try {
+    refused.render(render::frame_scene(scene), s);
+    FAIL() << "planes above the budget were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--chunks"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace lfd::viewer

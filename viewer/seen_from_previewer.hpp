@@ -1,0 +1,40 @@
+#pragma once
+// The GL side of the "seen from" preview: reads the panel back from the GPU when
+// seen_from_refresh_due says so, computes seen_from_preview on the CPU and keeps it as a texture
+// for the control window.
+#include <chrono>
+#include <optional>
+#include <string>
+
+#include "calib/display/calibration_file.hpp"
+#include "gpu/gl_objects.hpp"
+#include "render/camera_json.hpp"
+#include "viewer/control_window.hpp"
+#include "viewer/light_field_frame.hpp"
+#include "viewer/seen_from_preview.hpp"
+#include "viewer/viewer_settings.hpp"
+
+namespace lfd::viewer {
+
+class SeenFromPreviewer {
+ public:
+  // The lens point spread is the calibration's, else the default, as `lfd simulate`'s.
+  explicit SeenFromPreviewer(const calib::Calibration& calibration);
+
+  // Needs the display window's context current (the panel texture lives there).
+  void update(const SeenFromControls& controls, const LightFieldFrame& frame, const render::CameraSpec& camera,
+              const ViewerSettings& settings);
+
+  const gpu::Texture* texture() const { return texture_.id() ? &texture_ : nullptr; }
+  double age_seconds() const;  // < 0 before the first preview
+  double last_compute_seconds() const { return compute_seconds_; }  // read-back + optics
+
+ private:
+  SeenFromOptions options_;
+  std::string shown_key_;  // what the texture shows: the frame and the eye
+  std::optional<std::chrono::steady_clock::time_point> computed_at_;
+  double compute_seconds_ = 0;
+  gpu::Texture texture_;
+};
+
+}  // namespace lfd::viewer
