@@ -49,6 +49,10 @@ int RunCalibrate(int argc, char** argv) {
   app.add_option("--grid", grid, "correction field control points per side (0: none)")
       ->capture_default_str()
       ->check(CLI::Range(0, 32));
+  app.add_option("--view-cone", options.view_cone_deg,
+                 "the display's view cone in degrees, known by other means: needed with one "
+                 "camera position (two distances measure it)")
+      ->check(CLI::Range(0.1, 179.9));
   app.add_flag("--force", force, "replace existing outputs (a .bak is kept)");
   app.add_flag("--live", live, "show patterns on the display and grab camera frames");
   app.add_option("--monitor", monitor,

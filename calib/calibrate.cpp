@@ -28,6 +28,9 @@ void CalibrateOptions::check() const {
   require_field(solver.max_samples_per_position > 0, where, "solver.max_samples_per_position",
                 "must be positive");
   require_field(solver.threads > 0, where, "solver.threads", "must be positive");
+  require_field(!view_cone_deg || (*view_cone_deg > 0 && *view_cone_deg < 180), where,
+                "view_cone_deg", "must lie in (0, 180) degrees");
+  require_field(solver.max_iterations > 0, where, "solver.max_iterations", "must be positive");
 }
 
 // The controller: the stages of calibration_stages.hpp in order.
@@ -36,6 +39,16 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
                                      const CalibrateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   options.check();
+  if (options.view_cone_deg) {
+    // The known cone becomes the nominal's, marked as measured (assemble_calibration keeps it).
+    PatternSet known = set;
+    Calibration& n = known.nominal;
+    n.view_cone_nominal_deg = n.view_cone_nominal_deg.value_or(n.display.view_cone_deg);
+    n.view_cone_measured_deg = n.display.view_cone_deg = *options.view_cone_deg;
+    CalibrateOptions rest = options;
+    rest.view_cone_deg.reset();
+    return calibrate_display(known, positions, rest);
+  }
   if (positions.empty()) throw_input_error("calibrate: no camera positions");
   if (!options.known_camera_positions_m.empty() &&
       options.known_camera_positions_m.size() != positions.size())
@@ -66,8 +79,12 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
   }
   if (positions.size() < 2)
     out.warnings.push_back(
-        "one camera position: the view cone cannot be separated from the pitch; the nominal "
-        "view cone is kept (photograph from 2-3 positions at different distances)");
+        set.nominal.view_cone_measured_deg
+            ? "one camera position: the view cone cannot be separated from the pitch; the known "
+              "view cone is kept"
+            : "one camera position: the view cone cannot be separated from the pitch and is not "
+              "known; refused unless it is given (--view-cone) or the photos come from 2-3 "
+              "positions at different distances");
 
   solve_display(set, data, options.solver, out);
   out.calibration = assemble_calibration(set, positions, options, out);
@@ -116,6 +133,11 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
   j["solver"] = {{"seconds", o.solve.solve_seconds},
                  {"phase_noise_periods", o.solve.obs_sigma_periods},
                  {"noise_inflation", o.solve.noise_inflation},
+                 {"termination", o.solve.termination},
+                 {"residual_robust_sigma_periods", o.solve.residual_robust_sigma_periods},
+                 {"camera_shift_sigmas", o.solve.camera_shift_sigmas},
+                 {"position_rms_periods", o.solve.position_rms},
+                 {"position_rms_ratios", o.solve.position_rms_ratio},
                  {"stages", o.solve.report}};
   j["warnings"] = o.warnings;
   j["gate_failures"] = o.gate_failures;

@@ -32,6 +32,10 @@ struct CalibrateOptions {
   // Camera positions known by other means (a measured rig; synthetic tests): they replace the
   // registration's, with 0.1 mm priors. One per position, or empty.
   std::vector<Eigen::Vector3d> known_camera_positions_m;
+  // A view cone known by other means (`--view-cone`): it replaces the nominal's, stands in the
+  // result where the photos cannot measure it (one position) and passes the cone gate. A
+  // template whose view_cone_measured_deg is set counts as known too.
+  std::optional<double> view_cone_deg;
   double max_motion_px = 3.0;          // corner markers may move this much between captures
                                        // (or 0.5 % of the image diagonal, if more)
   double max_clipped_fraction = 0.25;  // of the screen saturated in one capture

@@ -397,6 +397,11 @@ Calibration assemble_calibration(const PatternSet& set,
     c.view_cone_measured_deg = out.solve.lens.view_cone_deg;
     c.view_cone_nominal_deg = nd.view_cone_deg;
     c.display.view_cone_deg = out.solve.lens.view_cone_deg;
+  } else if (set.nominal.view_cone_measured_deg) {
+    // Not measurable from these photos but known (--view-cone, or a template that measured
+    // it): it stands, and the cone gate passes.
+    c.view_cone_measured_deg = set.nominal.view_cone_measured_deg;
+    c.view_cone_nominal_deg = set.nominal.view_cone_nominal_deg;
   }
   c.uncertainty = out.solve.sigma;
   const double slope = c.display.slope;

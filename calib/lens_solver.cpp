@@ -10,9 +10,11 @@
 
 #include <Eigen/Dense>
 #include <ceres/ceres.h>
+#include <fmt/format.h>
 
 #include "calib/display/lens_model.hpp"
 #include "calib/display/lens_relations.hpp"
+#include "calib/residual_statistics.hpp"
 
 namespace lfd::calib {
 
@@ -255,7 +257,12 @@ class LensProblem {
     ceres::Solver::Summary summary;
     ceres::Solve(so, problem_.get(), &summary);
     result.report += summary.BriefReport() + "\n";
-    result.converged = summary.IsSolutionUsable();
+    // IsSolutionUsable() is also true at the iteration limit: only CONVERGENCE (a tolerance
+    // met) says the minimum was reached.
+    result.converged = summary.termination_type == ceres::CONVERGENCE;
+    result.termination = fmt::format("{} after {} iterations",
+                                     ceres::TerminationTypeToString(summary.termination_type),
+                                     summary.iterations.size() - 1);
   }
 
   // The phase noise the final stage weights the samples with: the inlier RMS, inflated by how
@@ -344,34 +351,32 @@ class LensProblem {
     if (with_field_) result.correction = CorrectionField(nx_, ny_, coeffs_);
     for (size_t i = 0; i < positions_.size(); ++i)
       result.cameras_m.push_back({cams_[2 * i], positions_[i].camera_m.y(), cams_[2 * i + 1]});
-    std::vector<double> abs_all;
-    double sum2 = 0;
-    long inliers = 0;
+    // Over all samples with a robust scale (residual_statistics.hpp): pooled, per position on
+    // its own scale, and against the other positions pooled (leave one out: against a pool
+    // that holds it, a position's ratio could not exceed sqrt(N / N_i)).
+    std::vector<std::vector<double>> mine(samples_.size());
+    std::vector<double> all;
     for (size_t i = 0; i < samples_.size(); ++i) {
-      double pos_sum2 = 0;
-      long pos_in = 0;
       auto& kept = result.position_samples.emplace_back();
       kept.reserve(samples_[i].size());
       for (const auto& s : samples_[i]) {
         const double r = residual_of(i, s);
-        abs_all.push_back(std::abs(r));
+        mine[i].push_back(r);
         kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
-        if (std::abs(r) < kOutlierBoundPeriods) {
-          sum2 += r * r;
-          pos_sum2 += r * r;
-          ++inliers;
-          ++pos_in;
-        }
       }
-      result.position_rms.push_back(pos_in ? std::sqrt(pos_sum2 / pos_in) : 1.0);
+      all.insert(all.end(), mine[i].begin(), mine[i].end());
+      result.position_rms.push_back(robust_residuals(mine[i]).stats.rms_periods);
     }
-    result.residuals.count = long(abs_all.size());
-    if (!abs_all.empty()) {
-      std::nth_element(abs_all.begin(), abs_all.begin() + abs_all.size() / 2, abs_all.end());
-      result.residuals.median_abs_periods = abs_all[abs_all.size() / 2];
-      result.residuals.inlier_fraction = double(inliers) / double(abs_all.size());
-      result.residuals.rms_periods = inliers ? std::sqrt(sum2 / inliers) : 1.0;
+    for (size_t i = 0; i < mine.size() && mine.size() >= 2; ++i) {
+      std::vector<double> others;
+      for (size_t j = 0; j < mine.size(); ++j)
+        if (j != i) others.insert(others.end(), mine[j].begin(), mine[j].end());
+      const double rest = robust_residuals(std::move(others)).stats.rms_periods;
+      result.position_rms_ratio.push_back(rest > 0 ? result.position_rms[i] / rest : 1.0);
     }
+    const RobustResiduals pooled = robust_residuals(std::move(all));
+    result.residuals = pooled.stats;
+    result.residual_robust_sigma_periods = pooled.robust_sigma_periods;
   }
 
  private:
@@ -439,9 +444,10 @@ class LensProblem {
           nullptr, &cams_[2 * i]);
   }
 
-  // Second differences of the control points (a prior on the warp's curvature).
+  // Second differences of the control points (a prior on the warp's curvature), whitened
+  // by the stage's phase noise like the data, so every stage weighs them alike.
   void add_smoothness_prior() {
-    const double l = options_.smoothness;
+    const double l = options_.smoothness / obs_sigma_;
     for (int iy = 0; iy < ny_; ++iy)
       for (int ix = 1; ix + 1 < nx_; ++ix)
         problem_->AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
@@ -495,6 +501,19 @@ class LensProblem {
 
 }  // namespace
 
+std::vector<double> camera_shifts_in_sigmas(const std::vector<PositionData>& positions,
+                                            const std::vector<Eigen::Vector3d>& refined_m) {
+  std::vector<double> out;
+  for (size_t i = 0; i < positions.size() && i < refined_m.size(); ++i) {
+    const PositionData& p = positions[i];
+    const Eigen::Vector3d d = refined_m[i] - p.camera_m;
+    out.push_back(Eigen::Vector3d(d.x() / p.lateral_sigma_m, d.y() / p.lateral_sigma_m,
+                                  d.z() / p.depth_sigma_m)
+                      .norm());
+  }
+  return out;
+}
+
 SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
                         const std::vector<PositionData>& positions, const SolverOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -511,6 +530,9 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   problem.solve_stage(options.loss_scale, true, result);
   problem.covariance(result);
   problem.statistics(result);
+  result.view_cone_fitted = options.fit_view_cone && positions.size() >= 2;
+  for (const auto& p : positions) result.position_names.push_back(p.name);
+  result.camera_shift_sigmas = camera_shifts_in_sigmas(positions, result.cameras_m);
   result.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

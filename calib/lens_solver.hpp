@@ -36,18 +36,23 @@ struct LensEstimate {
 
 struct SolverOptions {
   int grid_nx = 8, grid_ny = 8;  // correction control points (0: no correction field)
-  double smoothness = 1.0;       // weight of the second differences of the control points
+  // Weight of the second differences of the control points, in the data's whitened units:
+  // the prior residual is smoothness x (second difference) / (the stage's phase noise), so
+  // prior and data keep the same balance in every stage (a second difference is a priori
+  // N(0, noise / smoothness)).
+  double smoothness = 0.02;
   double obs_sigma = 0.02;       // phase noise per sample assumed before it is measured, periods
   double loss_scale = 0.05;      // Cauchy scale of the final stage, lens periods
   bool fit_view_cone = true;     // needs >= 2 positions (else the nominal cone is kept)
   int max_samples_per_position = 40000;
-  int max_iterations = 100;
+  int max_iterations = 200;  // per stage; the final one must end in CONVERGENCE
   int threads = 2;
   bool verbose = false;
 };
 
-// A phase residual beyond this is an outlier (glare, bezel): left out of the residual RMS and
-// counted against the inlier fraction.
+// A phase residual beyond this is left out of the noise the final stage weights with and is
+// drawn as an outlier in the report; the residual statistics the gates read cut at a multiple
+// of the measured robust scale instead (residual_statistics.hpp).
 inline constexpr double kOutlierBoundPeriods = 0.15;
 
 // One phase sample after the solve (for reports): where it is, what was decoded, and the
@@ -61,18 +66,32 @@ struct SolverResult {
   CorrectionField correction;
   std::vector<Eigen::Vector3d> cameras_m;
   std::map<std::string, double> sigma;  // 1-sigma: pitch_lpi, slope, center_periods, ...
-  ResidualStats residuals;
-  std::vector<double> position_rms;     // inlier rms per position, lens periods
+  ResidualStats residuals;              // of all samples, robust (residual_statistics.hpp)
+  double residual_robust_sigma_periods = 0;  // 1.4826 MAD of all residuals
+  std::vector<std::string> position_names;
+  std::vector<double> position_rms;     // robust rms per position (its own scale), lens periods
+  // Each position's robust rms over that of the other positions pooled (>= 2 positions).
+  std::vector<double> position_rms_ratio;
+  // How far each refined camera moved from its registered position, in the registration's
+  // sigmas: |((x, y) / lateral sigma, z / depth sigma)|.
+  std::vector<double> camera_shift_sigmas;
   std::vector<std::vector<ResidualSample>> position_samples;  // per position, as solved
   double obs_sigma_periods = 0;  // per-sample phase noise the final stage used (effective)
   double noise_inflation = 1;    // its inflation for errors shared by neighbouring samples
   double solve_seconds = 0;
-  bool converged = false;
+  bool converged = false;       // the final stage ended in Ceres' CONVERGENCE
+  std::string termination;      // the final stage's termination type and iterations
+  bool view_cone_fitted = false;  // false: the start's (nominal) cone was held
   std::string report;                   // Ceres brief reports of the stages
 };
 
 SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
                         const std::vector<PositionData>& positions, const SolverOptions& options);
+
+// How far each refined camera lies from its registered position, in the registration's
+// sigmas (PositionData::lateral_sigma_m for x and y, depth_sigma_m for z).
+std::vector<double> camera_shifts_in_sigmas(const std::vector<PositionData>& positions,
+                                            const std::vector<Eigen::Vector3d>& refined_m);
 
 // The field minus its least-squares plane a + b u + c v over the screen (the solver's gauge).
 CorrectionField remove_gauge(const CorrectionField& field);

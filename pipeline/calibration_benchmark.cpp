@@ -67,6 +67,7 @@ nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
                    {"phase_rms_periods", errors->phase_rms_periods}};
   row["within_bars"] = within_bars;
   row["gate_failures"] = gate_failures;
+  row["gate_values"] = gate_values;
   row["uncertainty"] = uncertainty;
   row["seconds"] = {{"simulate", simulate_s}, {"calibrate", calibrate_s}, {"solve", solve_s}};
   return row;
@@ -120,6 +121,12 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
         row.errors = calib::compare_with_truth(out.calibration, unit.truth);
         row.within_bars = bars.met_by(*row.errors);
         row.gate_failures = out.gate_failures;
+        row.gate_values = {{"termination", out.solve.termination},
+                           {"residual_rms_periods", out.solve.residuals.rms_periods},
+                           {"inlier_fraction", out.solve.residuals.inlier_fraction},
+                           {"camera_shift_sigmas", out.solve.camera_shift_sigmas},
+                           {"position_rms_periods", out.solve.position_rms},
+                           {"position_rms_ratios", out.solve.position_rms_ratio}};
         row.uncertainty = out.calibration.uncertainty;
         row.solve_s = out.solve.solve_seconds;
         for (size_t i = 0; i < out.positions.size(); ++i) {

@@ -62,6 +62,7 @@ struct CalibrationBenchmarkRow {
   std::string failure;                             // why, when it failed
   bool within_bars = false;
   std::vector<std::string> gate_failures;
+  nlohmann::ordered_json gate_values;  // what the fit gates measured (calib/quality_gates.hpp)
   std::map<std::string, double> uncertainty;
   std::vector<PoseError> poses;
   double simulate_s = 0, calibrate_s = 0, solve_s = 0;

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "calib/display/lens_model.hpp"
+#include "calib/residual_statistics.hpp"
 #include "util/atomic_file.hpp"
 #include "report/calibration_figures.hpp"
 #include "report/html.hpp"
@@ -122,12 +123,14 @@ std::string result_section(const calib::CalibrationOutcome& o) {
          "</tr>\n";
   }
   const auto& r = o.solve.residuals;
-  h += fmt::format("<tr><td class=\"l\">phase residual rms (lens periods, inliers)</td><td>{:.4f}"
-                   "</td><td></td><td></td></tr>\n<tr><td class=\"l\">median |residual| (lens "
-                   "periods)</td><td>{:.4f}</td><td></td><td></td></tr>\n<tr><td class=\"l\">"
-                   "inliers (|residual| &lt; {} lens periods)</td><td>{:.1f} % of {}</td><td></td>"
-                   "<td></td></tr>\n",
-                   r.rms_periods, r.median_abs_periods, kOutlierBoundPeriods,
+  h += fmt::format("<tr><td class=\"l\">phase residual rms (lens periods, all samples within {} "
+                   "robust sigmas)</td><td>{:.4f}</td><td></td><td></td></tr>\n<tr><td "
+                   "class=\"l\">median |residual| (lens periods)</td><td>{:.4f}</td><td></td>"
+                   "<td></td></tr>\n<tr><td class=\"l\">inliers (within {} robust sigmas = "
+                   "{:.4f} lens periods)</td><td>{:.1f} % of {}</td><td></td><td></td></tr>\n",
+                   calib::kOutlierCutSigmas, r.rms_periods, r.median_abs_periods,
+                   calib::kOutlierCutSigmas,
+                   calib::kOutlierCutSigmas * o.solve.residual_robust_sigma_periods,
                    100 * r.inlier_fraction, r.count);
   h += "</table>\n";
   if (c.recommended_views)

@@ -72,6 +72,21 @@ TEST(CalibrateBadInput, GoodCapturesOfOnePositionCalibrate) {
   EXPECT_FALSE(out.calibration.correction.empty());
   EXPECT_FALSE(out.warnings.empty());  // one position: the view cone is not measured
   EXPECT_FALSE(out.calibration.view_cone_measured_deg.has_value());
+  // ...and is refused: the pitch absorbs the cone's error there.
+  bool cone_gate = false;
+  for (const auto& f : out.gate_failures)
+    cone_gate |= f.find("view cone was neither measured nor known") != std::string::npos;
+  EXPECT_TRUE(cone_gate);
+}
+
+TEST(CalibrateBadInput, OnePositionWithAGivenConeKeepsItAndPassesTheConeGate) {
+  CalibrateOptions o = with_camera();
+  o.view_cone_deg = fixture().unit.truth.display.view_cone_deg;
+  const auto out = calibrate_display(fixture().set, fixture().captures, o);
+  ASSERT_TRUE(out.calibration.view_cone_measured_deg.has_value());
+  EXPECT_EQ(*out.calibration.view_cone_measured_deg, *o.view_cone_deg);
+  EXPECT_EQ(out.calibration.display.view_cone_deg, *o.view_cone_deg);
+  for (const auto& f : out.gate_failures) EXPECT_EQ(f.find("view cone"), std::string::npos) << f;
 }
 
 TEST(CalibrateBadInput, WrongPatternInAFileIsNamed) {

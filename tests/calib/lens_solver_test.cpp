@@ -3,12 +3,15 @@
 // uncertainties it reports cover the errors.
 #include "calib/lens_solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 #include <gtest/gtest.h>
 
 #include "calib/display/visual_json.hpp"
+#include "calib/quality_gates.hpp"
 #include "tests/calib/synthetic_phase_samples.hpp"
 #include "tests/test_data.hpp"
 
@@ -153,6 +156,63 @@ TEST(LensSolver, OnePositionKeepsTheNominalConeAndStillFindsTheLens) {
   const Errors e = errors_of(r, truth);
   EXPECT_LT(std::abs(e.pitch_lpi) / truth.display.pitch_lpi, 5e-5);
   EXPECT_LT(std::abs(e.center_periods), 0.02);
+}
+
+// A smaller problem for the gates' solver-level cases (a second or two each).
+SyntheticPhaseData small_problem(unsigned seed = 1) {
+  const DisplayCalibration real =
+      read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  SyntheticUnitOptions unit;
+  unit.warp_amplitude = 0.1;
+  SyntheticPhaseOptions o;
+  o.samples_u = 48;
+  o.samples_v = 27;
+  o.seed = seed;
+  return make_synthetic_phase_data(real, unit, three_cameras(real), o);
+}
+
+double max_of(const std::vector<double>& x) { return *std::max_element(x.begin(), x.end()); }
+
+TEST(LensSolver, ConvergesAndKeepsThePositionsInAgreement) {
+  const SyntheticPhaseData d = small_problem();
+  const SolverResult r = solve_lens(d.unit.nominal, start_near(d.unit.truth), d.positions, small_grid());
+  EXPECT_TRUE(r.converged) << r.report;
+  EXPECT_NE(r.termination.find("CONVERGENCE"), std::string::npos);
+  EXPECT_TRUE(r.view_cone_fitted);
+  ASSERT_EQ(r.camera_shift_sigmas.size(), 3u);
+  EXPECT_LT(max_of(r.camera_shift_sigmas), QualityGates{}.max_camera_shift_sigmas);
+  ASSERT_EQ(r.position_rms_ratio.size(), 3u);
+  EXPECT_LT(max_of(r.position_rms_ratio), 1.3);
+}
+
+TEST(LensSolver, AFinalStageCutOffAtTheIterationLimitHasNotConverged) {
+  const SyntheticPhaseData d = small_problem();
+  SolverOptions o = small_grid();
+  o.max_iterations = 1;
+  const SolverResult r = solve_lens(d.unit.nominal, start_near(d.unit.truth), d.positions, o);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.termination.find("NO_CONVERGENCE"), std::string::npos) << r.termination;
+}
+
+TEST(LensSolver, ARegistrationCentimetresOffShowsAsACameraShiftInSigmas) {
+  SyntheticPhaseData d = small_problem();
+  d.positions[1].camera_m.x() += 0.01;  // ten of its 1 mm sigmas
+  const SolverResult r = solve_lens(d.unit.nominal, start_near(d.unit.truth), d.positions, small_grid());
+  EXPECT_GT(r.camera_shift_sigmas[1], QualityGates{}.max_camera_shift_sigmas);
+  EXPECT_LT(r.camera_shift_sigmas[0], QualityGates{}.max_camera_shift_sigmas);
+}
+
+TEST(LensSolver, APositionWithNoisierPhaseStandsOutInItsResidualRms) {
+  SyntheticPhaseData d = small_problem();
+  std::mt19937 rng(9);
+  std::normal_distribution<double> extra(0.0, 0.06);  // six times the others' noise
+  for (auto& s : d.positions[2].samples) {
+    const double psi = s.psi + extra(rng);
+    s.psi = float(psi - std::floor(psi));
+  }
+  const SolverResult r = solve_lens(d.unit.nominal, start_near(d.unit.truth), d.positions, small_grid());
+  EXPECT_GT(r.position_rms_ratio[2], QualityGates{}.max_position_rms_ratio);
+  EXPECT_LT(r.position_rms_ratio[0], 1.0);
 }
 
 TEST(LensSolver, RemoveGaugeLeavesNoMeanOrTrend) {
