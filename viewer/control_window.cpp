@@ -66,6 +66,13 @@ ControlWindow::~ControlWindow() {
   glfwMakeContextCurrent(previous != window_ ? previous : nullptr);
 }
 
+void ControlWindow::place_beside(GLFWwindow* other) {
+  int x = 0, y = 0, width = 0, height = 0;
+  glfwGetWindowPos(other, &x, &y);
+  glfwGetWindowSize(other, &width, &height);
+  glfwSetWindowPos(window_, x + width + 8, y);
+}
+
 bool ControlWindow::should_close() const { return glfwWindowShouldClose(window_); }
 
 bool ControlWindow::wants_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
@@ -163,7 +170,7 @@ ControlActions ControlWindow::draw(ViewerSettings& s, SeenFromControls& seen, co
   if (ImGui::Button("remember these settings for this display")) actions.save_settings = true;
 
   section("Seen from");
-  ImGui::Checkbox("show what an eye at this place sees (lfd simulate's optics)", &seen.visible);
+  ImGui::Checkbox("what an eye here sees (lfd simulate's optics)", &seen.visible);
   if (seen.visible) {
     const float reach = float(std::max(r.view_cone_deg, 10.0));  // a little past the cone's edges
     float angle = float(seen.eye.angle_deg), distance = float(seen.eye.distance_m), height = float(seen.eye.height_m);
@@ -172,8 +179,9 @@ ControlActions ControlWindow::draw(ViewerSettings& s, SeenFromControls& seen, co
     ImGui::SliderFloat("height", &height, -1.0f, 1.0f, "%.2f m");
     seen.eye = SeenFromEye{angle, std::max(distance, 0.01f), height};
     if (images.seen_from) {
-      ImGui::Text("updated %.1f s ago (at most 4 times a second, when the frame or the eye moves)",
-                  std::max(images.seen_from_age_s, 0.0));
+      // Recomputed at most 4 times a second, when the frame or the eye moved (seen_from_refresh_due).
+      ImGui::Text("updated %.1f s ago (took %.0f ms)", std::max(images.seen_from_age_s, 0.0),
+                  images.seen_from_cost_s * 1e3);
       show_texture(*images.seen_from, std::min(ImGui::GetContentRegionAvail().x, float(images.seen_from->width())));
     } else {
       ImGui::TextUnformatted("computing...");

@@ -41,6 +41,7 @@ struct ControlImages {
   const gpu::Texture* quilt = nullptr;
   const gpu::Texture* seen_from = nullptr;
   double seen_from_age_s = -1;  // since the preview was computed; < 0: not yet
+  double seen_from_cost_s = 0;  // what computing it took (read-back + optics)
 };
 
 // Buttons pressed this frame.
@@ -58,6 +59,8 @@ class ControlWindow {
   ControlWindow& operator=(const ControlWindow&) = delete;
 
   GLFWwindow* handle() const { return window_; }
+  // Puts the window to the right of `other` (a simulated display window on the same desktop).
+  void place_beside(GLFWwindow* other);
   bool should_close() const;
   // One ImGui frame: edits `settings` and `seen_from`; shows the images scaled. Returns the
   // buttons pressed. Makes `restore` (the display window's context) current again.

@@ -24,16 +24,22 @@ double SeenFromPreviewer::age_seconds() const {
 
 void SeenFromPreviewer::update(const SeenFromControls& controls, const LightFieldFrame& frame,
                                const render::CameraSpec& camera, const ViewerSettings& settings) {
+  if (job_.valid()) {
+    if (job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    texture_ = gpu::texture_from_image(job_.get());
+    computed_at_ = std::chrono::steady_clock::now();
+    compute_seconds_ = seconds_between(started_at_, *computed_at_);
+  }
   // The frame is a function of the camera and the settings; the preview also of the eye.
   const std::string key = fmt::format("{}|{}|{}|{}|{}", render::camera_json_text(camera), settings_to_json(settings),
                                       controls.eye.angle_deg, controls.eye.distance_m, controls.eye.height_m);
   if (!seen_from_refresh_due(controls.visible, key != shown_key_, age_seconds())) return;
-  const auto start = std::chrono::steady_clock::now();
-  const ImageF panel = gpu::image_from_texture(frame.panel());
-  texture_ = gpu::texture_from_image(seen_from_preview(frame.lens(), panel, controls.eye, options_));
-  computed_at_ = std::chrono::steady_clock::now();
-  compute_seconds_ = seconds_between(start, *computed_at_);
+  started_at_ = std::chrono::steady_clock::now();
   shown_key_ = key;
+  // The read-back is GL (this thread); the optics only read the panel, the lens and the eye.
+  job_ = std::async(std::launch::async,
+                    [panel = gpu::image_from_texture(frame.panel()), &lens = frame.lens(), eye = controls.eye,
+                     options = options_] { return seen_from_preview(lens, panel, eye, options); });
 }
 
 }  // namespace lfd::viewer

@@ -1,8 +1,9 @@
 #pragma once
 // The GL side of the "seen from" preview: reads the panel back from the GPU when
-// seen_from_refresh_due says so, computes seen_from_preview on the CPU and keeps it as a texture
-// for the control window.
+// seen_from_refresh_due says so, computes seen_from_preview on a worker thread (the frame loop
+// never waits for the optics) and keeps the result as a texture for the control window.
 #include <chrono>
+#include <future>
 #include <optional>
 #include <string>
 
@@ -21,7 +22,8 @@ class SeenFromPreviewer {
   // The lens point spread is the calibration's, else the default, as `lfd simulate`'s.
   explicit SeenFromPreviewer(const calib::Calibration& calibration);
 
-  // Needs the display window's context current (the panel texture lives there).
+  // Needs the display window's context current (the panel texture lives there). Picks up a
+  // finished preview; starts the next one when due and none is under way.
   void update(const SeenFromControls& controls, const LightFieldFrame& frame, const render::CameraSpec& camera,
               const ViewerSettings& settings);
 
@@ -33,6 +35,8 @@ class SeenFromPreviewer {
   SeenFromOptions options_;
   std::string shown_key_;  // what the texture shows: the frame and the eye
   std::optional<std::chrono::steady_clock::time_point> computed_at_;
+  std::chrono::steady_clock::time_point started_at_;
+  std::future<ImageF> job_;  // its destructor waits: declare the previewer after the frame
   double compute_seconds_ = 0;
   gpu::Texture texture_;
 };

@@ -169,6 +169,7 @@ int run_viewer(const ViewerOptions& options) {
   // Before the scene, so a long upload shows its progress there.
   std::optional<ControlWindow> controls;
   if (options.controls) controls.emplace(session, display.handle());
+  if (controls && !display.on_display()) controls->place_beside(display.handle());
   display.make_current();
   FrameOptions frame_options;
   frame_options.upload_progress = upload_progress(controls ? &*controls : nullptr, display.handle());
@@ -253,6 +254,7 @@ int run_viewer(const ViewerOptions& options) {
       images.quilt = &frame.quilt();
       images.seen_from = previewer.texture();
       images.seen_from_age_s = previewer.age_seconds();
+      images.seen_from_cost_s = previewer.last_compute_seconds();
       const ControlActions a = controls->draw(settings, seen_from, report, images, display.handle());
       if (a.reset_camera) camera.reset();
       if (a.screenshot) write_screenshot(display, frame, "lfd-view-" + timestamp() + ".png");
