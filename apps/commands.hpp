@@ -17,5 +17,6 @@ int RunBench(int argc, char** argv);
 int RunPatterns(int argc, char** argv);
 int RunCalibrate(int argc, char** argv);
 int RunDevice(int argc, char** argv);
+int RunCamera(int argc, char** argv);
 
 }  // namespace lfd::apps

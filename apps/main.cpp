@@ -51,6 +51,7 @@ const std::vector<Command>& commands() {
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
       {"patterns", RunPatterns, "write the calibration patterns for a display"},
       {"calibrate", RunCalibrate, "calibrate a display unit from photographs of the patterns"},
+      {"camera", RunCamera, "calibrate the camera from photos of a printed board (lfd camera --help)"},
 #endif
       {"version", RunVersion, "print the version, the git commit and the data folder"},
   };

@@ -187,6 +187,18 @@ TEST(CameraCalibration, DISABLED_PoseCountMeasurement) {
                   c.pose_advice.empty() ? "-" : "not varied");
     }
   }
+  // The same count of poses, all nearly head-on (tilts under 5 deg), as people first take them.
+  std::vector<BoardPose> head_on;
+  for (int i = 0; i < 8; ++i)
+    head_on.push_back({double(i % 3) * 2 - 2, double(i % 2) * 4 - 2, 4.0 * i,
+                       {0.01 * (i % 3 - 1), 0.01 * (i % 2), 0.38 + 0.015 * i}});
+  CameraCalibrationOptions options;
+  const auto c = calibrate_camera(detect_photos(board, camera, head_on), {}, camera.size, options);
+  const auto& K = c.intrinsics.camera_matrix;
+  std::printf(" 8 head-on  %8.3f  %10.3f  %9.2f  %9.2f  %6.3f  %s\n",
+              100 * (K(0, 0) / camera.K(0, 0) - 1), 100 * c.focal_sigma_rel,
+              K(0, 2) - camera.K(0, 2), K(1, 2) - camera.K(1, 2), c.rms_px,
+              c.pose_advice.empty() ? "-" : "not varied");
 }
 
 }  // namespace
