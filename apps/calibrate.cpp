@@ -9,6 +9,7 @@
 #include "calib/calibrate.hpp"
 #include "calib/live/hardware_live_calibration.hpp"
 #include "calib/live_calibration.hpp"
+#include "calib/live_session.hpp"
 #include "util/error.hpp"
 #include "report/calibration_report.hpp"
 
@@ -27,14 +28,18 @@ int RunCalibrate(int argc, char** argv) {
       "  lfd calibrate --live --device auto --camera camera.yaml --out cal.json\n"
       "  lfd calibrate --live --display nominal.json --positions 3 --camera-index 1 \\\n"
       "      --out cal.json\n"
+      "  lfd calibrate --live --resume unit42/live-capture --display nominal.json --out cal.json\n"
       "  lfd calibrate --live --simulate truth.json --display nominal.json --out cal.json",
       "calibrate"};
   std::string dir, camera_path, out_path, visual_path, report_dir, simulate_path,
-      monitor;
-  bool force = false, live = false, keep_camera_settings = false;
+      monitor, resume_dir;
+  bool force = false, live = false, keep_camera_settings = false, no_preview = false;
   int camera_index = 0, grid = 8, positions = 1, rounds = 2;
   calib::CalibrateOptions options;
-  app.add_option("DIR", dir, "folder with patterns/ and captures/");
+  app.add_option("DIR", dir,
+                 "folder with patterns/ and captures/, or a live session's folder (its last "
+                 "round); with --live, where the session saves its photos (default: "
+                 "live-capture beside --out)");
   app.add_option("--camera", camera_path,
                  "camera intrinsics (OpenCV YAML: camera_matrix, distortion_coefficients); "
                  "without it they are self-calibrated from the board at >= 3 positions");
@@ -69,6 +74,11 @@ int RunCalibrate(int argc, char** argv) {
   app.add_flag("--keep-camera-settings", keep_camera_settings,
                "live: leave exposure, white balance and focus as set (v4l2-ctl) instead of "
                "letting them settle on the white pattern and locking them");
+  app.add_option("--resume", resume_dir,
+                 "live: resume the session saved in this folder (positions already complete "
+                 "are not photographed again)");
+  app.add_flag("--no-preview", no_preview,
+               "live: no camera preview while aiming (the console prompt alone)");
   app.add_option("--simulate", simulate_path,
                  "live: run against the simulator with this TRUE calibration");
   if (auto code = parse(app, argc, argv)) return *code;
@@ -92,6 +102,15 @@ int RunCalibrate(int argc, char** argv) {
     lo.positions = positions;
     lo.rounds = rounds;
     lo.lock_camera_settings = !keep_camera_settings;
+    lo.preview = !no_preview;
+    // Saved as they are taken, so the run can be re-solved offline and resumed.
+    if (!resume_dir.empty() && !std::filesystem::exists(resume_dir + "/live-session.json"))
+      throw_input_error("--resume {}: no live session there (live-session.json)", resume_dir);
+    lo.session_dir = !resume_dir.empty() ? std::filesystem::path(resume_dir)
+                     : !dir.empty()      ? std::filesystem::path(dir)
+                                         : std::filesystem::path(out_path).parent_path() / "live-capture";
+    if (std::filesystem::exists(lo.session_dir / "live-session.json"))
+      std::fprintf(stderr, "resuming the live session in %s\n", lo.session_dir.string().c_str());
     if (!display_source.given())
       throw_input_error("--live needs --display or --device (the nominal description to start from)");
     const calib::Calibration nominal = display_source.load();
@@ -102,6 +121,12 @@ int RunCalibrate(int argc, char** argv) {
                         nominal, calib::read_calibration(simulate_path), lo);
   } else {
     if (dir.empty()) throw_input_error("DIR is required (or --live)");
+    dir = calib::capture_folder_of(dir).string();  // a live session: its last round
+    // A live session's round keeps the intrinsics it was solved with.
+    if (!options.camera && std::filesystem::exists(dir + "/camera.yaml")) {
+      options.camera = calib::CameraIntrinsics::read_yaml(dir + "/camera.yaml");
+      std::fprintf(stderr, "camera intrinsics from %s/camera.yaml\n", dir.c_str());
+    }
     const calib::PatternSet set = calib::read_pattern_set(dir);
     if (display_source.given()) {
       const calib::Calibration d = display_source.load();

@@ -22,15 +22,18 @@ class FrameSource {
  public:
   virtual ~FrameSource() = default;
   // The camera now stands at position `index` (0-based) of `count`. A real camera has been
-  // moved by the user; a simulated one switches its pose. Camera settings may adapt again.
+  // moved by the user; a simulated one switches its pose. Settings locked stay locked.
   virtual void start_position(int index, int count) = 0;
-  // Called while the white pattern is on screen at a new position: fix exposure (and white
-  // balance, focus) for it, then keep them, so every pattern of the position is photographed
-  // with the same settings (the phase decoding compares their brightness pixel by pixel).
+  // Called once per session, while the white pattern is on screen before the first
+  // photograph: fix exposure (and white balance, focus) for it, then keep them for every
+  // position and round (the phase decoding compares brightness pixel by pixel, and the
+  // focus must not hunt between photographs).
   virtual void fix_exposure_on_white() = 0;
   // A photograph of what is on screen now, taken after the last show(): CV_32FC3, RGB, values
   // in [0, 1]. Frames buffered before the pattern changed are not used.
   virtual cv::Mat capture() = 0;
+  // One frame of what the camera sees now, for aiming (one frame, not averaged; same format).
+  virtual cv::Mat preview() { return capture(); }
 };
 
 }  // namespace lfd::calib

@@ -22,11 +22,17 @@ PhysicalCamera SimulatedCamera::camera() const {
 void SimulatedCamera::start_position(int index, int) {
   position_ = index;
   photo_ = 0;
-  exposure_ = rig_.effects.exposure;
 }
 
 void SimulatedCamera::fix_exposure_on_white() {
+  ++locks_;
   exposure_ = exposure_on_white(simulator_, to_float(screen_()), camera(), rig_.effects);
+}
+
+cv::Mat SimulatedCamera::preview() {
+  CaptureEffects e = photo_effects(rig_, size_t(position_), size_t(photo_));
+  e.exposure = exposure_;
+  return to_mat(simulator_.capture(to_float(screen_()), camera(), e));
 }
 
 cv::Mat SimulatedCamera::capture() {

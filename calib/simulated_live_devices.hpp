@@ -28,9 +28,13 @@ class SimulatedCamera : public FrameSource {
   void start_position(int index, int count) override;
   // Manual exposure as a user would set it on the white pattern (exposure_on_white).
   void fix_exposure_on_white() override;
+  // How often the settings were locked (once per session is right).
+  int settings_locks() const { return locks_; }
   // One simulated photograph; its noise seed depends on the position and the photograph's
   // number there, as in simulate_captures.
   cv::Mat capture() override;
+  // The next photograph's view, without counting as one (noise seeds stay as without it).
+  cv::Mat preview() override;
 
  private:
   PhysicalCamera camera() const;
@@ -41,6 +45,7 @@ class SimulatedCamera : public FrameSource {
   int position_ = 0;
   int photo_ = 0;  // photographs taken at this position
   double exposure_;
+  int locks_ = 0;
 };
 
 }  // namespace lfd::calib

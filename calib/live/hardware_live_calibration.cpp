@@ -2,10 +2,13 @@
 
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "calib/live/camera_aiming.hpp"
 #include "calib/live/console_prompt.hpp"
+#include "calib/live/preview_window.hpp"
 #include "gpu/glfw_session.hpp"
 #include "calib/live/pattern_window.hpp"
 #include "calib/live/video_capture_source.hpp"
@@ -14,14 +17,40 @@
 namespace lfd::calib {
 namespace {
 
-std::string move_prompt(int position, int count) {
-  if (count == 1)
-    return "point the camera at the display (the whole screen in the photo, the board in "
-           "focus) and press Enter (here or in the pattern window)";
-  return fmt::format(
-      "move the camera to position {} of {} (another distance and side; the whole screen in "
-      "the photo, the board in focus) and press Enter (here or in the pattern window)",
-      position, count);
+std::string move_prompt(const CameraMove& move) {
+  const char* confirm = "press Enter when the preview says good (here, in the preview or in the "
+                        "pattern window)";
+  if (move.count == 1)
+    return fmt::format("point the camera at the display (the whole screen in the photo, the "
+                       "board in focus); {}",
+                       confirm);
+  if (move.revisit)
+    return fmt::format("round {}: back to position {} of {}, as before; {}", move.round,
+                       move.position, move.count, confirm);
+  return fmt::format("move the camera to position {} of {} (another distance and side; the "
+                     "whole screen in the photo, the board in focus); {}",
+                     move.position, move.count, confirm);
+}
+
+// Printed once, before the first prompt: every position the session will ask for.
+void print_position_plan(const LiveOptions& options) {
+  const auto order = plan_position_order(options.rounds, options.positions,
+                                         options.calibrate.camera.has_value());
+  std::fprintf(stderr, "live calibration: %d round(s) at %d camera position(s):\n",
+               options.rounds, options.positions);
+  for (size_t r = 0; r < order.size(); ++r) {
+    std::string list;
+    for (int i : order[r]) list += (list.empty() ? "" : ", ") + std::to_string(i + 1);
+    std::fprintf(stderr, "  round %zu: position%s %s\n", r + 1, order[r].size() > 1 ? "s" : "",
+                 list.c_str());
+  }
+  if (options.positions > 1)
+    std::fprintf(stderr,
+                 "  positions: clearly different distances (e.g. 0.45, 0.52, 0.60 m) and sides; "
+                 "the camera moves only when a prompt asks\n");
+  if (!options.session_dir.empty())
+    std::fprintf(stderr, "  photos saved in %s (resume with --resume %s)\n",
+                 options.session_dir.string().c_str(), options.session_dir.string().c_str());
 }
 
 }  // namespace
@@ -55,14 +84,23 @@ CalibrationOutcome run_live_calibration_on_hardware(const Calibration& nominal,
 
   PatternWindow window(glfw, monitor, d.screen_w, d.screen_h,
                        std::chrono::milliseconds(options.settle_ms));
+  // The preview beside the display, never on it (the camera would see it instead of the board).
+  std::optional<PreviewWindow> preview;
+  GLFWmonitor* preview_monitor = PreviewWindow::other_monitor(monitor);
+  if (options.preview && preview_monitor) preview.emplace(glfw, preview_monitor, 960, 720);
+  else if (options.preview)
+    std::fprintf(stderr, "no monitor besides the display's: the framing is printed here\n");
   LiveOptions o = options;
   if (!o.move_camera)
-    o.move_camera = [&window](int position, int count) {
-      wait_for_enter(move_prompt(position, count), [&window] {
+    o.move_camera = [&](const CameraMove& move) {
+      auto poll_window = [&window] {
         window.poll_events();
         return window.take_enter_press();
-      });
+      };
+      if (!options.preview) return wait_for_enter(move_prompt(move), poll_window);
+      aim_camera(camera, *move.set, preview ? &*preview : nullptr, move_prompt(move), poll_window);
     };
+  print_position_plan(o);
   return run_live_calibration(nominal, window, camera, o);
 }
 

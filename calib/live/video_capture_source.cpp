@@ -40,6 +40,11 @@ VideoCaptureSource::VideoCaptureSource(VideoCaptureOptions options) : options_(s
   capture_.set(cv::CAP_PROP_BUFFERSIZE, 1);
   const double buffered = capture_.get(cv::CAP_PROP_BUFFERSIZE);
   buffered_frames_ = buffered >= 1 ? int(buffered) : 4;
+  if (options_.manage_settings) {  // automatic while the user aims; locked on white later
+    set(cv::CAP_PROP_AUTO_EXPOSURE, kV4l2ExposureAperturePriority, "turn automatic exposure on");
+    set(cv::CAP_PROP_AUTO_WB, 1, "turn automatic white balance on");
+    set(cv::CAP_PROP_AUTOFOCUS, 1, "turn autofocus on");
+  }
 }
 
 std::string VideoCaptureSource::describe() {
@@ -57,12 +62,7 @@ void VideoCaptureSource::set(int property, double value, const char* what) {
         options_.index, capture_.getBackendName(), what));
 }
 
-void VideoCaptureSource::start_position(int, int) {
-  if (!options_.manage_settings) return;
-  set(cv::CAP_PROP_AUTO_EXPOSURE, kV4l2ExposureAperturePriority, "turn automatic exposure on");
-  set(cv::CAP_PROP_AUTO_WB, 1, "turn automatic white balance on");
-  set(cv::CAP_PROP_AUTOFOCUS, 1, "turn autofocus on");
-}
+void VideoCaptureSource::start_position(int, int) {}
 
 void VideoCaptureSource::fix_exposure_on_white() {
   if (!options_.manage_settings) return;

@@ -2,8 +2,9 @@
 // The live calibration's camera (calib/live_devices.hpp): a cv::VideoCapture device (a UVC
 // webcam or a camera in webcam mode). Phase decoding compares the brightness of one camera
 // pixel across patterns, so the camera must not adapt between them: automatic exposure,
-// white balance and focus settle on the white pattern and are then locked for the position
-// (best effort: a backend that refuses is named in a warning). Each photograph averages a
+// white balance and focus run automatically while the user aims (the preview), settle on the
+// white pattern before the session's first photograph and are then locked for the whole
+// session (best effort: a backend that refuses is named in a warning). Each photograph averages a
 // few frames (noise / sqrt(n)) taken after the frames buffered before the pattern changed.
 #include <functional>
 #include <optional>
@@ -26,15 +27,17 @@ struct VideoCaptureOptions {
 
 class VideoCaptureSource : public FrameSource {
  public:
-  // Opens the camera (V4L2, else any backend); throws InputError naming the index when there
-  // is no such camera.
+  // Opens the camera (V4L2, else any backend) with automatic exposure, white balance and
+  // focus on; throws InputError naming the index when there is no such camera.
   explicit VideoCaptureSource(VideoCaptureOptions options);
 
-  // Lets automatic exposure, white balance and focus adapt again (a new viewpoint).
+  // Nothing to do: locked settings stay locked (one focus and exposure per session).
   void start_position(int index, int count) override;
-  // Lets them settle on the white pattern, then locks them at the values reached.
+  // Lets the automatic settings settle on the white pattern, then locks them at the values
+  // reached (once per session).
   void fix_exposure_on_white() override;
   cv::Mat capture() override;
+  cv::Mat preview() override { return read_frame(); }
 
   // "camera 0 (V4L2): 1920x1080" (for the log).
   std::string describe();

@@ -55,7 +55,7 @@ struct RecordingDevices : PatternDisplay, FrameSource {
   }
 };
 
-TEST(CalibrateLive, EachPositionAimsOnTheBoardFixesExposureOnWhiteThenPhotographsEveryPattern) {
+TEST(CalibrateLive, EachPositionAimsOnTheBoardAndTheSessionFixesExposureOnWhiteOnce) {
   const DisplayCalibration d = read_visual_json(
       test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   Calibration nominal;
@@ -65,8 +65,9 @@ TEST(CalibrateLive, EachPositionAimsOnTheBoardFixesExposureOnWhiteThenPhotograph
   LiveOptions o;
   o.rounds = 1;
   o.positions = 2;
-  o.move_camera = [&](int position, int count) {
-    devices.events.push_back("move " + std::to_string(position) + " of " + std::to_string(count));
+  o.move_camera = [&](const CameraMove& move) {
+    devices.events.push_back("move " + std::to_string(move.position) + " of " +
+                             std::to_string(move.count));
   };
   try {
     run_live_calibration(nominal, devices, devices, o);
@@ -76,7 +77,9 @@ TEST(CalibrateLive, EachPositionAimsOnTheBoardFixesExposureOnWhiteThenPhotograph
   }
   std::vector<std::string> expected;
   for (int i = 0; i < 2; ++i) {
-    for (const char* step : {"show", "move ", "start ", "show", "fix exposure"}) {
+    std::vector<const char*> steps = {"show", "move ", "start "};
+    if (i == 0) steps.insert(steps.end(), {"show", "fix exposure"});  // once per session
+    for (const char* step : steps) {
       std::string event = step;
       if (event == "move ") event += std::to_string(i + 1) + " of 2";
       if (event == "start ") event += std::to_string(i) + " of 2";
@@ -89,8 +92,8 @@ TEST(CalibrateLive, EachPositionAimsOnTheBoardFixesExposureOnWhiteThenPhotograph
   }
   EXPECT_EQ(devices.events, expected);
   // What was on screen: the board to aim at, white for the exposure, then the manifest.
-  const size_t per_position = set.patterns.size() + 2;
-  ASSERT_EQ(devices.shown.size(), 2 * per_position);
+  const size_t per_position = set.patterns.size() + 1;
+  ASSERT_EQ(devices.shown.size(), 2 * per_position + 1);
   auto same = [](const Image8& a, const Image8& b) { return a.pixels == b.pixels; };
   EXPECT_TRUE(same(devices.shown[0], render_pattern(set, *set.of_kind(PatternKind::kBoard)[0])));
   EXPECT_TRUE(same(devices.shown[1], render_pattern(set, *set.of_kind(PatternKind::kWhite)[0])));
