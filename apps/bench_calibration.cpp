@@ -47,6 +47,12 @@ int RunBenchCalibration(int argc, char** argv) {
   app.add_flag("--no-noise", o.no_noise, "diagnostic: captures without sensor noise and glare");
   app.add_flag("--moving-glare", o.moving_glare,
                "diagnostic: new glare in every photo instead of per position");
+  app.add_option("--exposure-drift", o.exposure_drift,
+                 "per-photo gain drift, relative 1-sigma (a webcam that does not hold "
+                 "exposure, backlight flicker), e.g. 0.03")
+      ->check(CLI::Range(0.0, 0.2));
+  app.add_flag("--no-exposure-fix", o.no_exposure_fix,
+               "diagnostic: decode without dividing each photo's gain and offset out");
   app.add_flag("--show-poses", show_poses,
                "diagnostic: print each position's camera error (registration, refined)");
   if (auto code = parse(app, argc, argv)) return *code;

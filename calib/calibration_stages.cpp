@@ -283,8 +283,10 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
     return out_images;
   };
   auto& reg = state.registration;
-  const FringeCorrespondences dense =
-      decode_fringes(images(ctx.roles.fringe_x), images(ctx.roles.fringe_y), *reg, ctx.set);
+  FringeDecodeOptions fringe_options;
+  fringe_options.correct_exposure_drift = ctx.options.decode.correct_exposure_drift;
+  const FringeCorrespondences dense = decode_fringes(
+      images(ctx.roles.fringe_x), images(ctx.roles.fringe_y), *reg, ctx.set, fringe_options);
   ExtraPoints extra;
   const Eigen::Vector3d camera = reg->camera_position_m();
   for (size_t k = 0; k < dense.image_px.size(); ++k) {

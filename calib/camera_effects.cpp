@@ -92,6 +92,8 @@ void check_effects(const CaptureEffects& e) {
       e.vignetting, "0 <= vignetting < 1");
   bad(std::isfinite(e.gamma) && e.gamma > 0 && e.gamma <= 10, "gamma", e.gamma, "0 < gamma <= 10");
   bad(std::isfinite(e.exposure) && e.exposure > 0, "exposure", e.exposure, "must be > 0");
+  bad(std::isfinite(e.exposure_drift) && e.exposure_drift >= 0 && e.exposure_drift <= 0.2,
+      "exposure drift", e.exposure_drift, "relative 1-sigma, 0 to 0.2");
   bad(std::isfinite(e.glare_fraction) && e.glare_fraction >= 0 && e.glare_fraction <= 0.5,
       "glare", e.glare_fraction, "fraction of pixels, 0 to 0.5");
   bad(e.supersample >= 1 && e.supersample <= 16, "supersample", e.supersample, "1 to 16");
@@ -99,8 +101,13 @@ void check_effects(const CaptureEffects& e) {
 
 void apply_camera_effects(ImageF& image, const CameraIntrinsics& intrinsics,
                           const CaptureEffects& e) {
-  if (e.exposure != 1.0)
-    for (float& p : image.pixels) p *= float(e.exposure);
+  double gain = e.exposure;
+  if (e.exposure_drift > 0) {
+    std::mt19937_64 rng(e.seed ^ 0xd1b54a32d192ed03ULL);
+    gain *= std::max(0.2, 1.0 + e.exposure_drift * std::normal_distribution<double>()(rng));
+  }
+  if (gain != 1.0)
+    for (float& p : image.pixels) p *= float(gain);
   if (e.blur_px > 0) {
     cv::Mat m(image.height, image.width, CV_32FC(image.channels), image.pixels.data());
     cv::GaussianBlur(m, m, cv::Size(0, 0), e.blur_px, e.blur_px, cv::BORDER_REFLECT);

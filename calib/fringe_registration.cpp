@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "calib/block_phasors.hpp"
+#include "calib/exposure_drift.hpp"
 
 namespace lfd::calib {
 
@@ -12,8 +13,12 @@ FringeCorrespondences decode_fringes(const std::vector<cv::Mat>& x_captures,
                                      const FringeDecodeOptions& options) {
   FringeCorrespondences out;
   if (x_captures.size() < 3 || y_captures.size() != x_captures.size()) return out;
-  const BlockPhasors bx = block_phasors(x_captures, options.block_px);
-  const BlockPhasors by = block_phasors(y_captures, options.block_px);
+  BlockPhasors bx = block_phasors(x_captures, options.block_px);
+  BlockPhasors by = block_phasors(y_captures, options.block_px);
+  if (options.correct_exposure_drift) {
+    remove_exposure_drift(bx, estimate_exposure_drift(bx));
+    remove_exposure_drift(by, estimate_exposure_drift(by));
+  }
   const int steps = int(x_captures.size());
   const auto& d = set.nominal.display;
   const double period = set.fringe_period_px;

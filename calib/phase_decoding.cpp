@@ -12,7 +12,12 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
                           const PatternSet& set, const PhaseDecodeOptions& options) {
   const int K = int(captures.size());
   const double two_pi = 2.0 * std::numbers::pi;
-  const BlockPhasors bp = block_phasors(captures, options.block_px);
+  BlockPhasors bp = block_phasors(captures, options.block_px);
+  ExposureDrift drift;
+  if (options.correct_exposure_drift) {
+    drift = estimate_exposure_drift(bp);
+    remove_exposure_drift(bp, drift);
+  }
   const cv::Size blocks = bp.blocks;
   std::vector<cv::Point2f> centres;
   for (int by = 0; by < blocks.height; ++by)
@@ -20,6 +25,7 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
   const std::vector<ScreenUV> uv = registration.image_to_panel_uv(centres);
 
   DecodedPhase out;
+  out.exposure = drift;
   out.step_correlation.assign(size_t(K), 0.0);
   std::vector<double> corr_num(size_t(K), 0), corr_a(size_t(K), 0), corr_b(size_t(K), 0);
   std::vector<float> modulations;

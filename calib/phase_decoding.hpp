@@ -12,6 +12,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "calib/exposure_drift.hpp"
 #include "calib/patterns.hpp"
 #include "calib/registration.hpp"
 
@@ -27,6 +28,9 @@ struct PhaseDecodeOptions {
   int block_px = 4;              // camera pixels per block side
   double min_modulation = 0.08;  // b / a below this: no usable phase (bezel, glare, defocus)
   double panel_margin = 0.01;    // of the panel size, skipped along the edges
+  // Divide out each photo's gain and offset, measured where nothing is modulated
+  // (calib/exposure_drift.hpp): webcams that do not hold exposure, backlight flicker.
+  bool correct_exposure_drift = true;
 };
 
 struct DecodedPhase {
@@ -38,6 +42,7 @@ struct DecodedPhase {
   // Per capture: correlation of (I_k - a) with cos(2 pi (psi - k/K)); near 1 for the right
   // pattern, low for a capture of some other pattern.
   std::vector<double> step_correlation;
+  ExposureDrift exposure;  // what was divided out (empty photos: nothing)
 };
 
 // `captures[k]` is the capture of phase step k: CV_32FC3, linear-ish values in [0, 1].

@@ -22,6 +22,9 @@ struct CaptureEffects {
   double vignetting = 0.0;         // relative fall-off at the image corner (cos^4-like)
   double gamma = 1.0;              // camera response: out = in^(1/gamma)
   double exposure = 1.0;           // gain before clipping
+  // Exposure that drifts from photo to photo (webcam auto exposure, backlight flicker): each
+  // photo's gain is exposure * (1 + exposure_drift * N(0, 1)), drawn from its seed.
+  double exposure_drift = 0.0;
   double glare_fraction = 0.0;     // fraction of pixels replaced by saturated glare blobs
   std::array<float, 3> bezel{0.03f, 0.03f, 0.035f};  // what is seen outside the panel
   int supersample = 3;             // samples per camera pixel per axis

@@ -49,6 +49,8 @@ void CalibrationBenchmarkOptions::check() const {
   require_field(supersample >= 1 && supersample <= 8, where, "supersample", "must be in 1..8");
   require_field(board_squares >= 3 && board_squares <= 20, where, "board_squares",
                 "must be in 3..20");
+  require_field(exposure_drift >= 0 && exposure_drift <= 0.2, where, "exposure_drift",
+                "must be in 0..0.2");
 }
 
 nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
@@ -92,6 +94,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
                                                       o.positions, false, uint64_t(seed));
       if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
       rig.glare_moves = o.moving_glare;
+      rig.effects.exposure_drift = o.exposure_drift;
       rig.effects.supersample = o.supersample;
 
       CalibrationBenchmarkRow row;
@@ -107,11 +110,14 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
           "{}{}{}-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
           o.moving_glare ? "-moving-glare" : "", seed, o.width_px, o.positions, o.supersample,
           set.patterns.size());
-      const auto captures = cached_captures(o.cache_dir, key, set, unit.truth, rig);
+      const std::string drift_key =
+          o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
+      const auto captures = cached_captures(o.cache_dir, key + drift_key, set, unit.truth, rig);
       row.simulate_s = seconds_since(t0);
 
       calib::CalibrateOptions options;
       options.camera = rig.intrinsics;
+      options.decode.correct_exposure_drift = !o.no_exposure_fix;
       if (o.true_poses)
         for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
       t0 = std::chrono::steady_clock::now();

@@ -44,6 +44,8 @@ struct CalibrationBenchmarkOptions {
   bool true_poses = false;    // diagnostic: give the solver the true camera positions
   bool no_noise = false;      // diagnostic: no sensor noise and glare
   bool moving_glare = false;  // diagnostic: new glare in every photo
+  double exposure_drift = 0;  // per-photo gain drift, relative 1-sigma (CaptureEffects)
+  bool no_exposure_fix = false;  // decode without dividing the drift out (to compare)
   // Throws InputError("calibration benchmark: <field>: ...") for values out of range.
   void check() const;
 };
