@@ -53,11 +53,19 @@ int RunBenchCalibration(int argc, char** argv) {
       ->check(CLI::Range(0.0, 0.2));
   app.add_flag("--no-exposure-fix", o.no_exposure_fix,
                "diagnostic: decode without dividing each photo's gain and offset out");
+  bool above_below = false;
+  app.add_flag("--above-below", above_below,
+               "cameras above and below the screen centre: issue #12's (-0.06, +0.05, 0.45), "
+               "(0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled to each display's size");
+  app.add_flag("--solver-without-vertical-parallax", o.solver_without_vertical_parallax,
+               "diagnostic: the solver models the horizontal offset alone (the captures keep "
+               "the vertical parallax)");
   app.add_flag("--show-poses", show_poses,
                "diagnostic: print each position's camera error (registration, refined)");
   if (auto code = parse(app, argc, argv)) return *code;
   o.data_dir = data_dir;
   o.cache_dir = cache_dir;
+  if (above_below) o.layout = calib::RigLayout::kAboveBelow;
 
   const pipeline::AccuracyBars bars;
   std::printf("| display | seed | positions | capture | slant err deg | pitch rel err | center err "
@@ -77,11 +85,12 @@ int RunBenchCalibration(int argc, char** argv) {
       for (const auto& p : r.poses)
         std::fprintf(stderr,
                      "  %s: camera at (%.4f, %.4f, %.4f) m; registration error (%+.2f, %+.2f, "
-                     "%+.2f) mm, refined (%+.2f, -, %+.2f) mm; residual rms %.4f\n",
+                     "%+.2f) mm, refined (%+.2f, %+.2f, %+.2f) mm; residual rms %.4f\n",
                      p.name.c_str(), p.truth_m.x(), p.truth_m.y(), p.truth_m.z(),
                      1e3 * p.registration_error_m.x(), 1e3 * p.registration_error_m.y(),
                      1e3 * p.registration_error_m.z(), 1e3 * p.refined_error_m.x(),
-                     1e3 * p.refined_error_m.z(), p.residual_rms_periods);
+                     1e3 * p.refined_error_m.y(), 1e3 * p.refined_error_m.z(),
+                     p.residual_rms_periods);
     failures += r.within_bars ? 0 : 1;
     const auto& e = *r.errors;
     std::printf("| %s | %d | %d | %dx%d | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | %.1f | "

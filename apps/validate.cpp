@@ -12,6 +12,7 @@
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "validate/miscalibration.hpp"
+#include "validate/seen_down_the_screen.hpp"
 #include "report/validation_report.hpp"
 #include "validate/view_count_check.hpp"
 
@@ -54,6 +55,30 @@ int RunViewCountSweep(const calib::Calibration& truth, const std::string& list,
   return 0;
 }
 
+// What an eye at `height` above the centre, `distance` in front, sees from the bottom to the
+// top of the screen (vertical parallax): printed and written as seen_down_the_screen.json.
+void ReportSeenDownTheScreen(const calib::Calibration& truth, double height, double distance,
+                             int views, const std::string& out_dir, bool json) {
+  const Eigen::Vector3d eye(0.0, height, distance);
+  const auto rows = validate::seen_down_the_screen(truth, eye);
+  const double top_bottom = validate::fraction_difference(rows.back().measured, rows.front().measured);
+  const double predicted = validate::fraction_difference(rows.back().predicted, rows.front().predicted);
+  nlohmann::ordered_json j = {{"eye_m", {eye.x(), eye.y(), eye.z()}},
+                              {"top_minus_bottom", top_bottom},
+                              {"top_minus_bottom_predicted", predicted},
+                              {"views", views}};
+  for (const auto& r : rows)
+    j["rows"].push_back({{"y_m", r.y_m}, {"seen", r.measured}, {"predicted", r.predicted}});
+  write_text_atomic(std::filesystem::path(out_dir) / "seen_down_the_screen.json", j.dump(2) + "\n");
+  if (json) return;
+  std::printf("eye at (0, %+.3f, %.3f) m, true calibration: view fraction seen down the screen\n"
+              "| height m | seen (optics) | predicted |\n|---|---|---|\n", height, distance);
+  for (auto it = rows.rbegin(); it != rows.rend(); ++it)
+    std::printf("| %+.4f | %.4f | %.4f |\n", it->y_m, it->measured, it->predicted);
+  std::printf("top - bottom: %+.4f of the cone (predicted %+.4f), %+.2f of %d views\n\n",
+              top_bottom, predicted, top_bottom * views, views);
+}
+
 }  // namespace
 
 int RunValidate(int argc, char** argv) {
@@ -91,6 +116,13 @@ int RunValidate(int argc, char** argv) {
   app.add_option("--psf", options.psf_sigma_phase,
                  "lens point spread sigma_A, lens periods (default: the calibration's, else 0.008)");
   app.add_option("--seed", options.seed, "seed of the panel point jitter")->capture_default_str();
+  app.add_option("--distance", options.distance_m, "eye distance from the panel, metres")
+      ->capture_default_str();
+  double eye_height = 0;
+  CLI::Option* eye_height_option = app.add_option(
+      "--eye-height", eye_height,
+      "eyes at this height above the screen centre (metres; default: level with each panel "
+      "point); also prints what such an eye sees from the bottom to the top of the screen");
   std::string blend = "nearest";
   app.add_option("--blend", blend, "the interlacer's view selection: nearest or linear")
       ->capture_default_str()
@@ -103,12 +135,18 @@ int RunValidate(int argc, char** argv) {
   app.add_option("--out", out_dir, "report directory")->required();
   if (auto code = parse(app, argc, argv)) return *code;
   options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
+  if (eye_height_option->count()) options.eye_height_m = eye_height;
   options.check();
 
   const calib::Calibration truth = truth_source.load();
   truth_path = truth_source.name();
   if (!sweep.empty()) return RunViewCountSweep(truth, sweep, options, out_dir, json);
   if (options.views == 0) options.views = calib::recommend_view_count(truth).views;
+  if (options.eye_height_m) {
+    std::filesystem::create_directories(out_dir);
+    ReportSeenDownTheScreen(truth, *options.eye_height_m, options.distance_m, options.views,
+                            out_dir, json);
+  }
   if (!assumed_path.empty() && !error.empty())
     throw InputError("--assumed and the --*-error options are alternatives: give one");
   struct Run {

@@ -101,7 +101,7 @@ LensEstimate coarse_start(const Calibration& nominal, const std::vector<Position
   const DisplayCalibration& d = nominal.display;
   const LensModel nom(d);
   const double s = d.inv_view ? 1.0 : -1.0;
-  const double width_m = d.width_m();
+  const double width_m = d.width_m(), height_m = d.height_m();
 
   std::vector<PhasePlane> planes;
   for (const auto& p : positions) {
@@ -149,8 +149,11 @@ LensEstimate coarse_start(const Calibration& nominal, const std::vector<Position
       a += planes[i].beta_u + width_m * k / positions[i].camera_m.z();
     a /= double(positions.size());
   }
+  // Vertical parallax adds -(H_m line_tilt) k / Cz = -(W_m tilt) k / Cz to beta_v; the
+  // nominal tilt is close enough for a start.
   double beta_v = 0;
-  for (const auto& p : planes) beta_v += p.beta_v;
+  for (size_t i = 0; i < planes.size(); ++i)
+    beta_v += planes[i].beta_v + width_m * nom.tilt() * k / positions[i].camera_m.z();
   beta_v /= double(planes.size());
 
   const double pitch_p = nom.pitch_periods() + s * a;
@@ -161,12 +164,14 @@ LensEstimate coarse_start(const Calibration& nominal, const std::vector<Position
   e.slope = lens.slope;
   e.pitch_lpi = lens.pitch_lpi;
   e.view_cone_deg = view_cone_from_fraction_per_tan(k);
-  // center: circular mean over positions of c_nom + s (1/2 + (Cx + W_m/2) k / Cz - alpha).
+  // center: circular mean over positions of c_nom + s (f_seen(u = v = 0) - alpha).
+  const double lines = line_tilt(d.geometry(), tilt);
   std::complex<double> sum = 0;
   for (size_t i = 0; i < positions.size(); ++i) {
     const auto& c = positions[i].camera_m;
-    const double center = d.center_periods +
-                          s * (seen_fraction_k(c.x() + 0.5 * width_m, c.z(), k) - planes[i].alpha);
+    const double f_corner =
+        seen_fraction_k(c.x() + 0.5 * width_m, c.y() + 0.5 * height_m, c.z(), lines, k);
+    const double center = d.center_periods + s * (f_corner - planes[i].alpha);
     sum += std::polar(1.0, kTwoPi * center);
   }
   e.center_periods = std::arg(sum) / kTwoPi;

@@ -4,8 +4,10 @@
 // a local solver started at the nominal values would lock onto a wrong wrap. But per position
 // the phase is a plane in (u, v) plus the small correction field:
 //   psi = alpha + beta_u u + beta_v v + s w,   with (from DESIGN section 5 step 2)
-//   beta_u = -W_m k / Cz + s (P'_true - P'_nom),   beta_v = s (T_true P'_true - T_nom P'_nom),
-//   alpha  = 1/2 + (Cx + W_m / 2) k / Cz + s (center_nom - center_true),  k = 1/(2 tan(cone/2)),
+//   beta_u = -W_m k / Cz + s (P'_true - P'_nom),
+//   beta_v = -W_m T k / Cz + s (T_true P'_true - T_nom P'_nom)   (vertical parallax: H_m L = W_m T),
+//   alpha  = 1/2 + ((Cx + W_m / 2) + (Cy + H_m / 2) L) k / Cz + s (center_nom - center_true),
+//   k = 1/(2 tan(cone/2)), L = line_tilt = T W / H,
 // so the dominant 2D frequency of exp(2 pi i psi) gives (beta_u, beta_v) and its phase alpha;
 // from the planes of all positions follow pitch, slope, center and (with positions at
 // different distances) the view cone.

@@ -29,23 +29,33 @@ T wrap_half(const T& x) {  // to [-0.5, 0.5): the residual of a phase known modu
 // The display constants the phase model needs besides the unknowns.
 struct DisplayConstants {
   ScreenGeometry geometry;
-  double width_m;
+  double width_m, height_m;
   double sign;  // s = +1 with invView, -1 without (DESIGN section 5 step 2)
-  static DisplayConstants of(const DisplayCalibration& d) {
-    return {d.geometry(), d.width_m(), d.inv_view ? 1.0 : -1.0};
+  bool vertical_parallax;  // false: the model of horizontal offsets only (for comparison)
+  static DisplayConstants of(const DisplayCalibration& d, bool vertical_parallax) {
+    return {d.geometry(), d.width_m(), d.height_m(), d.inv_view ? 1.0 : -1.0, vertical_parallax};
   }
-  // Px of a panel point at screen u, display frame (metres, origin at the screen centre).
+  // Px, Py of a panel point at screen (u, v), display frame (metres, origin at the screen
+  // centre, y up as v).
   double panel_x_m(double u) const { return (u - 0.5) * width_m; }
+  double panel_y_m(double v) const { return (v - 0.5) * height_m; }
+  // f_seen at physical point (u, v) for a camera {Cx, Cy, Cz} and the lens' tilt.
+  template <typename T>
+  T seen(const T* cam, double u, double v, const T& tilt, const T& view_cone_deg) const {
+    const T dy = vertical_parallax ? T(cam[1] - T(panel_y_m(v))) : T(0.0);
+    return seen_fraction(T(cam[0] - T(panel_x_m(u))), dy, cam[2], line_tilt(geometry, tilt),
+                         view_cone_deg);
+  }
 };
 
 // psi model without the correction field: f_seen(P) + s (A_true_linear(X) - A_nom(X)).
-// lens = {pitch_lpi, slope, center, view_cone_deg}, cam = {Cx, Cz}.
+// lens = {pitch_lpi, slope, center, view_cone_deg}, cam = {Cx, Cy, Cz}.
 template <typename T>
 T psi_linear(const DisplayConstants& dc, const T* lens, const T* cam, double u, double v,
              double u_phys, double a_nom) {
   const ShaderTerms<T> terms = shader_terms(dc.geometry, lens[0], lens[1]);
   const T a_true = (T(u) + T(v) * terms.tilt) * terms.pitch_periods - lens[2];
-  const T f_seen = seen_fraction(T(cam[0] - T(dc.panel_x_m(u_phys))), cam[1], lens[3]);
+  const T f_seen = dc.seen(cam, u_phys, v, terms.tilt, lens[3]);
   return f_seen + T(dc.sign) * (a_true - T(a_nom));
 }
 
@@ -54,7 +64,7 @@ struct Sample {
   BSplineWeights wu, wv;
 };
 
-// The data term. Parameter blocks: lens (4), camera (2), then the 16 control points whose
+// The data term. Parameter blocks: lens (4), camera (3), then the 16 control points whose
 // B-spline basis covers the sample (one block each, so the Jacobian stays sparse). The
 // correction field enters linearly, r = wrap(psi_obs - psi_lin - s w) / sigma, so its
 // derivatives are the basis weights; the rest is differentiated with Jets.
@@ -64,16 +74,16 @@ class PhaseResidual : public ceres::CostFunction {
       : dc_(dc), s_(s), inv_sigma_(inv_sigma), with_field_(with_field) {
     set_num_residuals(1);
     mutable_parameter_block_sizes()->push_back(4);
-    mutable_parameter_block_sizes()->push_back(2);
+    mutable_parameter_block_sizes()->push_back(3);
     if (with_field_)
       for (int i = 0; i < 16; ++i) mutable_parameter_block_sizes()->push_back(1);
   }
 
   bool Evaluate(double const* const* p, double* residual, double** jacobians) const override {
-    using Jet = ceres::Jet<double, 6>;
-    Jet lens[4], cam[2];
+    using Jet = ceres::Jet<double, 7>;
+    Jet lens[4], cam[3];
     for (int i = 0; i < 4; ++i) lens[i] = Jet(p[0][i], i);
-    for (int i = 0; i < 2; ++i) cam[i] = Jet(p[1][i], 4 + i);
+    for (int i = 0; i < 3; ++i) cam[i] = Jet(p[1][i], 4 + i);
     double w = 0;
     if (with_field_)
       for (int b = 0; b < 4; ++b)
@@ -85,7 +95,7 @@ class PhaseResidual : public ceres::CostFunction {
       if (jacobians[0])
         for (int i = 0; i < 4; ++i) jacobians[0][i] = r.v[i];
       if (jacobians[1])
-        for (int i = 0; i < 2; ++i) jacobians[1][i] = r.v[4 + i];
+        for (int i = 0; i < 3; ++i) jacobians[1][i] = r.v[4 + i];
       if (with_field_)
         for (int b = 0; b < 4; ++b)
           for (int a = 0; a < 4; ++a)
@@ -122,13 +132,15 @@ class LinearCombination : public ceres::CostFunction {
   std::vector<double> a_;
 };
 
-// The registration's camera position as a prior on the refined one.
+// The registration's camera position as a prior on the refined one. Per position the data
+// fix only Cx + Cy line_tilt (both shift f_seen uniformly), so the prior splits the two.
 struct CameraPrior {
-  double cx, cz, inv_sx, inv_sz;
+  double cx, cy, cz, inv_sxy, inv_sz;
   template <typename T>
   bool operator()(const T* cam, T* r) const {
-    r[0] = (cam[0] - T(cx)) * inv_sx;
-    r[1] = (cam[1] - T(cz)) * inv_sz;
+    r[0] = (cam[0] - T(cx)) * inv_sxy;
+    r[1] = (cam[1] - T(cy)) * inv_sxy;
+    r[2] = (cam[2] - T(cz)) * inv_sz;
     return true;
   }
 };
@@ -192,7 +204,7 @@ class LensProblem {
   LensProblem(const Calibration& nominal, const LensEstimate& start,
               const std::vector<PositionData>& positions, const SolverOptions& options)
       : nominal_(nominal.display),
-        dc_(DisplayConstants::of(nominal.display)),
+        dc_(DisplayConstants::of(nominal.display, options.vertical_parallax)),
         nominal_lens_(nominal.display, nominal.correction),
         positions_(positions),
         options_(options),
@@ -207,6 +219,7 @@ class LensProblem {
     lens_[3] = start.view_cone_deg;
     for (const auto& p : positions) {
       cams_.push_back(p.camera_m.x());
+      cams_.push_back(p.camera_m.y());
       cams_.push_back(p.camera_m.z());
     }
     coeffs_.assign(size_t(nx_) * ny_, 0.0);
@@ -220,12 +233,11 @@ class LensProblem {
   // Each sample's content point (where A is evaluated) from its physical point and the
   // current estimate: it moves with the estimate, so it is updated between the stages.
   void update_content_points() {
-    const double pitch_p = shader_terms(dc_.geometry, lens_[0], lens_[1]).pitch_periods;
+    const ShaderTerms<double> terms = shader_terms(dc_.geometry, lens_[0], lens_[1]);
     for (size_t i = 0; i < samples_.size(); ++i)
       for (auto& s : samples_[i]) {
-        const double f_seen = seen_fraction(cams_[2 * i] - dc_.panel_x_m(s.u_phys),
-                                            cams_[2 * i + 1], lens_[3]);
-        s.u = s.u_phys + lens_content_shift(f_seen, nominal_.inv_view) / pitch_p;
+        const double f_seen = dc_.seen(&cams_[3 * i], s.u_phys, s.v, terms.tilt, lens_[3]);
+        s.u = s.u_phys + lens_content_shift(f_seen, nominal_.inv_view) / terms.pitch_periods;
         s.a_nom = nominal_lens_.phase(s.u, s.v);
       }
   }
@@ -350,7 +362,7 @@ class LensProblem {
     result.lens = {lens_[0], lens_[1], lens_[2] - std::floor(lens_[2]), lens_[3]};
     if (with_field_) result.correction = CorrectionField(nx_, ny_, coeffs_);
     for (size_t i = 0; i < positions_.size(); ++i)
-      result.cameras_m.push_back({cams_[2 * i], positions_[i].camera_m.y(), cams_[2 * i + 1]});
+      result.cameras_m.push_back({cams_[3 * i], cams_[3 * i + 1], cams_[3 * i + 2]});
     // Over all samples with a robust scale (residual_statistics.hpp): pooled, per position on
     // its own scale, and against the other positions pooled (leave one out: against a pool
     // that holds it, a position's ratio could not exceed sqrt(N / N_i)).
@@ -418,7 +430,7 @@ class LensProblem {
       for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a)
           w += coeffs_[size_t(s.wv.i0 + b) * nx_ + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
-    return wrap_half(s.psi - psi_linear(dc_, lens_, &cams_[2 * i], s.u, s.v, s.u_phys, s.a_nom) -
+    return wrap_half(s.psi - psi_linear(dc_, lens_, &cams_[3 * i], s.u, s.v, s.u_phys, s.a_nom) -
                      dc_.sign * w);
   }
 
@@ -426,7 +438,7 @@ class LensProblem {
     const double inv_sigma = 1.0 / obs_sigma_;
     for (size_t i = 0; i < samples_.size(); ++i)
       for (const auto& s : samples_[i]) {
-        std::vector<double*> blocks{lens_, &cams_[2 * i]};
+        std::vector<double*> blocks{lens_, &cams_[3 * i]};
         if (with_field_)
           for (int b = 0; b < 4; ++b)
             for (int a = 0; a < 4; ++a) blocks.push_back(coeff(s.wu.i0 + a, s.wv.i0 + b));
@@ -438,10 +450,10 @@ class LensProblem {
   void add_camera_priors() {
     for (size_t i = 0; i < positions_.size(); ++i)
       problem_->AddResidualBlock(
-          new ceres::AutoDiffCostFunction<CameraPrior, 2, 2>(new CameraPrior{
-              positions_[i].camera_m.x(), positions_[i].camera_m.z(),
+          new ceres::AutoDiffCostFunction<CameraPrior, 3, 3>(new CameraPrior{
+              positions_[i].camera_m.x(), positions_[i].camera_m.y(), positions_[i].camera_m.z(),
               1.0 / positions_[i].lateral_sigma_m, 1.0 / positions_[i].depth_sigma_m}),
-          nullptr, &cams_[2 * i]);
+          nullptr, &cams_[3 * i]);
   }
 
   // Second differences of the control points (a prior on the warp's curvature), whitened
@@ -491,7 +503,7 @@ class LensProblem {
   const bool fit_cone_;
   double obs_sigma_;
   double lens_[4];              // pitch_lpi, slope, center_periods, view_cone_deg
-  std::vector<double> cams_;    // Cx, Cz per position
+  std::vector<double> cams_;    // Cx, Cy, Cz per position
   std::vector<double> coeffs_;  // nx * ny correction control points
   std::vector<std::vector<Sample>> samples_;
   std::vector<double> m0x_, m1x_, m0y_, m1y_;

@@ -3,7 +3,8 @@
 // camera positions. At a panel point P the camera looks at (from registration) the decoded
 // phase is (DESIGN section 5 step 2)
 //   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))   (mod 1),  s = +1 with invView, -1 without
-//   f_seen(P) = 0.5 + ((Cx - Px) / Cz) / (2 tan(viewCone / 2)),  X = P + delta
+//   f_seen(P) = 0.5 + ((Cx - Px) + (Cy - Py) tilt W / H) / Cz / (2 tan(viewCone / 2)),
+//   X = P + delta
 // where X is the content the lens shows there and delta (< half a lens, horizontal) the mean
 // offset to it (see lens_solver.cpp). Unknowns: pitch, slope,
 // center, viewCone, the B-spline correction field w (smoothness prior; gauge: zero mean and
@@ -26,7 +27,7 @@ struct PositionData {
   std::string name;
   std::vector<PhaseSample> samples;
   Eigen::Vector3d camera_m{0, 0, 0.6};  // from registration (display frame)
-  double lateral_sigma_m = 0.001;        // prior on the registration's camera position
+  double lateral_sigma_m = 0.001;        // prior on the registration's camera position (x, y)
   double depth_sigma_m = 0.003;
 };
 
@@ -44,6 +45,9 @@ struct SolverOptions {
   double obs_sigma = 0.02;       // phase noise per sample assumed before it is measured, periods
   double loss_scale = 0.05;      // Cauchy scale of the final stage, lens periods
   bool fit_view_cone = true;     // needs >= 2 positions (else the nominal cone is kept)
+  // The vertical offset across the slanted lens lines in f_seen (lens_relations.hpp); false
+  // models the horizontal offset alone, only to measure what leaving it out costs.
+  bool vertical_parallax = true;
   int max_samples_per_position = 40000;
   int max_iterations = 200;  // per stage; the final one must end in CONVERGENCE
   int threads = 2;

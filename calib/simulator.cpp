@@ -63,7 +63,7 @@ std::array<float, 3> DisplaySimulator::radiance(const ImageF& panel, const Eigen
   const double u = on_panel.x() / c.width_m() + 0.5;
   const double v = on_panel.y() / c.height_m() + 0.5;
   const LensOptics optics(lens_, panel, cached_kernel(lens_, psf_sigma_phase));
-  return optics.seen(u, v, (eye.x() - on_panel.x()) / dz);
+  return optics.seen(u, v, (eye.x() - on_panel.x()) / dz, (eye.y() - on_panel.y()) / dz);
 }
 
 ImageF DisplaySimulator::capture(const ImageF& panel, const PhysicalCamera& camera,
@@ -121,7 +121,8 @@ ImageF DisplaySimulator::capture(const ImageF& panel, const PhysicalCamera& came
             const double t = -c.z() / dir.z();
             const double px = c.x() + t * dir.x(), py = c.y() + t * dir.y();
             const double u = px / width_m + 0.5, v = py / height_m + 0.5;
-            if (u >= 0 && u <= 1 && v >= 0 && v <= 1) seen = optics.seen(u, v, (c.x() - px) / c.z());
+            if (u >= 0 && u <= 1 && v >= 0 && v <= 1)
+              seen = optics.seen(u, v, (c.x() - px) / c.z(), (c.y() - py) / c.z());
           }
           for (int ch = 0; ch < 3; ++ch) sum[ch] += seen[ch];
         }

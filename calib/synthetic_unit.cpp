@@ -39,7 +39,7 @@ SyntheticUnit make_synthetic_unit(const DisplayCalibration& real,
 }
 
 CaptureRig make_capture_rig(const DisplayCalibration& d, int width_px, int positions, bool clean,
-                            uint64_t seed) {
+                            uint64_t seed, RigLayout layout) {
   CaptureRig rig;
   // The camera is turned to the screen's orientation (portrait screens, portrait photos), with
   // a moderately wide lens: the perspective of a large board is what fixes the camera's
@@ -56,9 +56,15 @@ CaptureRig make_capture_rig(const DisplayCalibration& d, int width_px, int posit
   // Positions at clearly different distances separate the view cone from the pitch
   // (reference/display-optics.md 2.1); the closest one still sees the whole screen.
   const double lateral = 0.12 * dist;
-  const std::vector<Eigen::Vector3d> spots = {{0.0, 0.02 * dist, 1.3 * dist},
-                                              {lateral, -0.03 * dist, dist},
-                                              {-lateral, 0.04 * dist, 1.6 * dist}};
+  const double scale = dist / 0.45;
+  const std::vector<Eigen::Vector3d> spots =
+      layout == RigLayout::kAboveBelow
+          ? std::vector<Eigen::Vector3d>{{-0.06 * scale, 0.05 * scale, 0.45 * scale},
+                                         {0.01 * scale, -0.04 * scale, 0.52 * scale},
+                                         {0.07 * scale, 0.03 * scale, 0.60 * scale}}
+          : std::vector<Eigen::Vector3d>{{0.0, 0.02 * dist, 1.3 * dist},
+                                         {lateral, -0.03 * dist, dist},
+                                         {-lateral, 0.04 * dist, 1.6 * dist}};
   for (int i = 0; i < positions; ++i) {
     CameraPose p;
     p.position_m = spots[size_t(i % 3)];

@@ -35,11 +35,19 @@ struct CaptureRig {
   bool glare_moves = false;  // new glare in every photo (a room that changes between photos)
 };
 
-// `positions` (1-3) cameras at different distances and sides, with a `width_px` wide image in
-// which the screen spans about 70 % of the width; realistic effects (blur, 2 % noise,
-// vignetting, lens distortion, 5 % glare) unless `clean`.
+// Where the rig's cameras stand. kSides: at clearly different distances and sides, a few
+// hundredths of the distance above or below the centre. kAboveBelow: issue #12's positions
+// (-0.06, +0.05, 0.45), (0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled by the distance at
+// which the screen spans 70 % of the image over 0.45 m (x1.05 for a 16" Gen2, x0.37 for a
+// Portrait), so every display is framed alike and sees the same vertical parallax.
+enum class RigLayout { kSides, kAboveBelow };
+
+// `positions` (1-3) cameras, with a `width_px` wide image in which the screen spans about 70 %
+// of the width at the nearest distance; realistic effects (blur, 2 % noise, vignetting, lens
+// distortion, 5 % glare) unless `clean`.
 CaptureRig make_capture_rig(const DisplayCalibration& display, int width_px, int positions,
-                            bool clean = false, uint64_t seed = 1);
+                            bool clean = false, uint64_t seed = 1,
+                            RigLayout layout = RigLayout::kSides);
 
 // Manual exposure for one camera, set on the white pattern as a user would: its brightest 1 %
 // (the lens magnifies single subpixels into bright colour stripes) at 85 % of full scale.

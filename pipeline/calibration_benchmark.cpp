@@ -91,7 +91,8 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       po.board_squares_short = o.board_squares;
       const calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
       calib::CaptureRig rig = calib::make_capture_rig(unit.truth.display, o.width_px,
-                                                      o.positions, false, uint64_t(seed));
+                                                      o.positions, false, uint64_t(seed), o.layout);
+      const bool above_below = o.layout == calib::RigLayout::kAboveBelow;
       if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
       rig.glare_moves = o.moving_glare;
       rig.effects.exposure_drift = o.exposure_drift;
@@ -105,11 +106,12 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       row.capture_width = rig.intrinsics.width;
       row.capture_height = rig.intrinsics.height;
       auto t0 = std::chrono::steady_clock::now();
-      // Every setting that changes the photos is in the cache key.
+      // Every setting that changes the photos is in the cache key ("vp": the simulator with
+      // vertical parallax; captures cached before it are not reused).
       const std::string key = fmt::format(
-          "{}{}{}-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
-          o.moving_glare ? "-moving-glare" : "", seed, o.width_px, o.positions, o.supersample,
-          set.patterns.size());
+          "{}{}{}{}-vp-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
+          o.moving_glare ? "-moving-glare" : "", above_below ? "-above-below" : "", seed,
+          o.width_px, o.positions, o.supersample, set.patterns.size());
       const std::string drift_key =
           o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
       const auto captures = cached_captures(o.cache_dir, key + drift_key, set, unit.truth, rig);
@@ -118,6 +120,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       calib::CalibrateOptions options;
       options.camera = rig.intrinsics;
       options.decode.correct_exposure_drift = !o.no_exposure_fix;
+      options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
       if (o.true_poses)
         for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
       t0 = std::chrono::steady_clock::now();

@@ -46,6 +46,10 @@ struct CalibrationBenchmarkOptions {
   bool moving_glare = false;  // diagnostic: new glare in every photo
   double exposure_drift = 0;  // per-photo gain drift, relative 1-sigma (CaptureEffects)
   bool no_exposure_fix = false;  // decode without dividing the drift out (to compare)
+  calib::RigLayout layout = calib::RigLayout::kSides;  // where the cameras stand
+  // Diagnostic: solve with f_seen of the horizontal offset alone (captures keep the vertical
+  // parallax), to measure what leaving it out costs.
+  bool solver_without_vertical_parallax = false;
   // Throws InputError("calibration benchmark: <field>: ...") for values out of range.
   void check() const;
 };

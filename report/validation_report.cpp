@@ -146,6 +146,8 @@ nlohmann::ordered_json to_json(const ValidationCase& c) {
           {"views", p.views},
           {"blend", p.blend == interlace::ViewBlend::kLinear ? "linear" : "nearest"},
           {"distance_m", p.distance_m},
+          {"eye_height_m",  // null: eyes level with each panel point
+           p.eye_height_m ? nlohmann::ordered_json(*p.eye_height_m) : nlohmann::ordered_json()},
           {"psf_sigma_phase", p.psf_sigma_phase},
           {"panel_points", p.panel_points},
           {"mean_separation", s.mean_separation},

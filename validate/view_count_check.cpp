@@ -15,9 +15,11 @@ double parallax_blur(const ViewProfiles& p, double view_cone_deg) {
   double sum = 0;
   int count = 0;
   for (size_t a = 0; a < p.theta_deg.size(); ++a) {
-    // The eye's view position relative to the centre view, -1/2 .. 1/2 across the cone.
-    const double s_eye =
-        calib::seen_fraction_of_tan(std::tan(p.theta_deg[a] * std::numbers::pi / 180.0), view_cone_deg) - 0.5;
+    // The eye's view position relative to the centre view, -1/2 .. 1/2 across the cone (the
+    // profiles' eyes are level with each panel point: no vertical term).
+    const double s_eye = calib::seen_fraction_of_tan(
+                             std::tan(p.theta_deg[a] * std::numbers::pi / 180.0), 0.0, 0.0,
+                             view_cone_deg) - 0.5;
     if (std::abs(s_eye) >= 0.4) continue;
     double total = 0, moment = 0;
     for (int j = 0; j < p.views; ++j) {

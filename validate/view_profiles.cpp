@@ -108,6 +108,8 @@ void ProfileOptions::check() const {
     throw_input_error("views: {} (expected 2 to {})", views, kMaxViews);
   if (!(distance_m > 0.01 && distance_m < 100))
     throw_input_error("distance: {} m (expected 0.01 to 100)", distance_m);
+  if (eye_height_m && !(std::abs(*eye_height_m) < 100))
+    throw_input_error("eye height: {} m (expected -100 to 100)", *eye_height_m);
   if (angles_per_view < 1 || angles_per_view > 100)
     throw_input_error("angles per view: {} (expected 1 to 100)", angles_per_view);
   if (panel_points < 1 || panel_points > 1000000)
@@ -131,6 +133,7 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
                   ? options.views
                   : std::min(kMaxViews, calib::recommend_view_count(truth).views);
   out.distance_m = options.distance_m;
+  out.eye_height_m = options.eye_height_m;
   out.psf_sigma_phase = options.psf_sigma_phase >= 0
                             ? options.psf_sigma_phase
                             : truth.phase_blur_sigma.value_or(calib::kDefaultPhaseBlurSigma);
@@ -150,7 +153,8 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
   const auto points = panel_points(d, options.panel_points, options.region_fraction, options.seed);
   out.panel_points = int(points.size());
 
-  // Eyes at distance D from each point in direction theta (horizontal parallax only).
+  // Eyes at distance D from each point in direction theta, level with it unless a height is
+  // given.
   std::vector<Eigen::Vector3d> offsets;
   for (double t : out.theta_deg)
     offsets.emplace_back(options.distance_m * std::sin(t * kDegToRad), 0.0,
@@ -185,8 +189,9 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
 #pragma omp for schedule(dynamic, 8)
       for (long p = 0; p < long(points.size()); ++p)
         for (int k = 0; k < angles; ++k) {
-          const auto r = simulator.radiance(panel, points[p], points[p] + offsets[k],
-                                            out.psf_sigma_phase);
+          Eigen::Vector3d eye = points[p] + offsets[k];
+          if (options.eye_height_m) eye.y() = *options.eye_height_m;
+          const auto r = simulator.radiance(panel, points[p], eye, out.psf_sigma_phase);
           // Luminance (Rec. 709 luma of linear RGB): a white panel reads 1.
           local[k] += 0.2126 * r[0] + 0.7152 * r[1] + 0.0722 * r[2];
         }

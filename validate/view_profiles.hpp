@@ -5,6 +5,7 @@
 // calibration from directions theta sweeping the view cone, averaged over many points of the
 // panel so the profile describes the whole screen, not one lens.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,11 @@ namespace lfd::validate {
 struct ProfileOptions {
   int views = 0;                 // 0: the TRUE calibration's recommended view count
   double distance_m = 0.6;       // eye distance from each panel point
+  // The eyes' height above the screen centre (display frame, metres). Unset: each eye is level
+  // with its panel point, the angular profile in the horizontal plane. Set: every eye is at
+  // this height, so across the screen's height the slanted lenses show it other views
+  // (vertical parallax, lens_relations.hpp), as they do a real viewer.
+  std::optional<double> eye_height_m;
   int angles_per_view = 8;       // theta samples across the cone, per view
   int panel_points = 1500;       // points averaged over (jittered grid)
   double region_fraction = 0.9;  // central part of the panel (width and height) sampled
@@ -31,6 +37,7 @@ struct ProfileOptions {
 struct ViewProfiles {
   int views = 0;
   double distance_m = 0;
+  std::optional<double> eye_height_m;
   double psf_sigma_phase = 0;
   int panel_points = 0;
   interlace::ViewBlend blend = interlace::ViewBlend::kNearest;

@@ -30,6 +30,8 @@ class LensModel {
   double pitch_periods() const { return pitch_periods_; }
   // Phase change per unit v relative to u (T of the shaders).
   double tilt() const { return tilt_; }
+  // The lens lines run along x + y * line_tilt() = const (pixels, y up): tilt * W / H.
+  double line_tilt() const { return calib::line_tilt(calibration_.geometry(), tilt_); }
   // Subpixels per lens period along a pixel row.
   double subpixels_per_lens() const { return 3.0 * calibration_.screen_w / pitch_periods_; }
   // Lens slant from vertical in degrees (signed as the slope).

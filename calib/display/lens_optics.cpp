@@ -28,6 +28,7 @@ LensOptics::LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKe
   const auto& c = lens.calibration();
   view_cone_deg_ = c.view_cone_deg;
   pitch_periods_ = lens.pitch_periods();
+  line_tilt_ = lens.line_tilt();
   has_correction_ = !lens.correction().empty();
   has_cells_ = c.has_cells();
   width_ = c.screen_w;
@@ -36,8 +37,8 @@ LensOptics::LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKe
     channel_offset_u_[ch] = lens.subpixel_uv(0, 0, ch).u - lens.pixel_uv(0, 0).u;
 }
 
-double LensOptics::seen_fraction(double tan_theta) const {
-  return wrap_fraction(calib::seen_fraction_of_tan(tan_theta, view_cone_deg_));
+double LensOptics::seen_fraction(double tan_x, double tan_y) const {
+  return wrap_fraction(calib::seen_fraction_of_tan(tan_x, tan_y, line_tilt_, view_cone_deg_));
 }
 
 double LensOptics::seen_u(double u, double v, double fraction) const {
@@ -102,9 +103,9 @@ float LensOptics::channel_emission(double u_q, double v, int channel) const {
   return float(3.0 * sum);
 }
 
-std::array<float, 3> LensOptics::seen(double u, double v, double tan_theta) const {
+std::array<float, 3> LensOptics::seen(double u, double v, double tan_x, double tan_y) const {
   if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return {0.0f, 0.0f, 0.0f};
-  const double u_q = seen_u(u, v, seen_fraction(tan_theta));
+  const double u_q = seen_u(u, v, seen_fraction(tan_x, tan_y));
   return {channel_emission(u_q, v, 0), channel_emission(u_q, v, 1), channel_emission(u_q, v, 2)};
 }
 

@@ -21,12 +21,13 @@ class LensOptics {
   static PhaseKernel make_kernel(const LensModel& lens, double psf_sigma_phase);
 
   // Linear radiance per channel (uniform white panel -> 1 on average over a lens) leaving
-  // screen point (u, v) in horizontal direction tan(theta) = dx/dz toward the viewer.
-  std::array<float, 3> seen(double u, double v, double tan_theta) const;
+  // screen point (u, v) toward a viewer in direction tan_x = dx/dz, tan_y = dy/dz (display
+  // frame, y up): the vertical direction counts through the slant of the lens lines.
+  std::array<float, 3> seen(double u, double v, double tan_x, double tan_y) const;
 
-  // The view fraction a lens sends toward tan(theta), wrapped into [0, 1): outside the cone
-  // the neighbouring lens repeats the views.
-  double seen_fraction(double tan_theta) const;
+  // The view fraction a lens sends toward (tan_x, tan_y), wrapped into [0, 1): outside the
+  // cone the neighbouring lens repeats the views.
+  double seen_fraction(double tan_x, double tan_y) const;
   // The point Q on the same horizontal line as (u, v) whose phase shows fraction f through
   // the lens covering (u, v).
   double seen_u(double u, double v, double fraction) const;
@@ -39,6 +40,7 @@ class LensOptics {
   const PhaseKernel& kernel_;
   double view_cone_deg_ = 0;
   double pitch_periods_ = 0;
+  double line_tilt_ = 0;
   bool has_correction_ = false;
   bool has_cells_ = false;
   int width_ = 0, height_ = 0;

@@ -64,26 +64,43 @@ T fraction_per_tan(const T& view_cone_deg) {
 // Its inverse: the view cone in degrees whose k this is.
 double view_cone_from_fraction_per_tan(double k);
 
-// The seen view fraction (DESIGN section 4), unwrapped: a lens at panel point P sends view
-// fraction f toward a viewer at C (display frame, metres, z toward the viewer) with
-//   f_seen = 0.5 + ((Cx - Px) / Cz) / (2 tan(viewCone / 2)).
-// f_seen < 0 or >= 1 lies outside the cone, where the neighbouring lens repeats the views:
-// wrap it with wrap_fraction(). `dx_m` = Cx - Px, `dz_m` = Cz - Pz. seen_fraction_k() takes
-// k = fraction_per_tan(viewCone) instead of the cone (the coarse start fits k directly).
+// The lens lines' tilt: lines of equal phase A = (u + v tilt) pitch' - center run along
+// x + y * line_tilt = const in panel pixels (or metres: square pixels), y up as v, with
+// line_tilt = tilt * W / H = 1 / slope, negated by flipImageX (the model negates the tilt and
+// leaves u alone, so the physical lines lean the other way). A viewer moving along a line sees
+// nothing change: the lens has no power along its axis.
 template <typename T>
-T seen_fraction_k(const T& dx_m, const T& dz_m, const T& fraction_per_tan_k) {
-  return T(0.5) + dx_m / dz_m * fraction_per_tan_k;
+T line_tilt(const ScreenGeometry& g, const T& tilt) {
+  return tilt * (g.width_px / g.height_px);
 }
-template <typename T>
-T seen_fraction(const T& dx_m, const T& dz_m, const T& view_cone_deg) {
-  return seen_fraction_k(dx_m, dz_m, fraction_per_tan(view_cone_deg));
+
+// The seen view fraction, unwrapped: a lens at panel point P sends view fraction f toward a
+// viewer at C (display frame, metres, y up, z toward the viewer) with
+//   f_seen = 0.5 + ((Cx - Px) + (Cy - Py) line_tilt) / (Cz - Pz) / (2 tan(viewCone / 2)).
+// Only the offset across the lens lines counts (reference/display-optics.md 2.1 item 6): the
+// vertical offset is worth line_tilt times as much as a horizontal one, which over the height
+// of a screen seen from half a metre is several hundredths of a period (DESIGN section 4's
+// first formula, Cx - Px alone, left it out). f_seen < 0 or >= 1 lies outside the cone, where
+// the neighbouring lens repeats the views: wrap it with wrap_fraction(). seen_fraction_k()
+// takes k = fraction_per_tan(viewCone) instead of the cone (the coarse start fits k directly).
+template <typename T, typename L>
+T seen_fraction_k(const T& dx_m, const T& dy_m, const T& dz_m, const L& line_tilt,
+                  const T& fraction_per_tan_k) {
+  return T(0.5) + (dx_m + dy_m * line_tilt) / dz_m * fraction_per_tan_k;
 }
-// The same from tan(theta) = dx / dz directly.
-template <typename T>
-T seen_fraction_of_tan(const T& tan_theta, const T& view_cone_deg) {
-  return T(0.5) + tan_theta * fraction_per_tan(view_cone_deg);
+template <typename T, typename L>
+T seen_fraction(const T& dx_m, const T& dy_m, const T& dz_m, const L& line_tilt,
+                const T& view_cone_deg) {
+  return seen_fraction_k(dx_m, dy_m, dz_m, line_tilt, fraction_per_tan(view_cone_deg));
 }
-// The horizontal direction tan(theta) in which a view fraction f leaves the display.
+// The same from the direction tan_x = dx / dz, tan_y = dy / dz directly.
+template <typename T, typename L>
+T seen_fraction_of_tan(const T& tan_x, const T& tan_y, const L& line_tilt,
+                       const T& view_cone_deg) {
+  return T(0.5) + (tan_x + tan_y * line_tilt) * fraction_per_tan(view_cone_deg);
+}
+// The horizontal direction tan(theta) in which a view fraction f leaves the display toward a
+// viewer level with the lens (dy = 0); a viewer above it sees f at tan(theta) - tan_y line_tilt.
 inline double tan_of_seen_fraction(double f, double view_cone_deg) {
   return (f - 0.5) / fraction_per_tan(view_cone_deg);
 }

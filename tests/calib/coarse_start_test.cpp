@@ -35,7 +35,9 @@ double worst_phase_error(const SyntheticPhaseData& data, const LensEstimate& len
     const ShaderTerms<double> nominal = shader_terms(nom.geometry(), nom.pitch_lpi, nom.slope);
     const double a = (u + v * terms.tilt) * terms.pitch_periods - center;
     const double a_nom = (u + v * nominal.tilt) * nominal.pitch_periods - nom.center_periods;
-    return seen_fraction(c.x() - (u - 0.5) * t.width_m(), c.z(), cone) + s * (a - a_nom);
+    return seen_fraction(c.x() - (u - 0.5) * t.width_m(), c.y() - (v - 0.5) * t.height_m(), c.z(),
+                         line_tilt(t.geometry(), terms.tilt), cone) +
+           s * (a - a_nom);
   };
   double worst = 0;
   for (const auto& c : data.cameras)
@@ -85,13 +87,20 @@ TEST_P(CoarseStart, LandsWithinTheSolversReachOfTheTruth) {
   ASSERT_EQ(planes.size(), 3u);
   for (const auto& p : planes) EXPECT_GT(p.coherence, 0.5);
 
-  // And the solver, started there, reaches the truth.
+  // And the solver, started there, lands where it lands from the truth: the start is in the
+  // right basin. What is left is the data's own error (the registration priors here are 1 mm
+  // and 3 mm, which leave the Portrait's cone at a sigma of 1.2 degrees), covered by the sigmas.
   SolverOptions options;
   options.grid_nx = options.grid_ny = 6;
   const SolverResult r = solve_lens(data.unit.nominal, e, data.positions, options);
-  EXPECT_LT(std::abs(r.lens.pitch_lpi / t.pitch_lpi - 1), 3e-5);
-  EXPECT_LT(std::abs(wrapped(r.lens.center_periods - t.center_periods)), 0.01);
-  EXPECT_LT(std::abs(r.lens.view_cone_deg - t.view_cone_deg), 0.5);
+  const LensEstimate truth{t.pitch_lpi, t.slope, t.center_periods, t.view_cone_deg};
+  const SolverResult from_truth = solve_lens(data.unit.nominal, truth, data.positions, options);
+  EXPECT_NEAR(r.lens.pitch_lpi / from_truth.lens.pitch_lpi - 1, 0.0, 1e-6);
+  EXPECT_NEAR(wrapped(r.lens.center_periods - from_truth.lens.center_periods), 0.0, 1e-3);
+  EXPECT_NEAR(r.lens.view_cone_deg, from_truth.lens.view_cone_deg, 0.02);
+  EXPECT_LT(std::abs(r.lens.pitch_lpi - t.pitch_lpi), 3 * r.sigma.at("pitch_lpi"));
+  EXPECT_LT(std::abs(wrapped(r.lens.center_periods - t.center_periods)), 3 * r.sigma.at("center_periods"));
+  EXPECT_LT(std::abs(r.lens.view_cone_deg - t.view_cone_deg), 3 * r.sigma.at("view_cone_deg"));
 }
 
 INSTANTIATE_TEST_SUITE_P(RealUnits, CoarseStart,

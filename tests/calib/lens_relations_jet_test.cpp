@@ -55,13 +55,34 @@ TEST(ShaderTermsJet, SameValueAndFiniteDifferenceDerivativesForBothSlopeSigns) {
 
 TEST(SeenFractionJet, DerivativeInTheConeMatchesAFiniteDifference) {
   for (double cone : {35.0, 40.0, 50.0}) {
-    const Jet f = seen_fraction(Jet(0.08), Jet(0.55), Jet(cone, 0));
-    EXPECT_EQ(f.a, seen_fraction(0.08, 0.55, cone));
+    const Jet f = seen_fraction(Jet(0.08), Jet(0.0), Jet(0.55), Jet(0.15), Jet(cone, 0));
+    EXPECT_EQ(f.a, seen_fraction(0.08, 0.0, 0.55, 0.15, cone));
     const double h = 1e-5;
-    const double fd = (seen_fraction(0.08, 0.55, cone + h) - seen_fraction(0.08, 0.55, cone - h)) / (2 * h);
+    const double fd = (seen_fraction(0.08, 0.0, 0.55, 0.15, cone + h) -
+                       seen_fraction(0.08, 0.0, 0.55, 0.15, cone - h)) / (2 * h);
     EXPECT_NEAR(f.v[0], fd, 1e-7) << cone;
     EXPECT_LT(f.v[0], 0.0);  // a wider cone: the same direction is a smaller step off centre
   }
+}
+
+// The solver differentiates f_seen in the camera's height and, through the tilt, the slope.
+TEST(SeenFractionJet, DerivativesInHeightAndLineTiltMatchFiniteDifferences) {
+  using Jet4 = ceres::Jet<double, 4>;
+  const double dx = 0.05, dy = -0.06, dz = 0.52, lines = -0.1387, cone = 40.0;
+  const Jet4 f = seen_fraction(Jet4(dx, 0), Jet4(dy, 1), Jet4(dz, 2), Jet4(lines, 3), Jet4(cone));
+  EXPECT_EQ(f.a, seen_fraction(dx, dy, dz, lines, cone));
+  const double h = 1e-6;
+  auto at = [&](int i, double step) {
+    double x[4] = {dx, dy, dz, lines};
+    x[i] += step;
+    return seen_fraction(x[0], x[1], x[2], x[3], cone);
+  };
+  for (int i = 0; i < 4; ++i) {
+    const double fd = (at(i, h) - at(i, -h)) / (2 * h);
+    EXPECT_NEAR(f.v[i], fd, 1e-6 * std::abs(fd) + 1e-8) << "parameter " << i;
+  }
+  // d f / d Cy = line_tilt d f / d Cx: the vertical offset is worth line_tilt of a horizontal one.
+  EXPECT_NEAR(f.v[1], lines * f.v[0], 1e-12);
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // Decoded phase samples made straight from a known truth, without images: what the lens
 // solver's model (calib/lens_solver.hpp) says a camera at C decodes at panel point P,
 //   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))  (mod 1),   s = +1 with invView, else -1,
-//   f_seen(P) = seen_fraction(Cx - Px, Cz, cone_true),   X = P + lens_content_shift / pitch',
+//   f_seen(P) = seen_fraction(Cx - Px, Cy - Py, Cz, line_tilt_true, cone_true),
+//   X = P + lens_content_shift / pitch',
 // plus Gaussian noise. Shared by the solver and coarse-start tests.
 #include <cmath>
 #include <random>
@@ -35,8 +36,9 @@ inline double synthetic_psi(const SyntheticUnit& unit, const LensModel& truth,
                             double v) {
   const DisplayCalibration& d = unit.truth.display;
   const double s = d.inv_view ? 1.0 : -1.0;
-  const double px = (u - 0.5) * d.width_m();
-  const double f_seen = seen_fraction(camera.x() - px, camera.z(), d.view_cone_deg);
+  const double px = (u - 0.5) * d.width_m(), py = (v - 0.5) * d.height_m();
+  const double f_seen = seen_fraction(camera.x() - px, camera.y() - py, camera.z(),
+                                      truth.line_tilt(), d.view_cone_deg);
   const double content_u = u + lens_content_shift(f_seen, d.inv_view) / truth.pitch_periods();
   return f_seen + s * (truth.phase(content_u, v) - nominal.phase(content_u, v));
 }
@@ -69,6 +71,10 @@ inline SyntheticPhaseData make_synthetic_phase_data(const DisplayCalibration& re
     p.depth_sigma_m = o.depth_sigma_m;
     p.camera_m = cameras[i] + Eigen::Vector3d(o.lateral_sigma_m * gauss(rng), 0.0,
                                               o.depth_sigma_m * gauss(rng));
+    // The height's registration error from its own stream, so x, z and the samples stay
+    // those of the horizontal-only model.
+    std::mt19937_64 height_rng(o.seed * 7919 + i);
+    p.camera_m.y() += o.lateral_sigma_m * gauss(height_rng);
     data.positions.push_back(std::move(p));
   }
   return data;

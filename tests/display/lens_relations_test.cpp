@@ -87,27 +87,76 @@ TEST(FractionPerTan, IsHalfOverTanOfHalfTheConeAndInverts) {
 TEST(SeenFraction, SpansTheConeFromEdgeToEdge) {
   for (double cone : {35.0, 40.0, 53.0}) {
     const double t = std::tan(0.5 * cone * kDeg);
-    EXPECT_NEAR(seen_fraction_of_tan(0.0, cone), 0.5, 1e-15);
-    EXPECT_NEAR(seen_fraction_of_tan(t, cone), 1.0, 1e-12);   // right edge of the cone
-    EXPECT_NEAR(seen_fraction_of_tan(-t, cone), 0.0, 1e-12);  // left edge
+    EXPECT_NEAR(seen_fraction_of_tan(0.0, 0.0, 0.2, cone), 0.5, 1e-15);
+    EXPECT_NEAR(seen_fraction_of_tan(t, 0.0, 0.2, cone), 1.0, 1e-12);   // right edge of the cone
+    EXPECT_NEAR(seen_fraction_of_tan(-t, 0.0, 0.2, cone), 0.0, 1e-12);  // left edge
     // Beyond the edge the neighbouring lens repeats the views.
-    EXPECT_GT(seen_fraction_of_tan(1.5 * t, cone), 1.0);
-    EXPECT_NEAR(wrap_fraction(seen_fraction_of_tan(1.5 * t, cone)), 0.25, 1e-12);
+    EXPECT_GT(seen_fraction_of_tan(1.5 * t, 0.0, 0.2, cone), 1.0);
+    EXPECT_NEAR(wrap_fraction(seen_fraction_of_tan(1.5 * t, 0.0, 0.2, cone)), 0.25, 1e-12);
   }
 }
 
 TEST(SeenFraction, OfAViewerAndOfADirectionAgree) {
   // A viewer 0.1 m right of a lens, 0.6 m in front, sees what leaves at tan = 0.1 / 0.6.
-  EXPECT_NEAR(seen_fraction(0.1, 0.6, 40.0), seen_fraction_of_tan(0.1 / 0.6, 40.0), 1e-15);
-  EXPECT_NEAR(seen_fraction_k(0.1, 0.6, fraction_per_tan(40.0)), seen_fraction(0.1, 0.6, 40.0), 1e-15);
-  EXPECT_NEAR(seen_fraction(-0.05, 0.45, 50.0), 0.5 - (0.05 / 0.45) * 0.5 / std::tan(25.0 * kDeg), 1e-15);
+  // A viewer 0.1 m right and 0.03 m above a lens, 0.6 m in front, sees what leaves at
+  // (tan_x, tan_y) = (0.1, 0.03) / 0.6.
+  const double lines = -0.13;
+  EXPECT_NEAR(seen_fraction(0.1, 0.03, 0.6, lines, 40.0),
+              seen_fraction_of_tan(0.1 / 0.6, 0.03 / 0.6, lines, 40.0), 1e-15);
+  EXPECT_NEAR(seen_fraction_k(0.1, 0.03, 0.6, lines, fraction_per_tan(40.0)),
+              seen_fraction(0.1, 0.03, 0.6, lines, 40.0), 1e-15);
+  EXPECT_NEAR(seen_fraction(-0.05, 0.0, 0.45, lines, 50.0),
+              0.5 - (0.05 / 0.45) * 0.5 / std::tan(25.0 * kDeg), 1e-15);
+}
+
+// Vertical parallax: a slanted lens has power only across its lines. The lines are where the
+// LensModel's phase is constant, so the sign of the vertical term is checked against the
+// phase itself, with and without flipImageX (which negates the model's tilt, not u).
+TEST(SeenFraction, AViewerMovingAlongTheLensLinesSeesNoChange) {
+  for (bool flip : {false, true}) {
+    SCOPED_TRACE(::testing::Message() << "flipImageX " << flip);
+    DisplayCalibration d = read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+    d.flip_image_x = flip;
+    const LensModel lens(d);
+    EXPECT_NEAR(lens.line_tilt(), (flip ? -1.0 : 1.0) / d.slope, 1e-12);
+    // A step along the lens line through (u, v): the phase does not change.
+    const double dv = 0.3, du = -dv * lens.tilt();
+    ASSERT_NEAR(lens.phase(0.4 + du, 0.2 + dv), lens.phase(0.4, 0.2), 1e-9);
+    const double along_x = du * d.width_m(), along_y = dv * d.height_m();
+    const double f0 = seen_fraction(0.03, -0.02, 0.5, lens.line_tilt(), d.view_cone_deg);
+    EXPECT_NEAR(seen_fraction(0.03 + along_x, -0.02 + along_y, 0.5, lens.line_tilt(), d.view_cone_deg),
+                f0, 1e-12);
+    // Straight up is not along the lines: it changes f by line_tilt of a horizontal step.
+    const double up = seen_fraction(0.03, 0.08, 0.5, lens.line_tilt(), d.view_cone_deg) - f0;
+    EXPECT_NEAR(up, 0.1 * lens.line_tilt() * fraction_per_tan(d.view_cone_deg) / 0.5, 1e-12);
+    // The Portrait's slope is negative: unflipped, a viewer who rises sees lower fractions.
+    ASSERT_LT(d.slope, 0);
+    EXPECT_EQ(up > 0, flip);
+  }
+}
+
+// A camera in front of the centre of a Looking Glass Portrait at 0.5 m: the top and the
+// bottom of the screen show views H_m line_tilt k / Cz apart, 0.061 of the cone (about three
+// of 48 views), whatever the camera's height.
+TEST(SeenFraction, TopAndBottomOfTheScreenDifferByTheLineTilt) {
+  const DisplayCalibration d = read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+  const LensModel lens(d);
+  const double h = d.height_m(), k = fraction_per_tan(d.view_cone_deg);
+  for (double cy : {0.0, 0.1, -0.07}) {
+    const double top = seen_fraction(0.0, cy - 0.5 * h, 0.5, lens.line_tilt(), d.view_cone_deg);
+    const double bottom = seen_fraction(0.0, cy + 0.5 * h, 0.5, lens.line_tilt(), d.view_cone_deg);
+    EXPECT_NEAR(top - bottom, -h * (1.0 / d.slope) * k / 0.5, 1e-12) << cy;
+    EXPECT_NEAR(top - bottom, 0.0612, 1e-4) << cy;  // slope -7.21, H 0.1606 m, cone 40 deg
+  }
+  // The centre of the screen seen from 0.1 m above: 0.038 of the cone the other way.
+  EXPECT_NEAR(seen_fraction(0.0, 0.1, 0.5, lens.line_tilt(), d.view_cone_deg) - 0.5, -0.0381, 1e-4);
 }
 
 TEST(SeenFraction, TanOfSeenFractionInvertsIt) {
   for (double cone : {30.0, 40.0, 60.0})
     for (double f = -0.4; f <= 1.4; f += 0.1) {
       const double tan_theta = tan_of_seen_fraction(f, cone);
-      EXPECT_NEAR(seen_fraction_of_tan(tan_theta, cone), f, 1e-12) << cone << " " << f;
+      EXPECT_NEAR(seen_fraction_of_tan(tan_theta, 0.0, 0.2, cone), f, 1e-12) << cone << " " << f;
       EXPECT_EQ(tan_theta > 0, f > 0.5 + 1e-12) << cone << " " << f;
     }
 }
