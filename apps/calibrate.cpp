@@ -114,6 +114,12 @@ int RunCalibrate(int argc, char** argv) {
     if (!display_source.given())
       throw_input_error("--live needs --display or --device (the nominal description to start from)");
     const calib::Calibration nominal = display_source.load();
+    // The cone gate would refuse the result: say so before anything is shown.
+    if (options.camera && positions < 2 && !options.view_cone_deg &&
+        !nominal.view_cone_measured_deg)
+      throw_input_error("--positions 1: one camera position cannot measure the view cone (the "
+                        "pitch absorbs its error); give it with --view-cone, or use --positions 2 "
+                        "or more at different distances");
     reference = report::ReferenceCalibration{nominal, display_source.name()};
     outcome = simulate_path.empty()
                   ? calib::run_live_calibration_on_hardware(nominal, lo)

@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <string>
 
@@ -77,6 +78,26 @@ TEST(CalibrateLiveCli, WithoutIntrinsicsOnePositionIsRefusedBeforeAnythingOpens)
   EXPECT_EQ(lines_of(r.output), 1) << r.output;
   EXPECT_NE(r.output.find("--camera"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("--positions 3"), std::string::npos) << r.output;
+}
+
+TEST(CalibrateLiveCli, OnePositionWithoutAKnownViewConeIsRefusedBeforeAnythingOpens) {
+  const fs::path camera = fs::temp_directory_path() /
+                          ("lfd_calibrate_live_cli_camera_" + std::to_string(::getpid()) + ".yaml");
+  {
+    std::ofstream f(camera);
+    f << "%YAML:1.0\n---\ncamera_matrix: !!opencv-matrix\n   rows: 3\n   cols: 3\n   dt: d\n"
+         "   data: [ 1000., 0., 960., 0., 1000., 540., 0., 0., 1. ]\n"
+         "distortion_coefficients: !!opencv-matrix\n   rows: 1\n   cols: 5\n   dt: d\n"
+         "   data: [ 0., 0., 0., 0., 0. ]\nimage_width: 1920\nimage_height: 1080\n";
+  }
+  const auto r = lfd::test::run_lfd("calibrate --live --display " +
+                                    lfd::test::live_test_display().string() + " --camera " +
+                                    camera.string() + " --out " + out_path().string());
+  fs::remove(camera);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(lines_of(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--view-cone"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(out_path()));
 }
 
 }  // namespace
