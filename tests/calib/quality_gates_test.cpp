@@ -124,6 +124,28 @@ TEST(QualityGates, TheResidualGatePassesNoiseWithGlare) {
   EXPECT_TRUE(failures_with(QualityGates{}.evaluate(p.calibration, p.solve), "residual").empty());
 }
 
+// Half the samples or more junk (glare, a wrong description over much of the screen): up to
+// half, the robust scale stays near the good samples' and the junk falls outside the cut (the
+// inlier gate fires); beyond, the scale is the junk's and the RMS within the cut is large (the
+// residual gate fires). Between about 52 and 55 % junk neither fires (docs/calibration.md 3.5).
+TEST(QualityGates, JunkOverHalfTheSamplesFailsTheInlierOrTheResidualGate) {
+  for (double junk_fraction : {0.5, 0.6, 0.7, 0.9}) {
+    std::mt19937 rng(7);
+    std::normal_distribution<double> g(0.0, 0.005);
+    std::uniform_real_distribution<double> junk(-0.5, 0.5), pick(0.0, 1.0);
+    std::vector<double> r;
+    for (int i = 0; i < 10000; ++i) r.push_back(pick(rng) < junk_fraction ? junk(rng) : g(rng));
+    Passing p;
+    p.solve.residuals = robust_residuals(r).stats;
+    const auto failures = QualityGates{}.evaluate(p.calibration, p.solve);
+    EXPECT_EQ(failures_with(failures, "fit the model").size() +
+                  failures_with(failures, "residual rms").size(),
+              1u)
+        << "junk " << junk_fraction << ": inliers " << p.solve.residuals.inlier_fraction
+        << ", rms " << p.solve.residuals.rms_periods;
+  }
+}
+
 TEST(CameraShifts, AreMeasuredInTheRegistrationsSigmas) {
   PositionData p;
   p.camera_m = {0.01, 0.02, 0.5};
