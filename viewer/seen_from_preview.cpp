@@ -16,18 +16,13 @@ namespace {
 // The one call into the optics: the light leaving panel point `on_panel` toward `eye`. The
 // lens has power across its lines only, so the direction across the slanted lines (horizontal
 // plus line_tilt times vertical) decides which view is seen.
-template <typename Optics>  // calib::LensOptics; a template so the branch not taken is not compiled
-std::array<float, 3> light_toward_eye(const Optics& optics, double u, double v, const glm::dvec3& on_panel,
+std::array<float, 3> light_toward_eye(const calib::LensOptics& optics, double u, double v, const glm::dvec3& on_panel,
                                       const glm::dvec3& eye) {
   const double dz = eye.z - on_panel.z;
   if (!(dz > 0)) return {0.0f, 0.0f, 0.0f};  // the lenses emit toward z > 0 only
   const double tan_x = (eye.x - on_panel.x) / dz, tan_y = (eye.y - on_panel.y) / dz;
-  // While the vertical term moves into LensOptics::seen (DESIGN section 4, vertical parallax),
-  // this builds against either signature; the horizontal-only one ignores tan_y.
-  if constexpr (requires { optics.seen(u, v, tan_x, tan_y); })
-    return optics.seen(u, v, tan_x, tan_y);
-  else
-    return optics.seen(u, v, tan_x);
+  // Both directions: a slanted lens shows an eye above or below the point another view.
+  return optics.seen(u, v, tan_x, tan_y);
 }
 
 // For each of `cells` preview cells over `pixels` panel pixels: at most `most` panel pixels of
