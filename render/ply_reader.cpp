@@ -42,6 +42,10 @@ GaussianScene standard_ply_to_scene(const PlyFile& ply, const std::string& name)
   const PlyElement* vertex = ply.find("vertex");
   if (!vertex) throw_input_error("{}: PLY has no 'vertex' element", name);
   const PlyElement& v = *vertex;
+  // svraster-webgl's sparse-voxel PLY also has a vertex element with f_dc/f_rest (voxel/).
+  if (v.find("octlevel") >= 0 && v.find("grid0_value") >= 0)
+    throw_input_error("{}: a sparse-voxel PLY (octlevel, grid0..7_value), not Gaussians: "
+                      "read it as a voxel scene (lfd render --scene takes either)", name);
 
   size_t rest_count = 0;
   for (const auto& p : v.properties)

@@ -11,6 +11,7 @@ declare -A ALLOWED=(
   [calib/display]="util"
   [calib/device]="util calib/display"
   [render]="util"
+  [voxel]="util render"
   [interlace]="util calib/display render"
   [gpu]="util calib/display render interlace"
   [viewer]="util calib/display render interlace gpu"
@@ -20,7 +21,7 @@ declare -A ALLOWED=(
   [report]="util calib/display render interlace calib validate"
   [pipeline]="util calib/display render interlace gpu calib validate report"
   [bench]="util calib/display render interlace gpu"
-  [apps]="util calib/display calib/device render interlace gpu viewer bench calib calib/live validate report pipeline"
+  [apps]="util calib/display calib/device render voxel interlace gpu viewer bench calib calib/live validate report pipeline"
 )
 
 # The module an include path belongs to: calib/display/x.hpp -> calib/display, calib/x.hpp -> calib.

@@ -1,0 +1,44 @@
+#pragma once
+// The exact CPU sparse-voxel rasterizer: SVRaster's forward pass (issue #13), the oracle for
+// V2LF and any GPU port. Per pixel, the voxels its tile overlaps in the order of the ray's
+// sign octant (ray_order.hpp); per voxel a ray-box slab test, K samples of the trilinear raw
+// density through exp_linear_11, tau = sum 100 dt sigma, alpha = min(0.99999, 1 - exp(-tau)),
+// skip alpha < 1e-5, stop once T < 1e-4; colour = SH from the camera to the voxel centre (+0.5,
+// clamped at 0); out = C + T background. Rendered at ss times the size and downsampled with
+// antialiasing. Stages: preprocess (colour and screen rectangle per voxel), tile binning,
+// per-tile order and per-pixel compositing. Multithreaded over tiles with OpenMP.
+#include <optional>
+#include <vector>
+
+#include "render/blend.hpp"
+#include "render/camera.hpp"
+#include "voxel/voxel_scene.hpp"
+
+namespace lfd::voxel {
+
+// SVRaster's constants.
+inline constexpr float kStepScale = 100.0f;        // tau = sum 100 dt sigma
+inline constexpr float kMaxAlpha = 0.99999f;
+inline constexpr float kMinAlpha = 1e-5f;          // lighter voxels are skipped
+inline constexpr float kMinTransmittance = 1e-4f;  // the ray stops below this
+
+struct VoxelRenderSettings {
+  std::optional<glm::vec3> background;    // default: the scene's
+  std::optional<float> supersampling;     // default: the scene's ss; 1 = no supersampling
+};
+
+// One voxel's colour and sampled opacity along a ray, for tests and the GPU port: the
+// transmittance factor of a box is exp(-tau), alpha as above (before the skip test).
+float voxel_alpha(const VoxelScene& scene, size_t voxel, const glm::vec3& origin, const glm::vec3& unit_direction);
+
+// The image at the camera's size: rgb = C + T background, transmittance = T, both after the
+// antialiased downsampling when ss > 1.
+render::RasterImage rasterize_voxels(const VoxelScene& scene, const render::Camera& camera,
+                                     const VoxelRenderSettings& settings = {});
+
+// The pass at the camera's own resolution (no supersampling), with a zero background, over
+// only `subset` of the voxels (all if empty): what V2LF's sweeping planes are made of.
+render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render::Camera& camera,
+                                           const glm::vec3& background, const std::vector<uint32_t>& subset = {});
+
+}  // namespace lfd::voxel
