@@ -34,6 +34,9 @@
 #include "render/quilt_layout.hpp"
 #include "render/scene_io.hpp"
 #include "util/error.hpp"
+#include "voxel/voxel_generator.hpp"
+#include "voxel/voxel_io.hpp"
+#include "voxel/voxel_quilt.hpp"
 
 namespace lfd::apps {
 namespace {
@@ -102,9 +105,12 @@ int RunRender(int argc, char** argv) {
   float orbit_deg = 0.0f, focal_distance = 0.0f;
   std::optional<float> view_cone_opt;
   render::G2lfOptions g2lf;
-  app.add_option("--scene", scene_path, "scene file (.ply, compressed .ply, .splat, .spz)")->required();
+  app.add_option("--scene", scene_path,
+                 "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
+                 "svraster-webgl .ply)")->required();
   app.add_option("--method", method, "per-view (baseline) or g2lf (sweeping planes)")
       ->check(CLI::IsMember({"per-view", "g2lf"}))->capture_default_str();
+  // A sparse-voxel scene (voxel/) renders per view on the CPU only, until V2LF and its GL port.
   app.add_option("--views", views_opt,
                  "number of views (default: the calibration's recommendation, else 45)");
   auto* cols_o = app.add_option("--cols", cols_opt, "quilt columns (default: chosen for the views)");
@@ -184,13 +190,23 @@ int RunRender(int argc, char** argv) {
   const float view_cone_deg =
       display_quilt ? float(display_quilt->view_cone_deg) : view_cone_opt.value_or(40.0f);
 
-  const auto context = open_backend(parse_backend(backend_name));
+  const bool voxels = voxel::is_voxel_scene_file(scene_path);
+  if (voxels && app.count("--method") && method != "per-view")
+    throw_input_error("--method: {} is for Gaussian scenes; {} is a voxel scene (per-view only)", method, scene_path);
+  if (voxels && backend_name == "gl") throw_input_error("--backend: gl has no voxel renderer yet; use cpu");
+  if (voxels) method = "per-view";
+  const auto context = voxels ? nullptr : open_backend(parse_backend(backend_name));
   if (plane_format && !context)
     throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
   const auto t0 = std::chrono::steady_clock::now();
-  const render::GaussianScene scene = render::load_scene(scene_path);
+  const render::GaussianScene scene = voxels ? render::GaussianScene{} : render::load_scene(scene_path);
+  const voxel::VoxelScene voxel_scene = voxels ? voxel::load_voxel_scene(scene_path) : voxel::VoxelScene{};
+  voxel::VoxelRenderSettings voxel_settings;
+  if (app.count("--background")) voxel_settings.background = settings.background;
   const render::CameraSpec spec =
-      camera_path.empty() ? render::frame_scene(scene, 40.0f, orbit_deg) : render::read_camera_json(camera_path);
+      !camera_path.empty() ? render::read_camera_json(camera_path)
+      : voxels             ? voxel::frame_voxel_scene(voxel_scene, 40.0f, orbit_deg)
+                           : render::frame_scene(scene, 40.0f, orbit_deg);
   std::optional<int> width, height;
   if (!size_text.empty()) {
     const auto wh = parse_numbers(size_text, 'x', 2, "--size");
@@ -223,7 +239,8 @@ int RunRender(int argc, char** argv) {
     if (context) {
       f = render_on_gpu(*context, scene, geometry, nullptr, view, method, g2lf, plane_format, settings);
     } else {
-      const render::RasterImage img = render::render_view(scene, geometry, view, settings);
+      const render::RasterImage img = voxels ? voxel::render_voxel_view(voxel_scene, geometry, view, voxel_settings)
+                                             : render::render_view(scene, geometry, view, settings);
       f = ImageF(img.width, img.height, 3);
       f.pixels = img.rgb;
     }
@@ -238,7 +255,8 @@ int RunRender(int argc, char** argv) {
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     written = quilt_file_name(out, layout);
     const ImageF quilt =
-        context ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, plane_format, settings)
+        context  ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, plane_format, settings)
+        : voxels ? voxel::render_voxel_quilt_per_view(voxel_scene, geometry, layout, voxel_settings)
         : method == "per-view" ? render::render_quilt_per_view(scene, geometry, layout, settings)
                                : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);
     const Image8 quilt8 = to_uint8(quilt);
@@ -259,8 +277,8 @@ int RunRender(int argc, char** argv) {
     }
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << fmt::format("wrote {} ({} Gaussians, {} on the {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
-                           written, scene.size(), view >= 0 ? fmt::format("view {}", view) : method,
+  std::cout << fmt::format("wrote {} ({} {}, {} on the {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
+                           written, voxels ? voxel_scene.size() : scene.size(), voxels ? "voxels" : "Gaussians", view >= 0 ? fmt::format("view {}", view) : method,
                            context ? "GPU" : "CPU",
                            view >= 0 ? 1 : views, base.width, base.height, view_cone_deg, seconds);
   return 0;

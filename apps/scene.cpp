@@ -11,6 +11,8 @@
 #include "render/scene_bounds.hpp"
 #include "render/scene_generator.hpp"
 #include "render/scene_io.hpp"
+#include "voxel/voxel_generator.hpp"
+#include "voxel/voxel_io.hpp"
 
 namespace lfd::apps {
 
@@ -21,6 +23,14 @@ int generate(const render::SceneGeneratorOptions& options, const std::string& ou
   render::save_ply(out, scene);
   std::cout << fmt::format("wrote {} ({} Gaussians, kind {}, seed {}, SH degree {})\n", out,
                            scene.size(), options.kind, options.seed, scene.sh_degree);
+  return 0;
+}
+
+int generate_voxels(const voxel::VoxelGeneratorOptions& options, const std::string& out) {
+  const voxel::VoxelScene scene = voxel::generate_voxel_scene(options);
+  voxel::save_voxel_scene(out, scene);
+  std::cout << fmt::format("wrote {} ({} voxels, levels up to {}, seed {}, SH degree {})\n", out, scene.size(),
+                           options.detail_level, options.seed, scene.sh_degree);
   return 0;
 }
 
@@ -59,21 +69,27 @@ int RunScene(int argc, char** argv) {
   CLI::App app{"Make and inspect 3D Gaussian Splatting scenes.\n"
                "Examples:\n"
                "  lfd scene generate --kind tabletop --count 30000 --seed 1 --out demo.ply\n"
+               "  lfd scene generate --kind voxels --level 8 --out demo.voxels\n"
                "  lfd scene info data/scenes/demo.ply --json",
                "scene"};
   app.require_subcommand(1);
 
   render::SceneGeneratorOptions options;
+  voxel::VoxelGeneratorOptions voxel_options;
   std::string out;
+  std::vector<std::string> kinds = render::generator_kinds();
+  kinds.push_back("voxels");  // sparse voxels (voxel/), written as a .voxels file
   CLI::App* gen = app.add_subcommand("generate", "write a procedural scene as a standard 3DGS PLY");
   gen->add_option("--kind", options.kind, "scene kind")
-      ->check(CLI::IsMember(render::generator_kinds()))
+      ->check(CLI::IsMember(kinds))
       ->capture_default_str();
   gen->add_option("--count", options.count, "number of Gaussians")->capture_default_str();
   gen->add_option("--seed", options.seed, "random seed (same seed, same scene)")
       ->capture_default_str();
   gen->add_option("--sh-degree", options.sh_degree, "SH degree 0-3")->capture_default_str();
-  gen->add_option("--out", out, "output .ply file")->required();
+  gen->add_option("--level", voxel_options.detail_level,
+                  "voxels: finest octree level near the objects (4-11; root 16 units)")->capture_default_str();
+  gen->add_option("--out", out, "output .ply file (.voxels for --kind voxels)")->required();
 
   std::string path;
   bool json = false;
@@ -84,6 +100,12 @@ int RunScene(int argc, char** argv) {
   inf->add_flag("--json", json, "machine-readable output");
 
   if (auto code = parse(app, argc, argv)) return *code;
+  if (gen->parsed() && options.kind == "voxels") {
+    voxel_options.seed = options.seed;
+    voxel_options.sh_degree = options.sh_degree;
+    voxel_options.check();
+    return generate_voxels(voxel_options, out);
+  }
   if (gen->parsed()) {
     options.check();
     return generate(options, out);
