@@ -36,6 +36,7 @@
 #include "util/error.hpp"
 #include "voxel/voxel_generator.hpp"
 #include "voxel/voxel_io.hpp"
+#include "voxel/v2lf.hpp"
 #include "voxel/voxel_quilt.hpp"
 
 namespace lfd::apps {
@@ -108,9 +109,10 @@ int RunRender(int argc, char** argv) {
   app.add_option("--scene", scene_path,
                  "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
                  "svraster-webgl .ply)")->required();
-  app.add_option("--method", method, "per-view (baseline) or g2lf (sweeping planes)")
-      ->check(CLI::IsMember({"per-view", "g2lf"}))->capture_default_str();
-  // A sparse-voxel scene (voxel/) renders per view on the CPU only, until V2LF and its GL port.
+  app.add_option("--method", method,
+                 "per-view (baseline) or g2lf (sweeping planes); v2lf for voxel scenes (the default there)")
+      ->check(CLI::IsMember({"per-view", "g2lf", "v2lf"}))->capture_default_str();
+  // A sparse-voxel scene (voxel/) renders on the CPU only, per view or with V2LF.
   app.add_option("--views", views_opt,
                  "number of views (default: the calibration's recommendation, else 45)");
   auto* cols_o = app.add_option("--cols", cols_opt, "quilt columns (default: chosen for the views)");
@@ -191,10 +193,12 @@ int RunRender(int argc, char** argv) {
       display_quilt ? float(display_quilt->view_cone_deg) : view_cone_opt.value_or(40.0f);
 
   const bool voxels = voxel::is_voxel_scene_file(scene_path);
-  if (voxels && app.count("--method") && method != "per-view")
-    throw_input_error("--method: {} is for Gaussian scenes; {} is a voxel scene (per-view only)", method, scene_path);
+  if (voxels && method == "g2lf" && app.count("--method"))
+    throw_input_error("--method: g2lf is for Gaussian scenes; {} is a voxel scene (per-view or v2lf)", scene_path);
+  if (!voxels && method == "v2lf")
+    throw_input_error("--method: v2lf is for voxel scenes; {} holds Gaussians (g2lf)", scene_path);
   if (voxels && backend_name == "gl") throw_input_error("--backend: gl has no voxel renderer yet; use cpu");
-  if (voxels) method = "per-view";
+  if (voxels && method == "g2lf") method = "v2lf";
   const auto context = voxels ? nullptr : open_backend(parse_backend(backend_name));
   if (plane_format && !context)
     throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
@@ -256,6 +260,9 @@ int RunRender(int argc, char** argv) {
     written = quilt_file_name(out, layout);
     const ImageF quilt =
         context  ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, plane_format, settings)
+        : method == "v2lf"
+            ? voxel::render_quilt_v2lf(voxel_scene, geometry, layout, g2lf,
+                                       voxel_settings.background.value_or(voxel_scene.background))
         : voxels ? voxel::render_voxel_quilt_per_view(voxel_scene, geometry, layout, voxel_settings)
         : method == "per-view" ? render::render_quilt_per_view(scene, geometry, layout, settings)
                                : render::render_quilt_g2lf(scene, geometry, layout, g2lf, settings);

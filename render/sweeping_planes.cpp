@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include "render/rasterizer_cpu.hpp"
 #include "render/sweeping_planes.hpp"
@@ -54,12 +55,24 @@ std::vector<int> largest_first(const GaussianScene& scene, const Camera& camera,
 SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
                                       const ReferenceCamera& ref, const DepthChunks& chunks,
                                       PlanePrecision precision, const RasterSettings& settings) {
+  RasterSettings chunk_settings = settings;
+  chunk_settings.background = glm::vec3(0.0f);
+  chunk_settings.sh_origin = geometry.base.position_world;
+  return make_sweeping_planes(
+      ref, chunks.plane_depth, precision,
+      [&](int k) { return rasterize(scene, ref.camera, chunk_settings, chunks.members[size_t(k)]); },
+      largest_first(scene, ref.camera, chunks));
+}
+
+SweepingPlanes make_sweeping_planes(const ReferenceCamera& ref, const std::vector<float>& plane_depth,
+                                    PlanePrecision precision, const std::function<RasterImage(int)>& render_chunk,
+                                    const std::vector<int>& order) {
   SweepingPlanes planes;
-  planes.count = int(chunks.members.size());
+  planes.count = int(plane_depth.size());
   planes.width = ref.camera.width;
   planes.height = ref.camera.height;
   planes.precision = precision;
-  planes.plane_depth = chunks.plane_depth;
+  planes.plane_depth = plane_depth;
   const size_t texels = size_t(planes.width) * planes.height;
   // Every texel and row range is written below; the planes are the largest buffer of a frame
   // (64 planes of 512x512: 67 MB in u8, 268 MB in f32), so they go on huge pages.
@@ -70,19 +83,14 @@ SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeo
   planes.row_first.assign(size_t(planes.count) * planes.height, planes.width);
   planes.row_last.assign(size_t(planes.count) * planes.height, -1);
 
-  RasterSettings chunk_settings = settings;
-  chunk_settings.background = glm::vec3(0.0f);
-  chunk_settings.sh_origin = geometry.base.position_world;
-
   Progress progress("sweeping planes", planes.count);
-  const std::vector<int> order = largest_first(scene, ref.camera, chunks);
   // Fewer chunks than threads: one chunk at a time, each rasterised on all threads (the
   // rasterizer's stages are parallel and deterministic), instead of idle threads.
   const bool chunks_in_parallel = planes.count >= omp_get_max_threads();
 #pragma omp parallel for schedule(dynamic, 1) if (chunks_in_parallel)
   for (int n = 0; n < planes.count; ++n) {
-    const int k = order[size_t(n)];
-    const RasterImage img = rasterize(scene, ref.camera, chunk_settings, chunks.members[size_t(k)]);
+    const int k = order.empty() ? n : order[size_t(n)];
+    const RasterImage img = render_chunk(k);
     for (int y = 0; y < planes.height; ++y) {
       int first = planes.width, last = -1;
       for (int x = 0; x < planes.width; ++x) {

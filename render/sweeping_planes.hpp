@@ -7,10 +7,12 @@
 // evaluated once, from the base camera) and of each chunk flattened onto one depth.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "render/depth_binning.hpp"
 #include "render/gaussian_scene.hpp"
+#include "render/blend.hpp"
 #include "render/preprocess.hpp"
 #include "render/quilt_geometry.hpp"
 
@@ -39,5 +41,13 @@ struct SweepingPlanes {
 SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
                                       const ReferenceCamera& ref, const DepthChunks& chunks,
                                       PlanePrecision precision, const RasterSettings& settings);
+
+// The same planes from any renderer of a chunk (V2LF's voxel rasterizer, voxel/v2lf.hpp):
+// `render_chunk(k)` is chunk k's image from the reference camera at its resolution with a zero
+// background; `order` the order to render them in (largest first balances the threads; empty:
+// 0, 1, ...).
+SweepingPlanes make_sweeping_planes(const ReferenceCamera& ref, const std::vector<float>& plane_depth,
+                                    PlanePrecision precision, const std::function<RasterImage(int)>& render_chunk,
+                                    const std::vector<int>& order = {});
 
 }  // namespace lfd::render

@@ -87,7 +87,8 @@ float voxel_alpha(const VoxelScene& scene, size_t voxel, const glm::vec3& origin
 }
 
 render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render::Camera& camera,
-                                           const glm::vec3& background, const std::vector<uint32_t>& subset) {
+                                           const glm::vec3& background, const std::vector<uint32_t>& subset,
+                                           std::optional<glm::vec3> sh_origin) {
   const int width = camera.width, height = camera.height;
   if (width < 1 || height < 1) throw_input_error("voxel rasterizer: image size {}x{} is empty", width, height);
   const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
@@ -106,7 +107,7 @@ render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render
     const size_t i = voxels[n];
     rects[n] = tile_rect(scene, i, camera, tiles_x, tiles_y);
     if (rects[n].x1 >= rects[n].x0 && rects[n].y1 >= rects[n].y0) {
-      const glm::vec3 dir = glm::normalize(scene.voxel_center(i) - camera.position_world);
+      const glm::vec3 dir = glm::normalize(scene.voxel_center(i) - sh_origin.value_or(camera.position_world));
       colour[i] = render::eval_sh_color(scene.sh_degree, scene.voxel_sh(i), dir);
     }
   }

@@ -36,9 +36,11 @@ float voxel_alpha(const VoxelScene& scene, size_t voxel, const glm::vec3& origin
 render::RasterImage rasterize_voxels(const VoxelScene& scene, const render::Camera& camera,
                                      const VoxelRenderSettings& settings = {});
 
-// The pass at the camera's own resolution (no supersampling), with a zero background, over
-// only `subset` of the voxels (all if empty): what V2LF's sweeping planes are made of.
+// The pass at the camera's own resolution (no supersampling) over only `subset` of the voxels
+// (all if empty), SH evaluated from `sh_origin` (default the camera centre): with a zero
+// background and the base camera as SH origin, what V2LF's sweeping planes are made of.
 render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render::Camera& camera,
-                                           const glm::vec3& background, const std::vector<uint32_t>& subset = {});
+                                           const glm::vec3& background, const std::vector<uint32_t>& subset = {},
+                                           std::optional<glm::vec3> sh_origin = std::nullopt);
 
 }  // namespace lfd::voxel
