@@ -345,6 +345,13 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
   rep.blocks_clipped = phase.blocks_clipped;
   rep.blocks_low_modulation = phase.blocks_low_modulation;
   rep.median_modulation = phase.median_modulation;
+  // Divided out already (calib/exposure_drift.hpp); said, because a camera that drifts this
+  // much is worth fixing (manual exposure) and its white/black checks saw one exposure only.
+  if (phase.exposure.max_gain_change() > 0.02)
+    ctx.warnings.push_back(fmt::format(
+        "{}: the exposure changed between the phase photos by up to {:.1f} % (measured on {} "
+        "blocks without fringes and divided out); lock the camera's exposure",
+        pc.name, 100 * phase.exposure.max_gain_change(), phase.exposure.reference_blocks));
   return phase;
 }
 

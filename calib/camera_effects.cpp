@@ -101,19 +101,21 @@ void check_effects(const CaptureEffects& e) {
 
 void apply_camera_effects(ImageF& image, const CameraIntrinsics& intrinsics,
                           const CaptureEffects& e) {
-  double gain = e.exposure;
-  if (e.exposure_drift > 0) {
-    std::mt19937_64 rng(e.seed ^ 0xd1b54a32d192ed03ULL);
-    gain *= std::max(0.2, 1.0 + e.exposure_drift * std::normal_distribution<double>()(rng));
-  }
-  if (gain != 1.0)
-    for (float& p : image.pixels) p *= float(gain);
+  if (e.exposure != 1.0)
+    for (float& p : image.pixels) p *= float(e.exposure);
   if (e.blur_px > 0) {
     cv::Mat m(image.height, image.width, CV_32FC(image.channels), image.pixels.data());
     cv::GaussianBlur(m, m, cv::Size(0, 0), e.blur_px, e.blur_px, cv::BORDER_REFLECT);
   }
   apply_vignetting(image, intrinsics, e.vignetting);
   apply_glare(image, e.glare_fraction, e.glare_seed ? e.glare_seed : e.seed);
+  // A drifting exposure scales all the light the sensor gathers, the glare's too.
+  if (e.exposure_drift > 0) {
+    std::mt19937_64 rng(e.seed ^ 0xd1b54a32d192ed03ULL);
+    const double drift =
+        std::max(0.2, 1.0 + e.exposure_drift * std::normal_distribution<double>()(rng));
+    for (float& p : image.pixels) p *= float(drift);
+  }
   apply_noise(image, e.noise_sigma, e.seed);
   const float inv_gamma = float(1.0 / e.gamma);
 #pragma omp parallel for schedule(static)

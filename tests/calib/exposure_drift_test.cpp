@@ -6,7 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "util/error.hpp"
+
 #include "calib/block_phasors.hpp"
+#include "calib/camera_effects.hpp"
 #include "calib/exposure_drift.hpp"
 
 namespace lfd::calib {
@@ -88,6 +91,32 @@ TEST(ExposureDrift, SteadyExposureIsLeftAlone) {
 TEST(ExposureDrift, NothingToMeasureWithoutUnmodulatedBlocks) {
   const BlockPhasors p = block_phasors(series(kGain, kOffset, false), kBlock);
   EXPECT_TRUE(estimate_exposure_drift(p).photos.empty());
+}
+
+// The simulator's side: each photo (seed) gets its own gain, scaling all its light.
+TEST(ExposureDrift, SimulatedPhotosOfOneSceneDifferInGainBySeed) {
+  const CameraIntrinsics camera = CameraIntrinsics::from_fov(60, 64, 48);
+  auto photo_mean = [&](double drift, uint64_t seed) {
+    ImageF image(64, 48, 3, 0.25f);
+    CaptureEffects e;
+    e.exposure_drift = drift;
+    e.seed = seed;
+    apply_camera_effects(image, camera, e);
+    double sum = 0;
+    for (float v : image.pixels) sum += v;
+    return sum / double(image.pixels.size());
+  };
+  EXPECT_EQ(photo_mean(0, 1), photo_mean(0, 2));
+  EXPECT_EQ(photo_mean(0.05, 3), photo_mean(0.05, 3));
+  double lo = 1, hi = 0;
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
+    lo = std::min(lo, photo_mean(0.05, seed));
+    hi = std::max(hi, photo_mean(0.05, seed));
+  }
+  EXPECT_GT(hi / lo, 1.03);
+  CaptureEffects bad;
+  bad.exposure_drift = 0.5;
+  EXPECT_THROW(check_effects(bad), InputError);
 }
 
 }  // namespace
