@@ -82,7 +82,9 @@ TEST(ViewerInput, DragAcrossTheWindowTurnsHalfAround) {
     const glm::vec3 p = c.spec().position;
     const float turned = glm::degrees(std::atan2(p.x, p.z));
     EXPECT_NEAR(std::abs(turned), std::abs(yaw) == 180.0f ? 180.0f : std::abs(yaw), 1e-2);
-    if (std::abs(yaw) != 180.0f) EXPECT_GT(turned * yaw, 0.0f);
+    if (std::abs(yaw) != 180.0f) {
+      EXPECT_GT(turned * yaw, 0.0f);
+    }
   }
   InputEvents none;
   EXPECT_FALSE(none.any());
