@@ -181,6 +181,37 @@ render::CameraSpec frame_voxel_scene(const VoxelScene& scene, float fov_y_deg, f
   const float limit = 0.85f * std::max(*r99 - std::ldexp(scene.scene_extent, -coarsest), 1e-3f);
   const glm::vec3 back = spec.position - spec.look_at;
   if (glm::length(back) > limit) spec.position = spec.look_at + limit * glm::normalize(back);
+  // The 99% rule does not know where the shell is: the camera could sit within the shell's
+  // thickness, in a gap between its inner and outer surface voxels, or inside a voxel; per view
+  // it then sees the shell from behind (only sky) while V2LF's reference camera, further in on
+  // the axis, sees the content (issue #13). Move in until the camera and the outermost views of
+  // the default 40-degree cone lie outside every voxel and see look_at past no voxel of the
+  // coarsest level (the background).
+  const glm::vec3 right = glm::normalize(glm::cross(spec.look_at - spec.position, spec.up));
+  const float cone_half_tan = std::tan(glm::radians(20.0f));
+  const auto blocked = [&](const glm::vec3& p) {
+    const glm::vec3 d = spec.look_at - p;
+    for (size_t i = 0; i < scene.size(); ++i) {
+      const glm::vec3 lo = scene.voxel_min(i), hi = lo + scene.voxel_size(i);
+      if (glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi))) return true;
+      if (scene.level[i] != coarsest) continue;
+      // Slab test of the segment p -> look_at (t in [0, 1]) against the box.
+      const glm::vec3 ta = (lo - p) / d, tb = (hi - p) / d;
+      const glm::vec3 tmin = glm::min(ta, tb), tmax = glm::max(ta, tb);
+      const float t_in = std::max({tmin.x, tmin.y, tmin.z, 0.0f}), t_out = std::min({tmax.x, tmax.y, tmax.z, 1.0f});
+      if (t_out >= t_in) return true;
+    }
+    return false;
+  };
+  const float start = glm::length(back);
+  for (float dist = std::min(start, limit); dist > 0.05f * start; dist *= 0.97f) {
+    const glm::vec3 p = spec.look_at + dist * glm::normalize(back);
+    const glm::vec3 side = dist * cone_half_tan * right;
+    if (!blocked(p) && !blocked(p + side) && !blocked(p - side)) {
+      spec.position = p;
+      break;
+    }
+  }
   return spec;
 }
 
