@@ -21,8 +21,9 @@ struct VoxelGeneratorOptions {
 
 VoxelScene generate_voxel_scene(const VoxelGeneratorOptions& options);
 
-// The default camera of render::frame_scene applied to the voxel centres (the same rule as for
-// Gaussian scenes: the 90% sphere fits, inside an enclosing shell).
+// The default camera: render::frame_scene's rule on the fine (content) voxels, then moved
+// toward the target until the camera and the cone's outermost views sit in empty space with no
+// coarsest-level (background shell) voxel between them and the target (docs/voxels.md).
 render::CameraSpec frame_voxel_scene(const VoxelScene& scene, float fov_y_deg = 40.0f, float orbit_deg = 0.0f);
 
 }  // namespace lfd::voxel
