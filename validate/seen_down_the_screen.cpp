@@ -4,6 +4,7 @@
 #include <complex>
 #include <numbers>
 
+#include "calib/display/fraction_panel.hpp"
 #include "calib/display/lens_relations.hpp"
 #include "calib/display/view_count.hpp"
 #include "calib/simulator.hpp"
@@ -14,22 +15,6 @@ namespace lfd::validate {
 namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
-
-// Every subpixel shows 1/2 + 1/2 trig(2 pi f) of its own view fraction f: what an eye sees of
-// the cos and sin panels, less half of white, is the phasor of the fraction it sees, whatever
-// the lens blur does to the amplitude and across the wrap.
-ImageF fraction_panel(const calib::LensModel& lens, bool sine) {
-  const auto& c = lens.calibration();
-  ImageF panel(c.screen_w, c.screen_h, 3);
-#pragma omp parallel for schedule(static)
-  for (int row = 0; row < c.screen_h; ++row)
-    for (int x = 0; x < c.screen_w; ++x)
-      for (int ch = 0; ch < 3; ++ch) {
-        const double a = kTwoPi * lens.subpixel_view_fraction(x, row, ch);
-        panel.at(x, row, ch) = float(0.5 + 0.5 * (sine ? std::sin(a) : std::cos(a)));
-      }
-  return panel;
-}
 
 double fraction_of(std::complex<double> z) {
   return calib::wrap_fraction(std::arg(z) / kTwoPi);
@@ -52,7 +37,8 @@ std::vector<HeightSample> seen_down_the_screen(const calib::Calibration& truth,
   const auto& d = truth.display;
   const calib::LensModel lens(d, truth.correction);
   const calib::DisplaySimulator simulator{lens};
-  const ImageF cos_panel = fraction_panel(lens, false), sin_panel = fraction_panel(lens, true);
+  const ImageF cos_panel = calib::view_fraction_panel(lens, false);
+  const ImageF sin_panel = calib::view_fraction_panel(lens, true);
   const ImageF white(d.screen_w, d.screen_h, 3, 1.0f);
   const double psf = truth.phase_blur_sigma.value_or(calib::kDefaultPhaseBlurSigma);
   // Samples across four lens periods and nine pixel rows, 9/8 of a row apart: every position

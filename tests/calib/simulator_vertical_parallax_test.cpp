@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "calib/display/fraction_panel.hpp"
 #include "calib/display/lens_relations.hpp"
 #include "calib/simulator.hpp"
 #include "simulator_test_support.hpp"
@@ -16,27 +17,13 @@ namespace {
 
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
-// Every subpixel shows 1/2 + 1/2 cos (or sin) of 2 pi its own view fraction: the photos of the
-// two panels, less half of white, give the phasor of the fraction the camera sees.
-ImageF fraction_panel(const LensModel& lens, bool sine) {
-  const auto& c = lens.calibration();
-  ImageF panel(c.screen_w, c.screen_h, 3);
-  for (int row = 0; row < c.screen_h; ++row)
-    for (int x = 0; x < c.screen_w; ++x)
-      for (int ch = 0; ch < 3; ++ch) {
-        const double a = kTwoPi * lens.subpixel_view_fraction(x, row, ch);
-        panel.at(x, row, ch) = float(0.5 + 0.5 * (sine ? std::sin(a) : std::cos(a)));
-      }
-  return panel;
-}
-
 double wrapped(double x) { return x - std::round(x); }
 
 TEST(SimulatorVerticalParallax, TopAndBottomOfAPhotoShowTheViewsSeenFractionPredicts) {
   const DisplaySimulator sim{LensModel(testing::small_display())};  // 16" Gen2 optics
   const LensModel& lens = sim.lens();
   const auto& c = lens.calibration();
-  const ImageF cos_panel = fraction_panel(lens, false), sin_panel = fraction_panel(lens, true);
+  const ImageF cos_panel = view_fraction_panel(lens, false), sin_panel = view_fraction_panel(lens, true);
   const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
   // Level with the centre and 0.1 m above it, half a metre away, looking at the centre.
   for (double height : {0.0, 0.1}) {
