@@ -89,13 +89,13 @@ ImageF seen_from_preview(const calib::LensModel& lens, const ImageF& panel, cons
       std::array<double, 3> sum{0, 0, 0};
       for (int panel_row : rows[y])
         for (int panel_x : columns[x]) {
-            // Screen coordinates as Looking Glass's: u right, v up (row 0 at the top).
-            const double u = (panel_x + 0.5) / c.screen_w;
-            const double v = 1.0 - (panel_row + 0.5) / c.screen_h;
-            const glm::dvec3 on_panel((u - 0.5) * width_m, (v - 0.5) * height_m, 0.0);
-            const std::array<float, 3> light = light_toward_eye(optics, u, v, on_panel, eye_m);
-            for (int ch = 0; ch < 3; ++ch) sum[ch] += light[ch];
-          }
+          // Screen coordinates as Looking Glass's: u right, v up (row 0 at the top).
+          const double u = (panel_x + 0.5) / c.screen_w;
+          const double v = 1.0 - (panel_row + 0.5) / c.screen_h;
+          const glm::dvec3 on_panel((u - 0.5) * width_m, (v - 0.5) * height_m, 0.0);
+          const std::array<float, 3> light = light_toward_eye(optics, u, v, on_panel, eye_m);
+          for (int ch = 0; ch < 3; ++ch) sum[ch] += light[ch];
+        }
       const double inv_samples = 1.0 / double(rows[y].size() * columns[x].size());
       for (int ch = 0; ch < 3; ++ch) row[x * 3 + ch] = float(std::clamp(sum[ch] * inv_samples, 0.0, 1.0));
     }
