@@ -35,6 +35,10 @@ struct DisplayCalibration {
   bool flip_subp = false;
   int cell_pattern_mode = 0;
   std::vector<SubpixelCell> subpixel_cells;
+  // The acrylic block or cover glass in front of the lens array (lens_relations.hpp). Not a
+  // visual.json field: calibration.json's "cover" holds it; a plain visual.json reads as a bare
+  // panel, and cover_layer_for_family() (cover_layer.hpp) gives a unit family's default.
+  CoverLayer cover;
 
   // The object as read, with every field this struct does not model (and the original
   // spelling and number formatting of those it does), so a round trip loses nothing.

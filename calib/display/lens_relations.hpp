@@ -105,6 +105,59 @@ inline double tan_of_seen_fraction(double f, double view_cone_deg) {
   return (f - 0.5) / fraction_per_tan(view_cone_deg);
 }
 
+// The cover layer: a flat slab (Looking Glass' acrylic block, a cover glass) of thickness t and
+// refractive index n between the lens array (the plane z = 0) and the viewer. It bends no
+// direction a lens sends out (the view fraction belongs to the direction in air), but a ray
+// leaving lens point P toward a viewer at C crosses the slab at the steeper in-slab angle,
+// sin(theta_air) = n sin(theta_slab), so it reaches C from a different direction than the
+// straight line P -> C. Paraxially the panel appears t (1 - 1/n) nearer (apparent_shift_m());
+// off axis the exact ray differs by terms in tan^2(theta), which for cameras 25-30 degrees to
+// the side of a 16" screen reach a hundredth of a period (docs/display-model.md, "The cover
+// layer"), twice the center bar: cover_seen_distance() is exact. thickness_m = 0: a bare panel.
+struct CoverLayer {
+  double thickness_m = 0.0;
+  double refractive_index = 1.49;  // PMMA (acrylic) near 589 nm
+  bool present() const { return thickness_m > 0.0; }
+  // The paraxial apparent shift of the panel toward the viewer, t (1 - 1/n).
+  double apparent_shift_m() const { return thickness_m * (1.0 - 1.0 / refractive_index); }
+};
+
+// tan(theta_slab) / tan(theta_air) for a ray whose direction in air has tan^2 = tan2_air
+// (|(dx, dy)| / dz squared): 1 / sqrt(n^2 + (n^2 - 1) tan^2). The in-slab tangent keeps the
+// direction's azimuth (refraction stays in the plane of incidence), so the ratio applies to
+// tan_x and tan_y alike.
+template <typename T>
+T cover_tan_ratio(const T& tan2_air, double n) {
+  using std::sqrt;
+  return T(1) / sqrt(T(n * n) + T(n * n - 1.0) * tan2_air);
+}
+
+// The distance D such that the ray from lens point P to a viewer at offset (dx, dy, dz) = C - P
+// (dz from the lens plane, dz > thickness) leaves the cover in the air direction
+// (tan_x, tan_y) = (dx, dy) / D. Pass D as seen_fraction()'s dz: with no cover D = dz, and
+// paraxially D = dz - t (1 - 1/n). The lateral offset splits into the air path and the slab
+// path, |d| = tan_air ((dz - t) + t ratio(tan_air^2)), so D = (dz - t) + t ratio((|d| / D)^2):
+// a fixed point whose map contracts by at most (t / D) (n^2 - 1) tan^2 / n^3 (0.006 for a 2 cm
+// block seen from 0.45 m at 30 degrees); six steps from the paraxial D leave under 1e-9 m for
+// any viewer inside +-60 degrees. Differentiable (ceres::Jet) through the iteration.
+template <typename T>
+T cover_seen_distance(const T& dx, const T& dy, const T& dz, const CoverLayer& cover) {
+  if (!cover.present()) return dz;
+  const double t = cover.thickness_m, n = cover.refractive_index;
+  const T lateral2 = dx * dx + dy * dy;
+  T d = dz - T(cover.apparent_shift_m());
+  for (int i = 0; i < 6; ++i) d = dz - T(t) + T(t) * cover_tan_ratio(T(lateral2 / (d * d)), n);
+  return d;
+}
+
+// The seen view fraction through a cover: seen_fraction() with the distance the cover makes.
+template <typename T, typename L>
+T seen_fraction_through_cover(const T& dx_m, const T& dy_m, const T& dz_m, const CoverLayer& cover,
+                              const L& line_tilt, const T& view_cone_deg) {
+  return seen_fraction(dx_m, dy_m, cover_seen_distance(dx_m, dy_m, dz_m, cover), line_tilt,
+                       view_cone_deg);
+}
+
 // Into [0, 1): outside the cone the neighbouring lens repeats the views.
 inline double wrap_fraction(double f) { return f - std::floor(f); }
 
