@@ -31,7 +31,11 @@ DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geomet
     if (!std::isnan(depth[i])) depth_index.emplace_back(depth[i], i);
   // (depth, index) pairs are unique, so the parallel sort's order is the serial one.
   __gnu_parallel::sort(depth_index.begin(), depth_index.end());
+  return chunk_sorted_depths(depth_index, ref, chunks, binning);
+}
 
+DepthChunks chunk_sorted_depths(const std::vector<std::pair<float, uint32_t>>& depth_index,
+                                const ReferenceCamera& ref, int chunks, ChunkBinning binning) {
   // Cuts: indices into the sorted list where a chunk begins.
   const size_t n = depth_index.size();
   std::vector<size_t> cuts;

@@ -6,6 +6,7 @@
 // about the same number of Gaussians, so the planes cost about the same to rasterise; each
 // Gaussian belongs to exactly one chunk (by its centre), which is the method's discretisation.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "render/gaussian_scene.hpp"
@@ -36,5 +37,11 @@ struct DepthChunks {
 DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geometry,
                          const ReferenceCamera& ref, int chunks,
                          ChunkBinning binning = ChunkBinning::kQuantile);
+
+// The chunking alone, for any primitives (V2LF's voxels, voxel/v2lf.hpp): `depth_index` holds
+// (reference depth, primitive index) pairs of the primitives to bin, sorted ascending.
+DepthChunks chunk_sorted_depths(const std::vector<std::pair<float, uint32_t>>& depth_index,
+                                const ReferenceCamera& ref, int chunks,
+                                ChunkBinning binning = ChunkBinning::kQuantile);
 
 }  // namespace lfd::render
