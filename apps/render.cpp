@@ -106,6 +106,8 @@ int RunRender(int argc, char** argv) {
   float orbit_deg = 0.0f, focal_distance = 0.0f;
   std::optional<float> view_cone_opt;
   render::G2lfOptions g2lf;
+  int split_levels = 0;
+  bool no_plane_lowpass = false;
   app.add_option("--scene", scene_path,
                  "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
                  "svraster-webgl .ply)")->required();
@@ -136,6 +138,12 @@ int RunRender(int argc, char** argv) {
   app.add_option("--shift", g2lf.d_shift,
                  "G2LF: D_shift, move the reference camera back by this (scene units; default: by "
                  "D_forward, to the base camera; 0 = the paper's setting)");
+  app.add_option("--split-levels", split_levels,
+                 "V2LF: split a voxel whose depth extent straddles a chunk boundary into its 8 children, "
+                 "up to this many levels deeper (0: never; helps scenes of K >= 4 samples per voxel)")
+      ->capture_default_str();
+  app.add_flag("--no-plane-lowpass", no_plane_lowpass,
+               "V2LF: leave out the low-pass filter on the planes (the paper's stand-in for supersampling)");
   auto* camera_opt = app.add_option("--camera", camera_path, "cam.json with position, look_at, up, fov_y_deg");
   app.add_option("--orbit", orbit_deg, "turn the default camera about the scene centre (degrees)")
       ->excludes(camera_opt);
@@ -199,6 +207,12 @@ int RunRender(int argc, char** argv) {
     throw_input_error("--method: v2lf is for voxel scenes; {} holds Gaussians (g2lf)", scene_path);
   if (voxels && backend_name == "gl") throw_input_error("--backend: gl has no voxel renderer yet; use cpu");
   if (voxels && method == "g2lf") method = "v2lf";
+  if (!voxels && (app.count("--split-levels") || no_plane_lowpass))
+    throw_input_error("--split-levels, --no-plane-lowpass: V2LF options for voxel scenes; {} holds Gaussians", scene_path);
+  voxel::V2lfOptions v2lf;
+  v2lf.planes = g2lf;
+  v2lf.planes.adaptive_filter = !no_plane_lowpass;
+  v2lf.split_levels = split_levels;
   const auto context = voxels ? nullptr : open_backend(parse_backend(backend_name));
   if (plane_format && !context)
     throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
@@ -261,7 +275,7 @@ int RunRender(int argc, char** argv) {
     const ImageF quilt =
         context  ? render_on_gpu(*context, scene, geometry, &layout, -1, method, g2lf, plane_format, settings)
         : method == "v2lf"
-            ? voxel::render_quilt_v2lf(voxel_scene, geometry, layout, g2lf,
+            ? voxel::render_quilt_v2lf(voxel_scene, geometry, layout, v2lf,
                                        voxel_settings.background.value_or(voxel_scene.background))
         : voxels ? voxel::render_voxel_quilt_per_view(voxel_scene, geometry, layout, voxel_settings)
         : method == "per-view" ? render::render_quilt_per_view(scene, geometry, layout, settings)
