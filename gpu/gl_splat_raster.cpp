@@ -41,7 +41,7 @@ GlSplatRaster::GlSplatRaster()
   if (epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")) splats_layered_ = splat_program(true);
 }
 
-void GlSplatRaster::begin(const SplatRasterTarget& target) const {
+void begin_raster_target(const SplatRasterTarget& target) {
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
   glViewport(target.viewport_origin.x, target.viewport_origin.y, target.image_size.x, target.image_size.y);
   const glm::ivec4 r = region(target);
@@ -51,15 +51,27 @@ void GlSplatRaster::begin(const SplatRasterTarget& target) const {
   glDisable(GL_STENCIL_TEST);
   glDisable(GL_CULL_FACE);
   glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-  glBindVertexArray(vertex_array_.id());
 }
 
-void GlSplatRaster::end() const {
+void end_raster_target() {
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
+
+void enable_front_to_back_blend() {
+  glEnable(GL_BLEND);
+  glBlendEquation(GL_FUNC_ADD);
+  glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+}
+
+void GlSplatRaster::begin(const SplatRasterTarget& target) const {
+  begin_raster_target(target);
+  glBindVertexArray(vertex_array_.id());
+}
+
+void GlSplatRaster::end() const { end_raster_target(); }
 
 void GlSplatRaster::clear(const SplatRasterTarget& target) const {
   begin(target);
@@ -82,9 +94,7 @@ void GlSplatRaster::draw(const Buffer& records, const Buffer& sorted_ids, const 
   glProgramUniform2f(program.id(), program.uniform("viewport_origin"), float(target.viewport_origin.x),
                      float(target.viewport_origin.y));
   program.use();
-  glEnable(GL_BLEND);
-  glBlendEquation(GL_FUNC_ADD);
-  glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, GL_ZERO, GL_ONE_MINUS_SRC_ALPHA);
+  enable_front_to_back_blend();
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect.id());
   glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);

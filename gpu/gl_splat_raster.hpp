@@ -41,6 +41,15 @@ struct SplatRasterTarget {
   glm::ivec4 scissor{0};
 };
 
+// The render state every front-to-back pass into a SplatRasterTarget shares: the framebuffer,
+// viewport and scissor of the target's region, no depth, stencil or culling (begin), and back
+// to the default framebuffer (end). The voxel raster draws into the same targets.
+void begin_raster_target(const SplatRasterTarget& target);
+void end_raster_target();
+// The front-to-back blend on a (C, T) target for premultiplied (c alpha, alpha) fragments:
+// C += c alpha T, T *= 1 - alpha.
+void enable_front_to_back_blend();
+
 class GlSplatRaster {
  public:
   GlSplatRaster();  // needs a current context; the layered program needs the extension
@@ -65,7 +74,7 @@ class GlSplatRaster {
                       const glm::vec3& background) const;
 
  private:
-  void begin(const SplatRasterTarget& target) const;
+  void begin(const SplatRasterTarget& target) const;  // begin_raster_target + the vertex array
   void end() const;
   Program splats_, splats_layered_, composite_blend_, composite_copy_;
   VertexArray vertex_array_;

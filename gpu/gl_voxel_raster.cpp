@@ -1,0 +1,69 @@
+#include "gpu/gl_voxel_raster.hpp"
+
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/shaders/sh_color.glsl.hpp"
+#include "gpu/shaders/voxel_raster.frag.glsl.hpp"
+#include "gpu/shaders/voxel_raster.vert.glsl.hpp"
+#include "util/error.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+Program voxel_program() {
+  const std::string vertex = std::string(sh_color_glsl) + voxel_raster_vert_glsl;
+  return Program("voxel raster", {{GL_VERTEX_SHADER, vertex.c_str()}, {GL_FRAGMENT_SHADER, voxel_raster_frag_glsl}});
+}
+
+}  // namespace
+
+GlVoxelRaster::GlVoxelRaster() : program_(voxel_program()) {}
+
+void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                         const Buffer& order, const VoxelOrderRanges& ranges, const SplatRasterTarget& target) const {
+  if (camera.width != target.image_size.x || camera.height != target.image_size.y)
+    throw_input_error("voxel raster: the camera is {}x{}, the target {}x{}", camera.width, camera.height,
+                      target.image_size.x, target.image_size.y);
+  const GLuint p = program_.id();
+  glProgramUniformMatrix3fv(p, program_.uniform("world_to_camera"), 1, GL_FALSE,
+                            glm::value_ptr(camera.world_to_camera));
+  glProgramUniform3fv(p, program_.uniform("camera_position"), 1, glm::value_ptr(camera.position_world));
+  glProgramUniform2f(p, program_.uniform("tan_half_fov"), camera.tan_half_fov_x(), camera.tan_half_fov_y());
+  glProgramUniform2f(p, program_.uniform("shift_ndc"), camera.shift_x_ndc, camera.shift_y_ndc);
+  glProgramUniform2i(p, program_.uniform("image_size"), camera.width, camera.height);
+  glProgramUniform2f(p, program_.uniform("viewport_origin"), float(target.viewport_origin.x),
+                     float(target.viewport_origin.y));
+  glProgramUniform3fv(p, program_.uniform("sh_origin"), 1, glm::value_ptr(sh_origin));
+  glProgramUniform1i(p, program_.uniform("sh_degree"), scene.scene().sh_degree);
+  glProgramUniform1i(p, program_.uniform("sh_stride"), sh_vec4_stride(scene.scene().sh_degree));
+  glProgramUniform1i(p, program_.uniform("samples_per_voxel"), scene.scene().samples_per_voxel);
+
+  begin_raster_target(target);
+  glBindVertexArray(vertex_array_.id());
+  scene.bind();
+  order.bind_storage(kVoxelOrder);
+  program_.use();
+  enable_front_to_back_blend();
+  const uint32_t octants = octants_in_view(camera);
+  for (int octant = 0; octant < 8; ++octant) {
+    const VoxelOrderRange& range = ranges[size_t(octant)];
+    if (!(octants & (1u << octant)) || range.count == 0) continue;
+    glProgramUniform1ui(p, program_.uniform("order_offset"), range.offset);
+    glProgramUniform1i(p, program_.uniform("octant"), octant);
+    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(range.count));
+  }
+  end_raster_target();
+  check_gl("drawing voxels");
+}
+
+void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                         const SplatRasterTarget& target) const {
+  VoxelOrderRanges ranges;
+  const uint32_t n = uint32_t(scene.size());
+  for (uint32_t octant = 0; octant < 8; ++octant) ranges[octant] = {octant * n, n};
+  draw(scene, camera, sh_origin, scene.order_buffer(), ranges, target);
+}
+
+}  // namespace lfd::gpu

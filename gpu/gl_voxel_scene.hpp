@@ -1,0 +1,63 @@
+#pragma once
+// A sparse-voxel scene (voxel/voxel_scene.hpp) uploaded once into shader storage buffers for
+// the GL voxel raster (issue #13, V2LF's GPU half). std430, vec4-packed:
+//   binding kVoxelBoxes      vec4 boxes[]       (min corner x, y, z, edge length)
+//   binding kVoxelDensities  vec4 densities[2v] raw corner densities 0-3, 4-7 (corner i at
+//                            (x, y, z) = bits (2, 1, 0) of i, as VoxelScene)
+//   binding kSceneSh (3)     vec4 sh[]          sh_vec4_stride() vec4s per voxel, the layout of
+//                            GlScene's SH so gpu/shaders/sh_color.glsl reads both
+//   binding kVoxelOrder      uint order[8 v]    the eight front-to-back orders (voxel/ray_order.hpp),
+//                            order o at [o v, (o + 1) v): octant o's rays visit voxels in it
+// The eight orders depend on the scene only (not the camera), so they are sorted once here on
+// the CPU and kept there too: V2LF groups each order by chunk per frame (gpu/gl_voxel_renderer.hpp).
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/gl_context.hpp"
+#include "gpu/gl_objects.hpp"
+#include "render/camera.hpp"
+#include "voxel/voxel_scene.hpp"
+
+namespace lfd::gpu {
+
+constexpr GLuint kVoxelBoxes = 0;
+constexpr GLuint kVoxelDensities = 1;
+constexpr GLuint kVoxelOrder = 2;
+// SH at kSceneSh (3), shared with GlScene.
+
+// GPU bytes per voxel of the scene buffers at `sh_degree`.
+size_t voxel_scene_bytes_per_voxel(int sh_degree);
+
+// Throws InputError (one line with the numbers) when `voxels` exceed 32-bit indices, a storage
+// buffer would pass GL_MAX_SHADER_STORAGE_BLOCK_SIZE, or the scene the free memory the driver reports.
+void check_voxel_scene_fits(size_t voxels, int sh_degree, const GlInfo& info);
+
+class GlVoxelScene {
+ public:
+  // Needs a current context; `scene` is copied (the GPU buffers and the CPU-side orders).
+  GlVoxelScene(const voxel::VoxelScene& scene, const GlInfo& info);
+
+  const voxel::VoxelScene& scene() const { return scene_; }
+  size_t size() const { return scene_.size(); }
+  size_t bytes() const;
+  // Octant o's front-to-back order (voxel indices), as uploaded.
+  const std::vector<uint32_t>& order(int octant) const { return orders_[size_t(octant)]; }
+  const Buffer& order_buffer() const { return order_; }
+  // Binds boxes, densities and SH at their bindings.
+  void bind() const;
+
+ private:
+  voxel::VoxelScene scene_;
+  std::array<std::vector<uint32_t>, 8> orders_;
+  Buffer boxes_, densities_, sh_, order_;
+};
+
+// The octants whose rays pass through some pixel of `camera`'s image (a superset: per axis,
+// the signs the world direction's component takes at the image's corner pixels, since it is
+// linear in the pixel position), as a bit mask (bit o = octant o).
+uint32_t octants_in_view(const render::Camera& camera);
+
+}  // namespace lfd::gpu
