@@ -6,6 +6,7 @@
 namespace lfd::apps {
 
 int RunBenchRender(int argc, char** argv);  // apps/bench_render.cpp (also renderer-only)
+int RunBenchVoxels(int argc, char** argv);  // apps/bench_voxels.cpp (also renderer-only)
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
 int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 

@@ -20,7 +20,7 @@ declare -A ALLOWED=(
   [validate]="util calib/display render interlace calib"
   [report]="util calib/display render interlace calib validate"
   [pipeline]="util calib/display render interlace gpu calib validate report"
-  [bench]="util calib/display render interlace gpu"
+  [bench]="util calib/display render voxel interlace gpu"
   [apps]="util calib/display calib/device render voxel interlace gpu viewer bench calib calib/live validate report pipeline"
 )
 
