@@ -1,6 +1,6 @@
 // `lfd render --backend gl` through the real program: the GL quilt is the CPU's (PSNR >= 40 dB)
 // for each plane storage, including f16 (RGBA16F planes), which exists only on the GPU; asking
-// the CPU for f16 is one line and exit 2, with nothing written.
+// the CPU for f16 is one line and exit 2, with nothing written. Voxel scenes likewise.
 #include <filesystem>
 #include <sstream>
 #include <string>
@@ -53,6 +53,24 @@ TEST_F(RenderBackendCli, F16OnTheCpuIsOneLineAndExit2) {
   EXPECT_FALSE(std::getline(lines, second)) << r.output;
   EXPECT_NE(first.find("--precision"), std::string::npos) << first;
   EXPECT_FALSE(fs::exists(dir_ / "cpu16_qs3x2a1.5.png"));
+}
+
+// A generated voxel scene through the real program: per-view and V2LF quilts on the GPU are the
+// CPU's (the GL voxel path, issue #13).
+TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {
+  const std::string scene = (dir_ / "scene.voxels").string();
+  ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + scene + "'").exit_code, 0);
+  for (const std::string method : {"per-view", "v2lf"}) {
+    SCOPED_TRACE(method);
+    const std::string common = "render --scene '" + scene + "' --method " + method +
+                               " --views 4 --cols 2 --rows 2 --size 48x32 --chunks 16 --precision f32 --out '";
+    const auto cpu = test::run_lfd(common + (dir_ / (method + "_cpu.png")).string() + "' --backend cpu");
+    ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+    const auto gl = test::run_lfd(common + (dir_ / (method + "_gl.png")).string() + "' --backend gl");
+    ASSERT_EQ(gl.exit_code, 0) << gl.output;
+    EXPECT_NE(gl.output.find("on the GPU"), std::string::npos) << gl.output;
+    EXPECT_GE(render::psnr(quilt(method + "_gl_qs2x2a1.5.png"), quilt(method + "_cpu_qs2x2a1.5.png")), 40.0);
+  }
 }
 
 }  // namespace
