@@ -96,6 +96,8 @@ void check_effects(const CaptureEffects& e) {
       "exposure drift", e.exposure_drift, "relative 1-sigma, 0 to 0.2");
   bad(std::isfinite(e.glare_fraction) && e.glare_fraction >= 0 && e.glare_fraction <= 0.5,
       "glare", e.glare_fraction, "fraction of pixels, 0 to 0.5");
+  bad(std::isfinite(e.colour_crosstalk) && e.colour_crosstalk >= 0 && e.colour_crosstalk < 0.25,
+      "colour crosstalk", e.colour_crosstalk, "fraction per other channel, 0 to 0.25");
   bad(e.supersample >= 1 && e.supersample <= 16, "supersample", e.supersample, "1 to 16");
 }
 
@@ -103,6 +105,11 @@ void apply_camera_effects(ImageF& image, const CameraIntrinsics& intrinsics,
                           const CaptureEffects& e) {
   if (e.exposure != 1.0)
     for (float& p : image.pixels) p *= float(e.exposure);
+  if (e.colour_crosstalk > 0 && image.channels == 3) {
+    const float x = float(e.colour_crosstalk), d = 1.0f - 2.0f * x;
+    cv::Mat m(image.height, image.width, CV_32FC3, image.pixels.data());
+    cv::transform(m, m, cv::Matx33f(d, x, x, x, d, x, x, x, d));
+  }
   if (e.blur_px > 0) {
     cv::Mat m(image.height, image.width, CV_32FC(image.channels), image.pixels.data());
     cv::GaussianBlur(m, m, cv::Size(0, 0), e.blur_px, e.blur_px, cv::BORDER_REFLECT);

@@ -18,6 +18,7 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
     drift = estimate_exposure_drift(bp);
     remove_exposure_drift(bp, drift);
   }
+  const ChannelPhasors channel_phasors(captures, options.block_px, drift);
   const cv::Size blocks = bp.blocks;
   std::vector<cv::Point2f> centres;
   for (int by = 0; by < blocks.height; ++by)
@@ -49,6 +50,7 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
       const double psi = bp.phase(bx, by);
       const double a = bp.mean.at<float>(by, bx);
       out.samples.push_back({float(p.u), float(p.v), float(psi), float(modulation)});
+      out.channels.push_back(channel_phasors.at(bx, by, psi));
       modulations.push_back(float(modulation));
       for (int k = 0; k < K; ++k) {
         const double e = bp.level[size_t(k)].at<float>(by, bx) - a;

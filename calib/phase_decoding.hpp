@@ -12,6 +12,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "calib/channel_phase.hpp"
 #include "calib/exposure_drift.hpp"
 #include "calib/patterns.hpp"
 #include "calib/registration.hpp"
@@ -35,6 +36,9 @@ struct PhaseDecodeOptions {
 
 struct DecodedPhase {
   std::vector<PhaseSample> samples;
+  // Parallel to samples: each colour channel's own phase against psi (channel_phase.hpp),
+  // for the colour-order check (colour_order.hpp).
+  std::vector<ChannelPhase> channels;
   long blocks_on_panel = 0;    // blocks whose centre maps inside the usable panel
   long blocks_clipped = 0;     // ... of which saturated in some capture
   long blocks_low_modulation = 0;

@@ -26,6 +26,10 @@ struct CaptureEffects {
   // photo's gain is exposure * (1 + exposure_drift * N(0, 1)), drawn from its seed.
   double exposure_drift = 0.0;
   double glare_fraction = 0.0;     // fraction of pixels replaced by saturated glare blobs
+  // Camera colour crosstalk: each channel also records this fraction of each other channel's
+  // light (overlapping Bayer filter passbands, demosaicking). It dilutes the per-channel phase
+  // offsets that a wrong subpixel order leaves (calib/colour_order.hpp) by about 1 - 3x.
+  double colour_crosstalk = 0.0;
   std::array<float, 3> bezel{0.03f, 0.03f, 0.035f};  // what is seen outside the panel
   int supersample = 3;             // samples per camera pixel per axis
   uint64_t seed = 1;               // noise (and glare, unless glare_seed is set)
