@@ -1,6 +1,7 @@
 // `lfd scene`: make and inspect Gaussian scenes.
 //   lfd scene generate --kind tabletop --count 30000 --seed 1 --sh-degree 1 --out demo.ply
 //   lfd scene info scene.ply [--json]
+//   lfd scene voxelize scene.ply --out scene.voxels [--level 8 | --max-voxels N] [--sh-degree D]
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -13,6 +14,7 @@
 #include "render/scene_io.hpp"
 #include "voxel/voxel_generator.hpp"
 #include "voxel/voxel_io.hpp"
+#include "voxel/voxelize.hpp"
 
 namespace lfd::apps {
 
@@ -31,6 +33,18 @@ int generate_voxels(const voxel::VoxelGeneratorOptions& options, const std::stri
   voxel::save_voxel_scene(out, scene);
   std::cout << fmt::format("wrote {} ({} voxels, levels up to {}, seed {}, SH degree {})\n", out, scene.size(),
                            options.detail_level, options.seed, scene.sh_degree);
+  return 0;
+}
+
+int voxelize(const std::string& in, const voxel::VoxelizeOptions& options, const std::string& out) {
+  const render::GaussianScene gaussians = render::load_scene(in);
+  voxel::VoxelizeReport report;
+  const voxel::VoxelScene scene = voxel::voxelize(gaussians, options, &report);
+  voxel::save_voxel_scene(out, scene);
+  std::cout << fmt::format("wrote {} ({} voxels from {} Gaussians, levels up to {}, {} grid points, SH degree {}, "
+                           "root {:.3f} units = inside cube * 2^{}; {} Gaussian centres outside it)\n",
+                           out, scene.size(), gaussians.size(), report.finest_level, report.grid_points,
+                           scene.sh_degree, scene.scene_extent, report.outside_levels, report.gaussians_outside);
   return 0;
 }
 
@@ -70,6 +84,7 @@ int RunScene(int argc, char** argv) {
                "Examples:\n"
                "  lfd scene generate --kind tabletop --count 30000 --seed 1 --out demo.ply\n"
                "  lfd scene generate --kind voxels --level 8 --out demo.voxels\n"
+               "  lfd scene voxelize demo.ply --level 8 --out demo.voxels\n"
                "  lfd scene info data/scenes/demo.ply --json",
                "scene"};
   app.require_subcommand(1);
@@ -99,7 +114,23 @@ int RunScene(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   inf->add_flag("--json", json, "machine-readable output");
 
+  voxel::VoxelizeOptions voxelize_options;
+  std::string voxelize_in;
+  CLI::App* vox = app.add_subcommand("voxelize", "turn a Gaussian scene into sparse voxels (.voxels)");
+  vox->add_option("file", voxelize_in, "Gaussian scene (.ply, compressed .ply, .splat, .spz)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  vox->add_option("--level", voxelize_options.max_level,
+                  "finest octree level within the inside cube (0.5-99.5% of the centres); outer levels add to it")
+      ->capture_default_str();
+  vox->add_option("--max-voxels", voxelize_options.max_voxels, "voxel budget, heaviest cells split first (0: none)")
+      ->capture_default_str();
+  vox->add_option("--sh-degree", voxelize_options.sh_degree, "SH degree 0-3 of the voxels (-1: the scene's)")
+      ->capture_default_str();
+  vox->add_option("--out", out, "output .voxels file")->required();
+
   if (auto code = parse(app, argc, argv)) return *code;
+  if (vox->parsed()) return voxelize(voxelize_in, voxelize_options, out);
   if (gen->parsed() && options.kind == "voxels") {
     voxel_options.seed = options.seed;
     voxel_options.sh_degree = options.sh_degree;

@@ -7,7 +7,6 @@
 #include "render/spherical_harmonics.hpp"
 
 namespace lfd::render {
-namespace {
 
 // Section 3.2: Sigma = R S S^T R^T of the unit quaternion (w, x, y, z).
 glm::mat3 covariance_3d(const std::array<float, 3>& scale, float modifier,
@@ -25,6 +24,8 @@ glm::mat3 covariance_3d(const std::array<float, 3>& scale, float modifier,
   const glm::mat3 M = R * S;
   return M * glm::transpose(M);
 }
+
+namespace {
 
 // Section 3.3 with the principal-point shift: the 1.3 tan(fov/2) clamp window becomes
 // [-(1 + p) tan - 0.3 tan, (1 - p) tan + 0.3 tan], i.e. the visible NDC range widened by 0.3 tan

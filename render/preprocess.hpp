@@ -41,6 +41,10 @@ struct ProjectedGaussian {
   glm::ivec2 rect_min{0}, rect_max{0};  // tile rectangle, max exclusive
 };
 
+// The 3D covariance R S S^T R^T of a Gaussian (section 3.2; scale linear, modifier multiplies
+// it, quaternion (w, x, y, z)); also what voxelization spreads each Gaussian's mass with.
+glm::mat3 covariance_3d(const std::array<float, 3>& scale, float modifier, const std::array<float, 4>& q);
+
 // `subset`: indices into the scene (empty: all). Output has one entry per input index, culled
 // Gaussians with radius_px = 0, so indices stay aligned with the input.
 std::vector<ProjectedGaussian> preprocess(const GaussianScene& scene, const Camera& camera,

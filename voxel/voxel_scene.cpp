@@ -28,6 +28,11 @@ float exp_linear_11(float x) {
   return x > 1.1f ? x : std::exp(x / 1.1f - 1.0f + kLn11);
 }
 
+float inverse_exp_linear_11(float density) {
+  constexpr float kLn11 = 0.09531017980432493f;
+  return density > 1.1f ? density : 1.1f * (std::log(density) + 1.0f - kLn11);
+}
+
 float trilinear(const std::array<float, 8>& c, const glm::vec3& t) {
   float sum = 0.0f;
   for (int i = 0; i < 8; ++i) {

@@ -45,6 +45,9 @@ struct VoxelScene {
 // SVRaster's density activation exp_linear_11: x above 1.1, else exp(x / 1.1 - 1 + ln 1.1),
 // which meets the line at x = 1.1 with the same value and slope.
 float exp_linear_11(float raw_density);
+// Its inverse: the raw density whose activation is `density` (> 0); what a density field is
+// stored as (lfd scene voxelize, SVRaster's own init).
+float inverse_exp_linear_11(float density);
 
 // Trilinear interpolation of the 8 corner values at local position `t` in [0, 1]^3.
 float trilinear(const std::array<float, 8>& corners, const glm::vec3& t);
