@@ -11,19 +11,23 @@
 namespace lfd::apps {
 
 int RunView(int argc, char** argv) {
-  CLI::App app{"Show a Gaussian scene on the display in real time: the interlaced G2LF (or per-view)\n"
-               "frame every vsync, full screen on the display's monitor, with a control window.\n"
+  CLI::App app{"Show a Gaussian scene (G2LF or per view) or a sparse-voxel scene (V2LF or per view)\n"
+               "on the display in real time: the interlaced frame every vsync, full screen on the display's\n"
+               "monitor, with a control window.\n"
                "Without the display's monitor: a simulated display in a window.\n"
                "Mouse: drag orbits, right drag pans, wheel zooms; keys: arrows, WASD, +/-, R resets,\n"
                "Esc quits; drop a scene file on a window to load it.\n"
                "Examples:\n"
                "  lfd view scene.ply --device auto\n"
                "  lfd view scene.ply --calibration visual.json --method per-view\n"
+               "  lfd view tabletop.voxels --calibration visual.json\n"
                "  lfd view scene.ply --calibration visual.json --frames 30 --screenshot panel.png --quilt q.png",
                "view"};
   viewer::ViewerOptions options;
   std::string scene, method, camera, settings, screenshot, quilt, camera_out;
-  app.add_option("scene", scene, "scene file (.ply, compressed .ply, .splat, .spz)")->required();
+  app.add_option("scene", scene,
+                 "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
+                 "svraster-webgl .ply; --method g2lf renders them with V2LF)")->required();
   DisplaySource display_source;
   display_source.add(app, "--calibration", "the display: visual.json or calibration.json");
   app.add_option("--monitor", options.monitor_prefix, "the display's monitor name prefix")->capture_default_str();

@@ -51,12 +51,54 @@ LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const calib
   panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
 
+LightFieldFrame::LightFieldFrame(const voxel::VoxelScene& scene, const calib::Calibration& calibration,
+                                 const gpu::GlInfo& info, FrameOptions options)
+    : calibration_(calibration),
+      lens_(calibration.display, calibration.correction),
+      info_(info),
+      options_(std::move(options)) {
+  replace_scene(scene);
+  panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
+}
+
+LightFieldFrame::LightFieldFrame(const ViewerScene& scene, const calib::Calibration& calibration,
+                                 const gpu::GlInfo& info, FrameOptions options)
+    : calibration_(calibration),
+      lens_(calibration.display, calibration.correction),
+      info_(info),
+      options_(std::move(options)) {
+  replace_scene(scene);
+  panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
+}
+
 LightFieldFrame::~LightFieldFrame() = default;
 
-void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
-  // Renderers hold the scene by reference: drop them first.
+void LightFieldFrame::drop_renderers() {
+  // Renderers hold their scene by reference: they go first.
   g2lf_.reset();
   per_view_.reset();
+  v2lf_.reset();
+  voxel_views_.reset();
+}
+
+void LightFieldFrame::replace_scene(const ViewerScene& scene) {
+  if (scene.voxels())
+    replace_scene(scene.voxel_scene());
+  else
+    replace_scene(scene.gaussians());
+}
+
+void LightFieldFrame::replace_scene(const voxel::VoxelScene& scene) {
+  gpu::check_voxel_scene_fits(scene.size(), scene.sh_degree, info_);  // refuses: the old scene kept
+  drop_renderers();
+  scene_.reset();
+  voxel_scene_.reset();  // the old buffers go before the new ones are allocated: a lower peak
+  scene_fit_notice_.clear();
+  voxel_scene_ = std::make_unique<gpu::GlVoxelScene>(scene, info_);
+}
+
+void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
+  drop_renderers();
   gpu::GlSceneOptions o;
   o.max_sh_degree = gpu::fitting_sh_degree(scene.size(), scene.sh_degree, info_);  // refuses: old scene kept
   o.progress = options_.upload_progress;
@@ -68,6 +110,7 @@ void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
         scene.size(), o.max_sh_degree, scene.sh_degree, mib(scene_gpu_bytes(scene.size(), o.max_sh_degree)),
         mib(scene_gpu_bytes(scene.size(), scene.sh_degree)), limit_text(info_));
   scene_.reset();  // the old buffers go before the new ones are allocated: a lower peak
+  voxel_scene_.reset();
   scene_ = std::make_unique<gpu::GlScene>(scene, info_, o);
 }
 
@@ -96,6 +139,24 @@ void LightFieldFrame::render_g2lf(const ViewerSettings& settings, const render::
   }
 }
 
+void LightFieldFrame::render_voxels(const ViewerSettings& settings, FrameReport* report) {
+  if (report) {
+    report->binning_seconds = report->planes_seconds = report->swizzle_seconds = report->raster_seconds = 0.0;
+  }
+  if (settings.method == Method::kG2lf) {
+    if (!v2lf_) v2lf_ = std::make_unique<gpu::GlV2lfRenderer>(*voxel_scene_, info_);
+    gpu::GlV2lfOptions o;
+    o.v2lf.planes = settings.g2lf;
+    o.v2lf.split_levels = 0;  // a split re-uploads the scene every frame
+    v2lf_->render_quilt(plan_.geometry, plan_.layout, o, settings.background, quilt_);
+  } else {
+    if (!voxel_views_) voxel_views_ = std::make_unique<gpu::GlVoxelViews>(*voxel_scene_);
+    voxel::VoxelRenderSettings s;
+    s.background = settings.background;
+    voxel_views_->render_quilt(plan_.geometry, plan_.layout, s, quilt_);
+  }
+}
+
 void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSettings& settings,
                              FrameReport* report) {
   plan_ = plan_frame(calibration_, camera, settings);
@@ -112,7 +173,9 @@ void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSetti
   render::RasterSettings raster;
   raster.background = settings.background;
   const bool timed = report != nullptr;
-  if (settings.method == Method::kG2lf) {
+  if (voxel_scene_) {
+    render_voxels(settings, report);
+  } else if (settings.method == Method::kG2lf) {
     render_g2lf(settings, raster, timed);
   } else {
     if (!per_view_) {
@@ -128,7 +191,10 @@ void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSetti
 
   if (!report) return;
   report->interlace_seconds = interlace_timer_.seconds();
-  if (settings.method == Method::kG2lf) {
+  if (voxel_scene_) {
+    // Stage times of the voxel path are not timed per stage; the frame time says it all.
+    report->plane_bytes = v2lf_ && settings.method == Method::kG2lf ? v2lf_->stats().plane_bytes : 0;
+  } else if (settings.method == Method::kG2lf) {
     const auto& st = g2lf_->stats();
     report->binning_seconds = st.seconds_binning;
     report->planes_seconds = st.seconds_planes;

@@ -1,6 +1,7 @@
 #pragma once
-// One frame of the viewer, all on the GPU: scene -> quilt (G2LF or per view) -> panel
-// (interlacing shader), with no CPU round trip. The same class renders in the display window
+// One frame of the viewer, all on the GPU: scene -> quilt (G2LF or per view; for a voxel scene
+// V2LF or per view, gpu/gl_v2lf.hpp and gpu/gl_voxel_views.hpp) -> panel (interlacing shader),
+// with no CPU round trip of the images. The same class renders in the display window
 // and in a headless context, which is how the viewer's test checks the window against the
 // headless render of the same camera and settings.
 #include <functional>
@@ -17,10 +18,14 @@
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_scene.hpp"
+#include "gpu/gl_v2lf.hpp"
+#include "gpu/gl_voxel_scene.hpp"
+#include "gpu/gl_voxel_views.hpp"
 #include "render/camera_json.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
 #include "viewer/control_window.hpp"
+#include "viewer/viewer_scene.hpp"
 #include "viewer/viewer_settings.hpp"
 
 namespace lfd::viewer {
@@ -53,6 +58,12 @@ class LightFieldFrame {
   // once, at the largest SH degree that fits (gpu::fitting_sh_degree).
   LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
                   const gpu::GlInfo& info, FrameOptions options = {});
+  // A voxel scene: the settings' G2LF method renders it with V2LF (the same plane options, no
+  // voxel splitting: interactive frames), per view with the exact voxel raster.
+  LightFieldFrame(const voxel::VoxelScene& scene, const calib::Calibration& calibration,
+                  const gpu::GlInfo& info, FrameOptions options = {});
+  LightFieldFrame(const ViewerScene& scene, const calib::Calibration& calibration, const gpu::GlInfo& info,
+                  FrameOptions options = {});
   ~LightFieldFrame();
 
   // Renders the quilt and the panel for `camera` with `settings`; fills `report`'s GPU stage
@@ -60,9 +71,12 @@ class LightFieldFrame {
   // RGBA32F planes that do not fit fall back to RGBA8 when those fit (fit_notice() says so).
   void render(const render::CameraSpec& camera, const ViewerSettings& settings, FrameReport* report = nullptr);
   void replace_scene(const render::GaussianScene& scene);
+  void replace_scene(const voxel::VoxelScene& scene);
+  void replace_scene(const ViewerScene& scene);
+  bool shows_voxels() const { return voxel_scene_ != nullptr; }
 
   // The SH degree the scene was uploaded at, and what was lowered to fit (empty: nothing).
-  int scene_sh_degree() const { return scene_->sh_degree(); }
+  int scene_sh_degree() const { return scene_ ? scene_->sh_degree() : voxel_scene_->scene().sh_degree; }
   const std::string& scene_fit_notice() const { return scene_fit_notice_; }
   const std::string& plane_fit_notice() const { return plane_fit_notice_; }
   const calib::LensModel& lens() const { return lens_; }
@@ -75,6 +89,8 @@ class LightFieldFrame {
 
  private:
   void render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster, bool timed);
+  void render_voxels(const ViewerSettings& settings, FrameReport* report);
+  void drop_renderers();
 
   calib::Calibration calibration_;
   calib::LensModel lens_;
@@ -84,6 +100,9 @@ class LightFieldFrame {
   std::unique_ptr<gpu::GlScene> scene_;
   std::unique_ptr<gpu::GlPerViewRenderer> per_view_;
   std::unique_ptr<gpu::GlG2lfRenderer> g2lf_;
+  std::unique_ptr<gpu::GlVoxelScene> voxel_scene_;
+  std::unique_ptr<gpu::GlVoxelViews> voxel_views_;
+  std::unique_ptr<gpu::GlV2lfRenderer> v2lf_;
   std::unique_ptr<gpu::GlInterlacer> interlacer_;
   std::optional<render::QuiltLayout> interlacer_layout_;
   FramePlan plan_;

@@ -143,13 +143,13 @@ void report_fit(const std::string& notice) {
 
 int run_viewer(const ViewerOptions& options) {
   const auto& d = options.calibration.display;
-  render::GaussianScene scene = render::load_scene(options.scene_path);
+  ViewerScene scene = load_viewer_scene(options.scene_path);
   const std::filesystem::path settings_path =
       options.settings_path.value_or(settings_path_for_display(options.display_name));
   ViewerSettings settings = load_settings(settings_path, ViewerSettings{});
   if (options.method) settings.method = *options.method;
   const render::CameraSpec start =
-      options.camera_path ? render::read_camera_json(*options.camera_path) : render::frame_scene(scene);
+      options.camera_path ? render::read_camera_json(*options.camera_path) : scene.framing();
   OrbitCamera camera(start);
 
   const gpu::GlfwSession session("lfd view needs a desktop session (X11 or Wayland) to open its windows");
@@ -216,12 +216,12 @@ int run_viewer(const ViewerOptions& options) {
     input.events = InputEvents{};
     if (input.dropped) {
       try {
-        scene = render::load_scene(*input.dropped);
+        scene = load_viewer_scene(*input.dropped);
         display.make_current();
         frame.replace_scene(scene);
         report_fit(frame.scene_fit_notice());
-        camera = OrbitCamera(render::frame_scene(scene));
-        std::cout << fmt::format("loaded {} ({} Gaussians)\n", *input.dropped, scene.size());
+        camera = OrbitCamera(scene.framing());
+        std::cout << fmt::format("loaded {} ({})\n", *input.dropped, scene.describe());
       } catch (const InputError& e) {
         std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
       }
