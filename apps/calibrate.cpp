@@ -58,6 +58,13 @@ int RunCalibrate(int argc, char** argv) {
                  "the display's view cone in degrees, known by other means: needed with one "
                  "camera position (two distances measure it)")
       ->check(CLI::Range(0.1, 179.9));
+  app.add_option("--flip-subp", options.flip_subp,
+                 "the panel's subpixel order, if not the description's: 0 RGB stripes, 1 BGR "
+                 "stripes (visual.json flipSubp; drops Gen3 subpixel cells); the photos check it")
+      ->check(CLI::Range(0, 1));
+  app.add_flag("--estimate-colour-order", options.colour_order.estimate,
+               "adopt the subpixel layout the photos favour (RGB, BGR, the description's cells) "
+               "instead of refusing a description they contradict");
   app.add_flag("--force", force, "replace existing outputs (a .bak is kept)");
   app.add_flag("--live", live, "show patterns on the display and grab camera frames");
   app.add_option("--monitor", monitor,
@@ -149,6 +156,8 @@ int RunCalibrate(int argc, char** argv) {
     outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   }
   for (const auto& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
+  if (!outcome.colour_order.photos_disagree && !outcome.colour_order.finding.empty())
+    std::cerr << outcome.colour_order.finding << "\n";
   if (!report_dir.empty())
     report::write_calibration_report(outcome, report_dir, reference ? &*reference : nullptr);
   calib::enforce_gates(outcome);

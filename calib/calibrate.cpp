@@ -62,6 +62,7 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
 
   const LensShift shift(set.nominal);
   std::vector<PositionData> data;
+  std::vector<DecodedPhase> phases;
   for (size_t i = 0; i < positions.size(); ++i) {
     const PositionContext ctx{set, roles, options, shift, positions[i], boards[i], out.camera,
                               out.warnings};
@@ -71,7 +72,7 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
     check_exposure(ctx, state);
     identify_patterns(ctx, state);
     refine_with_fringes(ctx, state);
-    const DecodedPhase phase = decode_position_phase(ctx, state);
+    const DecodedPhase& phase = phases.emplace_back(decode_position_phase(ctx, state));
     std::optional<Eigen::Vector3d> known;
     if (!options.known_camera_positions_m.empty()) known = options.known_camera_positions_m[i];
     data.push_back(position_data(ctx, state, phase, out.camera_self_calibrated, known));
@@ -86,9 +87,12 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
               "known; refused unless it is given (--view-cone) or the photos come from 2-3 "
               "positions at different distances");
 
-  solve_display(set, data, options.solver, out);
-  out.calibration = assemble_calibration(set, positions, options, out);
+  const PatternSet solved = check_colour_order(set, options, phases, data, out);
+  phases.clear();
+  solve_display(solved, data, options.solver, out);
+  out.calibration = assemble_calibration(solved, positions, options, out);
   out.gate_failures = options.gates.evaluate(out.calibration, out.solve);
+  if (out.colour_order.refused()) out.gate_failures.push_back(out.colour_order.finding);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
@@ -139,6 +143,7 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
                  {"position_rms_periods", o.solve.position_rms},
                  {"position_rms_ratios", o.solve.position_rms_ratio},
                  {"stages", o.solve.report}};
+  j["colour_order"] = to_json(o.colour_order);
   j["warnings"] = o.warnings;
   j["gate_failures"] = o.gate_failures;
   j["seconds"] = o.seconds;

@@ -16,6 +16,7 @@
 
 #include "calib/camera_model.hpp"
 #include "calib/capture_io.hpp"
+#include "calib/colour_order.hpp"
 #include "calib/display/calibration_file.hpp"
 #include "calib/lens_solver.hpp"
 #include "calib/patterns.hpp"
@@ -36,6 +37,10 @@ struct CalibrateOptions {
   // result where the photos cannot measure it (one position) and passes the cone gate. A
   // template whose view_cone_measured_deg is set counts as known too.
   std::optional<double> view_cone_deg;
+  // The panel's subpixel order, when not the pattern set's (`--flip-subp`): the classic stride,
+  // BGR (true) or RGB (false). The colour-order check compares it with the photos.
+  std::optional<bool> flip_subp;
+  ColourOrderOptions colour_order;  // .estimate: `--estimate-colour-order`
   double max_motion_px = 3.0;          // corner markers may move this much between captures
                                        // (or 0.5 % of the image diagonal, if more)
   double max_clipped_fraction = 0.25;  // of the screen saturated in one capture
@@ -67,6 +72,7 @@ struct CalibrationOutcome {
   CameraIntrinsics camera;
   bool camera_self_calibrated = false;
   std::vector<PositionReport> positions;
+  ColourOrderCheck colour_order;
   std::vector<std::string> warnings;
   std::vector<std::string> gate_failures;  // empty when the calibration passed
   double seconds = 0;

@@ -381,6 +381,24 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
   return pd;
 }
 
+PatternSet check_colour_order(const PatternSet& set, const CalibrateOptions& options,
+                              const std::vector<DecodedPhase>& phases,
+                              std::vector<PositionData>& data, CalibrationOutcome& out) {
+  const DisplayCalibration& drawn = set.nominal.display;
+  SubpixelLayout given = SubpixelLayout::of(drawn);
+  if (options.flip_subp) given = {false, *options.flip_subp};
+  std::vector<const DecodedPhase*> positions;
+  for (const DecodedPhase& p : phases) positions.push_back(&p);
+  out.colour_order = compare_subpixel_layouts(drawn, given, positions, options.colour_order);
+  const ColourOrderCheck& check = out.colour_order;
+  if (check.photos_disagree && !check.refused()) out.warnings.push_back(check.finding);
+  for (size_t i = 0; i < data.size() && i < phases.size(); ++i)
+    correct_for_layout(check, drawn, phases[i], data[i].samples);
+  PatternSet solved = set;
+  solved.nominal.display = check.adopted.apply(drawn);
+  return solved;
+}
+
 void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
                    const SolverOptions& options, CalibrationOutcome& out) {
   std::vector<PhasePlane> planes;

@@ -12,9 +12,10 @@
 //   7. decode_position_phase  the K-step phase, with its own checks
 //   8. position_data          the samples and the camera prior for the solver
 //   then:
-//   9. solve_display          coarse start + one Ceres problem (lens_solver.hpp)
-//  10. assemble_calibration   the calibration.json content from the solution
-//  11. QualityGates::evaluate (quality_gates.hpp)
+//   9. check_colour_order     each channel's phase against the subpixel layouts (colour_order.hpp)
+//  10. solve_display          coarse start + one Ceres problem (lens_solver.hpp)
+//  11. assemble_calibration   the calibration.json content from the solution
+//  12. QualityGates::evaluate (quality_gates.hpp), and the colour-order check's refusal
 #include <optional>
 #include <string>
 #include <vector>
@@ -96,10 +97,16 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
                            const DecodedPhase& phase, bool camera_self_calibrated,
                            const std::optional<Eigen::Vector3d>& known_camera_m);
 
-// 9. Sets outcome.coarse, outcome.solve and the positions' refined cameras and residuals.
+// 9. Sets outcome.colour_order; re-decodes `data`'s samples for the adopted layout (the
+// given one, or with options.colour_order.estimate the one the photos favour) and returns the
+// pattern set with that layout, which the solve and the calibration carry.
+PatternSet check_colour_order(const PatternSet& set, const CalibrateOptions& options,
+                              const std::vector<DecodedPhase>& phases,
+                              std::vector<PositionData>& data, CalibrationOutcome& outcome);
+// 10. Sets outcome.coarse, outcome.solve and the positions' refined cameras and residuals.
 void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
                    const SolverOptions& options, CalibrationOutcome& outcome);
-// 10.
+// 11.
 Calibration assemble_calibration(const PatternSet& set,
                                  const std::vector<PositionCaptures>& positions,
                                  const CalibrateOptions& options,
