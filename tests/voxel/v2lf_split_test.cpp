@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <utility>
 
 #include "render/image_metrics.hpp"
 #include "voxel/plane_lowpass.hpp"
@@ -171,6 +172,39 @@ TEST(PlaneLowpass, KeepsAUniformImageAndSpreadsAPoint) {
   EXPECT_LT(centre, 1.25f);
   EXPECT_GT(beside, 0.25f);
   EXPECT_GT(centre, beside);
+}
+
+// The filter works only on the box around the non-empty texels; the result must be the
+// whole-plane filter's: a direct 2D sum with clamped edges.
+TEST(PlaneLowpass, MatchesTheWholePlaneFilterOnASparsePlane) {
+  render::RasterImage img;
+  img.width = 40;
+  img.height = 30;
+  img.rgb.assign(40 * 30 * 3, 0.0f);
+  img.transmittance.assign(40 * 30, 1.0f);
+  for (auto [x, y] : {std::pair{12, 9}, std::pair{14, 11}, std::pair{39, 10}}) {
+    img.rgb[3 * (y * 40 + x) + 1] = 0.7f;
+    img.transmittance[y * 40 + x] = 0.2f;
+  }
+  const render::RasterImage in = img;
+  const float variance = 1.7f;
+  gaussian_lowpass(img, variance);
+  const int r = int(std::ceil(3.0f * std::sqrt(variance)));
+  double norm = 0.0;
+  for (int k = -r; k <= r; ++k) norm += std::exp(-0.5 * k * k / variance);
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      double g = 0.0, t = 0.0;
+      for (int j = -r; j <= r; ++j)
+        for (int i = -r; i <= r; ++i) {
+          const size_t q = size_t(std::clamp(y + j, 0, 29) * 40 + std::clamp(x + i, 0, 39));
+          const double w = std::exp(-0.5 * (i * i + j * j) / variance) / (norm * norm);
+          g += w * in.rgb[3 * q + 1];
+          t += w * in.transmittance[q];
+        }
+      ASSERT_NEAR(img.rgb[3 * (y * 40 + x) + 1], g, 1e-5) << x << "," << y;
+      ASSERT_NEAR(img.transmittance[size_t(y * 40 + x)], t, 1e-5) << x << "," << y;
+    }
 }
 
 TEST(PlaneLowpass, BringsV2lfCloserToTheSupersampledQuilt) {
