@@ -60,6 +60,11 @@ int RunBenchCalibration(int argc, char** argv) {
   app.add_flag("--solver-without-vertical-parallax", o.solver_without_vertical_parallax,
                "diagnostic: the solver models the horizontal offset alone (the captures keep "
                "the vertical parallax)");
+  app.add_flag("--solver-without-cover", o.solver_without_cover,
+               "diagnostic: register and solve as if the panel were bare (the captures keep "
+               "the family's acrylic block or cover glass)");
+  app.add_flag("--bare-panels", o.bare_panels,
+               "diagnostic: units without a cover layer (figures before the cover was modelled)");
   app.add_flag("--show-poses", show_poses,
                "diagnostic: print each position's camera error (registration, refined)");
   if (auto code = parse(app, argc, argv)) return *code;

@@ -4,6 +4,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/display/calibration_file.hpp"
+#include "calib/display/cover_layer.hpp"
 #include "calib/patterns.hpp"
 
 namespace lfd::apps {
@@ -33,10 +34,30 @@ int RunPatterns(int argc, char** argv) {
                  "ChArUco squares along the short side of the panel")
       ->capture_default_str()
       ->check(CLI::Range(3, 20));
+  std::optional<double> cover_thickness_m, cover_index;
+  app.add_option("--cover-thickness", cover_thickness_m,
+                 "acrylic block / cover glass in front of the lenses, metres (default: the "
+                 "display's calibration.json, else its family's; 0: a bare panel)")
+      ->check(CLI::Range(0.0, 0.2));
+  app.add_option("--cover-index", cover_index, "the cover's refractive index")
+      ->check(CLI::Range(1.0, 3.0));
   app.add_flag("--force", force, "replace existing patterns");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration nominal = display_source.load();
+  calib::Calibration nominal = display_source.load();
+  // visual.json cannot say what covers the lenses: the family's block unless told.
+  auto& cover = nominal.display.cover;
+  std::string cover_source = "the display file";
+  if (!cover.present() && !cover_thickness_m) {
+    const calib::CoverDefault family = calib::cover_layer_for_family(nominal.display);
+    cover = family.cover;
+    cover_source = "default of the family " + family.family;
+  }
+  if (cover_thickness_m) cover.thickness_m = *cover_thickness_m;
+  if (cover_index) cover.refractive_index = *cover_index;
+  if (cover_thickness_m || cover_index) cover_source = "given";
+  std::printf("cover layer: %.4g m at n = %.3g (%s)\n", cover.thickness_m,
+              cover.refractive_index, cover_source.c_str());
   const calib::PatternSet set = calib::plan_patterns(nominal, options);
   calib::write_pattern_set(out_dir, set, force);
   std::printf("wrote %zu patterns (%dx%d) and manifest.json to %s/patterns\n", set.patterns.size(),

@@ -81,8 +81,9 @@ LensShift::LensShift(const Calibration& nominal)
 
 double LensShift::periods(cv::Point2d px, const Eigen::Vector3d& camera) const {
   const Eigen::Vector3d p = uv_to_display_m(display_, panel_px_to_uv(display_, px));
-  const double f_seen = seen_fraction(camera.x() - p.x(), camera.y() - p.y(), camera.z() - p.z(),
-                                      lens_.line_tilt(), display_.view_cone_deg);
+  const double f_seen =
+      seen_fraction_through_cover(camera.x() - p.x(), camera.y() - p.y(), camera.z() - p.z(),
+                                  display_.cover, lens_.line_tilt(), display_.view_cone_deg);
   return lens_content_shift(f_seen, display_.inv_view);
 }
 

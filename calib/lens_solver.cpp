@@ -32,8 +32,10 @@ struct DisplayConstants {
   double width_m, height_m;
   double sign;  // s = +1 with invView, -1 without (DESIGN section 5 step 2)
   bool vertical_parallax;  // false: the model of horizontal offsets only (for comparison)
+  CoverLayer cover;        // held at the nominal's value (docs/calibration.md, "The cover layer")
   static DisplayConstants of(const DisplayCalibration& d, bool vertical_parallax) {
-    return {d.geometry(), d.width_m(), d.height_m(), d.inv_view ? 1.0 : -1.0, vertical_parallax};
+    return {d.geometry(), d.width_m(), d.height_m(), d.inv_view ? 1.0 : -1.0, vertical_parallax,
+            d.cover};
   }
   // Px, Py of a panel point at screen (u, v), display frame (metres, origin at the screen
   // centre, y up as v).
@@ -43,8 +45,8 @@ struct DisplayConstants {
   template <typename T>
   T seen(const T* cam, double u, double v, const T& tilt, const T& view_cone_deg) const {
     const T dy = vertical_parallax ? T(cam[1] - T(panel_y_m(v))) : T(0.0);
-    return seen_fraction(T(cam[0] - T(panel_x_m(u))), dy, cam[2], line_tilt(geometry, tilt),
-                         view_cone_deg);
+    return seen_fraction_through_cover(T(cam[0] - T(panel_x_m(u))), dy, cam[2], cover,
+                                       line_tilt(geometry, tilt), view_cone_deg);
   }
 };
 

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calib/charuco_detection.hpp"
+#include "calib/display/cover_rays.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -189,6 +190,25 @@ Registration::Registration(const BoardDetection& board, const PatternSet& set,
     }
   cv::solvePnP(obj_in, img_in, K, D, rvec_, tvec_, false, cv::SOLVEPNP_IPPE);
   cv::solvePnPRefineLM(obj_in, img_in, K, D, rvec_, tvec_);
+  if (display_.cover.present()) {
+    // The board is seen through the cover: each corner where its light leaves the cover's
+    // front face toward the camera, which depends on where the camera is. The planar fit
+    // above is the pose relative to the (paraxially) apparent panel; a few fixed-point steps
+    // (exit points from the pose, pose from the exit points) give the pose in the display
+    // frame, and the part of the refraction no pose can mimic stays out of it.
+    const std::vector<cv::Point3f> on_panel = obj_in;
+    for (int step = 0; step < 4; ++step) {
+      cv::Matx33d R;
+      cv::Rodrigues(rvec_, R);
+      const cv::Vec3d c = -(R.t() * tvec_);
+      for (size_t i = 0; i < on_panel.size(); ++i) {
+        const Point3 e = cover_exit_point({on_panel[i].x, on_panel[i].y, 0.0},
+                                          {c[0], c[1], c[2]}, display_.cover);
+        obj_in[i] = cv::Point3f(float(e.x), float(e.y), float(e.z));
+      }
+      cv::solvePnPRefineLM(obj_in, img_in, K, D, rvec_, tvec_);
+    }
+  }
   std::vector<cv::Point2f> reproj;
   cv::projectPoints(obj_in, rvec_, tvec_, K, D, reproj);
   double sum = 0;
@@ -217,18 +237,23 @@ std::vector<ScreenUV> Registration::image_to_panel_uv(
   out.reserve(normalized.size());
   for (const auto& p : normalized) {
     const cv::Vec3d ray = Rt * cv::Vec3d(p.x, p.y, 1.0);
-    const double t = -centre[2] / ray[2];  // the panel is the plane z = 0
-    const cv::Vec3d m = centre + t * ray;
-    out.push_back({m[0] / display_.width_m() + 0.5, m[1] / display_.height_m() + 0.5});
+    // The panel is the plane z = 0, behind the cover (if any): the refracted ray meets it.
+    const PanelHit m = panel_hit_through_cover({centre[0], centre[1], centre[2]},
+                                               {ray[0], ray[1], ray[2]}, display_.cover);
+    out.push_back({m.x / display_.width_m() + 0.5, m.y / display_.height_m() + 0.5});
   }
   return out;
 }
 
 std::vector<cv::Point2d> Registration::uv_to_image(const std::vector<ScreenUV>& uv) const {
+  cv::Matx33d R;
+  cv::Rodrigues(rvec_, R);
+  const cv::Vec3d c = -(R.t() * tvec_);
   std::vector<cv::Point3d> objects;
   for (const auto& p : uv) {
     const Eigen::Vector3d m = uv_to_display_m(display_, p);
-    objects.emplace_back(m.x(), m.y(), 0.0);
+    const Point3 e = cover_exit_point({m.x(), m.y(), 0.0}, {c[0], c[1], c[2]}, display_.cover);
+    objects.emplace_back(e.x, e.y, e.z);
   }
   std::vector<cv::Point2d> out;
   if (!objects.empty())

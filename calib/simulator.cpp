@@ -7,6 +7,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "calib/camera_effects.hpp"
+#include "calib/display/cover_rays.hpp"
 #include "calib/display/lens_optics.hpp"
 #include "util/error.hpp"
 
@@ -57,13 +58,12 @@ std::array<float, 3> DisplaySimulator::radiance(const ImageF& panel, const Eigen
                                                 const Eigen::Vector3d& eye,
                                                 double psf_sigma_phase) const {
   check_panel_size(lens_, panel);
-  const double dz = eye.z() - on_panel.z();
-  if (!(dz > 0)) return {0.0f, 0.0f, 0.0f};  // the lenses emit toward z > 0 only
   const auto& c = lens_.calibration();
   const double u = on_panel.x() / c.width_m() + 0.5;
   const double v = on_panel.y() / c.height_m() + 0.5;
   const LensOptics optics(lens_, panel, cached_kernel(lens_, psf_sigma_phase));
-  return optics.seen(u, v, (eye.x() - on_panel.x()) / dz, (eye.y() - on_panel.y()) / dz);
+  const Eigen::Vector3d d = eye - on_panel;
+  return optics.seen_toward(u, v, d.x(), d.y(), d.z());
 }
 
 ImageF DisplaySimulator::capture(const ImageF& panel, const PhysicalCamera& camera,
@@ -72,10 +72,12 @@ ImageF DisplaySimulator::capture(const ImageF& panel, const PhysicalCamera& came
   check_effects(effects);
   const CameraIntrinsics& k = camera.intrinsics();
   const Eigen::Vector3d c = camera.position();
-  if (!(c.z() > 0))
-    throw_input_error("camera: position: z = {} m; the camera must be in front of the panel (z > 0)",
-                      c.z());
   const auto& cal = lens_.calibration();
+  const CoverLayer& cover = cal.cover;
+  if (!(c.z() > cover.thickness_m))
+    throw_input_error(
+        "camera: position: z = {} m; the camera must be in front of the panel and its cover "
+        "(z > {} m)", c.z(), cover.thickness_m);
   const double width_m = cal.width_m(), height_m = cal.height_m();
   const PhaseKernel kernel = LensOptics::make_kernel(lens_, effects.psf_sigma_phase);
   const LensOptics optics(lens_, panel, kernel);
@@ -116,13 +118,15 @@ ImageF DisplaySimulator::capture(const ImageF& panel, const PhysicalCamera& came
           }
           const Eigen::Vector3d dir = to_world * Eigen::Vector3d(xn, yn, 1.0);
           std::array<float, 3> seen = effects.bezel;
-          // The ray meets the panel plane z = 0 only if it travels toward it.
+          // The ray meets the panel plane z = 0 only if it travels toward it. It enters the
+          // cover at z = t and crosses it at the steeper in-slab angle (Snell at the flat
+          // face keeps the azimuth): the exact ray, traced from the camera's side.
           if (dir.z() < 0) {
-            const double t = -c.z() / dir.z();
-            const double px = c.x() + t * dir.x(), py = c.y() + t * dir.y();
-            const double u = px / width_m + 0.5, v = py / height_m + 0.5;
+            const PanelHit hit = panel_hit_through_cover({c.x(), c.y(), c.z()},
+                                                         {dir.x(), dir.y(), dir.z()}, cover);
+            const double u = hit.x / width_m + 0.5, v = hit.y / height_m + 0.5;
             if (u >= 0 && u <= 1 && v >= 0 && v <= 1)
-              seen = optics.seen(u, v, (c.x() - px) / c.z(), (c.y() - py) / c.z());
+              seen = optics.seen(u, v, hit.tan_x, hit.tan_y);
           }
           for (int ch = 0; ch < 3; ++ch) sum[ch] += seen[ch];
         }

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "calib/calibrate.hpp"
+#include "calib/display/cover_layer.hpp"
 #include "calib/display/visual_json.hpp"
 #include "pipeline/capture_cache.hpp"
 #include "util/error.hpp"
@@ -82,14 +83,15 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
   std::vector<CalibrationBenchmarkRow> rows;
   for (const auto& d : benchmark_displays()) {
     if (!o.only.empty() && d.label.find(o.only) == std::string::npos) continue;
-    const auto real = calib::read_visual_json(o.data_dir / "calibrations" / d.file);
+    auto real = calib::read_visual_json(o.data_dir / "calibrations" / d.file);
+    if (!o.bare_panels) real.cover = calib::cover_layer_for_family(real).cover;
     for (int seed = 1; seed <= o.seeds; ++seed) {
       calib::SyntheticUnitOptions so;
       so.seed = uint64_t(seed);
       const calib::SyntheticUnit unit = calib::make_synthetic_unit(real, so);
       calib::PatternOptions po;
       po.board_squares_short = o.board_squares;
-      const calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
+      calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
       calib::CaptureRig rig = calib::make_capture_rig(unit.truth.display, o.width_px,
                                                       o.positions, false, uint64_t(seed), o.layout);
       const bool above_below = o.layout == calib::RigLayout::kAboveBelow;
@@ -114,8 +116,15 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
           o.width_px, o.positions, o.supersample, set.patterns.size());
       const std::string drift_key =
           o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
-      const auto captures = cached_captures(o.cache_dir, key + drift_key, set, unit.truth, rig);
+      const calib::CoverLayer& cover = unit.truth.display.cover;
+      const std::string cover_key =
+          cover.present() ? fmt::format("-cover{}n{}", cover.thickness_m, cover.refractive_index)
+                          : "";
+      const auto captures =
+          cached_captures(o.cache_dir, key + drift_key + cover_key, set, unit.truth, rig);
       row.simulate_s = seconds_since(t0);
+      // Registration and the solver read the cover from the nominal description.
+      if (o.solver_without_cover) set.nominal.display.cover = calib::CoverLayer{};
 
       calib::CalibrateOptions options;
       options.camera = rig.intrinsics;

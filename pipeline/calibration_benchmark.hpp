@@ -50,6 +50,11 @@ struct CalibrationBenchmarkOptions {
   // Diagnostic: solve with f_seen of the horizontal offset alone (captures keep the vertical
   // parallax), to measure what leaving it out costs.
   bool solver_without_vertical_parallax = false;
+  // The units carry their family's cover layer (calib/display/cover_layer.hpp) unless
+  // `bare_panels`; `solver_without_cover` registers and solves as if the panel were bare
+  // (photos keep the cover), to measure what ignoring it costs.
+  bool bare_panels = false;
+  bool solver_without_cover = false;
   // Throws InputError("calibration benchmark: <field>: ...") for values out of range.
   void check() const;
 };

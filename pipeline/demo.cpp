@@ -186,8 +186,9 @@ std::filesystem::path run_demo(const DemoOptions& o) {
       const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(fov, cw, ch), pose);
       // Which view a viewer there should see (DESIGN section 4: f_seen at the panel centre).
       const double f_seen =
-          calib::seen_fraction(pose.position_m.x(), pose.position_m.y(), pose.position_m.z(),
-                               calib::LensModel(d).line_tilt(), d.view_cone_deg);
+          calib::seen_fraction_through_cover(pose.position_m.x(), pose.position_m.y(),
+                                             pose.position_m.z(), d.cover,
+                                             calib::LensModel(d).line_tilt(), d.view_cone_deg);
       report::DemoCapture cap;
       cap.name = name;
       cap.angle_deg = theta * 180.0 / std::numbers::pi;

@@ -64,8 +64,9 @@ std::vector<HeightSample> seen_down_the_screen(const calib::Calibration& truth,
       const auto w = simulator.radiance(white, p, eye_m, psf);
       for (int ch = 0; ch < 3; ++ch) seen += std::complex<double>(c[ch] - 0.5 * w[ch], s[ch] - 0.5 * w[ch]);
       const Eigen::Vector3d to_eye = eye_m - p;
-      const double f = calib::seen_fraction(to_eye.x(), to_eye.y(), to_eye.z(), lens.line_tilt(),
-                                            d.view_cone_deg);
+      const double f = calib::seen_fraction_through_cover(to_eye.x(), to_eye.y(), to_eye.z(),
+                                                          d.cover, lens.line_tilt(),
+                                                          d.view_cone_deg);
       predicted += std::polar(1.0, kTwoPi * f);
     }
     out[size_t(j)] = {y, fraction_of(seen), fraction_of(predicted)};

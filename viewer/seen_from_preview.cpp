@@ -18,11 +18,10 @@ namespace {
 // plus line_tilt times vertical) decides which view is seen.
 std::array<float, 3> light_toward_eye(const calib::LensOptics& optics, double u, double v, const glm::dvec3& on_panel,
                                       const glm::dvec3& eye) {
-  const double dz = eye.z - on_panel.z;
-  if (!(dz > 0)) return {0.0f, 0.0f, 0.0f};  // the lenses emit toward z > 0 only
-  const double tan_x = (eye.x - on_panel.x) / dz, tan_y = (eye.y - on_panel.y) / dz;
-  // Both directions: a slanted lens shows an eye above or below the point another view.
-  return optics.seen(u, v, tan_x, tan_y);
+  // Both directions: a slanted lens shows an eye above or below the point another view; and
+  // through the display's cover layer the refracted one.
+  const glm::dvec3 d = eye - on_panel;
+  return optics.seen_toward(u, v, d.x, d.y, d.z);
 }
 
 // For each of `cells` preview cells over `pixels` panel pixels: at most `most` panel pixels of

@@ -55,6 +55,18 @@ Calibration parse_calibration(const std::string& text, const std::string& name) 
       c.view_cone_nominal_deg = c.display.view_cone_deg;
     c.display.view_cone_deg = *c.view_cone_measured_deg;
   }
+  if (root.contains("cover") && !root["cover"].is_null()) {
+    const auto& cover = root["cover"];
+    require_field(cover.is_object(), name, "cover", "is not an object");
+    c.display.cover.thickness_m =
+        optional_number(cover, "thickness_m", name + ": cover").value_or(0.0);
+    c.display.cover.refractive_index =
+        optional_number(cover, "refractive_index", name + ": cover").value_or(1.49);
+    require_field(c.display.cover.thickness_m >= 0 && c.display.cover.thickness_m < 0.2, name,
+                  "cover.thickness_m", "must be in [0, 0.2) metres");
+    require_field(c.display.cover.refractive_index >= 1 && c.display.cover.refractive_index < 3,
+                  name, "cover.refractive_index", "must be in [1, 3)");
+  }
   c.phase_blur_sigma = optional_number(root, "phase_blur_sigma", name);
   if (c.phase_blur_sigma)
     require_field(*c.phase_blur_sigma >= 0 && *c.phase_blur_sigma < 0.5, name,
@@ -113,6 +125,11 @@ nlohmann::ordered_json to_json(const Calibration& c) {
     root["view_cone_nominal_deg"] = *c.view_cone_nominal_deg;
   else if (c.view_cone_measured_deg && c.display.view_cone_deg != *c.view_cone_measured_deg)
     root["view_cone_nominal_deg"] = c.display.view_cone_deg;
+  // The cover is not a visual.json field: it lives beside the display block (a bare panel
+  // writes none, so older files and their readers are unchanged).
+  if (c.display.cover.present())
+    root["cover"] = {{"thickness_m", c.display.cover.thickness_m},
+                     {"refractive_index", c.display.cover.refractive_index}};
   if (c.phase_blur_sigma) root["phase_blur_sigma"] = *c.phase_blur_sigma;
   if (!c.uncertainty.empty()) {
     ojson u = ojson::object();
@@ -144,6 +161,10 @@ void export_visual_json(const std::filesystem::path& path, const Calibration& c,
               << ": visual.json cannot hold the correction field (range " << r[0] << " .. "
               << r[1] << " lens periods); it is dropped\n";
   }
+  if (c.display.cover.present())
+    std::cerr << "warning: " << path.string() << ": visual.json cannot hold the cover layer ("
+              << c.display.cover.thickness_m << " m, n = " << c.display.cover.refractive_index
+              << "); it is dropped\n";
   // The measured cone is the cone: other tools reading the export must get it.
   DisplayCalibration display = c.display;
   if (c.view_cone_measured_deg) display.view_cone_deg = *c.view_cone_measured_deg;

@@ -6,6 +6,7 @@
 //    "view_cone_measured_deg": .., "view_cone_nominal_deg": .., "phase_blur_sigma": .. (lens periods),
 //    "uncertainty": {"pitch_lpi":..,"slope":..,"center_periods":..,"view_cone_deg":..,"correction_rms_periods":..},
 //    "residuals": {"rms_periods":..,"median_abs_periods":..,"inlier_fraction":..,"count":..},
+//    "cover": {"thickness_m":..,"refractive_index":..} (the acrylic block or cover glass; absent: bare),
 //    "recommended_views": N, "view_count_rule": "...",
 //    "provenance": {"tool":..,"created":..,"method":..,"inputs":[..]}}
 // Every field but "display" is optional. read_calibration() also accepts a plain visual.json.

@@ -27,6 +27,7 @@ LensOptics::LensOptics(const LensModel& lens, const ImageF& panel, const PhaseKe
     : lens_(lens), panel_(panel), kernel_(kernel) {
   const auto& c = lens.calibration();
   view_cone_deg_ = c.view_cone_deg;
+  cover_ = c.cover;
   pitch_periods_ = lens.pitch_periods();
   line_tilt_ = lens.line_tilt();
   has_correction_ = !lens.correction().empty();
@@ -107,6 +108,13 @@ std::array<float, 3> LensOptics::seen(double u, double v, double tan_x, double t
   if (!(u >= 0.0 && u <= 1.0 && v >= 0.0 && v <= 1.0)) return {0.0f, 0.0f, 0.0f};
   const double u_q = seen_u(u, v, seen_fraction(tan_x, tan_y));
   return {channel_emission(u_q, v, 0), channel_emission(u_q, v, 1), channel_emission(u_q, v, 2)};
+}
+
+std::array<float, 3> LensOptics::seen_toward(double u, double v, double dx, double dy,
+                                             double dz) const {
+  if (!(dz > cover_.thickness_m)) return {0.0f, 0.0f, 0.0f};  // the lenses emit toward z > 0
+  const double d = cover_seen_distance(dx, dy, dz, cover_);
+  return seen(u, v, dx / d, dy / d);
 }
 
 }  // namespace lfd::calib

@@ -24,6 +24,10 @@ class LensOptics {
   // screen point (u, v) toward a viewer in direction tan_x = dx/dz, tan_y = dy/dz (display
   // frame, y up): the vertical direction counts through the slant of the lens lines.
   std::array<float, 3> seen(double u, double v, double tan_x, double tan_y) const;
+  // The same toward a viewer at offset (dx, dy, dz) metres from the lens point (dz from the
+  // lens plane): through the calibration's cover the light arrives from the refracted
+  // direction (dx, dy) / cover_seen_distance(). Nothing for an eye at or inside the cover.
+  std::array<float, 3> seen_toward(double u, double v, double dx, double dy, double dz) const;
 
   // The view fraction a lens sends toward (tan_x, tan_y), wrapped into [0, 1): outside the
   // cone the neighbouring lens repeats the views.
@@ -38,6 +42,7 @@ class LensOptics {
   const LensModel& lens_;
   const ImageF& panel_;
   const PhaseKernel& kernel_;
+  CoverLayer cover_;
   double view_cone_deg_ = 0;
   double pitch_periods_ = 0;
   double line_tilt_ = 0;
