@@ -1,5 +1,7 @@
 // lfd patterns: the calibration patterns for a display (DESIGN section 5).
 #include <cstdio>
+#include <optional>
+#include <string>
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
