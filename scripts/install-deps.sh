@@ -16,8 +16,8 @@ PACKAGES=(
   # formats and utilities
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libpng-dev libzstd-dev zlib1g-dev
   libtbb-dev
-  # tests and benchmarks
-  libgtest-dev libgmock-dev libbenchmark-dev
+  # tests and benchmarks (numpy: the SVRaster converter's test, scripts/svraster_to_voxels.py)
+  libgtest-dev libgmock-dev libbenchmark-dev python3-numpy
   # plots in validation reports
   gnuplot-nox
   # Debian packages (scripts/package.sh: cpack computes the Depends with dpkg-shlibdeps)

@@ -9,6 +9,7 @@
 
 #include "render/scene_bounds.hpp"
 #include "util/error.hpp"
+#include "voxel/corner_density_fit.hpp"
 #include "voxel/gaussian_density_field.hpp"
 #include "voxel/voxel_rasterizer.hpp"
 
@@ -93,6 +94,7 @@ std::vector<Cell> children_of(const Cell& parent, int parent_level, const Root& 
 struct Leaf {
   glm::u32vec3 index;
   int level;
+  float mass;  // of the density field inside it
 };
 
 // Breadth-first: each level's cells either split (enough mass, level below the cap, and with a
@@ -149,7 +151,7 @@ std::vector<Leaf> build_octree(const Root& root, const GaussianDensityField& fie
         if (kept(child, level + 1) || !child.gaussians.empty()) next.push_back(std::move(child));
     }
     for (size_t i = 0; i < cells.size(); ++i)
-      if (!split[i] && kept(cells[i], level)) leaves.push_back({cells[i].index, level});
+      if (!split[i] && kept(cells[i], level)) leaves.push_back({cells[i].index, level, cells[i].mass});
     cells = std::move(next);
   }
   return leaves;
@@ -191,8 +193,17 @@ void fill_densities(VoxelScene& out, const std::vector<Leaf>& leaves, const Root
     const float sigma = field.density(x, std::ldexp(root.extent, -finest[size_t(p)])) / kStepScale;
     raw[size_t(p)] = sigma > 0.0f ? std::max(inverse_exp_linear_11(sigma), kMinRawDensity) : kMinRawDensity;
   }
+  // Each voxel's target: the raw value of its mean density (mass over volume), which its centre
+  // sample should see (corner_density_fit.hpp says why the point values alone fall short).
+  std::vector<float> target(leaves.size());
+  for (size_t i = 0; i < leaves.size(); ++i) {
+    const float size = std::ldexp(root.extent, -leaves[i].level);
+    const float sigma = leaves[i].mass / (size * size * size) / kStepScale;
+    target[i] = sigma > 0.0f ? std::max(inverse_exp_linear_11(sigma), kMinRawDensity) : kMinRawDensity;
+  }
+  const std::vector<float> fitted = fit_corner_densities(corner_slot, target, raw);
   for (size_t i = 0; i < leaves.size(); ++i)
-    for (size_t c = 0; c < 8; ++c) out.corner_density[i][c] = raw[corner_slot[i][c]];
+    for (size_t c = 0; c < 8; ++c) out.corner_density[i][c] = fitted[corner_slot[i][c]];
 }
 
 void fill_colours(VoxelScene& out, const render::GaussianScene& scene, const GaussianDensityField& field) {
@@ -203,11 +214,15 @@ void fill_colours(VoxelScene& out, const render::GaussianScene& scene, const Gau
     float* sh = out.voxel_sh(size_t(i));
     std::vector<double> sum(size_t(shared), 0.0);
     double total = 0.0;
-    field.for_each_contribution(out.voxel_center(size_t(i)), out.voxel_size(size_t(i)), [&](uint32_t g, float w) {
-      const float* src = scene.sh_of(g);
-      for (int k = 0; k < shared; ++k) sum[size_t(k)] += double(w) * src[k];
-      total += w;
-    });
+    // A leaf is kept for mass near a face that may not reach its centre within 3 sigma: widen
+    // the smoothing until some Gaussian does.
+    for (float smoothing = out.voxel_size(size_t(i)); total == 0.0 && smoothing <= 4.0f * out.voxel_size(size_t(i));
+         smoothing *= 2.0f)
+      field.for_each_contribution(out.voxel_center(size_t(i)), smoothing, [&](uint32_t g, float w) {
+        const float* src = scene.sh_of(g);
+        for (int k = 0; k < shared; ++k) sum[size_t(k)] += double(w) * src[k];
+        total += w;
+      });
     for (int k = 0; k < out_coeffs * 3; ++k) sh[k] = 0.0f;  // no Gaussian reaches: grey (0.5)
     if (total > 0.0)
       for (int k = 0; k < shared; ++k) sh[k] = float(sum[size_t(k)] / total);
