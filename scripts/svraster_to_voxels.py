@@ -179,8 +179,16 @@ def main(argv=None):
     else:
         print(f"no {config_path}: ss 1.5, 1 sample per voxel, black background", file=sys.stderr)
     try:
-        data = convert(load_checkpoint(args.checkpoint), config)
-    except (KeyError, ValueError) as e:
+        ckpt = load_checkpoint(args.checkpoint)
+    except ImportError:
+        print(f"{args.checkpoint}: reading a torch checkpoint needs torch (pip install torch)", file=sys.stderr)
+        return 2
+    try:
+        data = convert(ckpt, config)
+    except KeyError as e:
+        print(f"{args.checkpoint}: {e.args[0]}: missing", file=sys.stderr)
+        return 2
+    except ValueError as e:
         print(f"{args.checkpoint}: {e}", file=sys.stderr)
         return 2
     with open(args.out, "wb") as f:
