@@ -2,7 +2,7 @@
 // Decoded phase samples made straight from a known truth, without images: what the lens
 // solver's model (calib/lens_solver.hpp) says a camera at C decodes at panel point P,
 //   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))  (mod 1),   s = +1 with invView, else -1,
-//   f_seen(P) = seen_fraction(Cx - Px, Cy - Py, Cz, line_tilt_true, cone_true),
+//   f_seen(P) = seen_fraction_through_cover(Cx - Px, Cy - Py, Cz, cover, line_tilt_true, cone_true),
 //   X = P + lens_content_shift / pitch',
 // plus Gaussian noise. Shared by the solver and coarse-start tests.
 #include <cmath>
@@ -37,8 +37,8 @@ inline double synthetic_psi(const SyntheticUnit& unit, const LensModel& truth,
   const DisplayCalibration& d = unit.truth.display;
   const double s = d.inv_view ? 1.0 : -1.0;
   const double px = (u - 0.5) * d.width_m(), py = (v - 0.5) * d.height_m();
-  const double f_seen = seen_fraction(camera.x() - px, camera.y() - py, camera.z(),
-                                      truth.line_tilt(), d.view_cone_deg);
+  const double f_seen = seen_fraction_through_cover(camera.x() - px, camera.y() - py, camera.z(),
+                                                    d.cover, truth.line_tilt(), d.view_cone_deg);
   const double content_u = u + lens_content_shift(f_seen, d.inv_view) / truth.pitch_periods();
   return f_seen + s * (truth.phase(content_u, v) - nominal.phase(content_u, v));
 }
