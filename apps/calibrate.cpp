@@ -156,7 +156,8 @@ int RunCalibrate(int argc, char** argv) {
     outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   }
   for (const auto& w : outcome.warnings) std::cerr << "warning: " << w << "\n";
-  if (!outcome.colour_order.photos_disagree && !outcome.colour_order.finding.empty())
+  if (outcome.colour_order.best == outcome.colour_order.given &&
+      !outcome.colour_order.finding.empty())
     std::cerr << outcome.colour_order.finding << "\n";
   if (!report_dir.empty())
     report::write_calibration_report(outcome, report_dir, reference ? &*reference : nullptr);

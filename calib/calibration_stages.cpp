@@ -392,7 +392,7 @@ PatternSet check_colour_order(const PatternSet& set, const CalibrateOptions& opt
   for (const DecodedPhase& p : phases) positions.push_back(&p);
   out.colour_order = compare_subpixel_layouts(drawn, given, positions, options.colour_order);
   const ColourOrderCheck& check = out.colour_order;
-  if (check.photos_disagree && !check.refused()) out.warnings.push_back(check.finding);
+  if (!check.refused() && !(check.best == check.given)) out.warnings.push_back(check.finding);
   for (size_t i = 0; i < data.size() && i < phases.size(); ++i)
     correct_for_layout(check, drawn, phases[i], data[i].samples);
   PatternSet solved = set;

@@ -150,9 +150,19 @@ ColourOrderCheck compare_subpixel_layouts(const DisplayCalibration& pattern,
   auto predicted = [](const ColourOrderCheck::Candidate& c) {
     return fmt::format("{:+.3f}, {:+.3f}", c.predicted_periods[0], c.predicted_periods[1]);
   };
-  if (!out.photos_disagree) {
+  if (!out.photos_disagree && out.best == given) {
     out.finding = fmt::format("colour order: the photos agree with {} ({} measured, {} predicted)",
                               given.describe(pattern), measured, predicted(*given_c));
+    return out;
+  }
+  if (!out.photos_disagree) {
+    // Nearer, but not clearly (strong camera colour crosstalk dilutes the offsets): said, not
+    // refused, since unmodelled channel differences must not refuse a right layout.
+    out.finding = fmt::format(
+        "colour order: the photos lean toward {} over the given {} ({} measured; predicted {} "
+        "and {}), too little to refuse: check the panel's subpixel order",
+        out.best.describe(pattern), given.describe(pattern), measured, predicted(*best_c),
+        predicted(*given_c));
     return out;
   }
   const bool both_classic = !given.cells && !out.best.cells;

@@ -151,6 +151,13 @@ std::string gates_section(const calib::CalibrationOutcome& o) {
   return h + "</ul></div>\n";
 }
 
+// The colour-order check's finding when it passed (a refusal is a gate, an adoption a warning).
+std::string colour_order_section(const calib::CalibrationOutcome& o) {
+  const calib::ColourOrderCheck& c = o.colour_order;
+  if (!(c.best == c.given) || c.finding.empty()) return "";
+  return "<p>" + html_escape(c.finding) + " (report.json: colour_order).</p>\n";
+}
+
 std::string warnings_section(const calib::CalibrationOutcome& o, bool figures_missing) {
   if (o.warnings.empty() && !figures_missing) return "";
   std::string h = "<h2>Warnings</h2>\n<div class=\"warn\"><ul>\n";
@@ -250,6 +257,7 @@ std::string calibration_page(const ReferenceCalibration* reference,
                    o.positions.size() == 1 ? "" : "s");
   h += gates_section(o);
   h += warnings_section(o, !f.drawn && !figure_files(f).empty());
+  h += colour_order_section(o);
   h += result_section(o);
   if (reference) h += reference_section(o.calibration, *reference);
   h += positions_section(o);
