@@ -2,6 +2,7 @@
 // front end of pipeline/calibration_benchmark.hpp: prints the table and writes the JSON.
 #include <cstdio>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
@@ -65,6 +66,10 @@ int RunBenchCalibration(int argc, char** argv) {
                "the family's acrylic block or cover glass)");
   app.add_flag("--bare-panels", o.bare_panels,
                "diagnostic: units without a cover layer (figures before the cover was modelled)");
+  app.add_flag("--self-calibrated", o.self_calibrated,
+               "calibrate each unit twice from the same photos: with the camera given, then "
+               "self-calibrated (no camera file); the camera column shows the focal length's "
+               "error and sigma");
   app.add_flag("--show-poses", show_poses,
                "diagnostic: print each position's camera error (registration, refined)");
   if (auto code = parse(app, argc, argv)) return *code;
@@ -73,16 +78,23 @@ int RunBenchCalibration(int argc, char** argv) {
   if (above_below) o.layout = calib::RigLayout::kAboveBelow;
 
   const pipeline::AccuracyBars bars;
-  std::printf("| display | seed | positions | capture | slant err deg | pitch rel err | center err "
+  std::printf("| display | seed | positions | capture | camera | slant err deg | pitch rel err | center err "
               "| cone err deg | warp rms err | phase rms err | gates | simulate s | calibrate s "
               "| solve s |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0;
   auto print_row = [&](const pipeline::CalibrationBenchmarkRow& r) {
+    const std::string camera =
+        r.camera_self_calibrated
+            ? (r.errors ? fmt::format("self, f {:+.2f} % +- {:.2f} %", 100 * r.focal_error_rel,
+                                      100 * r.focal_sigma_rel)
+                        : std::string("self"))
+            : std::string("given");
     if (!r.errors) {
       ++failures;
-      std::printf("| %s | %d | %d | %dx%d | failed: %s |\n", r.display.c_str(), r.seed,
-                  r.positions, r.capture_width, r.capture_height, r.failure.c_str());
+      std::printf("| %s | %d | %d | %dx%d | %s | failed: %s |\n", r.display.c_str(), r.seed,
+                  r.positions, r.capture_width, r.capture_height, camera.c_str(),
+                  r.failure.c_str());
       std::fflush(stdout);
       return;
     }
@@ -98,9 +110,10 @@ int RunBenchCalibration(int argc, char** argv) {
                      p.residual_rms_periods);
     failures += r.within_bars ? 0 : 1;
     const auto& e = *r.errors;
-    std::printf("| %s | %d | %d | %dx%d | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | %.1f | "
-                "%.1f | %.2f |\n",
+    std::printf("| %s | %d | %d | %dx%d | %s | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | "
+                "%.1f | %.1f | %.2f |\n",
                 r.display.c_str(), r.seed, r.positions, r.capture_width, r.capture_height,
+                camera.c_str(),
                 e.slant_deg, e.pitch_rel, e.center_periods, e.view_cone_deg,
                 e.correction_rms_periods, e.phase_rms_periods,
                 r.gate_failures.empty() ? "pass" : "REJECT", r.simulate_s, r.calibrate_s,

@@ -61,22 +61,41 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
   choose_camera(options, boards, set, out);
 
   const LensShift shift(set.nominal);
-  std::vector<PositionData> data;
-  std::vector<DecodedPhase> phases;
+  std::vector<PositionState> states(positions.size());
+  auto context = [&](size_t i) {
+    return PositionContext{set, roles, options, shift, positions[i], boards[i], out.camera,
+                           out.warnings};
+  };
   for (size_t i = 0; i < positions.size(); ++i) {
-    const PositionContext ctx{set, roles, options, shift, positions[i], boards[i], out.camera,
-                              out.warnings};
-    PositionState state;
+    const PositionContext ctx = context(i);
+    PositionState& state = states[i];
     state.report.name = positions[i].name;
     register_position(ctx, state);
     check_exposure(ctx, state);
     identify_patterns(ctx, state);
     refine_with_fringes(ctx, state);
-    const DecodedPhase& phase = phases.emplace_back(decode_position_phase(ctx, state));
+  }
+  if (out.camera_self_calibrated) {
+    // The boards alone leave the camera a few percent off (issue #12): refit it with the
+    // fringe points, then register again through it.
+    refine_self_calibration(set, boards, states, out);
+    for (size_t i = 0; i < positions.size(); ++i) {
+      const PositionContext ctx = context(i);
+      states[i].fringe = {};
+      register_position(ctx, states[i]);
+      refine_with_fringes(ctx, states[i]);
+    }
+  }
+  std::vector<PositionData> data;
+  std::vector<DecodedPhase> phases;  // kept for the colour-order check
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const PositionContext ctx = context(i);
+    DecodedPhase phase = decode_position_phase(ctx, states[i]);
     std::optional<Eigen::Vector3d> known;
     if (!options.known_camera_positions_m.empty()) known = options.known_camera_positions_m[i];
-    data.push_back(position_data(ctx, state, phase, out.camera_self_calibrated, known));
-    out.positions.push_back(state.report);
+    data.push_back(position_data(ctx, states[i], phase, out.camera_self_calibrated, known));
+    phases.push_back(std::move(phase));
+    out.positions.push_back(states[i].report);
   }
   if (positions.size() < 2)
     out.warnings.push_back(

@@ -71,6 +71,8 @@ struct CalibrationOutcome {
   SolverResult solve;
   CameraIntrinsics camera;
   bool camera_self_calibrated = false;
+  // The self-calibrated focal length's relative 1-sigma uncertainty (0 for a given camera).
+  double camera_focal_sigma_rel = 0;
   std::vector<PositionReport> positions;
   ColourOrderCheck colour_order;
   std::vector<std::string> warnings;

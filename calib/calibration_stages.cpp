@@ -14,6 +14,7 @@
 #include "calib/display/lens_relations.hpp"
 #include "calib/display/view_count.hpp"
 #include "calib/fringe_registration.hpp"
+#include "calib/planar_camera_calibration.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -125,6 +126,7 @@ void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetec
   double rms = 0, focal_sigma_rel = 0;
   out.camera = self_calibrate(boards, set, &rms, &focal_sigma_rel);
   out.camera_self_calibrated = true;
+  out.camera_focal_sigma_rel = focal_sigma_rel;
   // Boards seen nearly head-on leave the focal length undetermined: the camera would come out
   // tens of percent off and the view cone and center with it, while the solver takes the
   // camera as known. Measured on the Portrait unit: positions ~20 degrees apart give a sigma of
@@ -301,6 +303,7 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   rep.fringe_points = long(extra.image_px.size());
   if (extra.image_px.size() >= 100) {
     reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift, extra);
+    state.fringe = extra;
     rep.reprojection_rms_px = reg->reprojection_rms_px();
     rep.camera_m = reg->camera_position_m();
   } else {
@@ -309,6 +312,43 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
         "accurate center); check focus and exposure of the fringe photos",
         pc.name, extra.image_px.size()));
   }
+}
+
+void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetection>& boards,
+                             const std::vector<PositionState>& states, CalibrationOutcome& out) {
+  const DisplayCalibration& nd = set.nominal.display;
+  auto panel_m = [&](cv::Point2d px) {
+    const Eigen::Vector3d m = uv_to_display_m(nd, panel_px_to_uv(nd, px));
+    return cv::Point3f(float(m.x()), float(m.y()), 0.0f);
+  };
+  // Evenly thinned fringe points: a few hundred per position already pin the intrinsics, and
+  // calibrateCamera runs three times for the focal length's uncertainty.
+  constexpr size_t kMaxFringePoints = 1500;
+  std::vector<PlanarView> views;
+  for (size_t i = 0; i < states.size(); ++i) {
+    PlanarView v;
+    const BoardDetection& b = boards[i];
+    for (size_t k = 0; k < b.ids.size(); ++k) {
+      v.panel_m.push_back(panel_m(set.board.corners_px.at(size_t(b.ids[k])) + states[i].board_shift.at(k)));
+      v.image_px.push_back(b.image_px[k]);
+    }
+    const ExtraPoints& f = states[i].fringe;
+    const size_t stride = std::max<size_t>(1, (f.image_px.size() + kMaxFringePoints - 1) / kMaxFringePoints);
+    for (size_t k = 0; k < f.image_px.size(); k += stride) {
+      v.panel_m.push_back(panel_m(f.panel_px[k] + f.shift_px[k]));
+      v.image_px.push_back(f.image_px[k]);
+    }
+    views.push_back(std::move(v));
+  }
+  const PlanarCalibration c = calibrate_planar_views(views, boards.at(0).image_size, &out.camera);
+  out.camera = c.camera;
+  out.camera_focal_sigma_rel = c.focal_sigma_rel;
+  if (c.focal_sigma_rel > kMaxSelfCalibrationFocalSigma)
+    throw_input_error(
+        "the photos do not determine the camera's focal length (uncertainty {:.0f} % with the "
+        "fringe points, at most {:.0f} % usable): photograph the positions about 20 degrees to "
+        "the sides of the screen's axis, or pass --camera camera.yaml from a camera calibration",
+        100 * c.focal_sigma_rel, 100 * kMaxSelfCalibrationFocalSigma);
 }
 
 DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state) {
@@ -372,9 +412,21 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
   const double extent = 0.5 * std::min(nd.width_m(), nd.height_m()) / z;
   const double noise =
       rep.reprojection_rms_px / std::sqrt(double(state.registration->corner_count()));
-  const double focal_rel = camera_self_calibrated ? 5e-3 : 1e-3;
+  // A self-calibrated camera's focal length is the solver's to refine (camera_per_focal_m),
+  // so its uncertainty is not counted here again.
+  const double focal_rel = 1e-3;
   pd.lateral_sigma_m = std::max(3e-4, 2 * z * noise / (f * extent * extent));
   pd.depth_sigma_m = std::max(focal_rel * z, 2 * z * noise / (f * extent));
+  if (camera_self_calibrated) {
+    // How the pose moves with the focal length: registered again through a camera 1 % longer
+    // (the solver frees the focal length of a self-calibrated camera).
+    constexpr double h = 0.01;
+    CameraIntrinsics longer = ctx.camera;
+    longer.camera_matrix(0, 0) *= 1 + h;
+    longer.camera_matrix(1, 1) *= 1 + h;
+    const Registration moved(ctx.board, ctx.set, longer, state.board_shift, state.fringe);
+    pd.camera_per_focal_m = (moved.camera_position_m() - state.registration->camera_position_m()) / h;
+  }
   if (known_camera_m) {
     pd.camera_m = *known_camera_m;
     pd.lateral_sigma_m = pd.depth_sigma_m = 1e-4;
@@ -405,7 +457,15 @@ void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
   std::vector<PhasePlane> planes;
   out.coarse = coarse_start(set.nominal, data, options.fit_view_cone, &planes);
   for (size_t i = 0; i < planes.size(); ++i) out.positions[i].plane_coherence = planes[i].coherence;
-  out.solve = solve_lens(set.nominal, out.coarse, data, options);
+  SolverOptions solver = options;
+  if (out.camera_self_calibrated) solver.focal_sigma_rel = out.camera_focal_sigma_rel;
+  out.solve = solve_lens(set.nominal, out.coarse, data, solver);
+  if (out.camera_self_calibrated) {
+    const double scale = 1 + out.solve.focal_change_rel;
+    out.camera.camera_matrix(0, 0) *= scale;
+    out.camera.camera_matrix(1, 1) *= scale;
+    if (out.solve.sigma.count("focal_rel")) out.camera_focal_sigma_rel = out.solve.sigma.at("focal_rel");
+  }
   for (size_t i = 0; i < out.positions.size(); ++i) {
     out.positions[i].camera_refined_m = out.solve.cameras_m[i];
     out.positions[i].residual_rms_periods = out.solve.position_rms[i];

@@ -79,6 +79,7 @@ struct PositionState {
   std::optional<Registration> registration;
   std::vector<cv::Point2d> board_shift;
   cv::Mat screen_mask;  // the screen in the photo
+  ExtraPoints fringe;   // the fringe points the registration used (empty: board alone)
   PositionReport report;
 };
 
@@ -90,6 +91,13 @@ void check_exposure(const PositionContext& ctx, PositionState& state);
 void identify_patterns(const PositionContext& ctx, const PositionState& state);
 // 6. No-op for pattern sets without fringes; warns and keeps the board pose if too few decode.
 void refine_with_fringes(const PositionContext& ctx, PositionState& state);
+// 6b. Without --camera: the self-calibrated camera refitted to every position's board corners
+// and fringe points with the lens shift removed (the boards' raw corners carry it: up to half
+// a lens, a ramp across the screen with a jump where the seen view wraps, which biased the
+// focal length and principal point); sets outcome.camera and camera_focal_sigma_rel. The
+// positions are then registered again through it. Refuses a focal length still undetermined.
+void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetection>& boards,
+                             const std::vector<PositionState>& states, CalibrationOutcome& out);
 // 7.
 DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state);
 // 8. `known_camera_m`: a camera position known by other means (replaces the registration's).

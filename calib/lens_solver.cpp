@@ -135,14 +135,26 @@ class LinearCombination : public ceres::CostFunction {
 };
 
 // The registration's camera position as a prior on the refined one. Per position the data
-// fix only Cx + Cy line_tilt (both shift f_seen uniformly), so the prior splits the two.
+// fix only Cx + Cy line_tilt (both shift f_seen uniformly), so the prior splits the two. The
+// registered position moves with the camera's focal length (`focal`: its relative change,
+// held at 0 for a known camera) along d = d camera / (df / f).
 struct CameraPrior {
-  double cx, cy, cz, inv_sxy, inv_sz;
+  double cx, cy, cz, dx, dy, dz, inv_sxy, inv_sz;
   template <typename T>
-  bool operator()(const T* cam, T* r) const {
-    r[0] = (cam[0] - T(cx)) * inv_sxy;
-    r[1] = (cam[1] - T(cy)) * inv_sxy;
-    r[2] = (cam[2] - T(cz)) * inv_sz;
+  bool operator()(const T* cam, const T* focal, T* r) const {
+    r[0] = (cam[0] - T(cx) - focal[0] * dx) * inv_sxy;
+    r[1] = (cam[1] - T(cy) - focal[0] * dy) * inv_sxy;
+    r[2] = (cam[2] - T(cz) - focal[0] * dz) * inv_sz;
+    return true;
+  }
+};
+
+// The camera calibration's focal length as a prior on its relative change.
+struct FocalPrior {
+  double inv_sigma;
+  template <typename T>
+  bool operator()(const T* focal, T* r) const {
+    r[0] = focal[0] * inv_sigma;
     return true;
   }
 };
@@ -214,6 +226,7 @@ class LensProblem {
         nx_(with_field_ ? options.grid_nx : 0),
         ny_(with_field_ ? options.grid_ny : 0),
         fit_cone_(options.fit_view_cone && positions.size() >= 2),
+        fit_focal_(options.focal_sigma_rel > 0),
         obs_sigma_(options.obs_sigma) {
     lens_[0] = start.pitch_lpi;
     lens_[1] = start.slope;
@@ -335,6 +348,7 @@ class LensProblem {
     std::vector<std::pair<const double*, const double*>> pairs;
     for (size_t a = 0; a < blocks.size(); ++a)
       for (size_t b = a; b < blocks.size(); ++b) pairs.emplace_back(blocks[a], blocks[b]);
+    if (fit_focal_) pairs.emplace_back(focal_, focal_);
     if (!cov.Compute(pairs, problem_.get())) return;
     const size_t dim = 4 + coeffs_.size();
     Eigen::MatrixXd c(dim, dim);
@@ -342,6 +356,9 @@ class LensProblem {
     const char* names[4] = {"pitch_lpi", "slope", "center_periods", "view_cone_deg"};
     for (int i = 0; i < 4; ++i) result.sigma[names[i]] = std::sqrt(std::max(0.0, c(i, i)));
     if (!fit_cone_) result.sigma["view_cone_deg"] = 0;
+    double focal_variance = 0;
+    if (fit_focal_ && cov.GetCovarianceBlock(focal_, focal_, &focal_variance))
+      result.sigma["focal_rel"] = std::sqrt(std::max(0.0, focal_variance));
     if (with_field_) {
       // RMS over the screen of the standard deviation of w.
       double sum = 0;
@@ -365,6 +382,7 @@ class LensProblem {
     if (with_field_) result.correction = CorrectionField(nx_, ny_, coeffs_);
     for (size_t i = 0; i < positions_.size(); ++i)
       result.cameras_m.push_back({cams_[3 * i], cams_[3 * i + 1], cams_[3 * i + 2]});
+    result.focal_change_rel = focal_[0];
     // Over all samples with a robust scale (residual_statistics.hpp): pooled, per position on
     // its own scale, and against the other positions pooled (leave one out: against a pool
     // that holds it, a position's ratio could not exceed sqrt(N / N_i)).
@@ -450,12 +468,21 @@ class LensProblem {
   }
 
   void add_camera_priors() {
-    for (size_t i = 0; i < positions_.size(); ++i)
+    for (size_t i = 0; i < positions_.size(); ++i) {
+      const PositionData& p = positions_[i];
       problem_->AddResidualBlock(
-          new ceres::AutoDiffCostFunction<CameraPrior, 3, 3>(new CameraPrior{
-              positions_[i].camera_m.x(), positions_[i].camera_m.y(), positions_[i].camera_m.z(),
-              1.0 / positions_[i].lateral_sigma_m, 1.0 / positions_[i].depth_sigma_m}),
-          nullptr, &cams_[3 * i]);
+          new ceres::AutoDiffCostFunction<CameraPrior, 3, 3, 1>(new CameraPrior{
+              p.camera_m.x(), p.camera_m.y(), p.camera_m.z(), p.camera_per_focal_m.x(),
+              p.camera_per_focal_m.y(), p.camera_per_focal_m.z(), 1.0 / p.lateral_sigma_m,
+              1.0 / p.depth_sigma_m}),
+          nullptr, &cams_[3 * i], focal_);
+    }
+    if (fit_focal_)
+      problem_->AddResidualBlock(new ceres::AutoDiffCostFunction<FocalPrior, 1, 1>(
+                                     new FocalPrior{1.0 / options_.focal_sigma_rel}),
+                                 nullptr, focal_);
+    else
+      problem_->SetParameterBlockConstant(focal_);
   }
 
   // Second differences of the control points (a prior on the warp's curvature), whitened
@@ -503,7 +530,9 @@ class LensProblem {
   const bool with_field_;
   const int nx_, ny_;
   const bool fit_cone_;
+  const bool fit_focal_;  // a self-calibrated camera's focal length (SolverOptions)
   double obs_sigma_;
+  double focal_[1] = {0};       // relative change of the camera's focal length
   double lens_[4];              // pitch_lpi, slope, center_periods, view_cone_deg
   std::vector<double> cams_;    // Cx, Cy, Cz per position
   std::vector<double> coeffs_;  // nx * ny correction control points
@@ -546,7 +575,15 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
   problem.statistics(result);
   result.view_cone_fitted = options.fit_view_cone && positions.size() >= 2;
   for (const auto& p : positions) result.position_names.push_back(p.name);
-  result.camera_shift_sigmas = camera_shifts_in_sigmas(positions, result.cameras_m);
+  // Against the registered positions moved with the solve's focal length (the prior's mean).
+  std::vector<PositionData> moved;
+  for (const auto& p : positions) {
+    PositionData& m = moved.emplace_back();  // without the samples
+    m.camera_m = p.camera_m + result.focal_change_rel * p.camera_per_focal_m;
+    m.lateral_sigma_m = p.lateral_sigma_m;
+    m.depth_sigma_m = p.depth_sigma_m;
+  }
+  result.camera_shift_sigmas = camera_shifts_in_sigmas(moved, result.cameras_m);
   result.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

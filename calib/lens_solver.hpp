@@ -29,6 +29,9 @@ struct PositionData {
   Eigen::Vector3d camera_m{0, 0, 0.6};  // from registration (display frame)
   double lateral_sigma_m = 0.001;        // prior on the registration's camera position (x, y)
   double depth_sigma_m = 0.003;
+  // How the registered position moves per relative change of the camera's focal length
+  // (d camera_m / (df / f)); used when the focal length is free (SolverOptions).
+  Eigen::Vector3d camera_per_focal_m{0, 0, 0};
 };
 
 struct LensEstimate {
@@ -48,6 +51,11 @@ struct SolverOptions {
   // The vertical offset across the slanted lens lines in f_seen (lens_relations.hpp); false
   // models the horizontal offset alone, only to measure what leaving it out costs.
   bool vertical_parallax = true;
+  // A self-calibrated camera: its focal length is an unknown too, under this prior (relative
+  // 1-sigma from the camera's calibration; 0: the camera is known). The phase alone hardly
+  // fixes it (a longer focal length moves the cameras away, which a wider cone undoes), so
+  // what it does is carry the camera's uncertainty into the view cone's sigma.
+  double focal_sigma_rel = 0;
   int max_samples_per_position = 40000;
   int max_iterations = 200;  // per stage; the final one must end in CONVERGENCE
   int threads = 2;
@@ -69,6 +77,7 @@ struct SolverResult {
   LensEstimate lens;
   CorrectionField correction;
   std::vector<Eigen::Vector3d> cameras_m;
+  double focal_change_rel = 0;  // the solve's relative change of the focal length (free only)
   std::map<std::string, double> sigma;  // 1-sigma: pitch_lpi, slope, center_periods, ...
   ResidualStats residuals;              // of all samples, robust (residual_statistics.hpp)
   double residual_robust_sigma_periods = 0;  // 1.4826 MAD of all residuals

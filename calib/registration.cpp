@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calib/charuco_detection.hpp"
+#include "calib/planar_camera_calibration.hpp"
 #include "calib/display/cover_rays.hpp"
 #include "util/error.hpp"
 
@@ -109,41 +110,13 @@ CameraIntrinsics self_calibrate(const std::vector<BoardDetection>& boards, const
         "self-calibration of the camera needs the board seen from at least 3 positions "
         "(found {}); photograph more positions or pass --camera camera.yaml",
         objects.size());
-  // Planar views: calibrateCamera with an initial guess from the image size; k1, k2 only,
-  // which is what a handful of planar views can determine.
-  cv::Mat K = cv::initCameraMatrix2D(objects, images, size), D;
-  std::vector<cv::Mat> rvecs, tvecs;
-  const int flags = cv::CALIB_USE_INTRINSIC_GUESS | cv::CALIB_ZERO_TANGENT_DIST | cv::CALIB_FIX_K3 |
-                    cv::CALIB_FIX_ASPECT_RATIO;
-  const double rms = cv::calibrateCamera(objects, images, size, K, D, rvecs, tvecs, flags);
-  if (rms_px) *rms_px = rms;
-  if (focal_sigma_rel) {
-    // How well the boards determine the focal length: the curvature of the summed squared
-    // reprojection error S(f) when the focal length is held 5 % off and everything else
-    // refitted. Boards seen nearly head-on leave f undetermined (it trades off against the
-    // distance and the distortion), which must show instead of passing as a known camera.
-    // 1-sigma (chi^2 + 1 with the noise the fit measured): f sigma_f = rms sqrt(2 / S'').
-    long points = 0;
-    for (const auto& o : objects) points += long(o.size());
-    auto sum_sq_at = [&](double scale) {
-      cv::Mat k = K.clone(), d = D.clone();
-      k.at<double>(0, 0) *= scale;
-      k.at<double>(1, 1) *= scale;
-      std::vector<cv::Mat> r, t;
-      const double e = cv::calibrateCamera(objects, images, size, k, d, r, t,
-                                           flags | cv::CALIB_FIX_FOCAL_LENGTH);
-      return double(points) * e * e;
-    };
-    const double h = 0.05, s0 = double(points) * rms * rms;
-    const double curvature = (sum_sq_at(1 + h) + sum_sq_at(1 - h) - 2 * s0) / (h * h);
-    *focal_sigma_rel = curvature > 0 ? rms * std::sqrt(2.0 / curvature) : INFINITY;
-  }
-  CameraIntrinsics c;
-  c.width = size.width;
-  c.height = size.height;
-  c.camera_matrix = cv::Matx33d(K);
-  D.reshape(1, 1).copyTo(c.distortion);
-  return c;
+  // Planar views: k1, k2 only, which is what a handful of planar views can determine.
+  std::vector<PlanarView> views;
+  for (size_t i = 0; i < objects.size(); ++i) views.push_back({objects[i], images[i]});
+  const PlanarCalibration c = calibrate_planar_views(views, size);
+  if (rms_px) *rms_px = c.rms_px;
+  if (focal_sigma_rel) *focal_sigma_rel = c.focal_sigma_rel;
+  return c.camera;
 }
 
 Registration::Registration(const BoardDetection& board, const PatternSet& set,

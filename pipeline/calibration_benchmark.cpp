@@ -57,7 +57,8 @@ void CalibrationBenchmarkOptions::check() const {
 nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
   nlohmann::ordered_json row = {{"display", display}, {"file", file}, {"seed", seed},
                                 {"positions", positions},
-                                {"capture", {capture_width, capture_height}}};
+                                {"capture", {capture_width, capture_height}},
+                                {"camera", camera_self_calibrated ? "self-calibrated" : "given"}};
   if (!errors) {
     row["error"] = failure;
     return row;
@@ -68,6 +69,8 @@ nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
                    {"view_cone_deg", errors->view_cone_deg},
                    {"correction_rms_periods", errors->correction_rms_periods},
                    {"phase_rms_periods", errors->phase_rms_periods}};
+  if (camera_self_calibrated)
+    row["focal_length"] = {{"error_rel", focal_error_rel}, {"sigma_rel", focal_sigma_rel}};
   row["within_bars"] = within_bars;
   row["gate_failures"] = gate_failures;
   row["gate_values"] = gate_values;
@@ -100,13 +103,13 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       rig.effects.exposure_drift = o.exposure_drift;
       rig.effects.supersample = o.supersample;
 
-      CalibrationBenchmarkRow row;
-      row.display = d.label;
-      row.file = d.file;
-      row.seed = seed;
-      row.positions = o.positions;
-      row.capture_width = rig.intrinsics.width;
-      row.capture_height = rig.intrinsics.height;
+      CalibrationBenchmarkRow measured;  // what both camera modes share
+      measured.display = d.label;
+      measured.file = d.file;
+      measured.seed = seed;
+      measured.positions = o.positions;
+      measured.capture_width = rig.intrinsics.width;
+      measured.capture_height = rig.intrinsics.height;
       auto t0 = std::chrono::steady_clock::now();
       // Every setting that changes the photos is in the cache key ("vp": the simulator with
       // vertical parallax; captures cached before it are not reused).
@@ -122,42 +125,51 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
                           : "";
       const auto captures =
           cached_captures(o.cache_dir, key + drift_key + cover_key, set, unit.truth, rig);
-      row.simulate_s = seconds_since(t0);
+      measured.simulate_s = seconds_since(t0);
       // Registration and the solver read the cover from the nominal description.
       if (o.solver_without_cover) set.nominal.display.cover = calib::CoverLayer{};
 
-      calib::CalibrateOptions options;
-      options.camera = rig.intrinsics;
-      options.decode.correct_exposure_drift = !o.no_exposure_fix;
-      options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
-      if (o.true_poses)
-        for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
-      t0 = std::chrono::steady_clock::now();
-      try {
-        const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
-        row.calibrate_s = seconds_since(t0);
-        row.errors = calib::compare_with_truth(out.calibration, unit.truth);
-        row.within_bars = bars.met_by(*row.errors);
-        row.gate_failures = out.gate_failures;
-        row.gate_values = {{"termination", out.solve.termination},
-                           {"residual_rms_periods", out.solve.residuals.rms_periods},
-                           {"inlier_fraction", out.solve.residuals.inlier_fraction},
-                           {"camera_shift_sigmas", out.solve.camera_shift_sigmas},
-                           {"position_rms_periods", out.solve.position_rms},
-                           {"position_rms_ratios", out.solve.position_rms_ratio}};
-        row.uncertainty = out.calibration.uncertainty;
-        row.solve_s = out.solve.solve_seconds;
-        for (size_t i = 0; i < out.positions.size(); ++i) {
-          const Eigen::Vector3d t = rig.poses[i].position_m;
-          row.poses.push_back({out.positions[i].name, t, out.positions[i].camera_m - t,
-                               out.positions[i].camera_refined_m - t,
-                               out.positions[i].residual_rms_periods});
+      for (const bool self_calibrate : {false, true}) {
+        if (self_calibrate && !o.self_calibrated) break;
+        CalibrationBenchmarkRow row = measured;
+        row.camera_self_calibrated = self_calibrate;
+        calib::CalibrateOptions options;
+        if (!self_calibrate) options.camera = rig.intrinsics;
+        options.decode.correct_exposure_drift = !o.no_exposure_fix;
+        options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
+        if (o.true_poses)
+          for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
+        t0 = std::chrono::steady_clock::now();
+        try {
+          const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
+          row.calibrate_s = seconds_since(t0);
+          row.errors = calib::compare_with_truth(out.calibration, unit.truth);
+          row.within_bars = bars.met_by(*row.errors);
+          row.gate_failures = out.gate_failures;
+          row.gate_values = {{"termination", out.solve.termination},
+                             {"residual_rms_periods", out.solve.residuals.rms_periods},
+                             {"inlier_fraction", out.solve.residuals.inlier_fraction},
+                             {"camera_shift_sigmas", out.solve.camera_shift_sigmas},
+                             {"position_rms_periods", out.solve.position_rms},
+                             {"position_rms_ratios", out.solve.position_rms_ratio}};
+          row.uncertainty = out.calibration.uncertainty;
+          if (self_calibrate) {
+            row.focal_error_rel = out.camera.camera_matrix(0, 0) / rig.intrinsics.camera_matrix(0, 0) - 1;
+            row.focal_sigma_rel = out.camera_focal_sigma_rel;
+          }
+          row.solve_s = out.solve.solve_seconds;
+          for (size_t i = 0; i < out.positions.size(); ++i) {
+            const Eigen::Vector3d t = rig.poses[i].position_m;
+            row.poses.push_back({out.positions[i].name, t, out.positions[i].camera_m - t,
+                                 out.positions[i].camera_refined_m - t,
+                                 out.positions[i].residual_rms_periods});
+          }
+        } catch (const std::exception& ex) {
+          row.failure = ex.what();
         }
-      } catch (const std::exception& ex) {
-        row.failure = ex.what();
+        if (on_row) on_row(row);
+        rows.push_back(std::move(row));
       }
-      if (on_row) on_row(row);
-      rows.push_back(std::move(row));
     }
   }
   return rows;

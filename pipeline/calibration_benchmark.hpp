@@ -42,6 +42,9 @@ struct CalibrationBenchmarkOptions {
   std::string only;        // run only displays whose label contains this
   std::filesystem::path cache_dir;  // reuse simulated captures (empty: none)
   bool true_poses = false;    // diagnostic: give the solver the true camera positions
+  // Each unit calibrated twice from the same photos: with the rig's camera given, then
+  // self-calibrated (no camera file), one row each.
+  bool self_calibrated = false;
   bool no_noise = false;      // diagnostic: no sensor noise and glare
   bool moving_glare = false;  // diagnostic: new glare in every photo
   double exposure_drift = 0;  // per-photo gain drift, relative 1-sigma (CaptureEffects)
@@ -69,6 +72,8 @@ struct CalibrationBenchmarkRow {
   std::string display, file;
   int seed = 0, positions = 0;
   int capture_width = 0, capture_height = 0;
+  bool camera_self_calibrated = false;
+  double focal_error_rel = 0, focal_sigma_rel = 0;  // the self-calibrated focal length
   std::optional<calib::CalibrationErrors> errors;  // absent when the calibration failed
   std::string failure;                             // why, when it failed
   bool within_bars = false;
