@@ -146,23 +146,23 @@ int RunRender(int argc, char** argv) {
   app.add_option("--size", size_text,
                  "size of one view, WxH (default: cam.json's, else 512 tall at the display's "
                  "aspect, else 512x512)");
-  app.add_option("--chunks", g2lf.chunks, "G2LF: number of depth chunks N_chunk")->capture_default_str();
-  app.add_option("--plane-scale", g2lf.plane_scale, "G2LF: plane resolution scale P_s")->capture_default_str();
-  app.add_option("--filter", filter, "G2LF: plane sampling, nearest or bilinear")
+  app.add_option("--chunks", g2lf.chunks, "G2LF and V2LF: number of depth chunks N_chunk")->capture_default_str();
+  app.add_option("--plane-scale", g2lf.plane_scale, "G2LF and V2LF: plane resolution scale P_s")->capture_default_str();
+  app.add_option("--filter", filter, "G2LF and V2LF: plane sampling, nearest or bilinear")
       ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
   app.add_option("--precision", precision,
-                 "G2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F), or f16 (RGBA16F, --backend gl only)")
+                 "G2LF and V2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F), or f16 (RGBA16F, --backend gl only)")
       ->check(CLI::IsMember({"u8", "f16", "f32"}))->capture_default_str();
   app.add_option("--binning", binning,
-                 "G2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
+                 "G2LF and V2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
                  "quantile (the paper's equal counts)")
       ->check(CLI::IsMember({"mixed", "quantile"}))->capture_default_str();
   app.add_option("--shift", g2lf.d_shift,
-                 "G2LF: D_shift, move the reference camera back by this (scene units; default: by "
+                 "G2LF and V2LF: D_shift, move the reference camera back by this (scene units; default: by "
                  "D_forward, to the base camera; 0 = the paper's setting)");
   app.add_option("--split-levels", split_levels,
                  "V2LF: split a voxel whose depth extent straddles a chunk boundary into its 8 children, "
-                 "up to this many levels deeper (0: never; helps scenes of K >= 4 samples per voxel)")
+                 "up to this many levels deeper (0: never; measured: helps at 8 samples per voxel, hurts at 1, docs/voxels.md)")
       ->capture_default_str();
   app.add_flag("--no-plane-lowpass", no_plane_lowpass,
                "V2LF: leave out the low-pass filter on the planes (the paper's stand-in for supersampling)");
