@@ -133,9 +133,10 @@ ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& g
       bin_voxels_by_depth(scene, geometry, ref, o.chunks, o.binning, options.split_levels);
   const auto t1 = Clock::now();
   const float lowpass = o.adaptive_filter ? plane_lowpass_variance(scene, geometry, ref, o.plane_scale) : 0.0f;
+  const RayOrder order(binned.scene);  // once per frame, not per chunk
   const render::SweepingPlanes planes = render::make_sweeping_planes(
       ref, binned.chunks.plane_depth, o.precision, [&](int k) {
-        render::RasterImage image = rasterize_voxels_exact(binned.scene, ref.camera, glm::vec3(0.0f),
+        render::RasterImage image = rasterize_voxels_exact(binned.scene, order, ref.camera, glm::vec3(0.0f),
                                                            binned.chunks.members[size_t(k)],
                                                            geometry.base.position_world);
         gaussian_lowpass(image, lowpass);

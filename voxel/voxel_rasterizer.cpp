@@ -89,6 +89,12 @@ float voxel_alpha(const VoxelScene& scene, size_t voxel, const glm::vec3& origin
 render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render::Camera& camera,
                                            const glm::vec3& background, const std::vector<uint32_t>& subset,
                                            std::optional<glm::vec3> sh_origin) {
+  return rasterize_voxels_exact(scene, RayOrder(scene), camera, background, subset, sh_origin);
+}
+
+render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const RayOrder& order, const render::Camera& camera,
+                                           const glm::vec3& background, const std::vector<uint32_t>& subset,
+                                           std::optional<glm::vec3> sh_origin) {
   const int width = camera.width, height = camera.height;
   if (width < 1 || height < 1) throw_input_error("voxel rasterizer: image size {}x{} is empty", width, height);
   const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
@@ -99,8 +105,9 @@ render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render
   }
   const std::vector<uint32_t>& voxels = subset.empty() ? all : subset;
 
-  // Stage 1: per voxel its colour (SH once per view, camera to voxel centre) and tile range.
-  std::vector<glm::vec3> colour(scene.size());
+  // Stage 1: per voxel its colour (SH once per view, camera to voxel centre) and tile range,
+  // indexed by the position in `voxels` (a chunk's arrays are the chunk's size, not the scene's).
+  std::vector<glm::vec3> colour(voxels.size());
   std::vector<TileRect> rects(voxels.size());
 #pragma omp parallel for schedule(static)
   for (size_t n = 0; n < voxels.size(); ++n) {
@@ -108,18 +115,17 @@ render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render
     rects[n] = tile_rect(scene, i, camera, tiles_x, tiles_y);
     if (rects[n].x1 >= rects[n].x0 && rects[n].y1 >= rects[n].y0) {
       const glm::vec3 dir = glm::normalize(scene.voxel_center(i) - sh_origin.value_or(camera.position_world));
-      colour[i] = render::eval_sh_color(scene.sh_degree, scene.voxel_sh(i), dir);
+      colour[n] = render::eval_sh_color(scene.sh_degree, scene.voxel_sh(i), dir);
     }
   }
   // Stage 2: tile binning.
   std::vector<std::vector<uint32_t>> bins(size_t(tiles_x) * size_t(tiles_y));
   for (size_t n = 0; n < voxels.size(); ++n)
     for (int ty = rects[n].y0; ty <= rects[n].y1; ++ty)
-      for (int tx = rects[n].x0; tx <= rects[n].x1; ++tx) bins[size_t(ty) * size_t(tiles_x) + size_t(tx)].push_back(voxels[n]);
+      for (int tx = rects[n].x0; tx <= rects[n].x1; ++tx) bins[size_t(ty) * size_t(tiles_x) + size_t(tx)].push_back(uint32_t(n));
 
   // Stage 3 (per tile): one sorted list per sign octant its rays take, then per pixel the
   // front-to-back composite.
-  const RayOrder order(scene);
   render::RasterImage image;
   image.width = width;
   image.height = height;
@@ -139,17 +145,17 @@ render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render
         if (!ready[size_t(octant)]) {
           sorted[size_t(octant)] = bin;
           std::sort(sorted[size_t(octant)].begin(), sorted[size_t(octant)].end(), [&](uint32_t a, uint32_t b) {
-            const uint64_t ka = order.key(a, octant), kb = order.key(b, octant);
-            return ka != kb ? ka < kb : a < b;
+            const uint64_t ka = order.key(voxels[a], octant), kb = order.key(voxels[b], octant);
+            return ka != kb ? ka < kb : voxels[a] < voxels[b];
           });
           ready[size_t(octant)] = true;
         }
         glm::vec3 c(0.0f);
         float t = 1.0f;
-        for (uint32_t i : sorted[size_t(octant)]) {
-          const float alpha = alpha_of_tau(voxel_tau(scene, i, camera.position_world, d));
+        for (uint32_t n : sorted[size_t(octant)]) {
+          const float alpha = alpha_of_tau(voxel_tau(scene, voxels[n], camera.position_world, d));
           if (alpha < kMinAlpha) continue;
-          c += t * alpha * colour[i];
+          c += t * alpha * colour[n];
           t *= 1.0f - alpha;
           if (t < kMinTransmittance) break;
         }

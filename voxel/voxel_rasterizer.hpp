@@ -12,6 +12,7 @@
 
 #include "render/blend.hpp"
 #include "render/camera.hpp"
+#include "voxel/ray_order.hpp"
 #include "voxel/voxel_scene.hpp"
 
 namespace lfd::voxel {
@@ -40,6 +41,11 @@ render::RasterImage rasterize_voxels(const VoxelScene& scene, const render::Came
 // (all if empty), SH evaluated from `sh_origin` (default the camera centre): with a zero
 // background and the base camera as SH origin, what V2LF's sweeping planes are made of.
 render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render::Camera& camera,
+                                           const glm::vec3& background, const std::vector<uint32_t>& subset = {},
+                                           std::optional<glm::vec3> sh_origin = std::nullopt);
+// The same with the scene's front-to-back orders built once (`order` = RayOrder(scene)): V2LF
+// renders a plane per chunk and would otherwise rebuild them for every one.
+render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const RayOrder& order, const render::Camera& camera,
                                            const glm::vec3& background, const std::vector<uint32_t>& subset = {},
                                            std::optional<glm::vec3> sh_origin = std::nullopt);
 
