@@ -150,6 +150,7 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
   j["positions"] = positions;
   j["camera"] = {{"self_calibrated", o.camera_self_calibrated},
                  {"fx", o.camera.camera_matrix(0, 0)},
+                 {"focal_sigma_rel", o.camera_focal_sigma_rel},
                  {"fy", o.camera.camera_matrix(1, 1)},
                  {"cx", o.camera.camera_matrix(0, 2)},
                  {"cy", o.camera.camera_matrix(1, 2)}};
