@@ -1,7 +1,5 @@
 #include "bench/voxel_benchmark.hpp"
 
-#include <omp.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -10,17 +8,16 @@
 
 #include <fmt/format.h>
 
-#include "bench/process_memory.hpp"
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
 #include "calib/display/display_quilt.hpp"
 #include "render/camera_json.hpp"
 #include "render/image_metrics.hpp"
+#include "render/per_view_quilt.hpp"
 #include "util/error.hpp"
 #include "voxel/v2lf.hpp"
 #include "voxel/voxel_generator.hpp"
 #include "voxel/voxel_io.hpp"
-#include "voxel/voxel_quilt.hpp"
 
 namespace lfd::bench {
 namespace {
@@ -45,21 +42,22 @@ struct Measured {
   std::optional<voxel::V2lfStats> v2lf;
 };
 
-// Warm-up, then the timed frames; `frame` returns the quilt.
-Measured measure(const std::function<ImageF(voxel::V2lfStats*)>& frame, int warmup, int runs, bool v2lf) {
+// Warm-up, then the timed frames (`frame` returns V2LF's stats, if it is V2LF); the quilt is
+// read back after them, untimed.
+Measured measure(VoxelQuiltRenderer& renderer, const std::function<std::optional<voxel::V2lfStats>()>& frame,
+                 int warmup, int runs) {
   Measured m;
-  reset_peak_rss();
-  for (int w = 0; w < warmup; ++w) m.quilt = frame(nullptr);
+  renderer.reset_peak_memory();
+  for (int w = 0; w < warmup; ++w) frame();
   std::vector<double> t;
-  voxel::V2lfStats stats;
   for (int r = 0; r < runs; ++r) {
     const auto t0 = Clock::now();
-    m.quilt = frame(v2lf ? &stats : nullptr);
+    m.v2lf = frame();
     t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
   }
-  m.peak_bytes = peak_rss_bytes();
+  m.peak_bytes = renderer.peak_memory_bytes();
   m.seconds = summarize(t);
-  if (v2lf) m.v2lf = stats;
+  m.quilt = renderer.read_quilt();
   return m;
 }
 
@@ -89,12 +87,13 @@ void VoxelBenchOptions::check() const {
   for (const std::string& b : binnings) render::parse_chunk_binning(b);
   g2lf_configs_in(config_sets, "voxel benchmark: config_sets");
   if (split_levels < 0 || split_levels > 4) fail("split_levels", fmt::format("{} is outside 0..4", split_levels));
-  if (runs < 1 || runs > 1000) fail("runs", fmt::format("{} is outside 1..1000", runs));
+  if (runs < 0 || runs > 1000) fail("runs", fmt::format("{} is outside 1..1000 (0: the backend's default)", runs));
   if (warmup < 0 || warmup > 100) fail("warmup", fmt::format("{} is outside 0..100", warmup));
 }
 
-nlohmann::ordered_json run_voxel_benchmark(const VoxelBenchOptions& options) {
+nlohmann::ordered_json run_voxel_benchmark(VoxelQuiltRenderer& renderer, const VoxelBenchOptions& options) {
   options.check();
+  const int runs = options.runs > 0 ? options.runs : renderer.default_runs();
   const auto t_load = Clock::now();
   voxel::VoxelScene scene;
   std::string label;
@@ -108,29 +107,32 @@ nlohmann::ordered_json run_voxel_benchmark(const VoxelBenchOptions& options) {
     label = fmt::format("generated tabletop (level {})", options.generated_level);
   }
   const double load_seconds = std::chrono::duration<double>(Clock::now() - t_load).count();
+  renderer.set_scene(scene);
   const render::CameraSpec spec = !options.camera_path.empty() ? render::read_camera_json(options.camera_path)
                                   : options.scene_path.empty() ? tabletop_voxel_camera()
                                                                : voxel::frame_voxel_scene(scene, 40.0f);
   const render::Camera base = render::camera_from_spec(spec, options.size, options.size);
 
   nlohmann::ordered_json out = {{"benchmark", "voxels"},
-                                {"device", fmt::format("CPU, {} OpenMP threads", omp_get_max_threads())},
-                                {"memory", "process RSS"},
+                                {"backend", renderer.name()},
+                                {"device", renderer.device()},
+                                {"memory", renderer.memory_kind()},
                                 {"scene", label},
                                 {"voxels", scene.size()},
                                 {"supersampling", scene.supersampling},
                                 {"samples_per_voxel", scene.samples_per_voxel},
                                 {"load_seconds", load_seconds},
-                                {"runs", options.runs},
+                                {"runs", runs},
                                 {"warmup", options.warmup},
                                 {"size", options.size},
                                 {"view_cone_deg", options.view_cone_deg},
                                 {"split_levels", options.split_levels},
                                 {"plane_lowpass", options.plane_lowpass},
                                 {"tables", nlohmann::ordered_json::array()}};
-  std::printf("lfd bench voxels: CPU, %d OpenMP threads; median of %d frames after %d warm-up; peak "
-              "memory: process RSS; PSNR/SSIM against the per-view quilt\n",
-              omp_get_max_threads(), options.runs, options.warmup);
+  std::printf("lfd bench voxels: %s (%s); median of %d frames after %d warm-up; peak memory: %s; PSNR/SSIM "
+              "against the per-view quilt of the same backend\n",
+              renderer.name().c_str(), renderer.device().c_str(), runs, options.warmup,
+              renderer.memory_kind().c_str());
   for (int views : options.views) {
     const render::QuiltGeometry geometry = render::make_quilt_geometry(
         base, glm::length(spec.look_at - spec.position), options.view_cone_deg, views);
@@ -150,8 +152,12 @@ nlohmann::ordered_json run_voxel_benchmark(const VoxelBenchOptions& options) {
                                     {"quilt", {layout.width, layout.height}},
                                     {"rows", nlohmann::ordered_json::array()}};
     const Measured truth = measure(
-        [&](voxel::V2lfStats*) { return voxel::render_voxel_quilt_per_view(scene, geometry, layout); },
-        options.warmup, options.runs, false);
+        renderer,
+        [&]() -> std::optional<voxel::V2lfStats> {
+          renderer.render_per_view(geometry, layout);
+          return std::nullopt;
+        },
+        options.warmup, runs);
     const auto print_row = [&](const std::string& method, const std::string& binning, const Measured& m,
                                std::optional<std::pair<double, double>> quality) {
       const double speedup = truth.seconds.median / m.seconds.median;
@@ -194,10 +200,8 @@ nlohmann::ordered_json run_voxel_benchmark(const VoxelBenchOptions& options) {
         o.planes.adaptive_filter = options.plane_lowpass;
         o.split_levels = options.split_levels;
         const Measured m = measure(
-            [&](voxel::V2lfStats* stats) {
-              return voxel::render_quilt_v2lf(scene, geometry, layout, o, scene.background, stats);
-            },
-            options.warmup, options.runs, true);
+            renderer, [&]() -> std::optional<voxel::V2lfStats> { return renderer.render_v2lf(geometry, layout, o); },
+            options.warmup, runs);
         nlohmann::ordered_json r =
             print_row(v2lf_label(c), binning, m,
                       std::make_pair(render::psnr(m.quilt, truth.quilt), render::ssim(m.quilt, truth.quilt)));

@@ -5,11 +5,14 @@
 // "V2LF"), both in one process on the same scene and quilt: per configuration the median frame
 // time of repeated runs after warm-up and its spread, FPS, the speed-up over the per-view quilt,
 // PSNR / SSIM against it, plane memory and peak memory. Prints Markdown tables as rows finish;
-// returns the figures as JSON. CPU only (the GL voxel path has its own tests).
+// returns the figures as JSON. On the CPU or the GL voxel path (bench/voxel_quilt_renderer.hpp):
+// both sides of a table on the same backend.
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "bench/voxel_quilt_renderer.hpp"
 
 namespace lfd::bench {
 
@@ -26,13 +29,13 @@ struct VoxelBenchOptions {
   int only_chunks = 0;      // > 0: only the configurations with this N_chunk
   int split_levels = 0;     // V2lfOptions::split_levels
   bool plane_lowpass = true;
-  int runs = 3;             // timed frames per configuration
+  int runs = 0;             // timed frames per configuration (0: the backend's default, CPU 3, GL 10)
   int warmup = 1;           // untimed frames before them
 
   // InputError "voxel benchmark: <field>: ..." for a value out of range.
   void check() const;
 };
 
-nlohmann::ordered_json run_voxel_benchmark(const VoxelBenchOptions& options);
+nlohmann::ordered_json run_voxel_benchmark(VoxelQuiltRenderer& renderer, const VoxelBenchOptions& options);
 
 }  // namespace lfd::bench

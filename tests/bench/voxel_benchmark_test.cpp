@@ -20,7 +20,8 @@ VoxelBenchOptions tiny() {
 }
 
 TEST(VoxelBenchmark, TimesPerViewAndTheTable1RowsOfOneChunkCount) {
-  const nlohmann::ordered_json r = run_voxel_benchmark(tiny());
+  const auto renderer = make_cpu_voxel_renderer();
+  const nlohmann::ordered_json r = run_voxel_benchmark(*renderer, tiny());
   ASSERT_EQ(r["tables"].size(), 1u);
   const auto& rows = r["tables"][0]["rows"];
   ASSERT_EQ(rows.size(), 3u);  // per view, V2LF (N=64), V2LF (N=64, Ps=2)
@@ -35,10 +36,23 @@ TEST(VoxelBenchmark, TimesPerViewAndTheTable1RowsOfOneChunkCount) {
   }
 }
 
+// The same table on the GL voxel path (llvmpipe here): both sides on the GPU, GPU memory.
+TEST(VoxelBenchmark, TheGlBackendTimesTheSameRows) {
+  const auto renderer = make_gl_voxel_renderer();
+  const nlohmann::ordered_json r = run_voxel_benchmark(*renderer, tiny());
+  EXPECT_EQ(r["backend"], "gl");
+  const auto& rows = r["tables"][0]["rows"];
+  ASSERT_EQ(rows.size(), 3u);
+  for (size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_GT(rows[i]["psnr_db"].get<double>(), 15.0);
+    EXPECT_GT(rows[i]["peak_bytes"].get<size_t>(), rows[i]["plane_bytes"].get<size_t>() / 2);
+  }
+}
+
 TEST(VoxelBenchmark, RefusesAnUnknownConfigurationSet) {
   VoxelBenchOptions o = tiny();
   o.config_sets = {"table9"};
-  EXPECT_THROW(run_voxel_benchmark(o), InputError);
+  EXPECT_THROW(run_voxel_benchmark(*make_cpu_voxel_renderer(), o), InputError);
 }
 
 }  // namespace
