@@ -11,6 +11,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calib/coarse_start.hpp"
+#include "calib/display/cover_rays.hpp"
 #include "calib/display/lens_relations.hpp"
 #include "calib/display/view_count.hpp"
 #include "calib/fringe_registration.hpp"
@@ -317,9 +318,14 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
 void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetection>& boards,
                              const std::vector<PositionState>& states, CalibrationOutcome& out) {
   const DisplayCalibration& nd = set.nominal.display;
+  // Through a cover layer a camera sees a panel point where its light leaves the cover
+  // (cover_rays.hpp), as registration projects it: from the position's registered camera.
+  Eigen::Vector3d camera_m{0, 0, 1};
   auto panel_m = [&](cv::Point2d px) {
     const Eigen::Vector3d m = uv_to_display_m(nd, panel_px_to_uv(nd, px));
-    return cv::Point3f(float(m.x()), float(m.y()), 0.0f);
+    const Point3 e = cover_exit_point({m.x(), m.y(), 0.0}, {camera_m.x(), camera_m.y(), camera_m.z()},
+                                      nd.cover);
+    return cv::Point3f(float(e.x), float(e.y), float(e.z));
   };
   // Evenly thinned fringe points: a few hundred per position already pin the intrinsics, and
   // calibrateCamera runs three times for the focal length's uncertainty.
@@ -327,6 +333,7 @@ void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetec
   std::vector<PlanarView> views;
   for (size_t i = 0; i < states.size(); ++i) {
     PlanarView v;
+    camera_m = states[i].registration->camera_position_m();
     const BoardDetection& b = boards[i];
     for (size_t k = 0; k < b.ids.size(); ++k) {
       v.panel_m.push_back(panel_m(set.board.corners_px.at(size_t(b.ids[k])) + states[i].board_shift.at(k)));
