@@ -176,8 +176,8 @@ void GlV2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   stats_.voxels_binned = binned_count;
   stats_.voxels_split = binned.voxels_split;
   stats_.plane_bytes = planes_.texels.bytes();
-  stats_.gpu_bytes = scene.bytes() + lowpass_scratch_.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() + accumulation_.bytes() +
-                     chunk_orders_.bytes();
+  stats_.gpu_bytes = scene.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() + accumulation_.bytes() +
+                     lowpass_scratch_.bytes() + chunk_orders_.bytes();
 }
 
 ImageF render_quilt_v2lf_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,

@@ -41,34 +41,31 @@ FramePlan plan_frame(const calib::Calibration& calibration, const render::Camera
   return plan;
 }
 
-LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
-                                 const gpu::GlInfo& info, FrameOptions options)
+LightFieldFrame::LightFieldFrame(const calib::Calibration& calibration, const gpu::GlInfo& info,
+                                 FrameOptions options)
     : calibration_(calibration),
       lens_(calibration.display, calibration.correction),
       info_(info),
       options_(std::move(options)) {
-  replace_scene(scene);
   panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
+}
+
+LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
+                                 const gpu::GlInfo& info, FrameOptions options)
+    : LightFieldFrame(calibration, info, std::move(options)) {
+  replace_scene(scene);
 }
 
 LightFieldFrame::LightFieldFrame(const voxel::VoxelScene& scene, const calib::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
-    : calibration_(calibration),
-      lens_(calibration.display, calibration.correction),
-      info_(info),
-      options_(std::move(options)) {
+    : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
-  panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
 
 LightFieldFrame::LightFieldFrame(const ViewerScene& scene, const calib::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
-    : calibration_(calibration),
-      lens_(calibration.display, calibration.correction),
-      info_(info),
-      options_(std::move(options)) {
+    : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
-  panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
 
 LightFieldFrame::~LightFieldFrame() = default;

@@ -88,6 +88,8 @@ class LightFieldFrame {
   const FramePlan& plan() const { return plan_; }
 
  private:
+  // The members every scene kind shares (the lens, the panel); the public constructors add the scene.
+  LightFieldFrame(const calib::Calibration& calibration, const gpu::GlInfo& info, FrameOptions options);
   void render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster, bool timed);
   void render_voxels(const ViewerSettings& settings, FrameReport* report);
   void drop_renderers();
