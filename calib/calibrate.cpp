@@ -157,6 +157,7 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
   j["solver"] = {{"seconds", o.solve.solve_seconds},
                  {"phase_noise_periods", o.solve.obs_sigma_periods},
                  {"noise_inflation", o.solve.noise_inflation},
+                 {"noise_inflation_cells", o.solve.noise_inflation_cells},
                  {"termination", o.solve.termination},
                  {"residual_robust_sigma_periods", o.solve.residual_robust_sigma_periods},
                  {"camera_shift_sigmas", o.solve.camera_shift_sigmas},

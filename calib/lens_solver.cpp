@@ -297,40 +297,64 @@ class LensProblem {
   // field cannot follow). For independent errors the mean of the n residuals in a screen cell
   // has variance sigma^2 / n; the measured n * mean^2 over sigma^2 is the inflation. Without
   // it the covariance would count 100k correlated samples as independent and come out several
-  // times too small.
+  // times too small. The inflation is measured in cells of 1/16, 1/8 and 1/4 of the screen and
+  // the largest is kept: the slant is a gradient over the whole height, so errors shared over
+  // a quarter of the screen weigh on it most, and on the bench's photos the inflation in 1/4
+  // cells is 1.4-3.9 times that in 1/16 cells (docs/calibration.md, "The reported 1-sigma
+  // uncertainties"). An error every position shares at the screen's scale leaves no residual
+  // and no measure of the residuals can see it.
   void measure_noise(SolverResult& result) {
-    constexpr int kCells = 16;
-    double sum2 = 0, inflation_sum = 0;
-    long n = 0, cells_used = 0;
-    std::vector<std::pair<double, long>> cells;
-    for (size_t i = 0; i < samples_.size(); ++i) {
-      cells.assign(kCells * kCells, {0.0, 0});
+    double sum2 = 0;
+    long n = 0;
+    for (size_t i = 0; i < samples_.size(); ++i)
       for (const auto& s : samples_[i]) {
         const double r = residual_of(i, s);
         if (std::abs(r) >= kOutlierBoundPeriods) continue;
         sum2 += r * r;
         ++n;
-        const int cu = std::clamp(int(s.u_phys * kCells), 0, kCells - 1);
-        const int cv = std::clamp(int(s.v * kCells), 0, kCells - 1);
-        cells[size_t(cv) * kCells + cu].first += r;
-        cells[size_t(cv) * kCells + cu].second += 1;
       }
-      for (const auto& [sum, count] : cells)
+    if (n < 10) {
+      obs_sigma_ = options_.obs_sigma;
+      result.obs_sigma_periods = obs_sigma_;
+      return;
+    }
+    const double sigma2 = sum2 / double(n);
+    double inflation = 1.0;
+    for (const int cells : {16, 8, 4}) {
+      const double at_scale = inflation_in_cells(cells, sigma2);
+      if (at_scale > inflation) {
+        inflation = at_scale;
+        result.noise_inflation_cells = cells;
+      }
+    }
+    result.noise_inflation = inflation;
+    obs_sigma_ = std::max(1e-4, std::sqrt(sigma2 * inflation));
+    result.obs_sigma_periods = obs_sigma_;
+  }
+
+  // The mean over cells (of 1/cells of the screen per side, per position, 10 inliers or more)
+  // of n * mean^2 / sigma2: 1 for independent errors, larger when a cell's samples share them.
+  double inflation_in_cells(int cells, double sigma2) const {
+    double inflation_sum = 0;
+    long cells_used = 0;
+    std::vector<std::pair<double, long>> sums;
+    for (size_t i = 0; i < samples_.size(); ++i) {
+      sums.assign(size_t(cells) * cells, {0.0, 0});
+      for (const auto& s : samples_[i]) {
+        const double r = residual_of(i, s);
+        if (std::abs(r) >= kOutlierBoundPeriods) continue;
+        const int cu = std::clamp(int(s.u_phys * cells), 0, cells - 1);
+        const int cv = std::clamp(int(s.v * cells), 0, cells - 1);
+        sums[size_t(cv) * cells + cu].first += r;
+        sums[size_t(cv) * cells + cu].second += 1;
+      }
+      for (const auto& [sum, count] : sums)
         if (count >= 10) {
           inflation_sum += sum * sum / double(count);  // = count * mean^2
           ++cells_used;
         }
     }
-    if (n >= 10) {
-      const double sigma2 = sum2 / double(n);
-      const double inflation =
-          cells_used ? std::max(1.0, inflation_sum / cells_used / sigma2) : 1.0;
-      result.noise_inflation = inflation;
-      obs_sigma_ = std::max(1e-4, std::sqrt(sigma2 * inflation));
-    } else {
-      obs_sigma_ = options_.obs_sigma;
-    }
-    result.obs_sigma_periods = obs_sigma_;
+    return cells_used ? inflation_sum / double(cells_used) / sigma2 : 1.0;
   }
 
   // Uncertainties: the Gauss-Newton covariance at the solution of the last stage. The samples

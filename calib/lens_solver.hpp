@@ -91,6 +91,7 @@ struct SolverResult {
   std::vector<std::vector<ResidualSample>> position_samples;  // per position, as solved
   double obs_sigma_periods = 0;  // per-sample phase noise the final stage used (effective)
   double noise_inflation = 1;    // its inflation for errors shared by neighbouring samples
+  int noise_inflation_cells = 0;  // the cells per side it was largest in (0: none above 1)
   double solve_seconds = 0;
   bool converged = false;       // the final stage ended in Ceres' CONVERGENCE
   std::string termination;      // the final stage's termination type and iterations
