@@ -15,13 +15,12 @@ namespace {
 constexpr size_t kBatchBytes = 8 * sizeof(uint32_t);  // Batch in the shaders
 constexpr size_t kAccumulationTexel = 16;             // RGBA32F
 
-Program convert_program(const char* format, bool quantize_u8) {
-  return Program(std::string("g2lf planes: convert to ") + format,
-                 {{GL_COMPUTE_SHADER, g2lf_plane_convert_comp_glsl}},
+}  // namespace
+
+Program plane_convert_program(const char* format, bool quantize_u8) {
+  return Program(std::string("planes: convert to ") + format, {{GL_COMPUTE_SHADER, g2lf_plane_convert_comp_glsl}},
                  {std::string("PLANE_FORMAT ") + format, std::string("QUANTIZE_U8 ") + (quantize_u8 ? "1" : "0")});
 }
-
-}  // namespace
 
 int plane_batch_layers(PlaneFormat format, int max_planes, int width, int height, size_t budget_bytes) {
   if (format == PlaneFormat::kRgba32f) return 0;
@@ -38,8 +37,8 @@ size_t plane_raster_bytes(PlaneFormat format, int batch_layers, int width, int h
 GlPlaneRaster::GlPlaneRaster()
     : batches_("g2lf planes: batches", {{GL_COMPUTE_SHADER, g2lf_plane_batches_comp_glsl}}),
       copy_("g2lf planes: batch copy", {{GL_COMPUTE_SHADER, g2lf_plane_copy_comp_glsl}}),
-      convert_u8_(convert_program("rgba8", true)),
-      convert_f16_(convert_program("rgba16f", false)),
+      convert_u8_(plane_convert_program("rgba8", true)),
+      convert_f16_(plane_convert_program("rgba16f", false)),
       batch_draw_(sizeof(DrawArraysIndirect)) {}
 
 size_t GlPlaneRaster::bytes() const {

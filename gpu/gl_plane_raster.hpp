@@ -33,6 +33,11 @@ int plane_batch_layers(PlaneFormat format, int max_planes, int width, int height
 // GPU bytes of the accumulation array and the per-Gaussian batch buffers.
 size_t plane_raster_bytes(PlaneFormat format, int batch_layers, int width, int height, size_t gaussians);
 
+// The convert pass (gpu/shaders/g2lf_plane_convert.comp.glsl) for planes of `format` ("rgba8",
+// "rgba16f", "rgba32f"): an RGBA32F accumulation layer rounded into its plane as the CPU stores
+// it (QUANTIZE_U8 for RGBA8). V2LF's planes go through it too (gpu/gl_v2lf.hpp).
+Program plane_convert_program(const char* format, bool quantize_u8);
+
 class GlPlaneRaster {
  public:
   GlPlaneRaster();  // needs a current context and GL_ARB_shader_viewport_layer_array

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/shaders/g2lf_plane_convert.comp.glsl.hpp"
+#include "gpu/gl_plane_raster.hpp"
 #include "gpu/shaders/voxel_plane_lowpass.comp.glsl.hpp"
 #include "util/error.hpp"
 #include "voxel/plane_lowpass.hpp"
@@ -16,34 +16,24 @@ namespace {
 
 constexpr GLuint kPlaneTableBinding = 9;  // g2lf_plane_convert.comp.glsl's PlaneTable
 
-Program convert_program(const char* format, bool quantize_u8) {
-  return Program(std::string("v2lf planes: convert to ") + format, {{GL_COMPUTE_SHADER, g2lf_plane_convert_comp_glsl}},
-                 {std::string("PLANE_FORMAT ") + format, std::string("QUANTIZE_U8 ") + (quantize_u8 ? "1" : "0")});
-}
-
 }  // namespace
 
 GlV2lfRenderer::GlV2lfRenderer(const GlVoxelScene& scene, const GlInfo& info)
     : scene_(scene),
       info_(info),
-      convert_u8_(convert_program("rgba8", true)),
-      convert_f16_(convert_program("rgba16f", false)),
-      convert_f32_(convert_program("rgba32f", false)),
+      convert_u8_(plane_convert_program("rgba8", true)),
+      convert_f16_(plane_convert_program("rgba16f", false)),
+      convert_f32_(plane_convert_program("rgba32f", false)),
       lowpass_("v2lf plane low-pass", {{GL_COMPUTE_SHADER, voxel_plane_lowpass_comp_glsl}}) {}
 
 void GlV2lfRenderer::lowpass(float variance_px2) {
-  // voxel::gaussian_lowpass's kernel, computed as it does.
-  if (!(variance_px2 >= 0.01f)) return;
-  const float sigma = std::sqrt(variance_px2);
-  const int radius = std::max(1, int(std::ceil(3.0f * sigma)));
+  const std::vector<float> kernel = voxel::gaussian_lowpass_kernel(variance_px2);  // the CPU's weights
+  if (kernel.empty()) return;
+  const int radius = int(kernel.size() / 2);
   if (radius > 64)
     throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than 64 texels; "
                       "lower --plane-scale",
-                      sigma);
-  std::vector<float> kernel(size_t(2 * radius + 1));
-  float sum = 0.0f;
-  for (int k = -radius; k <= radius; ++k) sum += kernel[size_t(k + radius)] = std::exp(-0.5f * float(k * k) / variance_px2);
-  for (float& w : kernel) w /= sum;
+                      std::sqrt(variance_px2));
   const int wp = accumulation_.width(), hp = accumulation_.height();
   if (!lowpass_scratch_.id() || lowpass_scratch_.width() != wp || lowpass_scratch_.height() != hp)
     lowpass_scratch_ = Texture(GL_RGBA32F, wp, hp);

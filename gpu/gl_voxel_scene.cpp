@@ -6,6 +6,7 @@
 #include "gpu/gl_scene.hpp"
 #include "util/error.hpp"
 #include "voxel/ray_order.hpp"
+#include "voxel/voxel_rasterizer.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -78,15 +79,11 @@ void GlVoxelScene::bind() const {
 }
 
 uint32_t octants_in_view(const render::Camera& camera) {
-  // World direction of pixel (x, y)'s ray before normalising (voxel_rasterizer's pixel_ray).
-  const glm::mat3 camera_to_world = glm::transpose(camera.world_to_camera);
+  // Before normalising, the direction is linear in the pixel position; normalising keeps signs.
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (int corner = 0; corner < 4; ++corner) {
     const int x = (corner & 1) ? camera.width - 1 : 0, y = (corner & 2) ? camera.height - 1 : 0;
-    const float ndc_x = (2.0f * float(x) + 1.0f) / float(camera.width) - 1.0f;
-    const float ndc_y = (2.0f * float(y) + 1.0f) / float(camera.height) - 1.0f;
-    const glm::vec3 d = camera_to_world * glm::vec3((ndc_x - camera.shift_x_ndc) * camera.tan_half_fov_x(),
-                                                    (ndc_y - camera.shift_y_ndc) * camera.tan_half_fov_y(), 1.0f);
+    const glm::vec3 d = voxel::pixel_ray(camera, x, y);
     lo = glm::min(lo, d);
     hi = glm::max(hi, d);
   }

@@ -40,14 +40,21 @@ void blur_axis(std::vector<float>& data, int channels, int first, int count, int
 
 }  // namespace
 
-void gaussian_lowpass(render::RasterImage& image, float variance_px2) {
-  if (!(variance_px2 >= 0.01f)) return;
+std::vector<float> gaussian_lowpass_kernel(float variance_px2) {
+  if (!(variance_px2 >= 0.01f)) return {};
   const float sigma = std::sqrt(variance_px2);
   const int radius = std::max(1, int(std::ceil(3.0f * sigma)));
   std::vector<float> kernel(size_t(2 * radius + 1));
   float sum = 0.0f;
   for (int k = -radius; k <= radius; ++k) sum += kernel[size_t(k + radius)] = std::exp(-0.5f * k * k / variance_px2);
   for (float& w : kernel) w /= sum;
+  return kernel;
+}
+
+void gaussian_lowpass(render::RasterImage& image, float variance_px2) {
+  const std::vector<float> kernel = gaussian_lowpass_kernel(variance_px2);
+  if (kernel.empty()) return;
+  const int radius = int(kernel.size() / 2);
   // Only the box around the non-empty texels (C = 0, T = 1 is empty), grown by the radius: a
   // chunk covers a small part of most planes. Beyond it every texel within reach is empty, so
   // clamping at the box's edge reads what the whole plane would give.

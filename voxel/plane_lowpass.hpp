@@ -7,6 +7,8 @@
 // taken at the focal plane and carried into plane texels as G2LF's Eq. gs_prefilter_fix carries
 // 3DGS's 0.3 px^2 dilation (render::adaptive_filter_variance). A scene without supersampling
 // (ss = 1) has no filter to match, so its planes are not filtered.
+#include <vector>
+
 #include "render/blend.hpp"
 #include "render/quilt_geometry.hpp"
 #include "voxel/voxel_scene.hpp"
@@ -24,5 +26,9 @@ float plane_lowpass_variance(const VoxelScene& scene, const render::QuiltGeometr
 // transmittance alike, which keeps the pair a consistent blend of the chunk; in place.
 // Variances below 0.01 texel^2 leave the image as it is.
 void gaussian_lowpass(render::RasterImage& image, float variance_px2);
+
+// The filter's normalised 1D kernel (2 radius + 1 taps, radius = max(1, ceil(3 sigma))); empty
+// below 0.01 texel^2. The GL planes' pass uses the same weights (gpu/gl_v2lf.cpp).
+std::vector<float> gaussian_lowpass_kernel(float variance_px2);
 
 }  // namespace lfd::voxel

@@ -49,6 +49,8 @@ TileRect tile_rect(const VoxelScene& scene, size_t i, const render::Camera& came
   return r;
 }
 
+}  // namespace
+
 glm::vec3 pixel_ray(const render::Camera& camera, int x, int y) {
   const float ndc_x = (2.0f * float(x) + 1.0f) / float(camera.width) - 1.0f;
   const float ndc_y = (2.0f * float(y) + 1.0f) / float(camera.height) - 1.0f;
@@ -56,6 +58,8 @@ glm::vec3 pixel_ray(const render::Camera& camera, int x, int y) {
                         (ndc_y - camera.shift_y_ndc) * camera.tan_half_fov_y(), 1.0f);
   return glm::normalize(glm::transpose(camera.world_to_camera) * d_cam);
 }
+
+namespace {
 
 // tau of one voxel along a ray: K midpoint samples over the slab test's chord.
 float voxel_tau(const VoxelScene& scene, size_t i, const glm::vec3& o, const glm::vec3& d) {

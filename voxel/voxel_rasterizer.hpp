@@ -28,6 +28,10 @@ struct VoxelRenderSettings {
   std::optional<float> supersampling;     // default: the scene's ss; 1 = no supersampling
 };
 
+// The unit world direction of pixel (x, y)'s ray (centre at integer coordinates, row 0 = top,
+// the principal-point shift applied); the GL raster's fragment shader computes the same.
+glm::vec3 pixel_ray(const render::Camera& camera, int x, int y);
+
 // One voxel's colour and sampled opacity along a ray, for tests and the GPU port: the
 // transmittance factor of a box is exp(-tau), alpha as above (before the skip test).
 float voxel_alpha(const VoxelScene& scene, size_t voxel, const glm::vec3& origin, const glm::vec3& unit_direction);
