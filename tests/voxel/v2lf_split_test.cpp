@@ -49,7 +49,9 @@ TEST(VoxelSplit, ChildrenKeepTheDensityFieldAtRandomPoints) {
     const size_t child = child_holding(s, first, p);
     ASSERT_LT(child, first + 8u);
     EXPECT_NEAR(raw_density_at(s, child, p), parent, 1e-4f);
-    if (child == first + 6) EXPECT_NEAR(raw_density_at(s, child_holding(s, grand, p), p), parent, 1e-4f);
+    if (child == first + 6) {
+      EXPECT_NEAR(raw_density_at(s, child_holding(s, grand, p), p), parent, 1e-4f);
+    }
   }
 }
 

@@ -69,7 +69,9 @@ TEST(V2lf, ChunksHoldEveryVoxelInFrontOnceFrontToBack) {
   size_t total = 0;
   for (size_t k = 0; k < chunks.members.size(); ++k) {
     total += chunks.members[k].size();
-    if (k > 0) EXPECT_GE(chunks.plane_depth[k], chunks.plane_depth[k - 1]);
+    if (k > 0) {
+      EXPECT_GE(chunks.plane_depth[k], chunks.plane_depth[k - 1]);
+    }
   }
   EXPECT_LE(total, f.scene.size());
   EXPECT_GT(total, f.scene.size() / 2);
