@@ -254,6 +254,10 @@ class LensProblem {
         const double f_seen = dc_.seen(&cams_[3 * i], s.u_phys, s.v, terms.tilt, lens_[3]);
         s.u = s.u_phys + lens_content_shift(f_seen, nominal_.inv_view) / terms.pitch_periods;
         s.a_nom = nominal_lens_.phase(s.u, s.v);
+        // The field is part of the phase at the content point, like the rest of A: at the
+        // physical point it would be off by dw/du times the shift (up to half a lens), a
+        // pattern that follows f_seen over the screen.
+        if (with_field_) s.wu = bspline_weights(nx_, s.u);
       }
   }
 
@@ -442,8 +446,8 @@ class LensProblem {
     return po;
   }
 
-  // Samples: subsampled evenly to the cap; the field's basis weights at the physical point
-  // serve for the content point too (the field is smooth).
+  // Samples: subsampled evenly to the cap; their content points (and the field's basis
+  // weights there) follow from the start.
   void select_samples() {
     samples_.resize(positions_.size());
     for (size_t i = 0; i < positions_.size(); ++i) {
@@ -455,10 +459,7 @@ class LensProblem {
         s.u_phys = in[j].u;
         s.v = in[j].v;
         s.psi = in[j].psi;
-        if (with_field_) {
-          s.wu = bspline_weights(nx_, s.u_phys);
-          s.wv = bspline_weights(ny_, s.v);
-        }
+        if (with_field_) s.wv = bspline_weights(ny_, s.v);
         samples_[i].push_back(s);
       }
     }
@@ -581,8 +582,12 @@ std::vector<double> camera_shifts_in_sigmas(const std::vector<PositionData>& pos
   return out;
 }
 
-SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
-                        const std::vector<PositionData>& positions, const SolverOptions& options) {
+namespace {
+
+// The three stages on the options' field grid, with uncertainties from the covariance alone.
+SolverResult solve_on_grid(const Calibration& nominal, const LensEstimate& start,
+                           const std::vector<PositionData>& positions,
+                           const SolverOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   LensProblem problem(nominal, start, positions, options);
   SolverResult result;
@@ -608,6 +613,69 @@ SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
     m.depth_sigma_m = p.depth_sigma_m;
   }
   result.camera_shift_sigmas = camera_shifts_in_sigmas(moved, result.cameras_m);
+  result.solve_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+// The wrapped difference of two center values (periods), in [-0.5, 0.5).
+double center_difference(double a, double b) { return wrap_half(a - b); }
+
+// What the field's resolution costs (SolverOptions::field_refinement): the same problem on a
+// grid with half the knot spacing, so it holds every field of the solved grid (uniform cubic
+// B-splines nest when the segments double), under the same curvature prior per unit of screen:
+// the prior's energy sum_nodes (smoothness x second difference)^2 approximates smoothness^2 h^2
+// times the integral of the squared second derivatives (h the knot spacing), so halving h
+// doubles the weight. What the refined solve moves is what the solved grid could not follow
+// of the warp; it leaves no residual, so the covariance cannot see it. Each value's change is
+// added to its sigma in quadrature.
+void refine_field(const Calibration& nominal, const std::vector<PositionData>& positions,
+                  const SolverOptions& options, SolverResult& result) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolverOptions fine = options;
+  fine.grid_nx = 2 * (options.grid_nx - 3) + 3;
+  fine.grid_ny = 2 * (options.grid_ny - 3) + 3;
+  fine.smoothness = 2 * options.smoothness;
+  fine.field_refinement = false;
+  const SolverResult r = solve_on_grid(nominal, result.lens, positions, fine);
+  FieldRefinement& out = result.field_refinement;
+  out.grid_nx = fine.grid_nx;
+  out.grid_ny = fine.grid_ny;
+  out.converged = r.converged;
+  out.change["pitch_lpi"] = r.lens.pitch_lpi - result.lens.pitch_lpi;
+  out.change["slope"] = r.lens.slope - result.lens.slope;
+  out.change["center_periods"] =
+      center_difference(r.lens.center_periods, result.lens.center_periods);
+  if (result.view_cone_fitted)
+    out.change["view_cone_deg"] = r.lens.view_cone_deg - result.lens.view_cone_deg;
+  if (options.focal_sigma_rel > 0)
+    out.change["focal_rel"] = r.focal_change_rel - result.focal_change_rel;
+  // The field's: the screen RMS of the two fields' difference (both in the same gauge).
+  double sum = 0;
+  const int n = 32;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+      const double d = r.correction(u, v) - result.correction(u, v);
+      sum += d * d;
+    }
+  out.change["correction_rms_periods"] = std::sqrt(sum / (n * n));
+  for (const auto& [key, change] : out.change) {
+    const auto it = result.sigma.find(key);
+    if (it != result.sigma.end()) it->second = std::hypot(it->second, change);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
+                        const std::vector<PositionData>& positions, const SolverOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolverResult result = solve_on_grid(nominal, start, positions, options);
+  const bool with_field = options.grid_nx >= 4 && options.grid_ny >= 4;
+  if (options.field_refinement && with_field && !result.sigma.empty())
+    refine_field(nominal, positions, options, result);
   result.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;

@@ -11,7 +11,8 @@
 // zero linear trend, so it cannot absorb center, pitch or slope) and per-position camera
 // positions (priors from the registration). Residuals are wrap-aware
 // (wrap_to_[-0.5, 0.5](psi_obs - psi_model)) under a robust loss; uncertainties come from
-// ceres::Covariance scaled by the residual variance.
+// ceres::Covariance with the samples weighted by their measured noise, plus what a field of
+// twice the resolution changes (SolverOptions::field_refinement).
 #include <map>
 #include <string>
 #include <vector>
@@ -56,6 +57,12 @@ struct SolverOptions {
   // fixes it (a longer focal length moves the cameras away, which a wider cone undoes), so
   // what it does is carry the camera's uncertainty into the view cone's sigma.
   double focal_sigma_rel = 0;
+  // After the solve, solve again on a grid with half the knot spacing (the same curvature
+  // prior per unit of screen) and add each value's change to its sigma in quadrature: what the
+  // grid cannot follow of a real warp leaves no residual, yet the positions' uneven coverage
+  // of the screen turns it into a slant error (docs/calibration.md, "What the field's
+  // resolution costs"). Doubles the solve time.
+  bool field_refinement = true;
   int max_samples_per_position = 40000;
   int max_iterations = 200;  // per stage; the final one must end in CONVERGENCE
   int threads = 2;
@@ -73,12 +80,24 @@ struct ResidualSample {
   float u = 0, v = 0, psi = 0, residual = 0;
 };
 
+// The refined-grid solve's change of each value (SolverOptions::field_refinement), signed,
+// same keys as SolverResult::sigma; empty when it did not run.
+struct FieldRefinement {
+  int grid_nx = 0, grid_ny = 0;
+  std::map<std::string, double> change;
+  bool converged = false;
+  double seconds = 0;
+};
+
 struct SolverResult {
   LensEstimate lens;
   CorrectionField correction;
   std::vector<Eigen::Vector3d> cameras_m;
   double focal_change_rel = 0;  // the solve's relative change of the focal length (free only)
-  std::map<std::string, double> sigma;  // 1-sigma: pitch_lpi, slope, center_periods, ...
+  // 1-sigma: pitch_lpi, slope, center_periods, ...: the covariance's, with the field
+  // refinement's change added in quadrature when it ran.
+  std::map<std::string, double> sigma;
+  FieldRefinement field_refinement;
   ResidualStats residuals;              // of all samples, robust (residual_statistics.hpp)
   double residual_robust_sigma_periods = 0;  // 1.4826 MAD of all residuals
   std::vector<std::string> position_names;
