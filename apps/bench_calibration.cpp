@@ -79,9 +79,9 @@ int RunBenchCalibration(int argc, char** argv) {
 
   const pipeline::AccuracyBars bars;
   std::printf("| display | seed | positions | capture | camera | slant err deg | pitch rel err | center err "
-              "| cone err deg | warp rms err | phase rms err | gates | simulate s | calibrate s "
-              "| solve s |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| cone err deg | warp rms err | phase rms err | err/sigma slant pitch center cone "
+              "warp | gates | simulate s | calibrate s | solve s |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0;
   auto print_row = [&](const pipeline::CalibrationBenchmarkRow& r) {
     const std::string camera =
@@ -110,12 +110,17 @@ int RunBenchCalibration(int argc, char** argv) {
                      p.residual_rms_periods);
     failures += r.within_bars ? 0 : 1;
     const auto& e = *r.errors;
-    std::printf("| %s | %d | %d | %dx%d | %s | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | "
+    std::string ratios;
+    for (const char* key : {"slant", "pitch", "center", "cone", "warp"}) {
+      const auto it = r.error_over_sigma.find(key);
+      ratios += it == r.error_over_sigma.end() ? std::string(" -") : fmt::format(" {:.2f}", it->second);
+    }
+    std::printf("| %s | %d | %d | %dx%d | %s | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | %s | "
                 "%.1f | %.1f | %.2f |\n",
                 r.display.c_str(), r.seed, r.positions, r.capture_width, r.capture_height,
                 camera.c_str(),
                 e.slant_deg, e.pitch_rel, e.center_periods, e.view_cone_deg,
-                e.correction_rms_periods, e.phase_rms_periods,
+                e.correction_rms_periods, e.phase_rms_periods, ratios.c_str() + 1,
                 r.gate_failures.empty() ? "pass" : "REJECT", r.simulate_s, r.calibrate_s,
                 r.solve_s);
     std::fflush(stdout);

@@ -164,6 +164,11 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
                  {"position_rms_periods", o.solve.position_rms},
                  {"position_rms_ratios", o.solve.position_rms_ratio},
                  {"stages", o.solve.report}};
+  if (const FieldRefinement& f = o.solve.field_refinement; f.grid_nx > 0)
+    j["solver"]["field_refinement"] = {{"grid", {f.grid_nx, f.grid_ny}},
+                                       {"change", f.change},
+                                       {"converged", f.converged},
+                                       {"seconds", f.seconds}};
   j["colour_order"] = to_json(o.colour_order);
   j["warnings"] = o.warnings;
   j["gate_failures"] = o.gate_failures;

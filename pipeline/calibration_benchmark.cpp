@@ -42,6 +42,27 @@ nlohmann::ordered_json AccuracyBars::to_json() const {
           {"correction_rms_periods", warp}};
 }
 
+namespace {
+
+// |error| / sigma per value; the pitch's error is relative, its sigma in lenticules per inch.
+std::map<std::string, double> errors_over_sigmas(const calib::CalibrationErrors& e,
+                                                 const std::map<std::string, double>& sigma,
+                                                 double pitch_lpi) {
+  std::map<std::string, double> out;
+  auto add = [&](const char* name, const char* key, double error, double scale = 1.0) {
+    const auto it = sigma.find(key);
+    if (it != sigma.end() && it->second > 0) out[name] = std::abs(error) / (it->second * scale);
+  };
+  add("slant", "slant_deg", e.slant_deg);
+  add("pitch", "pitch_lpi", e.pitch_rel, 1.0 / pitch_lpi);
+  add("center", "center_periods", e.center_periods);
+  add("cone", "view_cone_deg", e.view_cone_deg);
+  add("warp", "correction_rms_periods", e.correction_rms_periods);
+  return out;
+}
+
+}  // namespace
+
 void CalibrationBenchmarkOptions::check() const {
   const std::string where = "calibration benchmark";
   require_field(width_px >= 320 && width_px <= 6000, where, "width_px", "must be in 320..6000");
@@ -75,6 +96,7 @@ nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
   row["gate_failures"] = gate_failures;
   row["gate_values"] = gate_values;
   row["uncertainty"] = uncertainty;
+  row["error_over_sigma"] = error_over_sigma;
   row["seconds"] = {{"simulate", simulate_s}, {"calibrate", calibrate_s}, {"solve", solve_s}};
   return row;
 }
@@ -153,6 +175,8 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
                              {"position_rms_periods", out.solve.position_rms},
                              {"position_rms_ratios", out.solve.position_rms_ratio}};
           row.uncertainty = out.calibration.uncertainty;
+          row.error_over_sigma = errors_over_sigmas(*row.errors, row.uncertainty,
+                                                    out.calibration.display.pitch_lpi);
           if (self_calibrate) {
             row.focal_error_rel = out.camera.camera_matrix(0, 0) / rig.intrinsics.camera_matrix(0, 0) - 1;
             row.focal_sigma_rel = out.camera_focal_sigma_rel;

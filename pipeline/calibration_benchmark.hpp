@@ -80,6 +80,9 @@ struct CalibrationBenchmarkRow {
   std::vector<std::string> gate_failures;
   nlohmann::ordered_json gate_values;  // what the fit gates measured (calib/quality_gates.hpp)
   std::map<std::string, double> uncertainty;
+  // Each error over its reported 1-sigma (slant, pitch, center, cone, warp): whether the
+  // sigmas cover the errors (issue #12); absent where a sigma is missing or zero.
+  std::map<std::string, double> error_over_sigma;
   std::vector<PoseError> poses;
   double simulate_s = 0, calibrate_s = 0, solve_s = 0;
   nlohmann::ordered_json to_json() const;
