@@ -54,6 +54,14 @@ int RunBenchCalibration(int argc, char** argv) {
       ->check(CLI::Range(0.0, 0.2));
   app.add_flag("--no-exposure-fix", o.no_exposure_fix,
                "diagnostic: decode without dividing each photo's gain and offset out");
+  app.add_option("--flicker", o.flicker,
+                 "rolling-shutter flicker banding, relative amplitude of the gain along the "
+                 "rows (phase drawn per photo), e.g. 0.08")
+      ->check(CLI::Range(0.0, 0.2));
+  app.add_option("--flicker-bands", o.flicker_bands, "bands of --flicker over the image height")
+      ->check(CLI::Range(0.1, 100.0));
+  app.add_flag("--no-row-exposure-fix", o.no_row_exposure_fix,
+               "diagnostic: one gain per photo, without fitting the banding along the rows");
   bool above_below = false;
   app.add_flag("--above-below", above_below,
                "cameras above and below the screen centre: issue #12's (-0.06, +0.05, 0.45), "

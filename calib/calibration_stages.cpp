@@ -289,6 +289,7 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   auto& reg = state.registration;
   FringeDecodeOptions fringe_options;
   fringe_options.correct_exposure_drift = ctx.options.decode.correct_exposure_drift;
+  fringe_options.exposure_row_gain = ctx.options.decode.exposure_row_gain;
   const FringeCorrespondences dense = decode_fringes(
       images(ctx.roles.fringe_x), images(ctx.roles.fringe_y), *reg, ctx.set, fringe_options);
   ExtraPoints extra;
@@ -400,6 +401,13 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
         "{}: the exposure changed between the phase photos by up to {:.1f} % (measured on {} "
         "blocks without fringes and divided out); lock the camera's exposure",
         pc.name, 100 * phase.exposure.max_gain_change(), phase.exposure.reference_blocks));
+  // Banding along the rows: a rolling shutter under a flickering backlight or room light.
+  if (phase.exposure.max_row_variation() > 0.01)
+    ctx.warnings.push_back(fmt::format(
+        "{}: the phase photos band along their rows by up to +-{:.1f} % (rolling shutter under "
+        "flickering light; fitted and divided out); a shutter time of a whole number of flicker "
+        "periods (1/50 or 1/60 s) avoids it",
+        pc.name, 100 * phase.exposure.max_row_variation()));
   return phase;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <random>
 
 #include <opencv2/imgproc.hpp>
@@ -63,6 +64,19 @@ void apply_glare(ImageF& image, double fraction, uint64_t seed) {
   }
 }
 
+// Rolling-shutter banding: each row's gain, with the photo's own phase of the flicker.
+void apply_flicker(ImageF& image, double amplitude, double bands, uint64_t seed) {
+  if (amplitude <= 0) return;
+  std::mt19937_64 rng(seed ^ 0x94d049bb133111ebULL);
+  const double phase = std::uniform_real_distribution<double>(0, 1)(rng);
+  const double two_pi = 2.0 * std::numbers::pi;
+  for (int y = 0; y < image.height; ++y) {
+    const auto g = float(1.0 + amplitude * std::sin(two_pi * (bands * y / image.height + phase)));
+    float* row = image.row(y);
+    for (int i = 0; i < image.width * image.channels; ++i) row[i] *= g;
+  }
+}
+
 // Gaussian read/shot noise; each row has its own generator seeded from (seed, row), so the
 // result does not depend on the number of threads.
 void apply_noise(ImageF& image, double sigma, uint64_t seed) {
@@ -94,6 +108,10 @@ void check_effects(const CaptureEffects& e) {
   bad(std::isfinite(e.exposure) && e.exposure > 0, "exposure", e.exposure, "must be > 0");
   bad(std::isfinite(e.exposure_drift) && e.exposure_drift >= 0 && e.exposure_drift <= 0.2,
       "exposure drift", e.exposure_drift, "relative 1-sigma, 0 to 0.2");
+  bad(std::isfinite(e.flicker_amplitude) && e.flicker_amplitude >= 0 && e.flicker_amplitude <= 0.2,
+      "flicker amplitude", e.flicker_amplitude, "relative, 0 to 0.2");
+  bad(std::isfinite(e.flicker_bands) && e.flicker_bands > 0 && e.flicker_bands <= 100,
+      "flicker bands", e.flicker_bands, "bands over the image height, 0 < bands <= 100");
   bad(std::isfinite(e.glare_fraction) && e.glare_fraction >= 0 && e.glare_fraction <= 0.5,
       "glare", e.glare_fraction, "fraction of pixels, 0 to 0.5");
   bad(std::isfinite(e.colour_crosstalk) && e.colour_crosstalk >= 0 && e.colour_crosstalk < 0.25,
@@ -123,6 +141,7 @@ void apply_camera_effects(ImageF& image, const CameraIntrinsics& intrinsics,
         std::max(0.2, 1.0 + e.exposure_drift * std::normal_distribution<double>()(rng));
     for (float& p : image.pixels) p *= float(drift);
   }
+  apply_flicker(image, e.flicker_amplitude, e.flicker_bands, e.seed);
   apply_noise(image, e.noise_sigma, e.seed);
   const float inv_gamma = float(1.0 / e.gamma);
 #pragma omp parallel for schedule(static)

@@ -1,8 +1,8 @@
 #pragma once
 // The camera half of the forward model (DESIGN section 4): what a real photograph adds to the
 // light arriving at the sensor, in the order a camera applies it: exposure gain, defocus
-// blur, vignetting, glare, sensor noise, response curve (gamma), clipping and 8-bit
-// quantisation. Random effects draw from seeded generators, so a seed fixes the capture.
+// blur, vignetting, glare, exposure drift and flicker banding, sensor noise, response curve
+// (gamma), clipping and 8-bit quantisation. Random effects draw from seeded generators, so a seed fixes the capture.
 #include "calib/camera_model.hpp"
 #include "calib/simulator.hpp"
 #include "util/image.hpp"
@@ -14,7 +14,8 @@ void apply_camera_effects(ImageF& image, const CameraIntrinsics& intrinsics,
                           const CaptureEffects& effects);
 
 // Throws InputError naming the effect for values no camera can have (negative blur, noise,
-// vignetting outside [0, 1), non-positive gamma or exposure, supersample outside 1-16).
+// vignetting outside [0, 1), non-positive gamma or exposure, flicker amplitude outside
+// 0..0.2 or bands <= 0, supersample outside 1-16).
 void check_effects(const CaptureEffects& effects);
 
 }  // namespace lfd::calib

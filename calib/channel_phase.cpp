@@ -30,11 +30,9 @@ ChannelPhasors::ChannelPhasors(const std::vector<cv::Mat>& captures, int block_p
   for (int k = 0; k < K; ++k) {
     cv::Mat level;  // block means per channel
     cv::resize(captures[size_t(k)](used), level, blocks, 0, 0, cv::INTER_AREA);
-    // The drift is gain and offset per photo (exposure_drift.hpp): undone per channel alike.
-    if (size_t(k) < drift.photos.size()) {
-      const PhotoExposure& e = drift.photos[size_t(k)];
-      level.convertTo(level, CV_32FC3, 1.0 / e.gain, -e.offset / e.gain);
-    }
+    // The drift is gain (per row) and offset per photo (exposure_drift.hpp): undone per
+    // channel alike.
+    if (size_t(k) < drift.photos.size()) level = divide_exposure(level, drift.photos[size_t(k)]);
     std::array<cv::Mat, 3> channel;
     cv::split(level, channel.data());
     for (int c = 0; c < 3; ++c) {

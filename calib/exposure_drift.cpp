@@ -1,8 +1,11 @@
 #include "calib/exposure_drift.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+
+#include <Eigen/Dense>
 
 namespace lfd::calib {
 
@@ -32,11 +35,47 @@ std::vector<cv::Point> unmodulated_blocks(const BlockPhasors& p, double max_spre
   return out;
 }
 
-// Least squares level_k = g_k ref + o_k over the reference blocks, ref = the block's mean
-// level; gain only (o_k = 0) when the references are all about as bright (no lever arm).
-ExposureDrift fit_drift(const BlockPhasors& p, const std::vector<cv::Point>& blocks) {
+// The gain's basis along the height: one constant (segments = 0), or the segments + 3
+// uniform cubic B-splines over t in [0, 1], evaluated at t.
+int basis_size(int segments) { return segments > 0 ? segments + 3 : 1; }
+
+Eigen::RowVectorXd row_basis(double t, int segments) {
+  Eigen::RowVectorXd out = Eigen::RowVectorXd::Zero(basis_size(segments));
+  if (segments <= 0) {
+    out(0) = 1;
+    return out;
+  }
+  const double s = std::clamp(t, 0.0, 1.0) * segments;
+  const int i = std::min(int(s), segments - 1);
+  const double u = s - i, u2 = u * u, u3 = u2 * u;
+  out(i) = (1 - u) * (1 - u) * (1 - u) / 6;
+  out(i + 1) = (3 * u3 - 6 * u2 + 4) / 6;
+  out(i + 2) = (-3 * u3 + 3 * u2 + 3 * u + 1) / 6;
+  out(i + 3) = u3 / 6;
+  return out;
+}
+
+double row_t(int block_row, int block_rows) { return (block_row + 0.5) / block_rows; }
+
+// Whether every segment of the height holds enough references for its share of the spline.
+bool rows_covered(const std::vector<cv::Point>& blocks, int block_rows, int segments,
+                  int min_per_segment) {
+  if (segments <= 0) return false;
+  std::vector<int> count(size_t(segments), 0);
+  for (const auto& b : blocks)
+    ++count[size_t(std::min(segments - 1, int(row_t(b.y, block_rows) * segments)))];
+  return std::ranges::all_of(count, [&](int c) { return c >= min_per_segment; });
+}
+
+// Least squares level_k(b) = g_k(row of b) ref(b) + o_k over the reference blocks, ref = the
+// block's mean level, g_k a spline along the rows (or one constant); gain only (o_k = 0) when
+// the references are all about as bright (no lever arm). All photos share the design matrix:
+// one QR, K right-hand sides.
+ExposureDrift fit_drift(const BlockPhasors& p, const std::vector<cv::Point>& blocks,
+                        int segments) {
   ExposureDrift out;
   out.reference_blocks = int(blocks.size());
+  out.row_segments = segments;
   double lo = 1e9, hi = -1e9, sum_r = 0, sum_rr = 0;
   for (const auto& b : blocks) {
     const double r = p.mean.at<float>(b);
@@ -45,44 +84,86 @@ ExposureDrift fit_drift(const BlockPhasors& p, const std::vector<cv::Point>& blo
   const double n = double(blocks.size());
   const double var_r = sum_rr / n - (sum_r / n) * (sum_r / n);
   out.offset_fitted = hi - lo > 0.3 * hi && var_r > 0;
-  for (const auto& level : p.level) {
-    double sum_l = 0, sum_rl = 0;
-    for (const auto& b : blocks) {
-      const double l = level.at<float>(b);
-      sum_l += l, sum_rl += p.mean.at<float>(b) * l;
-    }
+
+  const int nb = basis_size(segments), K = int(p.level.size()), rows = p.blocks.height;
+  const int cols = nb + (out.offset_fitted ? 1 : 0);
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(long(blocks.size()), cols);
+  Eigen::MatrixXd L(long(blocks.size()), K);
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    const cv::Point b = blocks[i];
+    A.row(long(i)).head(nb) = row_basis(row_t(b.y, rows), segments) * double(p.mean.at<float>(b));
+    if (out.offset_fitted) A(long(i), nb) = 1;
+    for (int k = 0; k < K; ++k) L(long(i), k) = p.level[size_t(k)].at<float>(b);
+  }
+  const Eigen::MatrixXd X = A.colPivHouseholderQr().solve(L);
+
+  Eigen::MatrixXd row_basis_at(rows, nb);
+  for (int r = 0; r < rows; ++r) row_basis_at.row(r) = row_basis(row_t(r, rows), segments);
+  for (int k = 0; k < K; ++k) {
     PhotoExposure e;
-    if (out.offset_fitted) {
-      e.gain = (sum_rl / n - (sum_r / n) * (sum_l / n)) / var_r;
-      e.offset = sum_l / n - e.gain * sum_r / n;
-    } else {
-      e.gain = sum_rl / sum_rr;
-    }
-    out.photos.push_back(e);
+    const Eigen::VectorXd g = row_basis_at * X.col(k).head(nb);
+    e.gain = g.mean();
+    if (segments > 0) e.row_gain.assign(g.data(), g.data() + g.size());
+    e.offset = out.offset_fitted ? X(nb, k) : 0.0;
+    out.photos.push_back(std::move(e));
   }
   return out;
 }
 
 }  // namespace
 
+double PhotoExposure::gain_at(int block_row) const {
+  if (row_gain.empty()) return gain;
+  return row_gain[size_t(std::clamp(block_row, 0, int(row_gain.size()) - 1))];
+}
+
 double ExposureDrift::max_gain_change() const {
   double m = 0;
-  for (const auto& p : photos) m = std::max(m, std::abs(p.gain - 1));
+  for (const auto& p : photos) {
+    m = std::max(m, std::abs(p.gain - 1));
+    for (double g : p.row_gain) m = std::max(m, std::abs(g - 1));
+  }
+  return m;
+}
+
+double ExposureDrift::max_row_variation() const {
+  double m = 0;
+  for (const auto& p : photos)
+    if (!p.row_gain.empty()) {
+      const auto [lo, hi] = std::ranges::minmax_element(p.row_gain);
+      m = std::max(m, 0.5 * (*hi - *lo));
+    }
   return m;
 }
 
 ExposureDrift estimate_exposure_drift(const BlockPhasors& phasors,
                                       const ExposureDriftOptions& options) {
-  // The drift itself moves every level, so the first pass admits more and the second chooses
-  // again on the corrected levels.
-  auto blocks = unmodulated_blocks(phasors, 3 * options.max_reference_spread);
-  if (int(blocks.size()) < options.min_reference_blocks) return {};
-  const ExposureDrift first = fit_drift(phasors, blocks);
-  BlockPhasors corrected = phasors;
-  remove_exposure_drift(corrected, first);
-  blocks = unmodulated_blocks(corrected, options.max_reference_spread);
-  if (int(blocks.size()) < options.min_reference_blocks) return first;
-  return fit_drift(phasors, blocks);
+  // The drift itself moves every level, so the first passes admit more, and each next one
+  // chooses again on the levels corrected by the fit before it. The fit is always of the
+  // levels as photographed.
+  ExposureDrift fit;
+  // At least 4 block rows per segment: the spline stays a smoothing, not an interpolation.
+  const int segments = std::min(options.row_segments, phasors.blocks.height / 4);
+  for (const double looser : {4.0, 2.0, 1.0}) {
+    BlockPhasors corrected = phasors;
+    if (!fit.photos.empty()) remove_exposure_drift(corrected, fit);
+    const auto blocks = unmodulated_blocks(corrected, looser * options.max_reference_spread);
+    if (int(blocks.size()) < options.min_reference_blocks) break;
+    const bool covered = rows_covered(blocks, phasors.blocks.height, segments,
+                                      options.min_references_per_segment);
+    fit = fit_drift(phasors, blocks, covered ? segments : 0);
+  }
+  return fit;
+}
+
+cv::Mat divide_exposure(const cv::Mat& level, const PhotoExposure& e) {
+  cv::Mat out(level.size(), level.type());
+  for (int r = 0; r < level.rows; ++r) {
+    const double g = e.gain_at(r);
+    cv::Mat row = out.row(r);
+    level.row(r).convertTo(row, level.type(), 1.0 / g, -e.offset / g);
+  }
+  return out;
 }
 
 void remove_exposure_drift(BlockPhasors& p, const ExposureDrift& drift) {
@@ -92,9 +173,7 @@ void remove_exposure_drift(BlockPhasors& p, const ExposureDrift& drift) {
   cv::Mat re(p.blocks, CV_32F, 0.0f), im(p.blocks, CV_32F, 0.0f), mean(p.blocks, CV_32F, 0.0f);
   for (int k = 0; k < K; ++k) {
     // A new matrix, not in place: copies of a BlockPhasors share their levels' pixels.
-    const PhotoExposure& e = drift.photos[size_t(k)];
-    cv::Mat level;
-    p.level[size_t(k)].convertTo(level, CV_32F, 1.0 / e.gain, -e.offset / e.gain);
+    const cv::Mat level = divide_exposure(p.level[size_t(k)], drift.photos[size_t(k)]);
     p.level[size_t(k)] = level;
     // The sums block_phasors makes: three channels' z over the block's valid pixels.
     re += level * float(3.0 * std::cos(two_pi * k / K));

@@ -16,8 +16,10 @@ FringeCorrespondences decode_fringes(const std::vector<cv::Mat>& x_captures,
   BlockPhasors bx = block_phasors(x_captures, options.block_px);
   BlockPhasors by = block_phasors(y_captures, options.block_px);
   if (options.correct_exposure_drift) {
-    remove_exposure_drift(bx, estimate_exposure_drift(bx));
-    remove_exposure_drift(by, estimate_exposure_drift(by));
+    ExposureDriftOptions drift_options;
+    if (!options.exposure_row_gain) drift_options.row_segments = 0;
+    remove_exposure_drift(bx, estimate_exposure_drift(bx, drift_options));
+    remove_exposure_drift(by, estimate_exposure_drift(by, drift_options));
   }
   const int steps = int(x_captures.size());
   const auto& d = set.nominal.display;

@@ -25,6 +25,7 @@ struct FringeDecodeOptions {
   double min_modulation = 0.15;  // b / a
   double panel_margin = 0.02;    // of the panel size, skipped along the edges
   bool correct_exposure_drift = true;  // as in PhaseDecodeOptions (calib/exposure_drift.hpp)
+  bool exposure_row_gain = true;       // as in PhaseDecodeOptions
 };
 
 // `x_captures[k]` / `y_captures[k]`: the captures of fringe step k (CV_32FC3 RGB in [0, 1]).

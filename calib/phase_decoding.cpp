@@ -15,7 +15,9 @@ DecodedPhase decode_phase(const std::vector<cv::Mat>& captures, const Registrati
   BlockPhasors bp = block_phasors(captures, options.block_px);
   ExposureDrift drift;
   if (options.correct_exposure_drift) {
-    drift = estimate_exposure_drift(bp);
+    ExposureDriftOptions drift_options;
+    if (!options.exposure_row_gain) drift_options.row_segments = 0;
+    drift = estimate_exposure_drift(bp, drift_options);
     remove_exposure_drift(bp, drift);
   }
   const ChannelPhasors channel_phasors(captures, options.block_px, drift);

@@ -32,6 +32,9 @@ struct PhaseDecodeOptions {
   // Divide out each photo's gain and offset, measured where nothing is modulated
   // (calib/exposure_drift.hpp): webcams that do not hold exposure, backlight flicker.
   bool correct_exposure_drift = true;
+  // ... with a gain that varies along the rows (rolling-shutter flicker banding); off, one
+  // gain per photo (a diagnostic: what the row fit is worth).
+  bool exposure_row_gain = true;
 };
 
 struct DecodedPhase {

@@ -25,6 +25,12 @@ struct CaptureEffects {
   // Exposure that drifts from photo to photo (webcam auto exposure, backlight flicker): each
   // photo's gain is exposure * (1 + exposure_drift * N(0, 1)), drawn from its seed.
   double exposure_drift = 0.0;
+  // Backlight flicker seen through a rolling shutter (PWM backlight, 100/120 Hz room light):
+  // the rows are exposed one after another, so the gain bands along them,
+  // 1 + flicker_amplitude sin(2 pi (flicker_bands y / height + phi)), y the image row and phi
+  // drawn from the photo's seed (the shutter does not follow the flicker).
+  double flicker_amplitude = 0.0;  // relative, 0 to 0.2
+  double flicker_bands = 2.5;      // bright bands over the image height, > 0
   double glare_fraction = 0.0;     // fraction of pixels replaced by saturated glare blobs
   // Camera colour crosstalk: each channel also records this fraction of each other channel's
   // light (overlapping Bayer filter passbands, demosaicking). It dilutes the per-channel phase

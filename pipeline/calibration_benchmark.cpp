@@ -73,6 +73,9 @@ void CalibrationBenchmarkOptions::check() const {
                 "must be in 3..20");
   require_field(exposure_drift >= 0 && exposure_drift <= 0.2, where, "exposure_drift",
                 "must be in 0..0.2");
+  require_field(flicker >= 0 && flicker <= 0.2, where, "flicker", "must be in 0..0.2");
+  require_field(flicker_bands > 0 && flicker_bands <= 100, where, "flicker_bands",
+                "must be in (0, 100]");
 }
 
 nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
@@ -123,6 +126,8 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
       rig.glare_moves = o.moving_glare;
       rig.effects.exposure_drift = o.exposure_drift;
+      rig.effects.flicker_amplitude = o.flicker;
+      rig.effects.flicker_bands = o.flicker_bands;
       rig.effects.supersample = o.supersample;
 
       CalibrationBenchmarkRow measured;  // what both camera modes share
@@ -141,12 +146,15 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
           o.width_px, o.positions, o.supersample, set.patterns.size());
       const std::string drift_key =
           o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
+      const std::string flicker_key =
+          o.flicker > 0 ? fmt::format("-flicker{}x{}", o.flicker, o.flicker_bands) : "";
       const calib::CoverLayer& cover = unit.truth.display.cover;
       const std::string cover_key =
           cover.present() ? fmt::format("-cover{}n{}", cover.thickness_m, cover.refractive_index)
                           : "";
       const auto captures =
-          cached_captures(o.cache_dir, key + drift_key + cover_key, set, unit.truth, rig);
+          cached_captures(o.cache_dir, key + drift_key + flicker_key + cover_key, set,
+                          unit.truth, rig);
       measured.simulate_s = seconds_since(t0);
       // Registration and the solver read the cover from the nominal description.
       if (o.solver_without_cover) set.nominal.display.cover = calib::CoverLayer{};
@@ -158,6 +166,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
         calib::CalibrateOptions options;
         if (!self_calibrate) options.camera = rig.intrinsics;
         options.decode.correct_exposure_drift = !o.no_exposure_fix;
+        options.decode.exposure_row_gain = !o.no_row_exposure_fix;
         options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
         if (o.true_poses)
           for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);

@@ -49,6 +49,11 @@ struct CalibrationBenchmarkOptions {
   bool moving_glare = false;  // diagnostic: new glare in every photo
   double exposure_drift = 0;  // per-photo gain drift, relative 1-sigma (CaptureEffects)
   bool no_exposure_fix = false;  // decode without dividing the drift out (to compare)
+  // Rolling-shutter flicker banding, relative amplitude (CaptureEffects::flicker_amplitude)
+  // over `flicker_bands` bands of the image height.
+  double flicker = 0;
+  double flicker_bands = 2.5;
+  bool no_row_exposure_fix = false;  // diagnostic: one gain per photo, no banding fit
   calib::RigLayout layout = calib::RigLayout::kSides;  // where the cameras stand
   // Diagnostic: solve with f_seen of the horizontal offset alone (captures keep the vertical
   // parallax), to measure what leaving it out costs.
