@@ -283,6 +283,18 @@ TEST(LensSolver, ErrorsSharedOverAQuarterOfTheScreenStayWithinTheSlantsSigma) {
   EXPECT_LT(std::abs(e.center_periods), 3 * r.sigma.at("center_periods"));
 }
 
+// The small problem's 16" Gen2 with the synthetic unit's default warp (0.3 period on 5x5
+// knots) and the given sample noise.
+SyntheticPhaseData strongly_warped(double noise_periods) {
+  const DisplayCalibration real =
+      read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  SyntheticPhaseOptions o;
+  o.samples_u = 48;
+  o.samples_v = 27;
+  o.noise_periods = noise_periods;
+  return make_synthetic_phase_data(real, SyntheticUnitOptions{}, three_cameras(real), o);
+}
+
 // A strong warp (0.3 period, the synthetic unit's 5x5 knots) on noise-free samples, solved
 // on the truth's own grid: the model is then exact, so the residuals vanish. The field belongs
 // to the phase at the content point X, half a lens from the physical point at most; evaluated
@@ -290,15 +302,7 @@ TEST(LensSolver, ErrorsSharedOverAQuarterOfTheScreenStayWithinTheSlantsSigma) {
 // here the slope came out 2.7 of its sigmas off (residual RMS 7.5e-5), and on simulated
 // photos the 16" Gen2's and Gen1's slants 1-2 sigmas.
 TEST(LensSolver, TheFieldIsPartOfThePhaseAtTheContentPoint) {
-  const DisplayCalibration real =
-      read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
-  unit.warp_amplitude = 0.3;
-  SyntheticPhaseOptions o;
-  o.samples_u = 48;
-  o.samples_v = 27;
-  o.noise_periods = 0;
-  const SyntheticPhaseData d = make_synthetic_phase_data(real, unit, three_cameras(real), o);
+  const SyntheticPhaseData d = strongly_warped(0.0);
   SolverOptions exact;
   exact.grid_nx = exact.grid_ny = 5;
   exact.field_refinement = false;
@@ -318,15 +322,7 @@ TEST(LensSolver, TheFieldIsPartOfThePhaseAtTheContentPoint) {
 // (outside the photos). The refinement solves again on 9x9 (6 segments, which hold both) and
 // adds what moved to the sigmas; the estimate itself stays that of the 6x6 solve.
 TEST(LensSolver, WhatTheGridCannotFollowOfTheWarpEntersTheSigmas) {
-  const DisplayCalibration real =
-      read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
-  unit.warp_amplitude = 0.3;
-  SyntheticPhaseOptions o;
-  o.samples_u = 48;
-  o.samples_v = 27;
-  o.noise_periods = 0.002;
-  SyntheticPhaseData d = make_synthetic_phase_data(real, unit, three_cameras(real), o);
+  SyntheticPhaseData d = strongly_warped(0.002);
   for (auto& p : d.positions)
     std::erase_if(p.samples, [](const PhaseSample& s) { return s.u > 0.7 && s.v > 0.6; });
   SolverOptions plain = small_grid();
