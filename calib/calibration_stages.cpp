@@ -401,7 +401,7 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
         "{}: the exposure changed between the phase photos by up to {:.1f} % (measured on {} "
         "blocks without fringes and divided out); lock the camera's exposure",
         pc.name, 100 * phase.exposure.max_gain_change(), phase.exposure.reference_blocks));
-  // Banding along the rows: a rolling shutter under a flickering backlight or room light.
+  // Banding along the rows: a rolling shutter under flickering light.
   if (phase.exposure.max_row_variation() > 0.01)
     ctx.warnings.push_back(fmt::format(
         "{}: the phase photos band along their rows by up to +-{:.1f} % (rolling shutter under "

@@ -8,7 +8,7 @@
 // should read the same. Their levels fit g_k and o_k per photo (gain and offset against the
 // series' mean level), and the block sums are corrected before the phase is taken.
 //
-// A rolling shutter under a flickering backlight or room light exposes the rows at different
+// A rolling shutter under flickering room light exposes the rows at different
 // moments of the flicker: the gain bands along the image rows, g_k(y), with a phase of its own
 // in every photo. So the gain is a smooth function of the row (a uniform cubic B-spline over
 // the image height), fitted from the references of every row (the bezel and room left and

@@ -25,8 +25,8 @@ struct CaptureEffects {
   // Exposure that drifts from photo to photo (webcam auto exposure, backlight flicker): each
   // photo's gain is exposure * (1 + exposure_drift * N(0, 1)), drawn from its seed.
   double exposure_drift = 0.0;
-  // Backlight flicker seen through a rolling shutter (PWM backlight, 100/120 Hz room light):
-  // the rows are exposed one after another, so the gain bands along them,
+  // Flicker seen through a rolling shutter (100/120 Hz room light, all the light alike): the
+  // rows are exposed one after another, so the gain bands along them,
   // 1 + flicker_amplitude sin(2 pi (flicker_bands y / height + phi)), y the image row and phi
   // drawn from the photo's seed (the shutter does not follow the flicker).
   double flicker_amplitude = 0.0;  // relative, 0 to 0.2
