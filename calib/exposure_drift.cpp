@@ -7,6 +7,8 @@
 
 #include <Eigen/Dense>
 
+#include "calib/display/correction_field.hpp"
+
 namespace lfd::calib {
 
 namespace {
@@ -45,13 +47,9 @@ Eigen::RowVectorXd row_basis(double t, int segments) {
     out(0) = 1;
     return out;
   }
-  const double s = std::clamp(t, 0.0, 1.0) * segments;
-  const int i = std::min(int(s), segments - 1);
-  const double u = s - i, u2 = u * u, u3 = u2 * u;
-  out(i) = (1 - u) * (1 - u) * (1 - u) / 6;
-  out(i + 1) = (3 * u3 - 6 * u2 + 4) / 6;
-  out(i + 2) = (-3 * u3 + 3 * u2 + 3 * u + 1) / 6;
-  out(i + 3) = u3 / 6;
+  // The correction field's uniform cubic B-spline (segments + 3 control points).
+  const BSplineWeights w = bspline_weights(segments + 3, t);
+  for (int a = 0; a < 4; ++a) out(w.i0 + a) = w.w[a];
   return out;
 }
 
