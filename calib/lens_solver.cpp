@@ -584,11 +584,11 @@ std::vector<double> camera_shifts_in_sigmas(const std::vector<PositionData>& pos
 
 namespace {
 
-// The three stages on the options' field grid, with uncertainties from the covariance alone.
+// The three stages on the options' field grid; with `uncertainties`, sigmas from the
+// covariance alone (the refined-grid solve needs only its estimate).
 SolverResult solve_on_grid(const Calibration& nominal, const LensEstimate& start,
                            const std::vector<PositionData>& positions,
-                           const SolverOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+                           const SolverOptions& options, bool uncertainties) {
   LensProblem problem(nominal, start, positions, options);
   SolverResult result;
   // Stage 1: the linear model only, wide loss (the unmodelled warp is up to ~0.3 period).
@@ -600,7 +600,7 @@ SolverResult solve_on_grid(const Calibration& nominal, const LensEstimate& start
   // Stage 3: final robust scale, the measured noise, uncertainties.
   problem.measure_noise(result);
   problem.solve_stage(options.loss_scale, true, result);
-  problem.covariance(result);
+  if (uncertainties) problem.covariance(result);
   problem.statistics(result);
   result.view_cone_fitted = options.fit_view_cone && positions.size() >= 2;
   for (const auto& p : positions) result.position_names.push_back(p.name);
@@ -613,13 +613,8 @@ SolverResult solve_on_grid(const Calibration& nominal, const LensEstimate& start
     m.depth_sigma_m = p.depth_sigma_m;
   }
   result.camera_shift_sigmas = camera_shifts_in_sigmas(moved, result.cameras_m);
-  result.solve_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return result;
 }
-
-// The wrapped difference of two center values (periods), in [-0.5, 0.5).
-double center_difference(double a, double b) { return wrap_half(a - b); }
 
 // What the field's resolution costs (SolverOptions::field_refinement): the same problem on a
 // grid with half the knot spacing, so it holds every field of the solved grid (uniform cubic
@@ -636,16 +631,14 @@ void refine_field(const Calibration& nominal, const std::vector<PositionData>& p
   fine.grid_nx = 2 * (options.grid_nx - 3) + 3;
   fine.grid_ny = 2 * (options.grid_ny - 3) + 3;
   fine.smoothness = 2 * options.smoothness;
-  fine.field_refinement = false;
-  const SolverResult r = solve_on_grid(nominal, result.lens, positions, fine);
+  const SolverResult r = solve_on_grid(nominal, result.lens, positions, fine, false);
   FieldRefinement& out = result.field_refinement;
   out.grid_nx = fine.grid_nx;
   out.grid_ny = fine.grid_ny;
   out.converged = r.converged;
   out.change["pitch_lpi"] = r.lens.pitch_lpi - result.lens.pitch_lpi;
   out.change["slope"] = r.lens.slope - result.lens.slope;
-  out.change["center_periods"] =
-      center_difference(r.lens.center_periods, result.lens.center_periods);
+  out.change["center_periods"] = wrap_half(r.lens.center_periods - result.lens.center_periods);
   if (result.view_cone_fitted)
     out.change["view_cone_deg"] = r.lens.view_cone_deg - result.lens.view_cone_deg;
   if (options.focal_sigma_rel > 0)
@@ -672,9 +665,8 @@ void refine_field(const Calibration& nominal, const std::vector<PositionData>& p
 SolverResult solve_lens(const Calibration& nominal, const LensEstimate& start,
                         const std::vector<PositionData>& positions, const SolverOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  SolverResult result = solve_on_grid(nominal, start, positions, options);
-  const bool with_field = options.grid_nx >= 4 && options.grid_ny >= 4;
-  if (options.field_refinement && with_field && !result.sigma.empty())
+  SolverResult result = solve_on_grid(nominal, start, positions, options, true);
+  if (options.field_refinement && !result.correction.empty() && !result.sigma.empty())
     refine_field(nominal, positions, options, result);
   result.solve_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
