@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "bench/process_memory.hpp"
-#include "gpu/gl_context.hpp"
+#include "bench/gl_bench_target.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_v2lf.hpp"
@@ -44,26 +44,24 @@ class CpuVoxelRenderer : public VoxelQuiltRenderer {
 class GlVoxelRenderer : public VoxelQuiltRenderer {
  public:
   std::string name() const override { return "gl"; }
-  std::string device() const override { return context_.info().summary(); }
+  std::string device() const override { return target_.info().summary(); }
   int default_runs() const override { return 10; }
   void set_scene(const voxel::VoxelScene& scene) override {
     v2lf_.reset();  // they hold the old scene by reference
     views_.reset();
-    scene_ = std::make_unique<gpu::GlVoxelScene>(scene, context_.info());
+    scene_ = std::make_unique<gpu::GlVoxelScene>(scene, target_.info());
     views_ = std::make_unique<gpu::GlVoxelViews>(*scene_);
-    v2lf_ = std::make_unique<gpu::GlV2lfRenderer>(*scene_, context_.info());
+    v2lf_ = std::make_unique<gpu::GlV2lfRenderer>(*scene_, target_.info());
   }
   void render_per_view(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout) override {
-    ensure_quilt(layout);
-    views_->render_quilt(geometry, layout, {}, quilt_);
+    views_->render_quilt(geometry, layout, {}, target_.quilt(layout));
     glFinish();
   }
   voxel::V2lfStats render_v2lf(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                const voxel::V2lfOptions& options) override {
-    ensure_quilt(layout);
     gpu::GlV2lfOptions o;
     o.v2lf = options;
-    v2lf_->render_quilt(geometry, layout, o, scene_->scene().background, quilt_);
+    v2lf_->render_quilt(geometry, layout, o, scene_->scene().background, target_.quilt(layout));
     glFinish();
     voxel::V2lfStats stats;
     stats.planes = v2lf_->stats().planes;
@@ -72,27 +70,16 @@ class GlVoxelRenderer : public VoxelQuiltRenderer {
     stats.voxels_split = v2lf_->stats().voxels_split;
     return stats;
   }
-  const ImageF& read_quilt() override {
-    image_ = gpu::read_image_top_down(quilt_, 3);
-    return image_;
-  }
-  std::string memory_kind() const override { return "GPU memory (lfd's buffers and textures)"; }
-  void reset_peak_memory() override { gpu::reset_gpu_peak(); }
-  size_t peak_memory_bytes() const override { return gpu::gpu_bytes_peak(); }
+  const ImageF& read_quilt() override { return target_.read_quilt(); }
+  std::string memory_kind() const override { return GlBenchTarget::memory_kind(); }
+  void reset_peak_memory() override { GlBenchTarget::reset_peak_memory(); }
+  size_t peak_memory_bytes() const override { return GlBenchTarget::peak_memory_bytes(); }
 
  private:
-  // The quilt as displayed: 8 bits per channel.
-  void ensure_quilt(const render::QuiltLayout& layout) {
-    if (quilt_.width() != layout.width || quilt_.height() != layout.height)
-      quilt_ = gpu::Texture(GL_RGBA8, layout.width, layout.height);
-  }
-
-  gpu::HeadlessContext context_;
+  GlBenchTarget target_;  // first: the context outlives the renderers below
   std::unique_ptr<gpu::GlVoxelScene> scene_;
   std::unique_ptr<gpu::GlVoxelViews> views_;
   std::unique_ptr<gpu::GlV2lfRenderer> v2lf_;
-  gpu::Texture quilt_;
-  ImageF image_;
 };
 
 }  // namespace
