@@ -83,7 +83,7 @@ int RunBenchCalibration(int argc, char** argv) {
   if (auto code = parse(app, argc, argv)) return *code;
   o.data_dir = data_dir;
   o.cache_dir = cache_dir;
-  if (above_below) o.layout = calib::RigLayout::kAboveBelow;
+  if (above_below) o.layout = sim::RigLayout::kAboveBelow;
 
   const pipeline::AccuracyBars bars;
   std::printf("| display | seed | positions | capture | camera | slant err deg | pitch rel err | center err "

@@ -10,8 +10,8 @@
 
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/simulator.hpp"
+#include "display/calibration_file.hpp"
+#include "sim/simulator.hpp"
 #include "util/atomic_file.hpp"
 
 namespace lfd::apps {
@@ -35,7 +35,7 @@ int RunBenchSimulate(int argc, char** argv) {
                "simulate"};
   std::string json_path, calibration_path;
   int repeat = 3;
-  calib::CaptureEffects fx;
+  sim::CaptureEffects fx;
   fx.blur_px = 0.8;
   fx.noise_sigma = 0.01;
   fx.vignetting = 0.2;
@@ -50,17 +50,17 @@ int RunBenchSimulate(int argc, char** argv) {
       ->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration cal = calibration_path.empty()
-                                     ? calib::parse_calibration(kBenchDisplay, "bench display")
-                                     : calib::read_calibration(calibration_path);
-  const calib::DisplaySimulator sim{calib::LensModel(cal.display, cal.correction)};
+  const display::Calibration cal = calibration_path.empty()
+                                     ? display::parse_calibration(kBenchDisplay, "bench display")
+                                     : display::read_calibration(calibration_path);
+  const sim::DisplaySimulator sim{display::LensModel(cal.display, cal.correction)};
   // Random panel content: no cache-friendly shortcut for the simulator.
   ImageF panel(cal.display.screen_w, cal.display.screen_h, 3);
   std::mt19937 rng(1);
   std::uniform_real_distribution<float> value(0.f, 1.f);
   for (float& p : panel.pixels) p = value(rng);
-  const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(40.0, 1920, 1080),
-                                     calib::CameraPose{{0.03, 0.01, 0.6}, {0, 0, 0}, {0, 1, 0}});
+  const sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(40.0, 1920, 1080),
+                                     sim::CameraPose{{0.03, 0.01, 0.6}, {0, 0, 0}, {0, 1, 0}});
 
   // Wall time is what a user waits; CPU time (all threads) tells the cost on a shared machine
   // where other jobs steal the cores.

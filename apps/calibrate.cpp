@@ -7,9 +7,9 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibrate.hpp"
-#include "calib/live/hardware_live_calibration.hpp"
-#include "calib/live_calibration.hpp"
-#include "calib/live_session.hpp"
+#include "live/hardware_live_calibration.hpp"
+#include "live/live_calibration.hpp"
+#include "live/live_session.hpp"
 #include "util/error.hpp"
 #include "report/calibration_report.hpp"
 
@@ -94,7 +94,7 @@ int RunCalibrate(int argc, char** argv) {
   for (const auto& p : {out_path, visual_path})
     if (!p.empty() && std::filesystem::exists(p) && !force)
       throw_input_error("{}: exists; pass --force to replace it (a .bak is kept)", p);
-  if (!camera_path.empty()) options.camera = calib::CameraIntrinsics::read_yaml(camera_path);
+  if (!camera_path.empty()) options.camera = sim::CameraIntrinsics::read_yaml(camera_path);
   options.solver.grid_nx = options.solver.grid_ny = grid < 4 ? 0 : grid;
 
   calib::CalibrationOutcome outcome;
@@ -102,7 +102,7 @@ int RunCalibrate(int argc, char** argv) {
   // the recovered lens with it.
   std::optional<report::ReferenceCalibration> reference;
   if (live) {
-    calib::LiveOptions lo;
+    live::LiveOptions lo;
     lo.calibrate = options;
     lo.monitor_prefix = monitor.empty() ? "LKG" : monitor;
     lo.camera_index = camera_index;
@@ -120,7 +120,7 @@ int RunCalibrate(int argc, char** argv) {
       std::fprintf(stderr, "resuming the live session in %s\n", lo.session_dir.string().c_str());
     if (!display_source.given())
       throw_input_error("--live needs --display or --device (the nominal description to start from)");
-    const calib::Calibration nominal = display_source.load();
+    const display::Calibration nominal = display_source.load();
     // The cone gate would refuse the result: say so before anything is shown.
     if (options.camera && positions < 2 && !options.view_cone_deg &&
         !nominal.view_cone_measured_deg)
@@ -129,20 +129,20 @@ int RunCalibrate(int argc, char** argv) {
                         "or more at different distances");
     reference = report::ReferenceCalibration{nominal, display_source.name()};
     outcome = simulate_path.empty()
-                  ? calib::run_live_calibration_on_hardware(nominal, lo)
-                  : calib::run_live_calibration_simulated(
-                        nominal, calib::read_calibration(simulate_path), lo);
+                  ? live::run_live_calibration_on_hardware(nominal, lo)
+                  : live::run_live_calibration_simulated(
+                        nominal, display::read_calibration(simulate_path), lo);
   } else {
     if (dir.empty()) throw_input_error("DIR is required (or --live)");
-    dir = calib::capture_folder_of(dir).string();  // a live session: its last round
+    dir = live::capture_folder_of(dir).string();  // a live session: its last round
     // A live session's round keeps the intrinsics it was solved with.
     if (!options.camera && std::filesystem::exists(dir + "/camera.yaml")) {
-      options.camera = calib::CameraIntrinsics::read_yaml(dir + "/camera.yaml");
+      options.camera = sim::CameraIntrinsics::read_yaml(dir + "/camera.yaml");
       std::fprintf(stderr, "camera intrinsics from %s/camera.yaml\n", dir.c_str());
     }
-    const calib::PatternSet set = calib::read_pattern_set(dir);
+    const sim::PatternSet set = sim::read_pattern_set(dir);
     if (display_source.given()) {
-      const calib::Calibration d = display_source.load();
+      const display::Calibration d = display_source.load();
       reference = report::ReferenceCalibration{d, display_source.name()};
       if (d.display.screen_w != set.nominal.display.screen_w ||
           d.display.screen_h != set.nominal.display.screen_h)
@@ -151,7 +151,7 @@ int RunCalibrate(int argc, char** argv) {
                           set.nominal.display.screen_h);
     }
     std::vector<std::string> warnings;
-    const auto captures = calib::read_captures(dir, set, warnings);
+    const auto captures = sim::read_captures(dir, set, warnings);
     outcome = calib::calibrate_display(set, captures, options);
     outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   }
@@ -164,8 +164,8 @@ int RunCalibrate(int argc, char** argv) {
   calib::enforce_gates(outcome);
 
   const auto& c = outcome.calibration;
-  calib::write_calibration(out_path, c, force);
-  if (!visual_path.empty()) calib::export_visual_json(visual_path, c, force);
+  display::write_calibration(out_path, c, force);
+  if (!visual_path.empty()) display::export_visual_json(visual_path, c, force);
   auto sigma = [&](const char* k) {
     auto it = c.uncertainty.find(k);
     return it == c.uncertainty.end() ? 0.0 : it->second;

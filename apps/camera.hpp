@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "calib/camera_calibration.hpp"
+#include "calib/camera/camera_calibration.hpp"
 
 namespace lfd::apps {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "calib/device/device_discovery.hpp"
+#include "device/device_discovery.hpp"
 #include "util/error.hpp"
 
 namespace lfd::apps {
@@ -68,10 +68,10 @@ void DisplaySource::add(CLI::App& app, const std::string& file_flag, const std::
       ->needs(device_option);
 }
 
-calib::Calibration DisplaySource::load() {
+display::Calibration DisplaySource::load() {
   if (!file.empty()) {
     name_ = file;
-    return calib::read_calibration(file);
+    return display::read_calibration(file);
   }
   if (device.empty()) throw_input_error("{} or --device: one is required", file_flag_);
   device::DiscoveryOptions options;

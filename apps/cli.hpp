@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 
 namespace lfd::apps {
 
@@ -32,7 +32,7 @@ struct DisplaySource {
            bool required = true);
   bool given() const { return !file.empty() || !device.empty(); }
   // Reads the file or the device; InputError when neither was given (naming `file_flag`).
-  calib::Calibration load();
+  display::Calibration load();
   // The file, or "device LKG-2K-04409" once loaded: for messages.
   const std::string& name() const { return name_; }
 

@@ -1,5 +1,5 @@
 // lfd device: the Looking Glass units attached to this machine and their factory calibration
-// (reference/looking-glass.md section 6, docs/devices.md). Thin: calib/device does the work.
+// (reference/looking-glass.md section 6, docs/devices.md). Thin: device/ does the work.
 #include <filesystem>
 #include <iostream>
 
@@ -8,7 +8,7 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/device/device_discovery.hpp"
+#include "device/device_discovery.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
@@ -96,12 +96,12 @@ int RunDeviceRead(int argc, char** argv) {
   options.root = root;
   const device::Discovery found = device::discover_devices(options);
   const device::FoundDevice& unit = device::select_device(found, serial);
-  const calib::Calibration calibration = device::calibration_of(unit);
+  const display::Calibration calibration = device::calibration_of(unit);
   // Every check before the first write, so a refusal leaves nothing behind.
   for (const std::string& path : {out_path, visual_path})
     if (!force && !path.empty() && std::filesystem::exists(path))
       throw_input_error("{}: already exists (use --force to replace it; a .bak copy is kept)", path);
-  calib::write_calibration(out_path, calibration, force);
+  display::write_calibration(out_path, calibration, force);
   if (!visual_path.empty()) {
     guard_overwrite(visual_path, force);
     write_text_atomic(visual_path, unit.visual_json);

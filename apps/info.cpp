@@ -7,9 +7,9 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/lens_model.hpp"
-#include "calib/display/view_count.hpp"
+#include "display/calibration_file.hpp"
+#include "display/lens_model.hpp"
+#include "display/view_count.hpp"
 
 namespace lfd::apps {
 
@@ -27,11 +27,11 @@ int RunInfo(int argc, char** argv) {
   app.add_flag("--json", json, "machine-readable output");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration cal = source.load();
+  const display::Calibration cal = source.load();
   const std::string& path = source.name();
   const auto& d = cal.display;
-  const calib::LensModel lens(d, cal.correction);
-  const calib::ViewCountAdvice views = calib::recommend_view_count(cal);
+  const display::LensModel lens(d, cal.correction);
+  const display::ViewCountAdvice views = display::recommend_view_count(cal);
   const double width_mm = d.width_m() * 1000, height_mm = d.height_m() * 1000;
   const double diagonal_in = std::hypot(d.width_m(), d.height_m()) / 0.0254;
   const double lens_period_mm = 25.4 / d.pitch_lpi;

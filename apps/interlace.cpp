@@ -4,7 +4,7 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file.hpp"
@@ -44,12 +44,12 @@ int RunInterlace(int argc, char** argv) {
   app.add_option("--out", out_path, "panel image to write (PNG)")->required();
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration cal = source.load();
+  const display::Calibration cal = source.load();
   const Image8 quilt8 = read_image(quilt_path, 3);
   const render::QuiltLayout layout = interlace::resolve_quilt_layout(
       quilt_path, quilt8.width, quilt8.height, overrides,
       double(cal.display.screen_w) / cal.display.screen_h);
-  const calib::LensModel lens(cal.display, cal.correction);
+  const display::LensModel lens(cal.display, cal.correction);
   interlace::InterlaceOptions options;
   options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
   options.overscan = overscan;

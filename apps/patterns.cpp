@@ -5,9 +5,9 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/cover_layer.hpp"
-#include "calib/patterns.hpp"
+#include "display/calibration_file.hpp"
+#include "display/cover_layer.hpp"
+#include "sim/patterns.hpp"
 
 namespace lfd::apps {
 
@@ -24,7 +24,7 @@ int RunPatterns(int argc, char** argv) {
       "patterns"};
   std::string out_dir;
   DisplaySource display_source;
-  calib::PatternOptions options;
+  sim::PatternOptions options;
   bool force = false;
   display_source.add(app, "--display",
                      "nominal display: visual.json (template or factory) or calibration.json");
@@ -46,12 +46,12 @@ int RunPatterns(int argc, char** argv) {
   app.add_flag("--force", force, "replace existing patterns");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  calib::Calibration nominal = display_source.load();
+  display::Calibration nominal = display_source.load();
   // visual.json cannot say what covers the lenses: the family's block unless told.
   auto& cover = nominal.display.cover;
   std::string cover_source = "the display file";
   if (!cover.present() && !cover_thickness_m) {
-    const calib::CoverDefault family = calib::cover_layer_for_family(nominal.display);
+    const display::CoverDefault family = display::cover_layer_for_family(nominal.display);
     cover = family.cover;
     cover_source = "default of the family " + family.family;
   }
@@ -60,8 +60,8 @@ int RunPatterns(int argc, char** argv) {
   if (cover_thickness_m || cover_index) cover_source = "given";
   std::printf("cover layer: %.4g m at n = %.3g (%s)\n", cover.thickness_m,
               cover.refractive_index, cover_source.c_str());
-  const calib::PatternSet set = calib::plan_patterns(nominal, options);
-  calib::write_pattern_set(out_dir, set, force);
+  const sim::PatternSet set = sim::plan_patterns(nominal, options);
+  sim::write_pattern_set(out_dir, set, force);
   std::printf("wrote %zu patterns (%dx%d) and manifest.json to %s/patterns\n", set.patterns.size(),
               nominal.display.screen_w, nominal.display.screen_h, out_dir.c_str());
   std::printf("next: photograph each pattern full screen (manual exposure and focus, tripod) and "

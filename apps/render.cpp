@@ -18,9 +18,9 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/display_quilt.hpp"
-#include "calib/display/lens_model.hpp"
+#include "display/calibration_file.hpp"
+#include "display/display_quilt.hpp"
+#include "display/lens_model.hpp"
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
@@ -210,12 +210,12 @@ int RunRender(int argc, char** argv) {
     throw_input_error("--view-cone: {} must lie in (0, 170) degrees", *view_cone_opt);
 
   // The display decides the quilt when there is one; the user's options override it.
-  std::optional<calib::Calibration> calibration;
-  std::optional<calib::DisplayQuilt> display_quilt;
+  std::optional<display::Calibration> calibration;
+  std::optional<display::DisplayQuilt> display_quilt;
   if (display_source.given()) {
     calibration = display_source.load();
     calibration_path = display_source.name();
-    display_quilt = calib::quilt_for_display(*calibration, views_opt);
+    display_quilt = display::quilt_for_display(*calibration, views_opt);
   }
   const int views = display_quilt ? display_quilt->views : views_opt.value_or(45);
   if (views < 1 || views > 256) throw_input_error("--views: {} is outside 1..256", views);
@@ -254,7 +254,7 @@ int RunRender(int argc, char** argv) {
     width = int(wh[0]);
     height = int(wh[1]);
   } else if (display_quilt && !spec.width && !spec.height) {
-    const calib::ViewSize size = calib::view_size_for_display(*display_quilt);
+    const display::ViewSize size = display::view_size_for_display(*display_quilt);
     width = size.width;
     height = size.height;
   }
@@ -288,8 +288,8 @@ int RunRender(int argc, char** argv) {
     written = out;
     write_png(written, to_uint8(f));
   } else {
-    calib::QuiltGrid grid = display_quilt ? display_quilt->grid
-                                          : calib::quilt_grid_for_views(views, double(base.width) / base.height);
+    display::QuiltGrid grid = display_quilt ? display_quilt->grid
+                                          : display::quilt_grid_for_views(views, double(base.width) / base.height);
     if (cols_opt) grid = {*cols_opt, *rows_opt};
     if (grid.cols < 1 || grid.rows < 1 || grid.cols * grid.rows < views)
       throw_input_error("--cols/--rows: {}x{} tiles cannot hold {} views", grid.cols, grid.rows, views);
@@ -311,7 +311,7 @@ int RunRender(int argc, char** argv) {
       // the panel equals `lfd interlace` of the file.
       render::QuiltLayout as_written = layout;
       if (const auto named = render::parse_quilt_name(written)) as_written.aspect = named->aspect;
-      const calib::LensModel lens(calibration->display, calibration->correction);
+      const display::LensModel lens(calibration->display, calibration->correction);
       interlace::InterlaceOptions options;
       options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
       options.overscan = overscan;

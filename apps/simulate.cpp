@@ -3,9 +3,9 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/simulator.hpp"
-#include "calib/display/view_count.hpp"
+#include "display/calibration_file.hpp"
+#include "sim/simulator.hpp"
+#include "display/view_count.hpp"
 #include "util/error.hpp"
 #include "util/image.hpp"
 
@@ -35,7 +35,7 @@ int RunSimulate(int argc, char** argv) {
   std::string calibration_path, panel_path, out_path, camera_yaml, position = "0,0,0.6",
       look_at = "0,0,0", up = "0,1,0", size = "1920x1080";
   double fov_deg = 40.0;
-  calib::CaptureEffects fx;
+  sim::CaptureEffects fx;
   std::optional<double> psf;
   app.add_option("--calibration", calibration_path, "TRUE calibration.json or visual.json")
       ->required();
@@ -70,24 +70,24 @@ int RunSimulate(int argc, char** argv) {
   app.add_option("--out", out_path, "capture to write (PNG)")->required();
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const calib::Calibration cal = calib::read_calibration(calibration_path);
-  fx.psf_sigma_phase = psf.value_or(cal.phase_blur_sigma.value_or(calib::kDefaultPhaseBlurSigma));
-  calib::CameraIntrinsics intrinsics;
+  const display::Calibration cal = display::read_calibration(calibration_path);
+  fx.psf_sigma_phase = psf.value_or(cal.phase_blur_sigma.value_or(display::kDefaultPhaseBlurSigma));
+  sim::CameraIntrinsics intrinsics;
   if (!camera_yaml.empty()) {
-    intrinsics = calib::CameraIntrinsics::read_yaml(camera_yaml);
+    intrinsics = sim::CameraIntrinsics::read_yaml(camera_yaml);
   } else {
     const auto wh = parse_numbers(size, 'x', 2, "--size");
-    intrinsics = calib::CameraIntrinsics::from_fov(fov_deg, int(wh[0]), int(wh[1]));
+    intrinsics = sim::CameraIntrinsics::from_fov(fov_deg, int(wh[0]), int(wh[1]));
   }
-  const calib::PhysicalCamera camera(
-      intrinsics, calib::CameraPose{vec3(position, "--camera-pos"), vec3(look_at, "--look-at"),
+  const sim::PhysicalCamera camera(
+      intrinsics, sim::CameraPose{vec3(position, "--camera-pos"), vec3(look_at, "--look-at"),
                                     vec3(up, "--up")});
   const Image8 panel8 = read_image(panel_path, 3);
   if (panel8.width != cal.display.screen_w || panel8.height != cal.display.screen_h)
     throw_input_error("{}: size {}x{}, but {} needs a {}x{} panel image (interlace for this display)",
                       panel_path, panel8.width, panel8.height, calibration_path,
                       cal.display.screen_w, cal.display.screen_h);
-  const calib::DisplaySimulator simulator{calib::LensModel(cal.display, cal.correction)};
+  const sim::DisplaySimulator simulator{display::LensModel(cal.display, cal.correction)};
   const ImageF capture = simulator.capture(to_float(panel8), camera, fx);
   write_png(out_path, to_uint8(capture));
   std::cout << "wrote " << out_path << " (" << capture.width << "x" << capture.height

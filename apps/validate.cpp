@@ -6,8 +6,8 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/view_count.hpp"
+#include "display/calibration_file.hpp"
+#include "display/view_count.hpp"
 #include "util/progress.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -20,7 +20,7 @@ namespace lfd::apps {
 
 namespace {
 
-int RunViewCountSweep(const calib::Calibration& truth, const std::string& list,
+int RunViewCountSweep(const display::Calibration& truth, const std::string& list,
                       const validate::ProfileOptions& options, const std::string& out_dir,
                       bool json) {
   std::vector<int> counts;
@@ -57,7 +57,7 @@ int RunViewCountSweep(const calib::Calibration& truth, const std::string& list,
 
 // What an eye at `height` above the centre, `distance` in front, sees from the bottom to the
 // top of the screen (vertical parallax): printed and written as seen_down_the_screen.json.
-void ReportSeenDownTheScreen(const calib::Calibration& truth, double height, double distance,
+void ReportSeenDownTheScreen(const display::Calibration& truth, double height, double distance,
                              int views, const std::string& out_dir, bool json) {
   const Eigen::Vector3d eye(0.0, height, distance);
   const auto rows = validate::seen_down_the_screen(truth, eye);
@@ -138,10 +138,10 @@ int RunValidate(int argc, char** argv) {
   if (eye_height_option->count()) options.eye_height_m = eye_height;
   options.check();
 
-  const calib::Calibration truth = truth_source.load();
+  const display::Calibration truth = truth_source.load();
   truth_path = truth_source.name();
   if (!sweep.empty()) return RunViewCountSweep(truth, sweep, options, out_dir, json);
-  if (options.views == 0) options.views = calib::recommend_view_count(truth).views;
+  if (options.views == 0) options.views = display::recommend_view_count(truth).views;
   if (options.eye_height_m) {
     std::filesystem::create_directories(out_dir);
     ReportSeenDownTheScreen(truth, *options.eye_height_m, options.distance_m, options.views,
@@ -151,10 +151,10 @@ int RunValidate(int argc, char** argv) {
     throw InputError("--assumed and the --*-error options are alternatives: give one");
   struct Run {
     std::string name, source;
-    calib::Calibration assumed;
+    display::Calibration assumed;
   };
   std::vector<Run> runs;
-  if (!assumed_path.empty()) runs.push_back({"assumed", assumed_path, calib::read_calibration(assumed_path)});
+  if (!assumed_path.empty()) runs.push_back({"assumed", assumed_path, display::read_calibration(assumed_path)});
   if (!error.empty())
     runs.push_back({"miscalibrated", truth_path + " with " + error.describe(), validate::apply(truth, error)});
   runs.push_back({"true", truth_path, truth});

@@ -13,7 +13,7 @@
 
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
-#include "calib/display/display_quilt.hpp"
+#include "display/display_quilt.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
@@ -144,7 +144,7 @@ class Runner {
     const render::Camera base = render::camera_from_spec(spec, options_.size, options_.size);
     const render::QuiltGeometry geometry = render::make_quilt_geometry(
         base, glm::length(spec.look_at - spec.position), options_.view_cone_deg, views);
-    const calib::QuiltGrid grid = calib::quilt_grid_for_views(views, 1.0);
+    const display::QuiltGrid grid = display::quilt_grid_for_views(views, 1.0);
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     const float d_forward = render::make_reference_camera(geometry, 0.0f, 1).d_forward;
     const float d_shift = options_.shift_fraction * d_forward;

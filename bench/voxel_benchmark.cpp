@@ -10,7 +10,7 @@
 
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
-#include "calib/display/display_quilt.hpp"
+#include "display/display_quilt.hpp"
 #include "render/camera_json.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
@@ -136,7 +136,7 @@ nlohmann::ordered_json run_voxel_benchmark(VoxelQuiltRenderer& renderer, const V
   for (int views : options.views) {
     const render::QuiltGeometry geometry = render::make_quilt_geometry(
         base, glm::length(spec.look_at - spec.position), options.view_cone_deg, views);
-    const calib::QuiltGrid grid = calib::quilt_grid_for_views(views, 1.0);
+    const display::QuiltGrid grid = display::quilt_grid_for_views(views, 1.0);
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     // V2LF's default D_shift: the reference camera at the base camera.
     const float d_forward = render::make_reference_camera(geometry, 0.0f, 1).d_forward;

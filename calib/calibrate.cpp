@@ -34,15 +34,15 @@ void CalibrateOptions::check() const {
 }
 
 // The controller: the stages of calibration_stages.hpp in order.
-CalibrationOutcome calibrate_display(const PatternSet& set,
-                                     const std::vector<PositionCaptures>& positions,
+CalibrationOutcome calibrate_display(const sim::PatternSet& set,
+                                     const std::vector<sim::PositionCaptures>& positions,
                                      const CalibrateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   options.check();
   if (options.view_cone_deg) {
     // The known cone becomes the nominal's, marked as measured (assemble_calibration keeps it).
-    PatternSet known = set;
-    Calibration& n = known.nominal;
+    sim::PatternSet known = set;
+    display::Calibration& n = known.nominal;
     n.view_cone_nominal_deg = n.view_cone_nominal_deg.value_or(n.display.view_cone_deg);
     n.view_cone_measured_deg = n.display.view_cone_deg = *options.view_cone_deg;
     CalibrateOptions rest = options;
@@ -106,7 +106,7 @@ CalibrationOutcome calibrate_display(const PatternSet& set,
               "known; refused unless it is given (--view-cone) or the photos come from 2-3 "
               "positions at different distances");
 
-  const PatternSet solved = check_colour_order(set, options, phases, data, out);
+  const sim::PatternSet solved = check_colour_order(set, options, phases, data, out);
   phases.clear();
   solve_display(solved, data, options.solver, out);
   out.calibration = assemble_calibration(solved, positions, options, out);

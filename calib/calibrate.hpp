@@ -14,19 +14,19 @@
 
 #include <opencv2/core.hpp>
 
-#include "calib/camera_model.hpp"
-#include "calib/capture_io.hpp"
-#include "calib/colour_order.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/lens_solver.hpp"
-#include "calib/patterns.hpp"
-#include "calib/phase_decoding.hpp"
-#include "calib/quality_gates.hpp"
+#include "sim/camera_model.hpp"
+#include "sim/capture_io.hpp"
+#include "calib/decoding/colour_order.hpp"
+#include "display/calibration_file.hpp"
+#include "calib/solver/lens_solver.hpp"
+#include "sim/patterns.hpp"
+#include "calib/decoding/phase_decoding.hpp"
+#include "calib/solver/quality_gates.hpp"
 
 namespace lfd::calib {
 
 struct CalibrateOptions {
-  std::optional<CameraIntrinsics> camera;  // else self-calibrated from >= 3 positions
+  std::optional<sim::CameraIntrinsics> camera;  // else self-calibrated from >= 3 positions
   PhaseDecodeOptions decode;
   SolverOptions solver;
   QualityGates gates;
@@ -66,10 +66,10 @@ struct PositionReport {
 };
 
 struct CalibrationOutcome {
-  Calibration calibration;
+  display::Calibration calibration;
   LensEstimate coarse;
   SolverResult solve;
-  CameraIntrinsics camera;
+  sim::CameraIntrinsics camera;
   bool camera_self_calibrated = false;
   // The self-calibrated focal length's relative 1-sigma uncertainty (0 for a given camera).
   double camera_focal_sigma_rel = 0;
@@ -82,8 +82,8 @@ struct CalibrationOutcome {
 
 // Runs the pipeline. Throws InputError for bad captures; returns gate failures in the outcome
 // (see enforce_gates) so tools can still report what was measured.
-CalibrationOutcome calibrate_display(const PatternSet& set,
-                                     const std::vector<PositionCaptures>& positions,
+CalibrationOutcome calibrate_display(const sim::PatternSet& set,
+                                     const std::vector<sim::PositionCaptures>& positions,
                                      const CalibrateOptions& options);
 
 // Throws InputError listing every failed gate and what to change.

@@ -10,12 +10,12 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
-#include "calib/coarse_start.hpp"
-#include "calib/display/cover_rays.hpp"
-#include "calib/display/lens_relations.hpp"
-#include "calib/display/view_count.hpp"
-#include "calib/fringe_registration.hpp"
-#include "calib/planar_camera_calibration.hpp"
+#include "calib/solver/coarse_start.hpp"
+#include "display/cover_rays.hpp"
+#include "display/lens_relations.hpp"
+#include "display/view_count.hpp"
+#include "calib/registration/fringe_registration.hpp"
+#include "calib/camera/planar_camera_calibration.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -26,7 +26,7 @@ using ojson = nlohmann::ordered_json;
 
 // Pixels of the screen in the photo (the projected panel quad, shrunk by 3 %).
 cv::Mat screen_mask(const Registration& reg, cv::Size size) {
-  std::vector<ScreenUV> uv = {{0.03, 0.03}, {0.97, 0.03}, {0.97, 0.97}, {0.03, 0.97}};
+  std::vector<display::ScreenUV> uv = {{0.03, 0.03}, {0.97, 0.03}, {0.97, 0.97}, {0.03, 0.97}};
   std::vector<cv::Point> poly;
   for (const auto& p : reg.uv_to_image(uv)) poly.emplace_back(int(p.x), int(p.y));
   cv::Mat mask(size, CV_8U, cv::Scalar(0));
@@ -66,39 +66,39 @@ std::string iso_time_now() {
 
 }  // namespace
 
-PatternRoles::PatternRoles(const PatternSet& set)
-    : board(set.of_kind(PatternKind::kBoard).at(0)),
-      phase(set.of_kind(PatternKind::kPhase)),
-      white(set.of_kind(PatternKind::kWhite)),
-      black(set.of_kind(PatternKind::kBlack)),
-      fringe_x(set.of_kind(PatternKind::kFringeX)),
-      fringe_y(set.of_kind(PatternKind::kFringeY)) {}
+PatternRoles::PatternRoles(const sim::PatternSet& set)
+    : board(set.of_kind(sim::PatternKind::kBoard).at(0)),
+      phase(set.of_kind(sim::PatternKind::kPhase)),
+      white(set.of_kind(sim::PatternKind::kWhite)),
+      black(set.of_kind(sim::PatternKind::kBlack)),
+      fringe_x(set.of_kind(sim::PatternKind::kFringeX)),
+      fringe_y(set.of_kind(sim::PatternKind::kFringeY)) {}
 
-std::string PatternRoles::stem(const PatternInfo* p) {
+std::string PatternRoles::stem(const sim::PatternInfo* p) {
   return std::filesystem::path(p->file).stem().string();
 }
 
-LensShift::LensShift(const Calibration& nominal)
+LensShift::LensShift(const display::Calibration& nominal)
     : display_(nominal.display), lens_(nominal.display, nominal.correction) {}
 
 double LensShift::periods(cv::Point2d px, const Eigen::Vector3d& camera) const {
   const Eigen::Vector3d p = uv_to_display_m(display_, panel_px_to_uv(display_, px));
   const double f_seen =
-      seen_fraction_through_cover(camera.x() - p.x(), camera.y() - p.y(), camera.z() - p.z(),
+      display::seen_fraction_through_cover(camera.x() - p.x(), camera.y() - p.y(), camera.z() - p.z(),
                                   display_.cover, lens_.line_tilt(), display_.view_cone_deg);
-  return lens_content_shift(f_seen, display_.inv_view);
+  return display::lens_content_shift(f_seen, display_.inv_view);
 }
 
 cv::Point2d LensShift::correction_px(cv::Point2d px, const Eigen::Vector3d& camera) const {
   return {-periods(px, camera) / lens_.pitch_periods() * display_.screen_w, 0.0};
 }
 
-std::vector<BoardDetection> detect_boards(const PatternSet& set, const PatternRoles& roles,
-                                          const std::vector<PositionCaptures>& positions) {
+std::vector<BoardDetection> detect_boards(const sim::PatternSet& set, const PatternRoles& roles,
+                                          const std::vector<sim::PositionCaptures>& positions) {
   std::vector<BoardDetection> boards;
   const std::string stem = PatternRoles::stem(roles.board);
   for (const auto& pc : positions) {
-    BoardDetection b = detect_board(to_gray8(pc.image(stem)), set);
+    BoardDetection b = detect_board(sim::to_gray8(pc.image(stem)), set);
     if (b.ids.size() < 8 && b.touches_border)
       throw_input_error(
           "{}: the screen is partly outside the photo (the board is cut off at the image "
@@ -115,7 +115,7 @@ std::vector<BoardDetection> detect_boards(const PatternSet& set, const PatternRo
 }
 
 void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetection>& boards,
-                   const PatternSet& set, CalibrationOutcome& out) {
+                   const sim::PatternSet& set, CalibrationOutcome& out) {
   if (options.camera) {
     out.camera = *options.camera;
     const cv::Size s = boards[0].image_size;
@@ -180,7 +180,7 @@ void register_position(const PositionContext& ctx, PositionState& state) {
 }
 
 void check_exposure(const PositionContext& ctx, PositionState& state) {
-  const PositionCaptures& pc = ctx.captures;
+  const sim::PositionCaptures& pc = ctx.captures;
   const std::string white_stem = PatternRoles::stem(ctx.roles.white.at(0));
   const std::string black_stem = PatternRoles::stem(ctx.roles.black.at(0));
   const Exposure white = exposure(pc.image(white_stem), state.screen_mask);
@@ -201,28 +201,28 @@ void check_exposure(const PositionContext& ctx, PositionState& state) {
 void identify_patterns(const PositionContext& ctx, const PositionState& state) {
   // Pattern identity and camera motion from the corner markers. A marker farther than a
   // tenth of the image from where the registration puts it is a false detection.
-  const PatternSet& set = ctx.set;
-  const PositionCaptures& pc = ctx.captures;
+  const sim::PatternSet& set = ctx.set;
+  const sim::PositionCaptures& pc = ctx.captures;
   const Registration& reg = *state.registration;
-  const DisplayCalibration& nd = set.nominal.display;
+  const display::DisplayCalibration& nd = set.nominal.display;
   const std::string board_path = pc.path(PatternRoles::stem(ctx.roles.board));
   std::vector<cv::Point2d> predicted_markers;
   {
-    std::vector<ScreenUV> uv;
+    std::vector<display::ScreenUV> uv;
     for (const auto& c : set.markers.centres_px) uv.push_back(panel_px_to_uv(nd, c));
     predicted_markers = reg.uv_to_image(uv);
   }
   const cv::Size size = ctx.board.image_size;
   const double diag = std::hypot(size.width, size.height);
   const double lens_px =
-      double(size.width) / shader_terms(nd.geometry(), nd.pitch_lpi, nd.slope).pitch_periods;
+      double(size.width) / display::shader_terms(nd.geometry(), nd.pitch_lpi, nd.slope).pitch_periods;
   std::map<int, cv::Point2d> reference;
   std::string reference_path;
   int verified = 0;
   for (const auto& p : set.patterns) {
-    if (p.kind == PatternKind::kBoard) continue;
+    if (p.kind == sim::PatternKind::kBoard) continue;
     const std::string stem = PatternRoles::stem(&p);
-    const auto markers = detect_corner_marker_corners(to_gray8(pc.image(stem)));
+    const auto markers = detect_corner_marker_corners(sim::to_gray8(pc.image(stem)));
     std::map<int, cv::Point2d> own;
     std::set<int> others;
     for (const auto& [id, corners] : markers) {
@@ -280,8 +280,8 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   // corners leave the camera's lateral position a few millimetres uncertain, thousands of
   // fringe blocks over the whole screen pin it (and the panel mapping) down.
   if (ctx.roles.fringe_x.empty()) return;
-  const PositionCaptures& pc = ctx.captures;
-  auto images = [&](const std::vector<const PatternInfo*>& list) {
+  const sim::PositionCaptures& pc = ctx.captures;
+  auto images = [&](const std::vector<const sim::PatternInfo*>& list) {
     std::vector<cv::Mat> out_images;
     for (const auto* p : list) out_images.push_back(pc.image(PatternRoles::stem(p)));
     return out_images;
@@ -316,15 +316,15 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   }
 }
 
-void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetection>& boards,
+void refine_self_calibration(const sim::PatternSet& set, const std::vector<BoardDetection>& boards,
                              const std::vector<PositionState>& states, CalibrationOutcome& out) {
-  const DisplayCalibration& nd = set.nominal.display;
+  const display::DisplayCalibration& nd = set.nominal.display;
   // Through a cover layer a camera sees a panel point where its light leaves the cover
   // (cover_rays.hpp), as registration projects it: from the position's registered camera.
   Eigen::Vector3d camera_m{0, 0, 1};
   auto panel_m = [&](cv::Point2d px) {
     const Eigen::Vector3d m = uv_to_display_m(nd, panel_px_to_uv(nd, px));
-    const Point3 e = cover_exit_point({m.x(), m.y(), 0.0}, {camera_m.x(), camera_m.y(), camera_m.z()},
+    const display::Point3 e = display::cover_exit_point({m.x(), m.y(), 0.0}, {camera_m.x(), camera_m.y(), camera_m.z()},
                                       nd.cover);
     return cv::Point3f(float(e.x), float(e.y), float(e.z));
   };
@@ -360,7 +360,7 @@ void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetec
 }
 
 DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state) {
-  const PositionCaptures& pc = ctx.captures;
+  const sim::PositionCaptures& pc = ctx.captures;
   const auto& phase_p = ctx.roles.phase;
   std::vector<cv::Mat> captures;
   for (const auto* p : phase_p) {
@@ -394,7 +394,7 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
   rep.blocks_clipped = phase.blocks_clipped;
   rep.blocks_low_modulation = phase.blocks_low_modulation;
   rep.median_modulation = phase.median_modulation;
-  // Divided out already (calib/exposure_drift.hpp); said, because a camera that drifts this
+  // Divided out already (calib/phasors/exposure_drift.hpp); said, because a camera that drifts this
   // much is worth fixing (manual exposure) and its white/black checks saw one exposure only.
   if (phase.exposure.max_gain_change() > 0.02)
     ctx.warnings.push_back(fmt::format(
@@ -415,7 +415,7 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
                            const DecodedPhase& phase, bool camera_self_calibrated,
                            const std::optional<Eigen::Vector3d>& known_camera_m) {
   const PositionReport& rep = state.report;
-  const DisplayCalibration& nd = ctx.set.nominal.display;
+  const display::DisplayCalibration& nd = ctx.set.nominal.display;
   PositionData pd;
   pd.name = ctx.captures.name;
   pd.samples = phase.samples;
@@ -436,7 +436,7 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
     // How the pose moves with the focal length: registered again through a camera 1 % longer
     // (the solver frees the focal length of a self-calibrated camera).
     constexpr double h = 0.01;
-    CameraIntrinsics longer = ctx.camera;
+    sim::CameraIntrinsics longer = ctx.camera;
     longer.camera_matrix(0, 0) *= 1 + h;
     longer.camera_matrix(1, 1) *= 1 + h;
     const Registration moved(ctx.board, ctx.set, longer, state.board_shift, state.fringe);
@@ -449,10 +449,10 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
   return pd;
 }
 
-PatternSet check_colour_order(const PatternSet& set, const CalibrateOptions& options,
+sim::PatternSet check_colour_order(const sim::PatternSet& set, const CalibrateOptions& options,
                               const std::vector<DecodedPhase>& phases,
                               std::vector<PositionData>& data, CalibrationOutcome& out) {
-  const DisplayCalibration& drawn = set.nominal.display;
+  const display::DisplayCalibration& drawn = set.nominal.display;
   SubpixelLayout given = SubpixelLayout::of(drawn);
   if (options.flip_subp) given = {false, *options.flip_subp};
   std::vector<const DecodedPhase*> positions;
@@ -462,12 +462,12 @@ PatternSet check_colour_order(const PatternSet& set, const CalibrateOptions& opt
   if (!check.refused() && !(check.best == check.given)) out.warnings.push_back(check.finding);
   for (size_t i = 0; i < data.size() && i < phases.size(); ++i)
     correct_for_layout(check, drawn, phases[i], data[i].samples);
-  PatternSet solved = set;
+  sim::PatternSet solved = set;
   solved.nominal.display = check.adopted.apply(drawn);
   return solved;
 }
 
-void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
+void solve_display(const sim::PatternSet& set, const std::vector<PositionData>& data,
                    const SolverOptions& options, CalibrationOutcome& out) {
   std::vector<PhasePlane> planes;
   out.coarse = coarse_start(set.nominal, data, options.fit_view_cone, &planes);
@@ -487,12 +487,12 @@ void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
   }
 }
 
-Calibration assemble_calibration(const PatternSet& set,
-                                 const std::vector<PositionCaptures>& positions,
+display::Calibration assemble_calibration(const sim::PatternSet& set,
+                                 const std::vector<sim::PositionCaptures>& positions,
                                  const CalibrateOptions& options,
                                  const CalibrationOutcome& out) {
-  const DisplayCalibration& nd = set.nominal.display;
-  Calibration c;
+  const display::DisplayCalibration& nd = set.nominal.display;
+  display::Calibration c;
   c.display = apply_estimate(nd, out.solve.lens);
   c.correction = out.solve.correction;
   if (positions.size() >= 2 && options.solver.fit_view_cone) {
@@ -512,7 +512,7 @@ Calibration assemble_calibration(const PatternSet& set,
     c.uncertainty["slant_deg"] =
         out.solve.sigma.at("slope") / (1 + slope * slope) * 180 / std::numbers::pi;
   c.residuals = out.solve.residuals;
-  const ViewCountAdvice advice = recommend_view_count(c);
+  const display::ViewCountAdvice advice = display::recommend_view_count(c);
   c.recommended_views = advice.views;
   c.view_count_rule = advice.rule;
   ojson inputs = ojson::array();

@@ -23,17 +23,17 @@
 #include <opencv2/core.hpp>
 
 #include "calib/calibrate.hpp"
-#include "calib/display/lens_model.hpp"
-#include "calib/registration.hpp"
+#include "display/lens_model.hpp"
+#include "calib/registration/registration.hpp"
 
 namespace lfd::calib {
 
 // The patterns of a set by role.
 struct PatternRoles {
-  const PatternInfo* board = nullptr;
-  std::vector<const PatternInfo*> phase, white, black, fringe_x, fringe_y;
-  explicit PatternRoles(const PatternSet& set);
-  static std::string stem(const PatternInfo* p);
+  const sim::PatternInfo* board = nullptr;
+  std::vector<const sim::PatternInfo*> phase, white, black, fringe_x, fringe_y;
+  explicit PatternRoles(const sim::PatternSet& set);
+  static std::string stem(const sim::PatternInfo* p);
 };
 
 // The lens array shows a panel feature displaced by the lens content shift along the row
@@ -41,36 +41,36 @@ struct PatternRoles {
 // features back by it.
 class LensShift {
  public:
-  explicit LensShift(const Calibration& nominal);
+  explicit LensShift(const display::Calibration& nominal);
   // The shift in lens periods, [-1/2, 1/2), at panel pixel `px`.
   double periods(cv::Point2d px, const Eigen::Vector3d& camera) const;
   // The correction to add to panel pixel `px` (panel pixels).
   cv::Point2d correction_px(cv::Point2d px, const Eigen::Vector3d& camera) const;
 
  private:
-  const DisplayCalibration& display_;
-  LensModel lens_;
+  const display::DisplayCalibration& display_;
+  display::LensModel lens_;
 };
 
 // 1.
-std::vector<BoardDetection> detect_boards(const PatternSet& set, const PatternRoles& roles,
-                                          const std::vector<PositionCaptures>& positions);
+std::vector<BoardDetection> detect_boards(const sim::PatternSet& set, const PatternRoles& roles,
+                                          const std::vector<sim::PositionCaptures>& positions);
 // A self-calibrated focal length less certain than this (relative, 1 sigma) is refused.
 inline constexpr double kMaxSelfCalibrationFocalSigma = 0.10;
 // 2. Sets outcome.camera and outcome.camera_self_calibrated (warns on a poor self-calibration;
 // refuses boards that leave the focal length undetermined).
 void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetection>& boards,
-                   const PatternSet& set, CalibrationOutcome& outcome);
+                   const sim::PatternSet& set, CalibrationOutcome& outcome);
 
 // What the per-position stages share.
 struct PositionContext {
-  const PatternSet& set;
+  const sim::PatternSet& set;
   const PatternRoles& roles;
   const CalibrateOptions& options;
   const LensShift& shift;
-  const PositionCaptures& captures;
+  const sim::PositionCaptures& captures;
   const BoardDetection& board;
-  const CameraIntrinsics& camera;
+  const sim::CameraIntrinsics& camera;
   std::vector<std::string>& warnings;
 };
 
@@ -96,7 +96,7 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state);
 // a lens, a ramp across the screen with a jump where the seen view wraps, which biased the
 // focal length and principal point); sets outcome.camera and camera_focal_sigma_rel. The
 // positions are then registered again through it. Refuses a focal length still undetermined.
-void refine_self_calibration(const PatternSet& set, const std::vector<BoardDetection>& boards,
+void refine_self_calibration(const sim::PatternSet& set, const std::vector<BoardDetection>& boards,
                              const std::vector<PositionState>& states, CalibrationOutcome& out);
 // 7.
 DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state);
@@ -108,15 +108,15 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
 // 9. Sets outcome.colour_order; re-decodes `data`'s samples for the adopted layout (the
 // given one, or with options.colour_order.estimate the one the photos favour) and returns the
 // pattern set with that layout, which the solve and the calibration carry.
-PatternSet check_colour_order(const PatternSet& set, const CalibrateOptions& options,
+sim::PatternSet check_colour_order(const sim::PatternSet& set, const CalibrateOptions& options,
                               const std::vector<DecodedPhase>& phases,
                               std::vector<PositionData>& data, CalibrationOutcome& outcome);
 // 10. Sets outcome.coarse, outcome.solve and the positions' refined cameras and residuals.
-void solve_display(const PatternSet& set, const std::vector<PositionData>& data,
+void solve_display(const sim::PatternSet& set, const std::vector<PositionData>& data,
                    const SolverOptions& options, CalibrationOutcome& outcome);
 // 11.
-Calibration assemble_calibration(const PatternSet& set,
-                                 const std::vector<PositionCaptures>& positions,
+display::Calibration assemble_calibration(const sim::PatternSet& set,
+                                 const std::vector<sim::PositionCaptures>& positions,
                                  const CalibrateOptions& options,
                                  const CalibrationOutcome& outcome);
 

@@ -102,7 +102,7 @@ foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)
 endforeach()
 
 # Headers: include/lfd/<folder of the library>/, so that installed code includes them exactly as
-# the sources do ("calib/display/lens_model.hpp" with -I<prefix>/include/lfd). A library owns
+# the sources do ("display/lens_model.hpp" with -I<prefix>/include/lfd). A library owns
 # the headers of its folder and of the subfolders that hold no other library.
 set(_lfd_library_dirs)
 foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)

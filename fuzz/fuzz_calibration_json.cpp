@@ -1,4 +1,4 @@
-// libFuzzer target: the project's calibration.json (calib::parse_calibration; also takes a
+// libFuzzer target: the project's calibration.json (display::parse_calibration; also takes a
 // plain visual.json), correction field included. What parses must write back (to_json) and
 // read again. Any input must either parse or throw lfd::InputError; anything else (a crash,
 // a sanitizer report, another exception, an allocation beyond -rss_limit_mb) is a bug.
@@ -7,20 +7,20 @@
 #include <cstdlib>
 #include <string>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "util/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
-  lfd::calib::Calibration c;
+  lfd::display::Calibration c;
   try {
-    c = lfd::calib::parse_calibration(text, "fuzz.calibration.json");
+    c = lfd::display::parse_calibration(text, "fuzz.calibration.json");
   } catch (const lfd::InputError&) {
     return 0;
   }
   if (!c.correction.empty()) (void)c.correction(0.5, 0.5);
-  const std::string written = lfd::calib::to_json(c).dump(2);
-  const auto again = lfd::calib::parse_calibration(written, "fuzz.calibration.json (written)");
+  const std::string written = lfd::display::to_json(c).dump(2);
+  const auto again = lfd::display::parse_calibration(written, "fuzz.calibration.json (written)");
   if (again.display.view_cone_deg != c.display.view_cone_deg ||
       again.correction.coefficients() != c.correction.coefficients() ||
       again.recommended_views != c.recommended_views)

@@ -18,14 +18,14 @@ constexpr int kClassesX = 2, kClassesY = 4;
 
 // LensModel::subpixel_uv - pixel_uv for each pixel class and channel, taken from LensModel
 // itself so the shader holds no rule of its own for BGR panels or Gen3 cells.
-std::vector<double> subpixel_offset_table(const calib::LensModel& lens) {
+std::vector<double> subpixel_offset_table(const display::LensModel& lens) {
   const int h = lens.calibration().screen_h;
   std::vector<double> table;
   for (int jm = 0; jm < kClassesY; ++jm)
     for (int xm = 0; xm < kClassesX; ++xm)
       for (int c = 0; c < 3; ++c) {
-        const calib::ScreenUV p = lens.pixel_uv(xm, h - 1 - jm);
-        const calib::ScreenUV s = lens.subpixel_uv(xm, h - 1 - jm, c);
+        const display::ScreenUV p = lens.pixel_uv(xm, h - 1 - jm);
+        const display::ScreenUV s = lens.subpixel_uv(xm, h - 1 - jm, c);
         table.push_back(s.u - p.u);
         table.push_back(s.v - p.v);
       }
@@ -36,7 +36,7 @@ std::vector<double> subpixel_offset_table(const calib::LensModel& lens) {
       for (int c = 0; c < 3; ++c) {
         const int row = h - 1 - j;
         const size_t k = size_t(((x % kClassesX) + kClassesX * (j % kClassesY)) * 3 + c) * 2;
-        const calib::ScreenUV p = lens.pixel_uv(x, row), s = lens.subpixel_uv(x, row, c);
+        const display::ScreenUV p = lens.pixel_uv(x, row), s = lens.subpixel_uv(x, row, c);
         if (std::abs(p.u + table[k] - s.u) > 1e-12 || std::abs(p.v + table[k + 1] - s.v) > 1e-12)
           throw std::logic_error("GlInterlacer: the subpixel layout does not repeat every 2x4 pixels");
       }
@@ -44,7 +44,7 @@ std::vector<double> subpixel_offset_table(const calib::LensModel& lens) {
 }
 
 // Largest |second difference| of the control points along one axis.
-double max_second_difference(const calib::CorrectionField& w, bool along_u) {
+double max_second_difference(const display::CorrectionField& w, bool along_u) {
   const auto& c = w.coefficients();
   double m = 0;
   for (int j = 0; j < w.ny(); ++j)
@@ -69,8 +69,8 @@ int grid_points(int control_points, double second_difference, double tolerance) 
 
 // w(u, v) evaluated on the grid the shader interpolates (point i at u = i / (points - 1)), or a
 // 2 x 2 grid of zeros without a field.
-Texture correction_grid_texture(const calib::LensModel& lens) {
-  const calib::CorrectionField& w = lens.correction();
+Texture correction_grid_texture(const display::LensModel& lens) {
+  const display::CorrectionField& w = lens.correction();
   if (w.empty()) {
     const float zeros[4] = {0, 0, 0, 0};
     Texture grid(GL_R32F, 2, 2);
@@ -93,7 +93,7 @@ Texture correction_grid_texture(const calib::LensModel& lens) {
 
 }  // namespace
 
-GlInterlacer::GlInterlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+GlInterlacer::GlInterlacer(const display::LensModel& lens, const render::QuiltLayout& layout,
                            interlace::InterlaceOptions options)
     : layout_(layout),
       panel_width_(lens.calibration().screen_w),
@@ -199,7 +199,7 @@ ImageF image_from_texture(const Texture& texture) {
 }
 
 ImageF interlace_on_gpu(const ImageF& quilt, const render::QuiltLayout& layout,
-                        const calib::LensModel& lens, const interlace::InterlaceOptions& options) {
+                        const display::LensModel& lens, const interlace::InterlaceOptions& options) {
   if (quilt.width != layout.width || quilt.height != layout.height)
     throw_input_error("quilt: image is {}x{} but the layout says {}x{}", quilt.width,
                       quilt.height, layout.width, layout.height);

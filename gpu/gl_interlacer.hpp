@@ -2,13 +2,13 @@
 // The interlacing shader (DESIGN section 6): the GLSL twin of the CPU reference
 // interlace::Interlacer, reading a quilt texture and writing the panel, so a frame can go
 // scene -> quilt -> panel on the GPU with no CPU round trip. Its constants come from
-// calib::LensModel, the one definition of the lens phase, view fraction and view index; the
+// display::LensModel, the one definition of the lens phase, view fraction and view index; the
 // shader (gpu/shaders/interlace.frag.glsl) repeats LensModel's arithmetic line by line in double
 // precision. It matches interlace::interlace within 1/255 on all but a negligible fraction of
 // subpixels (tests/gpu/gl_interlacer_test.cpp, docs/rendering.md).
 #include <epoxy/gl.h>
 
-#include "calib/display/lens_model.hpp"
+#include "display/lens_model.hpp"
 #include "gpu/gl_objects.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/quilt_layout.hpp"
@@ -27,7 +27,7 @@ class GlInterlacer {
  public:
   // Needs a current GL 4.5 context. Uploads the per-display constants and the correction grid
   // once. Throws InputError if the layout is unusable (as the CPU interlacer does).
-  GlInterlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+  GlInterlacer(const display::LensModel& lens, const render::QuiltLayout& layout,
                interlace::InterlaceOptions options = {});
 
   // quilt: layout.width x layout.height, rows bottom-up as rendered (view 0 in the bottom-left
@@ -64,7 +64,7 @@ ImageF image_from_texture(const Texture& texture);
 // Convenience for files and tests: uploads the quilt, interlaces on the GPU, reads the panel
 // back (float, top-down like interlace::interlace). Needs a current context.
 ImageF interlace_on_gpu(const ImageF& quilt, const render::QuiltLayout& layout,
-                        const calib::LensModel& lens,
+                        const display::LensModel& lens,
                         const interlace::InterlaceOptions& options = {});
 
 }  // namespace lfd::gpu

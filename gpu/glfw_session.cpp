@@ -49,7 +49,7 @@ std::vector<MonitorInfo> GlfwSession::monitors() const {
 
 GLFWmonitor* GlfwSession::find_display_monitor(const std::string& name_prefix, int width_px,
                                                int height_px) const {
-  const size_t index = calib::choose_monitor(monitors(), name_prefix, width_px, height_px);
+  const size_t index = display::choose_monitor(monitors(), name_prefix, width_px, height_px);
   int count = 0;
   GLFWmonitor** handles = glfwGetMonitors(&count);
   if (int(index) >= count)  // unplugged just now

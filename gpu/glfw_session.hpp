@@ -2,17 +2,17 @@
 // GLFW, the window kind of GL context (the live calibration's pattern window, the viewer):
 // initialised while a session lives, with GLFW's own error text kept for messages. Without an X
 // server there is nothing to show a window on, which is bad input (InputError), not a crash.
-// One monitor rule for every window on the display: calib::choose_monitor.
+// One monitor rule for every window on the display: display::choose_monitor.
 #include <string>
 #include <vector>
 
-#include "calib/display/monitor_choice.hpp"
+#include "display/monitor_choice.hpp"
 
 struct GLFWmonitor;
 
 namespace lfd::gpu {
 
-using calib::MonitorInfo;
+using display::MonitorInfo;
 
 class GlfwSession {
  public:

@@ -7,7 +7,7 @@
 
 namespace lfd::interlace {
 
-Interlacer::Interlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+Interlacer::Interlacer(const display::LensModel& lens, const render::QuiltLayout& layout,
                        InterlaceOptions options)
     : lens_(lens), layout_(layout), options_(options) {
   layout_.check("quilt");
@@ -18,7 +18,7 @@ SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
   SubpixelSample s;
   // Aspect fit (looking-glass.md 3.8): the phase uses the unscaled (u, v); only the tile
   // lookup uses the aspect-corrected coordinate.
-  const calib::ScreenUV p = lens_.pixel_uv(x, row);
+  const display::ScreenUV p = lens_.pixel_uv(x, row);
   const double display_aspect = double(cal.screen_w) / cal.screen_h;
   const double quilt_aspect = layout_.aspect;
   const bool fit_x = (display_aspect >= quilt_aspect && !options_.overscan) ||
@@ -39,7 +39,7 @@ SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
   double f = lens_.subpixel_view_fraction(x, row, channel);
   if (options_.invert_views) f = 1.0 - f;
   if (options_.blend == ViewBlend::kNearest) {
-    s.view_a = s.view_b = calib::LensModel::view_index(f, views);
+    s.view_a = s.view_b = display::LensModel::view_index(f, views);
     return s;
   }
   // Linear: blend the two views whose centres (k + 0.5)/V bracket f; clamp at the cone edges
@@ -100,7 +100,7 @@ ImageF Interlacer::interlace(const ImageF& quilt) const {
 }
 
 ImageF interlace(const ImageF& quilt, const render::QuiltLayout& layout,
-                 const calib::LensModel& lens, const InterlaceOptions& options) {
+                 const display::LensModel& lens, const InterlaceOptions& options) {
   return Interlacer(lens, layout, options).interlace(quilt);
 }
 

@@ -4,7 +4,7 @@
 // included), a view index (nearest, or a linear blend of the two nearest view centres), and a
 // bilinear lookup inside that view's quilt tile (aspect/overscan and viewPortion handled as
 // Looking Glass software does). The GLSL interlacer must match this function.
-#include "calib/display/lens_model.hpp"
+#include "display/lens_model.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
 
@@ -30,7 +30,7 @@ struct SubpixelSample {
 
 class Interlacer {
  public:
-  Interlacer(const calib::LensModel& lens, const render::QuiltLayout& layout,
+  Interlacer(const display::LensModel& lens, const render::QuiltLayout& layout,
              InterlaceOptions options = {});
 
   // Throws InputError if the quilt image does not match the layout's size.
@@ -42,13 +42,13 @@ class Interlacer {
   float sample_tile(const ImageF& quilt, int view, double u, double v, int channel) const;
 
  private:
-  const calib::LensModel& lens_;
+  const display::LensModel& lens_;
   render::QuiltLayout layout_;
   InterlaceOptions options_;
 };
 
 // Convenience: interlace a quilt image for a display.
 ImageF interlace(const ImageF& quilt, const render::QuiltLayout& layout,
-                 const calib::LensModel& lens, const InterlaceOptions& options = {});
+                 const display::LensModel& lens, const InterlaceOptions& options = {});
 
 }  // namespace lfd::interlace

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "calib/calibrate.hpp"
-#include "calib/display/cover_layer.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/cover_layer.hpp"
+#include "display/visual_json.hpp"
 #include "pipeline/capture_cache.hpp"
 #include "util/error.hpp"
 
@@ -29,7 +29,7 @@ const std::vector<BenchmarkDisplay>& benchmark_displays() {
   return displays;
 }
 
-bool AccuracyBars::met_by(const calib::CalibrationErrors& e) const {
+bool AccuracyBars::met_by(const sim::CalibrationErrors& e) const {
   return e.slant_deg <= slant_deg && e.pitch_rel <= pitch_rel && e.center_periods <= center &&
          e.view_cone_deg <= cone_deg && e.correction_rms_periods <= warp;
 }
@@ -45,7 +45,7 @@ nlohmann::ordered_json AccuracyBars::to_json() const {
 namespace {
 
 // |error| / sigma per value; the pitch's error is relative, its sigma in lenticules per inch.
-std::map<std::string, double> errors_over_sigmas(const calib::CalibrationErrors& e,
+std::map<std::string, double> errors_over_sigmas(const sim::CalibrationErrors& e,
                                                  const std::map<std::string, double>& sigma,
                                                  double pitch_lpi) {
   std::map<std::string, double> out;
@@ -111,18 +111,18 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
   std::vector<CalibrationBenchmarkRow> rows;
   for (const auto& d : benchmark_displays()) {
     if (!o.only.empty() && d.label.find(o.only) == std::string::npos) continue;
-    auto real = calib::read_visual_json(o.data_dir / "calibrations" / d.file);
-    if (!o.bare_panels) real.cover = calib::cover_layer_for_family(real).cover;
+    auto real = display::read_visual_json(o.data_dir / "calibrations" / d.file);
+    if (!o.bare_panels) real.cover = display::cover_layer_for_family(real).cover;
     for (int seed = 1; seed <= o.seeds; ++seed) {
-      calib::SyntheticUnitOptions so;
+      sim::SyntheticUnitOptions so;
       so.seed = uint64_t(seed);
-      const calib::SyntheticUnit unit = calib::make_synthetic_unit(real, so);
-      calib::PatternOptions po;
+      const sim::SyntheticUnit unit = sim::make_synthetic_unit(real, so);
+      sim::PatternOptions po;
       po.board_squares_short = o.board_squares;
-      calib::PatternSet set = calib::plan_patterns(unit.nominal, po);
-      calib::CaptureRig rig = calib::make_capture_rig(unit.truth.display, o.width_px,
+      sim::PatternSet set = sim::plan_patterns(unit.nominal, po);
+      sim::CaptureRig rig = sim::make_capture_rig(unit.truth.display, o.width_px,
                                                       o.positions, false, uint64_t(seed), o.layout);
-      const bool above_below = o.layout == calib::RigLayout::kAboveBelow;
+      const bool above_below = o.layout == sim::RigLayout::kAboveBelow;
       if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
       rig.glare_moves = o.moving_glare;
       rig.effects.exposure_drift = o.exposure_drift;
@@ -148,7 +148,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
           o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
       const std::string flicker_key =
           o.flicker > 0 ? fmt::format("-flicker{}x{}", o.flicker, o.flicker_bands) : "";
-      const calib::CoverLayer& cover = unit.truth.display.cover;
+      const display::CoverLayer& cover = unit.truth.display.cover;
       const std::string cover_key =
           cover.present() ? fmt::format("-cover{}n{}", cover.thickness_m, cover.refractive_index)
                           : "";
@@ -157,7 +157,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
                           unit.truth, rig);
       measured.simulate_s = seconds_since(t0);
       // Registration and the solver read the cover from the nominal description.
-      if (o.solver_without_cover) set.nominal.display.cover = calib::CoverLayer{};
+      if (o.solver_without_cover) set.nominal.display.cover = display::CoverLayer{};
 
       for (const bool self_calibrate : {false, true}) {
         if (self_calibrate && !o.self_calibrated) break;
@@ -174,7 +174,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
         try {
           const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
           row.calibrate_s = seconds_since(t0);
-          row.errors = calib::compare_with_truth(out.calibration, unit.truth);
+          row.errors = sim::compare_with_truth(out.calibration, unit.truth);
           row.within_bars = bars.met_by(*row.errors);
           row.gate_failures = out.gate_failures;
           row.gate_values = {{"termination", out.solve.termination},

@@ -14,7 +14,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
-#include "calib/synthetic_unit.hpp"
+#include "sim/synthetic_unit.hpp"
 
 namespace lfd::pipeline {
 
@@ -28,7 +28,7 @@ const std::vector<BenchmarkDisplay>& benchmark_displays();
 // The figures the calibration must reach.
 struct AccuracyBars {
   double slant_deg = 0.001, pitch_rel = 2e-5, center = 0.005, cone_deg = 0.5, warp = 0.01;
-  bool met_by(const calib::CalibrationErrors& e) const;
+  bool met_by(const sim::CalibrationErrors& e) const;
   nlohmann::ordered_json to_json() const;
 };
 
@@ -54,11 +54,11 @@ struct CalibrationBenchmarkOptions {
   double flicker = 0;
   double flicker_bands = 2.5;
   bool no_row_exposure_fix = false;  // diagnostic: one gain per photo, no banding fit
-  calib::RigLayout layout = calib::RigLayout::kSides;  // where the cameras stand
+  sim::RigLayout layout = sim::RigLayout::kSides;  // where the cameras stand
   // Diagnostic: solve with f_seen of the horizontal offset alone (captures keep the vertical
   // parallax), to measure what leaving it out costs.
   bool solver_without_vertical_parallax = false;
-  // The units carry their family's cover layer (calib/display/cover_layer.hpp) unless
+  // The units carry their family's cover layer (display/cover_layer.hpp) unless
   // `bare_panels`; `solver_without_cover` registers and solves as if the panel were bare
   // (photos keep the cover), to measure what ignoring it costs.
   bool bare_panels = false;
@@ -79,11 +79,11 @@ struct CalibrationBenchmarkRow {
   int capture_width = 0, capture_height = 0;
   bool camera_self_calibrated = false;
   double focal_error_rel = 0, focal_sigma_rel = 0;  // the self-calibrated focal length
-  std::optional<calib::CalibrationErrors> errors;  // absent when the calibration failed
+  std::optional<sim::CalibrationErrors> errors;  // absent when the calibration failed
   std::string failure;                             // why, when it failed
   bool within_bars = false;
   std::vector<std::string> gate_failures;
-  nlohmann::ordered_json gate_values;  // what the fit gates measured (calib/quality_gates.hpp)
+  nlohmann::ordered_json gate_values;  // what the fit gates measured (calib/solver/quality_gates.hpp)
   std::map<std::string, double> uncertainty;
   // Each error over its reported 1-sigma (slant, pitch, center, cone, warp): whether the
   // sigmas cover the errors (issue #12); absent where a sigma is missing or zero.

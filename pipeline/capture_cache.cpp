@@ -7,19 +7,19 @@
 
 namespace lfd::pipeline {
 
-std::vector<calib::PositionCaptures> cached_captures(const std::filesystem::path& cache_dir,
+std::vector<sim::PositionCaptures> cached_captures(const std::filesystem::path& cache_dir,
                                                      const std::string& key,
-                                                     const calib::PatternSet& set,
-                                                     const calib::Calibration& truth,
-                                                     const calib::CaptureRig& rig) {
+                                                     const sim::PatternSet& set,
+                                                     const display::Calibration& truth,
+                                                     const sim::CaptureRig& rig) {
   namespace fs = std::filesystem;
-  if (cache_dir.empty()) return calib::simulate_captures(set, truth, rig);
+  if (cache_dir.empty()) return sim::simulate_captures(set, truth, rig);
   const fs::path dir = cache_dir / key;
   if (fs::exists(dir / "complete")) {
     std::vector<std::string> warnings;
-    return calib::read_captures(dir, set, warnings);
+    return sim::read_captures(dir, set, warnings);
   }
-  auto captures = calib::simulate_captures(set, truth, rig);
+  auto captures = sim::simulate_captures(set, truth, rig);
   for (const auto& pc : captures) {
     const fs::path pdir = dir / "captures" / pc.name;
     fs::create_directories(pdir);

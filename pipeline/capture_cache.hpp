@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "calib/capture_io.hpp"
-#include "calib/display/calibration_file.hpp"
-#include "calib/patterns.hpp"
-#include "calib/synthetic_unit.hpp"
+#include "sim/capture_io.hpp"
+#include "display/calibration_file.hpp"
+#include "sim/patterns.hpp"
+#include "sim/synthetic_unit.hpp"
 
 namespace lfd::pipeline {
 
@@ -16,10 +16,10 @@ namespace lfd::pipeline {
 // `cache_dir` if an earlier run left them complete there; else simulated and, with a cache,
 // saved as 16-bit PNGs in a capture folder (DIR/captures/<position>/<stem>.png). An empty
 // `cache_dir` only simulates.
-std::vector<calib::PositionCaptures> cached_captures(const std::filesystem::path& cache_dir,
+std::vector<sim::PositionCaptures> cached_captures(const std::filesystem::path& cache_dir,
                                                      const std::string& key,
-                                                     const calib::PatternSet& set,
-                                                     const calib::Calibration& truth,
-                                                     const calib::CaptureRig& rig);
+                                                     const sim::PatternSet& set,
+                                                     const display::Calibration& truth,
+                                                     const sim::CaptureRig& rig);
 
 }  // namespace lfd::pipeline

@@ -8,13 +8,14 @@
 
 #include <fmt/format.h>
 
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/display_quilt.hpp"
-#include "calib/display/lens_relations.hpp"
-#include "calib/patterns.hpp"
-#include "calib/simulator.hpp"
-#include "calib/synthetic_unit.hpp"
-#include "calib/display/view_count.hpp"
+#include "calib/calibrate.hpp"
+#include "display/calibration_file.hpp"
+#include "display/display_quilt.hpp"
+#include "display/lens_relations.hpp"
+#include "sim/patterns.hpp"
+#include "sim/simulator.hpp"
+#include "sim/synthetic_unit.hpp"
+#include "display/view_count.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
@@ -70,31 +71,31 @@ std::filesystem::path run_demo(const DemoOptions& o) {
 
   // 1. The simulated unit: its factory file plus a warp only its own calibration describes,
   // a view cone 2 degrees wider than nominal, and a user who starts from nominal values off by
-  // 1 % in pitch and 0.5 degree in slant (calib/synthetic_unit.hpp).
-  const calib::Calibration factory = calib::read_calibration(unit_path);
-  calib::SyntheticUnitOptions unit_options;
+  // 1 % in pitch and 0.5 degree in slant (sim/synthetic_unit.hpp).
+  const display::Calibration factory = display::read_calibration(unit_path);
+  sim::SyntheticUnitOptions unit_options;
   unit_options.warp_amplitude = o.warp_amplitude_periods;
-  calib::SyntheticUnit unit = calib::make_synthetic_unit(factory.display, unit_options);
-  calib::Calibration& truth = unit.truth;
+  sim::SyntheticUnit unit = sim::make_synthetic_unit(factory.display, unit_options);
+  display::Calibration& truth = unit.truth;
   truth.provenance = {{"tool", "lfd demo"},
                       {"method", fmt::format("factory calibration {} + smooth lens warp of {} periods",
                                              unit_path.filename().string(), o.warp_amplitude_periods)}};
-  calib::write_calibration(out / "unit_truth.calibration.json", truth, true);
+  display::write_calibration(out / "unit_truth.calibration.json", truth, true);
 
   // 2. Calibrate it: patterns shown on the unit, photographed by the simulator from three
   // positions (blur, 2 % noise, vignetting, lens distortion, 5 % glare), solved.
-  calib::Calibration recovered;
+  display::Calibration recovered;
   {
     Step step(o.verbose, "calibrating the unit from simulated photographs");
-    const calib::PatternSet set = calib::plan_patterns(unit.nominal);
-    const calib::CaptureRig rig =
-        calib::make_capture_rig(truth.display, o.capture_width, 3, false, 1);
-    const auto captures = calib::simulate_captures(set, truth, rig);
+    const sim::PatternSet set = sim::plan_patterns(unit.nominal);
+    const sim::CaptureRig rig =
+        sim::make_capture_rig(truth.display, o.capture_width, 3, false, 1);
+    const auto captures = sim::simulate_captures(set, truth, rig);
     calib::CalibrateOptions options;
     options.camera = rig.intrinsics;
     const calib::CalibrationOutcome outcome = calib::calibrate_display(set, captures, options);
     recovered = outcome.calibration;
-    const calib::CalibrationErrors e = calib::compare_with_truth(recovered, truth);
+    const sim::CalibrationErrors e = sim::compare_with_truth(recovered, truth);
     report.calibration_note = fmt::format(
         "Calibrated from {} patterns photographed at 3 positions ({}x{} px), starting from "
         "nominal values off by 1 % in pitch and 0.5 deg in slant. Errors against the truth: "
@@ -103,16 +104,16 @@ std::filesystem::path run_demo(const DemoOptions& o) {
         set.patterns.size(), rig.intrinsics.width, rig.intrinsics.height, e.slant_deg, e.pitch_rel,
         e.center_periods, e.view_cone_deg, e.correction_rms_periods, e.phase_rms_periods,
         outcome.gate_failures.empty() ? "passed" : "failed (" + std::to_string(outcome.gate_failures.size()) + ")");
-    calib::write_calibration(out / "recovered.calibration.json", recovered, true);
+    display::write_calibration(out / "recovered.calibration.json", recovered, true);
   }
   const auto& d = truth.display;
-  const calib::ViewCountAdvice advice = calib::recommend_view_count(recovered);
+  const display::ViewCountAdvice advice = display::recommend_view_count(recovered);
   report.views = advice.views;
   report.view_rule = advice.rule;
   // The display is driven with the calibration recovered from photographs: it chooses the
   // views, the tile grid and the (measured) view cone the quilt is rendered with.
-  const calib::Calibration& assumed = recovered;
-  const calib::DisplayQuilt display_quilt = calib::quilt_for_display(recovered);
+  const display::Calibration& assumed = recovered;
+  const display::DisplayQuilt display_quilt = display::quilt_for_display(recovered);
 
   // 3. Quilts: the bundled scene through G2LF, and the numbered test quilt.
   const double aspect = double(d.screen_w) / d.screen_h;
@@ -161,7 +162,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   ImageF scene_panel, numbered_panel;
   {
     Step step(o.verbose, "interlacing");
-    const calib::LensModel lens(assumed.display, assumed.correction);
+    const display::LensModel lens(assumed.display, assumed.correction);
     scene_panel = gl ? gpu::interlace_on_gpu(scene_quilt, layout, lens) : interlace::interlace(scene_quilt, layout, lens);
     numbered_panel = gl ? gpu::interlace_on_gpu(numbered, layout, lens) : interlace::interlace(numbered, layout, lens);
     write_png(out / "scene_panel.png", to_uint8(scene_panel));
@@ -171,28 +172,28 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   // 5. Photographs from three positions across the view cone at 0.45 m.
   {
     Step step(o.verbose, "photographing the display from three positions");
-    const calib::DisplaySimulator display(calib::LensModel(truth.display, truth.correction));
+    const sim::DisplaySimulator display(display::LensModel(truth.display, truth.correction));
     const double distance = 0.45;
     const double fov = 2.0 * std::atan(0.65 * d.width_m() / distance) * 180.0 / std::numbers::pi;
     const int cw = o.capture_width, ch = int(std::lround(cw / aspect));
-    calib::CaptureEffects fx;
+    sim::CaptureEffects fx;
     fx.blur_px = 0.7;
     fx.noise_sigma = 0.01;
     fx.vignetting = 0.15;
     for (auto [name, angle] : {std::pair{"left", -0.3}, {"centre", 0.0}, {"right", 0.3}}) {
       const double theta = angle * d.view_cone_deg * std::numbers::pi / 180.0;
-      calib::CameraPose pose;
+      sim::CameraPose pose;
       pose.position_m = {distance * std::sin(theta), 0.0, distance * std::cos(theta)};
-      const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(fov, cw, ch), pose);
+      const sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(fov, cw, ch), pose);
       // Which view a viewer there should see (DESIGN section 4: f_seen at the panel centre).
       const double f_seen =
-          calib::seen_fraction_through_cover(pose.position_m.x(), pose.position_m.y(),
+          display::seen_fraction_through_cover(pose.position_m.x(), pose.position_m.y(),
                                              pose.position_m.z(), d.cover,
-                                             calib::LensModel(d).line_tilt(), d.view_cone_deg);
+                                             display::LensModel(d).line_tilt(), d.view_cone_deg);
       report::DemoCapture cap;
       cap.name = name;
       cap.angle_deg = theta * 180.0 / std::numbers::pi;
-      cap.expected_view = calib::LensModel::view_index(f_seen, advice.views);
+      cap.expected_view = display::LensModel::view_index(f_seen, advice.views);
       cap.scene_image = fmt::format("capture_scene_{}.png", name);
       cap.numbered_image = fmt::format("capture_numbered_{}.png", name);
       write_png(out / cap.scene_image, to_uint8(display.capture(scene_panel, camera, fx)));
@@ -208,7 +209,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
     po.views = advice.views;
     po.panel_points = o.validation_points;
     std::vector<report::ValidationCase> cases;
-    const std::vector<std::pair<std::string, calib::Calibration>> configs = {
+    const std::vector<std::pair<std::string, display::Calibration>> configs = {
         {"recovered calibration", assumed},
         {"true calibration", truth},
         {"factory visual.json (no warp correction)", factory},

@@ -24,7 +24,7 @@ constexpr const char* kDivergingPalette =
 constexpr double kHistogramBinPeriods = 0.005;
 
 // Height over width of the screen, so that maps over (u, v) keep its shape.
-double screen_ratio(const calib::DisplayCalibration& d) {
+double screen_ratio(const display::DisplayCalibration& d) {
   return d.screen_w > 0 && d.screen_h > 0 ? double(d.screen_h) / d.screen_w : 9.0 / 16.0;
 }
 
@@ -97,7 +97,7 @@ std::string residual_script(const std::string& stem, const std::string& name,
   return s;
 }
 
-std::string correction_data(const calib::CorrectionField& field, double ratio) {
+std::string correction_data(const display::CorrectionField& field, double ratio) {
   const int nu = 120, nv = std::max(20, int(std::lround(120 * ratio)));
   std::string s = "# u v w (lens periods); one block per row of v\n";
   for (int j = 0; j < nv; ++j) {

@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/display/lens_model.hpp"
-#include "calib/residual_statistics.hpp"
+#include "display/lens_model.hpp"
+#include "calib/solver/residual_statistics.hpp"
 #include "util/atomic_file.hpp"
 #include "report/calibration_figures.hpp"
 #include "report/html.hpp"
@@ -27,7 +27,7 @@ constexpr const char* kStyle =
     "overflow-x:auto;font-size:85%}</style>\n";
 
 // "value +- sigma", or the value alone when the solve gave no uncertainty for it.
-std::string with_sigma(double value, const calib::Calibration& c, const char* key,
+std::string with_sigma(double value, const display::Calibration& c, const char* key,
                        int decimals) {
   const auto it = c.uncertainty.find(key);
   if (it == c.uncertainty.end() || !std::isfinite(it->second))
@@ -36,9 +36,9 @@ std::string with_sigma(double value, const calib::Calibration& c, const char* ke
 }
 
 // Slant from vertical for a slope, as the lens model defines it.
-double slant_deg(calib::DisplayCalibration display, double slope) {
+double slant_deg(display::DisplayCalibration display, double slope) {
   display.slope = slope;
-  return calib::LensModel(display).slant_deg();
+  return display::LensModel(display).slant_deg();
 }
 
 std::string xyz(const Eigen::Vector3d& p) {
@@ -48,9 +48,9 @@ std::string xyz(const Eigen::Vector3d& p) {
 // The recovered lens against a reference calibration of the same unit (its factory
 // calibration, read from the device or a file): the difference, and in units of the recovered
 // value's 1-sigma where the solve gave one.
-std::string reference_section(const calib::Calibration& c, const ReferenceCalibration& ref) {
-  const calib::DisplayCalibration& d = c.display;
-  const calib::DisplayCalibration& f = ref.calibration.display;
+std::string reference_section(const display::Calibration& c, const ReferenceCalibration& ref) {
+  const display::DisplayCalibration& d = c.display;
+  const display::DisplayCalibration& f = ref.calibration.display;
   auto row = [&](const char* name, double recovered, double factory, double difference,
                  const char* sigma_key, int decimals) {
     const auto it = c.uncertainty.find(sigma_key);
@@ -84,8 +84,8 @@ std::string reference_section(const calib::Calibration& c, const ReferenceCalibr
 }
 
 std::string result_section(const calib::CalibrationOutcome& o) {
-  const calib::Calibration& c = o.calibration;
-  const calib::DisplayCalibration& d = c.display;
+  const display::Calibration& c = o.calibration;
+  const display::DisplayCalibration& d = c.display;
   std::string h = "<h2>Result</h2>\n<table><tr><th class=\"l\">parameter</th><th>value</th>"
                   "<th>1-sigma</th><th>coarse start</th></tr>\n";
   h += fmt::format("<tr><td class=\"l\">pitch (lenticules per inch)</td><td>{}</td><td>{:.5f}"
@@ -277,7 +277,7 @@ std::filesystem::path write_calibration_report(const calib::CalibrationOutcome& 
   j["figures"] = figures.drawn ? figure_files(figures) : std::vector<std::string>{};
   if (reference)
     j["reference"] = {{"name", reference->name},
-                      {"calibration", calib::to_json(reference->calibration)}};
+                      {"calibration", display::to_json(reference->calibration)}};
   write_text_atomic(dir / "report.json", j.dump(2) + "\n");
   const auto index = dir / "index.html";
   write_text_atomic(index, calibration_page(reference, outcome, figures));

@@ -14,7 +14,7 @@ namespace lfd::report {
 // A calibration of the same unit to compare the recovered one with (its factory calibration,
 // from the device or a file), and what to call it on the page.
 struct ReferenceCalibration {
-  calib::Calibration calibration;
+  display::Calibration calibration;
   std::string name;  // e.g. "the factory calibration (device LKG-2K-04409)"
 };
 

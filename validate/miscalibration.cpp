@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "calib/display/lens_relations.hpp"
+#include "display/lens_relations.hpp"
 
 namespace lfd::validate {
 
@@ -19,13 +19,13 @@ std::string Miscalibration::describe() const {
   return s.empty() ? "none" : s;
 }
 
-calib::Calibration apply(const calib::Calibration& calibration, const Miscalibration& e) {
-  calib::Calibration c = calibration;
+display::Calibration apply(const display::Calibration& calibration, const Miscalibration& e) {
+  display::Calibration c = calibration;
   // The slant is the lens angle from vertical, atan(1/slope); perturb the angle, not the slope.
-  c.display.slope = calib::slope_of_slant_deg(calib::slant_deg_of_slope(c.display.slope) + e.slant_deg);
+  c.display.slope = display::slope_of_slant_deg(display::slant_deg_of_slope(c.display.slope) + e.slant_deg);
   c.display.pitch_lpi *= 1.0 + e.pitch_relative;
   c.display.center_periods += e.center_periods;
-  if (e.drop_correction) c.correction = calib::CorrectionField();
+  if (e.drop_correction) c.correction = display::CorrectionField();
   return c;
 }
 

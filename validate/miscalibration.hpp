@@ -3,7 +3,7 @@
 // amounts, to drive the interlacer with while the optics follow the truth.
 #include <string>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 
 namespace lfd::validate {
 
@@ -19,6 +19,6 @@ struct Miscalibration {
   std::string describe() const;  // e.g. "slant +0.01 deg, pitch +2e-05"
 };
 
-calib::Calibration apply(const calib::Calibration& calibration, const Miscalibration& error);
+display::Calibration apply(const display::Calibration& calibration, const Miscalibration& error);
 
 }  // namespace lfd::validate

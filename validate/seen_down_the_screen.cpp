@@ -4,10 +4,10 @@
 #include <complex>
 #include <numbers>
 
-#include "calib/display/fraction_panel.hpp"
-#include "calib/display/lens_relations.hpp"
-#include "calib/display/view_count.hpp"
-#include "calib/simulator.hpp"
+#include "display/fraction_panel.hpp"
+#include "display/lens_relations.hpp"
+#include "display/view_count.hpp"
+#include "sim/simulator.hpp"
 #include "util/error.hpp"
 
 namespace lfd::validate {
@@ -17,7 +17,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 double fraction_of(std::complex<double> z) {
-  return calib::wrap_fraction(std::arg(z) / kTwoPi);
+  return display::wrap_fraction(std::arg(z) / kTwoPi);
 }
 
 }  // namespace
@@ -27,7 +27,7 @@ double fraction_difference(double a, double b) {
   return d - std::floor(d + 0.5);
 }
 
-std::vector<HeightSample> seen_down_the_screen(const calib::Calibration& truth,
+std::vector<HeightSample> seen_down_the_screen(const display::Calibration& truth,
                                                const Eigen::Vector3d& eye_m, int rows,
                                                double region_fraction) {
   if (!(eye_m.z() > 0)) throw_input_error("eye: z = {} m; the eye must be in front of the panel", eye_m.z());
@@ -35,12 +35,12 @@ std::vector<HeightSample> seen_down_the_screen(const calib::Calibration& truth,
   if (!(region_fraction > 0 && region_fraction <= 1))
     throw_input_error("region: {} (expected a fraction in (0, 1])", region_fraction);
   const auto& d = truth.display;
-  const calib::LensModel lens(d, truth.correction);
-  const calib::DisplaySimulator simulator{lens};
-  const ImageF cos_panel = calib::view_fraction_panel(lens, false);
-  const ImageF sin_panel = calib::view_fraction_panel(lens, true);
+  const display::LensModel lens(d, truth.correction);
+  const sim::DisplaySimulator simulator{lens};
+  const ImageF cos_panel = display::view_fraction_panel(lens, false);
+  const ImageF sin_panel = display::view_fraction_panel(lens, true);
   const ImageF white(d.screen_w, d.screen_h, 3, 1.0f);
-  const double psf = truth.phase_blur_sigma.value_or(calib::kDefaultPhaseBlurSigma);
+  const double psf = truth.phase_blur_sigma.value_or(display::kDefaultPhaseBlurSigma);
   // Samples across four lens periods and nine pixel rows, 9/8 of a row apart: every position
   // within a lens and within a row counts alike. Both matter: a subpixel's fraction is that of
   // its centre, while the slanted lens sees it at other phases above and below the centre
@@ -64,7 +64,7 @@ std::vector<HeightSample> seen_down_the_screen(const calib::Calibration& truth,
       const auto w = simulator.radiance(white, p, eye_m, psf);
       for (int ch = 0; ch < 3; ++ch) seen += std::complex<double>(c[ch] - 0.5 * w[ch], s[ch] - 0.5 * w[ch]);
       const Eigen::Vector3d to_eye = eye_m - p;
-      const double f = calib::seen_fraction_through_cover(to_eye.x(), to_eye.y(), to_eye.z(),
+      const double f = display::seen_fraction_through_cover(to_eye.x(), to_eye.y(), to_eye.z(),
                                                           d.cover, lens.line_tilt(),
                                                           d.view_cone_deg);
       predicted += std::polar(1.0, kTwoPi * f);

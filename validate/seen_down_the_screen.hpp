@@ -2,13 +2,13 @@
 // What one viewer sees down the screen (issue #12, vertical parallax): a slanted lens has power
 // only across its lines, so an eye at a fixed place sees different views at the top and the
 // bottom of the screen even straight in front of it, by H_m line_tilt k / Cz of the cone
-// (calib/display/lens_relations.hpp). Measured through the simulator's optics and set beside
+// (display/lens_relations.hpp). Measured through the simulator's optics and set beside
 // the relation's prediction.
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 
 namespace lfd::validate {
 
@@ -21,7 +21,7 @@ struct HeightSample {
 // `rows` heights from the bottom to the top of the central `region_fraction` of the screen,
 // each averaged over a few lens periods around x = eye.x. Throws InputError for an eye behind
 // the panel or fewer than 2 rows.
-std::vector<HeightSample> seen_down_the_screen(const calib::Calibration& truth,
+std::vector<HeightSample> seen_down_the_screen(const display::Calibration& truth,
                                                const Eigen::Vector3d& eye_m, int rows = 9,
                                                double region_fraction = 0.9);
 

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "calib/display/lens_relations.hpp"
-#include "calib/display/view_count.hpp"
+#include "display/lens_relations.hpp"
+#include "display/view_count.hpp"
 #include "util/error.hpp"
 #include "validate/view_metrics.hpp"
 
@@ -17,7 +17,7 @@ double parallax_blur(const ViewProfiles& p, double view_cone_deg) {
   for (size_t a = 0; a < p.theta_deg.size(); ++a) {
     // The eye's view position relative to the centre view, -1/2 .. 1/2 across the cone (the
     // profiles' eyes are level with each panel point: no vertical term).
-    const double s_eye = calib::seen_fraction_of_tan(
+    const double s_eye = display::seen_fraction_of_tan(
                              std::tan(p.theta_deg[a] * std::numbers::pi / 180.0), 0.0, 0.0,
                              view_cone_deg) - 0.5;
     if (std::abs(s_eye) >= 0.4) continue;
@@ -35,13 +35,13 @@ double parallax_blur(const ViewProfiles& p, double view_cone_deg) {
   return count > 0 ? sum / count : 0.0;
 }
 
-ViewCountSweep sweep_view_counts(const calib::Calibration& truth, const std::vector<int>& counts,
+ViewCountSweep sweep_view_counts(const display::Calibration& truth, const std::vector<int>& counts,
                                  ProfileOptions options, Progress* progress) {
   if (counts.empty()) throw_input_error("views sweep: no view counts given");
   if (!std::is_sorted(counts.begin(), counts.end()))
     throw_input_error("views sweep: view counts must ascend");
   ViewCountSweep sweep;
-  sweep.recommended = calib::recommend_view_count(truth).views;
+  sweep.recommended = display::recommend_view_count(truth).views;
   for (int views : counts) {
     options.views = views;
     const ViewProfiles profiles = measure_view_profiles(truth, truth, options, progress);

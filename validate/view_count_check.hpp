@@ -1,5 +1,5 @@
 #pragma once
-// Checks the view-count rule (calib/display/view_count.hpp) with the simulator: how much parallax blur
+// Checks the view-count rule (display/view_count.hpp) with the simulator: how much parallax blur
 // a viewer sees as the number of views grows. A viewer at direction theta should see the view
 // rendered for theta, i.e. the camera offset s(theta) = tan(theta) / (2 tan(cone / 2)); what
 // reaches the eye is a mixture of views j (camera offsets s_j = (j + 0.5)/V - 0.5) with weights
@@ -11,7 +11,7 @@
 // then levels off at the lens blur: beyond that, more views cost rendering time and buy nothing.
 #include <vector>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "validate/view_profiles.hpp"
 
 namespace lfd::validate {
@@ -29,13 +29,13 @@ double parallax_blur(const ViewProfiles& profiles, double view_cone_deg);
 
 struct ViewCountSweep {
   std::vector<ViewCountPoint> points;
-  int recommended = 0;      // the rule's count (calib::recommend_view_count)
+  int recommended = 0;      // the rule's count (display::recommend_view_count)
   int saturation = 0;       // smallest swept count within 10 % of the largest count's blur
   double blur_floor = 0;    // blur at the largest swept count
 };
 
 // Measures every count in `counts` (ascending) for `truth` (interlaced with itself).
-ViewCountSweep sweep_view_counts(const calib::Calibration& truth, const std::vector<int>& counts,
+ViewCountSweep sweep_view_counts(const display::Calibration& truth, const std::vector<int>& counts,
                                  ProfileOptions options, Progress* progress = nullptr);
 
 }  // namespace lfd::validate

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <random>
 
-#include "calib/simulator.hpp"
-#include "calib/display/view_count.hpp"
+#include "sim/simulator.hpp"
+#include "display/view_count.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/error.hpp"
@@ -34,10 +34,10 @@ render::QuiltLayout index_layout(int views, double aspect) {
   return layout;
 }
 
-std::vector<uint8_t> interlaced_views(const calib::Calibration& assumed, int views) {
-  calib::DisplayCalibration display = assumed.display;
+std::vector<uint8_t> interlaced_views(const display::Calibration& assumed, int views) {
+  display::DisplayCalibration display = assumed.display;
   display.fringe = 0.0;  // row darkening would corrupt the encoding; it is 0 on real units
-  const calib::LensModel lens(display, assumed.correction);
+  const display::LensModel lens(display, assumed.correction);
   const render::QuiltLayout layout =
       index_layout(views, double(display.screen_w) / display.screen_h);
   ImageF quilt(layout.width, layout.height, 3, 0.0f);
@@ -60,9 +60,9 @@ struct BlendedViews {
   std::vector<float> weight_b;
 };
 
-BlendedViews blended_views(const calib::Calibration& assumed, int views) {
+BlendedViews blended_views(const display::Calibration& assumed, int views) {
   const auto& d = assumed.display;
-  const calib::LensModel lens(d, assumed.correction);
+  const display::LensModel lens(d, assumed.correction);
   interlace::InterlaceOptions options;
   options.blend = interlace::ViewBlend::kLinear;
   const interlace::Interlacer interlacer(
@@ -84,7 +84,7 @@ BlendedViews blended_views(const calib::Calibration& assumed, int views) {
 }
 
 // Jittered grid over the central `fraction` of the panel, in metres (display frame).
-std::vector<Eigen::Vector3d> panel_points(const calib::DisplayCalibration& d, int count,
+std::vector<Eigen::Vector3d> panel_points(const display::DisplayCalibration& d, int count,
                                           double fraction, uint64_t seed) {
   const double aspect = d.width_m() / d.height_m();
   const int nx = std::max(1, int(std::lround(std::sqrt(count * aspect))));
@@ -119,8 +119,8 @@ void ProfileOptions::check() const {
   if (!(psf_sigma_phase < 1)) throw_input_error("psf: {} lens periods (expected < 1)", psf_sigma_phase);
 }
 
-ViewProfiles measure_view_profiles(const calib::Calibration& truth,
-                                   const calib::Calibration& assumed,
+ViewProfiles measure_view_profiles(const display::Calibration& truth,
+                                   const display::Calibration& assumed,
                                    const ProfileOptions& options, Progress* progress) {
   options.check();
   const auto& d = truth.display;
@@ -131,12 +131,12 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
   ViewProfiles out;
   out.views = options.views > 0
                   ? options.views
-                  : std::min(kMaxViews, calib::recommend_view_count(truth).views);
+                  : std::min(kMaxViews, display::recommend_view_count(truth).views);
   out.distance_m = options.distance_m;
   out.eye_height_m = options.eye_height_m;
   out.psf_sigma_phase = options.psf_sigma_phase >= 0
                             ? options.psf_sigma_phase
-                            : truth.phase_blur_sigma.value_or(calib::kDefaultPhaseBlurSigma);
+                            : truth.phase_blur_sigma.value_or(display::kDefaultPhaseBlurSigma);
 
   // Directions uniformly across the cone (its edges excluded: there the views wrap).
   const int angles = out.views * options.angles_per_view;
@@ -149,7 +149,7 @@ ViewProfiles measure_view_profiles(const calib::Calibration& truth,
   const std::vector<uint8_t> index = linear ? std::vector<uint8_t>{}
                                             : interlaced_views(assumed, out.views);
   const BlendedViews blended = linear ? blended_views(assumed, out.views) : BlendedViews{};
-  const calib::DisplaySimulator simulator{calib::LensModel(d, truth.correction)};
+  const sim::DisplaySimulator simulator{display::LensModel(d, truth.correction)};
   const auto points = panel_points(d, options.panel_points, options.region_fraction, options.seed);
   out.panel_points = int(points.size());
 

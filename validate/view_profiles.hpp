@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "interlace/interlacer.hpp"
 #include "util/progress.hpp"
 
@@ -47,8 +47,8 @@ struct ViewProfiles {
 };
 
 // The measurement. `assumed` drives the interlacer, `truth` the optics.
-ViewProfiles measure_view_profiles(const calib::Calibration& truth,
-                                   const calib::Calibration& assumed,
+ViewProfiles measure_view_profiles(const display::Calibration& truth,
+                                   const display::Calibration& assumed,
                                    const ProfileOptions& options, Progress* progress = nullptr);
 
 }  // namespace lfd::validate

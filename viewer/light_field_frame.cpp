@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 #include <glm/glm.hpp>
 
-#include "calib/display/display_quilt.hpp"
+#include "display/display_quilt.hpp"
 #include "render/per_view_quilt.hpp"
 #include "util/error.hpp"
 
@@ -25,12 +25,12 @@ std::string limit_text(const gpu::GlInfo& info) {
 
 }  // namespace
 
-FramePlan plan_frame(const calib::Calibration& calibration, const render::CameraSpec& camera,
+FramePlan plan_frame(const display::Calibration& calibration, const render::CameraSpec& camera,
                      const ViewerSettings& s) {
   FramePlan plan;
-  plan.display_quilt = calib::quilt_for_display(
+  plan.display_quilt = display::quilt_for_display(
       calibration, s.views > 0 ? std::optional<int>(s.views) : std::nullopt);
-  const calib::ViewSize size = calib::view_size_for_display(plan.display_quilt, s.view_height_px);
+  const display::ViewSize size = display::view_size_for_display(plan.display_quilt, s.view_height_px);
   const render::Camera base = render::camera_from_spec(camera, size.width, size.height);
   const float distance = glm::length(camera.look_at - camera.position);
   const double cone = (s.view_cone_deg > 0 ? s.view_cone_deg : plan.display_quilt.view_cone_deg) * s.depthiness;
@@ -41,7 +41,7 @@ FramePlan plan_frame(const calib::Calibration& calibration, const render::Camera
   return plan;
 }
 
-LightFieldFrame::LightFieldFrame(const calib::Calibration& calibration, const gpu::GlInfo& info,
+LightFieldFrame::LightFieldFrame(const display::Calibration& calibration, const gpu::GlInfo& info,
                                  FrameOptions options)
     : calibration_(calibration),
       lens_(calibration.display, calibration.correction),
@@ -50,19 +50,19 @@ LightFieldFrame::LightFieldFrame(const calib::Calibration& calibration, const gp
   panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
 
-LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
+LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const display::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
     : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
 }
 
-LightFieldFrame::LightFieldFrame(const voxel::VoxelScene& scene, const calib::Calibration& calibration,
+LightFieldFrame::LightFieldFrame(const voxel::VoxelScene& scene, const display::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
     : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
 }
 
-LightFieldFrame::LightFieldFrame(const ViewerScene& scene, const calib::Calibration& calibration,
+LightFieldFrame::LightFieldFrame(const ViewerScene& scene, const display::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
     : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);

@@ -9,9 +9,9 @@
 #include <optional>
 #include <string>
 
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/display_quilt.hpp"
-#include "calib/display/lens_model.hpp"
+#include "display/calibration_file.hpp"
+#include "display/display_quilt.hpp"
+#include "display/lens_model.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
@@ -32,11 +32,11 @@ namespace lfd::viewer {
 
 // The quilt one frame renders for a display, camera and settings (pure; no GL).
 struct FramePlan {
-  calib::DisplayQuilt display_quilt;
+  display::DisplayQuilt display_quilt;
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
 };
-FramePlan plan_frame(const calib::Calibration& calibration, const render::CameraSpec& camera,
+FramePlan plan_frame(const display::Calibration& calibration, const render::CameraSpec& camera,
                      const ViewerSettings& settings);
 
 // The scene goes to the GPU in pieces of this many Gaussians (progress four times a million).
@@ -56,13 +56,13 @@ class LightFieldFrame {
  public:
   // Needs a current GL 4.5 context (`info` describes it, its limits included). Uploads the scene
   // once, at the largest SH degree that fits (gpu::fitting_sh_degree).
-  LightFieldFrame(const render::GaussianScene& scene, const calib::Calibration& calibration,
+  LightFieldFrame(const render::GaussianScene& scene, const display::Calibration& calibration,
                   const gpu::GlInfo& info, FrameOptions options = {});
   // A voxel scene: the settings' G2LF method renders it with V2LF (the same plane options, no
   // voxel splitting: interactive frames), per view with the exact voxel raster.
-  LightFieldFrame(const voxel::VoxelScene& scene, const calib::Calibration& calibration,
+  LightFieldFrame(const voxel::VoxelScene& scene, const display::Calibration& calibration,
                   const gpu::GlInfo& info, FrameOptions options = {});
-  LightFieldFrame(const ViewerScene& scene, const calib::Calibration& calibration, const gpu::GlInfo& info,
+  LightFieldFrame(const ViewerScene& scene, const display::Calibration& calibration, const gpu::GlInfo& info,
                   FrameOptions options = {});
   ~LightFieldFrame();
 
@@ -79,8 +79,8 @@ class LightFieldFrame {
   int scene_sh_degree() const { return scene_ ? scene_->sh_degree() : voxel_scene_->scene().sh_degree; }
   const std::string& scene_fit_notice() const { return scene_fit_notice_; }
   const std::string& plane_fit_notice() const { return plane_fit_notice_; }
-  const calib::LensModel& lens() const { return lens_; }
-  const calib::Calibration& calibration() const { return calibration_; }
+  const display::LensModel& lens() const { return lens_; }
+  const display::Calibration& calibration() const { return calibration_; }
 
   const gpu::Texture& quilt() const { return quilt_; }
   const gpu::Texture& panel() const { return panel_; }
@@ -89,13 +89,13 @@ class LightFieldFrame {
 
  private:
   // The members every scene kind shares (the lens, the panel); the public constructors add the scene.
-  LightFieldFrame(const calib::Calibration& calibration, const gpu::GlInfo& info, FrameOptions options);
+  LightFieldFrame(const display::Calibration& calibration, const gpu::GlInfo& info, FrameOptions options);
   void render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster, bool timed);
   void render_voxels(const ViewerSettings& settings, FrameReport* report);
   void drop_renderers();
 
-  calib::Calibration calibration_;
-  calib::LensModel lens_;
+  display::Calibration calibration_;
+  display::LensModel lens_;
   gpu::GlInfo info_;
   FrameOptions options_;
   std::string scene_fit_notice_, plane_fit_notice_;

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "calib/display/lens_optics.hpp"
+#include "display/lens_optics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::viewer {
@@ -16,7 +16,7 @@ namespace {
 // The one call into the optics: the light leaving panel point `on_panel` toward `eye`. The
 // lens has power across its lines only, so the direction across the slanted lines (horizontal
 // plus line_tilt times vertical) decides which view is seen.
-std::array<float, 3> light_toward_eye(const calib::LensOptics& optics, double u, double v, const glm::dvec3& on_panel,
+std::array<float, 3> light_toward_eye(const display::LensOptics& optics, double u, double v, const glm::dvec3& on_panel,
                                       const glm::dvec3& eye) {
   // Both directions: a slanted lens shows an eye above or below the point another view; and
   // through the display's cover layer the refracted one.
@@ -59,10 +59,10 @@ void SeenFromOptions::check() const {
     throw_input_error("seen-from preview: psf: {} lens periods (expected 0 <= psf < 1)", psf_sigma_phase);
 }
 
-ImageF seen_from_preview(const calib::LensModel& lens, const ImageF& panel, const SeenFromEye& eye,
+ImageF seen_from_preview(const display::LensModel& lens, const ImageF& panel, const SeenFromEye& eye,
                          const SeenFromOptions& options) {
   options.check();
-  calib::check_panel_size(lens, panel);
+  display::check_panel_size(lens, panel);
   if (!(eye.distance_m > 0)) throw_input_error("seen-from preview: distance: {} m (expected > 0)", eye.distance_m);
   const auto& c = lens.calibration();
   const double width_m = c.width_m(), height_m = c.height_m();
@@ -70,8 +70,8 @@ ImageF seen_from_preview(const calib::LensModel& lens, const ImageF& panel, cons
   const int w = std::max(1, int(std::lround(h * width_m / height_m)));
   const double angle = eye.angle_deg * std::numbers::pi / 180.0;
   const glm::dvec3 eye_m(eye.distance_m * std::sin(angle), eye.height_m, eye.distance_m * std::cos(angle));
-  const calib::PhaseKernel kernel = calib::LensOptics::make_kernel(lens, options.psf_sigma_phase);
-  const calib::LensOptics optics(lens, panel, kernel);
+  const display::PhaseKernel kernel = display::LensOptics::make_kernel(lens, options.psf_sigma_phase);
+  const display::LensOptics optics(lens, panel, kernel);
 
   // Toward one eye a whole lens shows one seen point Q (the phase that sends light there), and
   // each channel emits from a third of a pixel: a lens shows a channel fully or not at all, and

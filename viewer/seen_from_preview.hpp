@@ -1,10 +1,10 @@
 #pragma once
 // The control window's "seen from" preview: what an eye (or a camera) at a chosen angle,
 // distance and height sees on the display, from the optics model `lfd simulate` uses
-// (calib::LensOptics, DESIGN section 4). Each preview pixel is a point of the panel; the eye
+// (display::LensOptics, DESIGN section 4). Each preview pixel is a point of the panel; the eye
 // sees there the light the lens covering it sends toward the eye. It is drawn undistorted, the
 // panel's own rectangle, so the views it shows line up with the panel and the quilt preview.
-#include "calib/display/lens_model.hpp"
+#include "display/lens_model.hpp"
 #include "util/image.hpp"
 
 namespace lfd::viewer {
@@ -39,7 +39,7 @@ bool seen_from_refresh_due(bool visible, bool changed, double seconds_since_last
 
 // The preview, RGB in [0, 1] (linear radiance as the simulator's, clamped), row 0 at the top.
 // `panel` is what the display shows (screenW x screenH, 1, 3 or 4 channels, row 0 at the top).
-ImageF seen_from_preview(const calib::LensModel& lens, const ImageF& panel, const SeenFromEye& eye,
+ImageF seen_from_preview(const display::LensModel& lens, const ImageF& panel, const SeenFromEye& eye,
                          const SeenFromOptions& options = {});
 
 }  // namespace lfd::viewer

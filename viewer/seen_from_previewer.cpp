@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "calib/display/view_count.hpp"
+#include "display/view_count.hpp"
 #include "gpu/gl_interlacer.hpp"
 
 namespace lfd::viewer {
@@ -14,8 +14,8 @@ double seconds_between(std::chrono::steady_clock::time_point a, std::chrono::ste
 
 }  // namespace
 
-SeenFromPreviewer::SeenFromPreviewer(const calib::Calibration& calibration) {
-  options_.psf_sigma_phase = calibration.phase_blur_sigma.value_or(calib::kDefaultPhaseBlurSigma);
+SeenFromPreviewer::SeenFromPreviewer(const display::Calibration& calibration) {
+  options_.psf_sigma_phase = calibration.phase_blur_sigma.value_or(display::kDefaultPhaseBlurSigma);
 }
 
 double SeenFromPreviewer::age_seconds() const {

@@ -7,7 +7,7 @@
 #include <optional>
 #include <string>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "gpu/gl_objects.hpp"
 #include "render/camera_json.hpp"
 #include "viewer/control_window.hpp"
@@ -20,7 +20,7 @@ namespace lfd::viewer {
 class SeenFromPreviewer {
  public:
   // The lens point spread is the calibration's, else the default, as `lfd simulate`'s.
-  explicit SeenFromPreviewer(const calib::Calibration& calibration);
+  explicit SeenFromPreviewer(const display::Calibration& calibration);
 
   // Needs the display window's context current (the panel texture lives there). Picks up a
   // finished preview; starts the next one when due and none is under way.

@@ -7,14 +7,14 @@
 #include <optional>
 #include <string>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "viewer/viewer_settings.hpp"
 
 namespace lfd::viewer {
 
 struct ViewerOptions {
   std::filesystem::path scene_path;
-  calib::Calibration calibration;
+  display::Calibration calibration;
   std::string display_name;          // for messages and the settings file's name
   std::string monitor_prefix = "LKG";
   bool simulated_display = false;    // a window even when the display's monitor is there

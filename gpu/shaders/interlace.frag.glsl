@@ -1,5 +1,5 @@
 // The interlacing shader: the GLSL twin of interlace::Interlacer (interlace/interlacer.cpp) and
-// of calib::LensModel (calib/display/lens_model.cpp), one fragment per panel pixel. Every
+// of calib::LensModel (display/lens_model.cpp), one fragment per panel pixel. Every
 // constant comes from LensModel (gpu/gl_interlacer.cpp sets them); the lines marked "LensModel::"
 // or "Interlacer::" repeat that function's arithmetic in the same order. The phase reaches several
 // hundred lens periods, so it is computed in double precision like the CPU reference: float32

@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/display_quilt.hpp"
+#include "display/calibration_file.hpp"
+#include "display/display_quilt.hpp"
 #include "tests/apps/run_lfd.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
@@ -84,7 +84,7 @@ std::string bytes_of(const fs::path& path) {
 TEST(RenderForADisplay, APlainVisualJsonGetsTheRulesViewsAndItsNominalCone) {
   const fs::path dir = test::temp_dir("render_display_visual");
   const fs::path visual = write_visual_json(dir);
-  const calib::DisplayQuilt expected = calib::quilt_for_display(calib::read_calibration(visual));
+  const display::DisplayQuilt expected = display::quilt_for_display(display::read_calibration(visual));
   EXPECT_EQ(expected.views_source, "view-count rule");
   const auto r = test::run_lfd("render --scene " + kScene + " --calibration " + visual.string() +
                                kRenderSmall + "--out " + (dir / "q.png").string());
@@ -124,7 +124,7 @@ TEST(RenderForADisplay, ViewsOverrideTheRecommendation) {
                                calibration.string() + " --views 24" + kRenderSmall + "--out " +
                                (dir / "q.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  const calib::QuiltGrid grid = calib::quilt_grid_for_views(24, 384.0 / 216.0);
+  const display::QuiltGrid grid = display::quilt_grid_for_views(24, 384.0 / 216.0);
   EXPECT_NE(r.output.find("24 views (--views) in " + std::to_string(grid.cols) + "x" +
                           std::to_string(grid.rows) + " tiles"),
             std::string::npos)
@@ -142,7 +142,7 @@ void expect_panel_equals_interlace(const fs::path& calibration, const fs::path& 
                                " --panel " + panel.string() + " --out " + (dir / "q.png").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   ASSERT_TRUE(fs::exists(panel)) << r.output;
-  const calib::DisplayQuilt chosen = calib::quilt_for_display(calib::read_calibration(calibration));
+  const display::DisplayQuilt chosen = display::quilt_for_display(display::read_calibration(calibration));
   const fs::path quilt = written_quilt(dir, "q", chosen.grid.cols, chosen.grid.rows);
   const auto i = test::run_lfd("interlace --calibration " + calibration.string() + " --quilt " +
                                quilt.string() + extra + " --out " + again.string());

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/block_phasors.hpp"
+#include "calib/phasors/block_phasors.hpp"
 
 namespace lfd::calib {
 namespace {

@@ -8,8 +8,8 @@
 #include <opencv2/imgproc.hpp>
 
 #include "calib/calibrate.hpp"
-#include "calib/synthetic_unit.hpp"
-#include "calib/display/visual_json.hpp"
+#include "sim/synthetic_unit.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
@@ -18,20 +18,20 @@ namespace {
 
 // One simulated position of the Portrait at a small capture size, shared by the cases.
 struct Fixture {
-  SyntheticUnit unit;
-  PatternSet set;
-  CaptureRig rig;
-  std::vector<PositionCaptures> captures;
+  sim::SyntheticUnit unit;
+  sim::PatternSet set;
+  sim::CaptureRig rig;
+  std::vector<sim::PositionCaptures> captures;
 };
 
 const Fixture& fixture() {
   static const Fixture f = [] {
     Fixture x;
-    x.unit = make_synthetic_unit(
-        read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
-    x.set = plan_patterns(x.unit.nominal);
-    x.rig = make_capture_rig(x.unit.truth.display, 480, 1, false, 7);
-    x.captures = simulate_captures(x.set, x.unit.truth, x.rig);
+    x.unit = sim::make_synthetic_unit(
+        display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
+    x.set = sim::plan_patterns(x.unit.nominal);
+    x.rig = sim::make_capture_rig(x.unit.truth.display, 480, 1, false, 7);
+    x.captures = sim::simulate_captures(x.set, x.unit.truth, x.rig);
     return x;
   }();
   return f;
@@ -60,7 +60,7 @@ std::string phase_stem(int k) {
 }
 
 // The fixture's captures with their own pixels (cv::Mat copies share them).
-std::vector<PositionCaptures> copy_captures() {
+std::vector<sim::PositionCaptures> copy_captures() {
   auto out = fixture().captures;
   for (auto& pc : out)
     for (auto& [stem, img] : pc.images) img = img.clone();
@@ -161,7 +161,7 @@ class CaptureFolder : public ::testing::Test {
   static void SetUpTestSuite() {
     patterns_ = std::filesystem::temp_directory_path() / ("lfd_calibrate_bad_input_patterns_" + std::to_string(::getpid()));
     std::filesystem::remove_all(patterns_);
-    write_pattern_set(patterns_, fixture().set, false);
+    sim::write_pattern_set(patterns_, fixture().set, false);
   }
   static void TearDownTestSuite() { std::filesystem::remove_all(patterns_); }
   void SetUp() override {
@@ -185,7 +185,7 @@ class CaptureFolder : public ::testing::Test {
 
 TEST_F(CaptureFolder, CompleteFolderReadsWithoutWarnings) {
   std::vector<std::string> warnings;
-  const auto captures = read_captures(dir_, read_pattern_set(dir_), warnings);
+  const auto captures = sim::read_captures(dir_, sim::read_pattern_set(dir_), warnings);
   ASSERT_EQ(captures.size(), 1u);
   EXPECT_EQ(captures[0].images.size(), fixture().set.patterns.size());
   EXPECT_TRUE(warnings.empty());
@@ -194,7 +194,7 @@ TEST_F(CaptureFolder, CompleteFolderReadsWithoutWarnings) {
 TEST_F(CaptureFolder, MissingCaptureIsNamed) {
   std::filesystem::remove(dir_ / "captures" / "left" / "05_phase_2of8.png");
   std::vector<std::string> warnings;
-  expect_input_error([&] { read_captures(dir_, read_pattern_set(dir_), warnings); },
+  expect_input_error([&] { sim::read_captures(dir_, sim::read_pattern_set(dir_), warnings); },
                      {"left", "missing capture", "05_phase_2of8.png"});
 }
 
@@ -202,7 +202,7 @@ TEST_F(CaptureFolder, ExtraFileIsAWarningNamingIt) {
   std::filesystem::copy_file(dir_ / "captures" / "left" / "01_white.png",
                              dir_ / "captures" / "left" / "IMG_0001.png");
   std::vector<std::string> warnings;
-  read_captures(dir_, read_pattern_set(dir_), warnings);
+  sim::read_captures(dir_, sim::read_pattern_set(dir_), warnings);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_NE(warnings[0].find("IMG_0001.png"), std::string::npos);
 }
@@ -210,14 +210,14 @@ TEST_F(CaptureFolder, ExtraFileIsAWarningNamingIt) {
 TEST_F(CaptureFolder, UnreadableCaptureIsNamed) {
   std::ofstream(dir_ / "captures" / "left" / "02_black.png") << "not an image";
   std::vector<std::string> warnings;
-  expect_input_error([&] { read_captures(dir_, read_pattern_set(dir_), warnings); },
+  expect_input_error([&] { sim::read_captures(dir_, sim::read_pattern_set(dir_), warnings); },
                      {"02_black.png", "not an image"});
 }
 
 TEST_F(CaptureFolder, NoCapturesFolderSaysWhereToPutThem) {
   std::filesystem::remove_all(dir_ / "captures");
   std::vector<std::string> warnings;
-  expect_input_error([&] { read_captures(dir_, read_pattern_set(dir_), warnings); },
+  expect_input_error([&] { sim::read_captures(dir_, sim::read_pattern_set(dir_), warnings); },
                      {"captures", "<position>"});
 }
 

@@ -6,27 +6,27 @@
 #include <gtest/gtest.h>
 
 #include "calib/calibrate.hpp"
-#include "calib/display/visual_json.hpp"
-#include "calib/synthetic_unit.hpp"
+#include "display/visual_json.hpp"
+#include "sim/synthetic_unit.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {
 namespace {
 
 TEST(CalibrateColourOrder, BgrUnitDescribedAsRgbIsRefusedOrEstimated) {
-  DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+  display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   real.flip_subp = true;  // the truth: a BGR panel
-  SyntheticUnit unit = make_synthetic_unit(real);
+  sim::SyntheticUnit unit = sim::make_synthetic_unit(real);
   unit.nominal.display.flip_subp = false;  // the description: RGB
-  const PatternSet set = plan_patterns(unit.nominal);
-  const CaptureRig rig = make_capture_rig(unit.truth.display, 480, 2, false);
-  const std::vector<PositionCaptures> captures = simulate_captures(set, unit.truth, rig);
+  const sim::PatternSet set = sim::plan_patterns(unit.nominal);
+  const sim::CaptureRig rig = sim::make_capture_rig(unit.truth.display, 480, 2, false);
+  const std::vector<sim::PositionCaptures> captures = sim::simulate_captures(set, unit.truth, rig);
 
   CalibrateOptions options;
   options.camera = rig.intrinsics;
   options.colour_order.estimate = true;
   const CalibrationOutcome adopted = calibrate_display(set, captures, options);
-  const CalibrationErrors e = compare_with_truth(adopted.calibration, unit.truth);
+  const sim::CalibrationErrors e = sim::compare_with_truth(adopted.calibration, unit.truth);
   std::printf("%s\nslant %.5f deg, pitch %.2e, center %.4f, cone %.3f deg, warp %.4f\n",
               adopted.colour_order.finding.c_str(), e.slant_deg, e.pitch_rel, e.center_periods,
               e.view_cone_deg, e.correction_rms_periods);
@@ -49,7 +49,7 @@ TEST(CalibrateColourOrder, BgrUnitDescribedAsRgbIsRefusedOrEstimated) {
   EXPECT_FALSE(refused.calibration.display.flip_subp);
   // What the wrong layout costs when nothing adopts the right one (reported, not asserted:
   // the gate refuses it anyway).
-  const CalibrationErrors w = compare_with_truth(refused.calibration, unit.truth);
+  const sim::CalibrationErrors w = sim::compare_with_truth(refused.calibration, unit.truth);
   std::printf("refused: slant %.5f deg, pitch %.2e, center %.4f, cone %.3f deg, warp %.4f\n",
               w.slant_deg, w.pitch_rel, w.center_periods, w.view_cone_deg,
               w.correction_rms_periods);

@@ -5,26 +5,26 @@
 #include <gtest/gtest.h>
 
 #include "calib/calibrate.hpp"
-#include "calib/synthetic_unit.hpp"
-#include "calib/display/visual_json.hpp"
+#include "sim/synthetic_unit.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {
 namespace {
 
 struct RoundTrip {
-  SyntheticUnit unit;
-  PatternSet set;
-  CaptureRig rig;
-  std::vector<PositionCaptures> captures;
+  sim::SyntheticUnit unit;
+  sim::PatternSet set;
+  sim::CaptureRig rig;
+  std::vector<sim::PositionCaptures> captures;
 };
 
 RoundTrip simulate(const char* file, int width_px, int positions, bool clean) {
   RoundTrip r;
-  r.unit = make_synthetic_unit(read_visual_json(test::fixture_calibration(file)));
-  r.set = plan_patterns(r.unit.nominal);
-  r.rig = make_capture_rig(r.unit.truth.display, width_px, positions, clean);
-  r.captures = simulate_captures(r.set, r.unit.truth, r.rig);
+  r.unit = sim::make_synthetic_unit(display::read_visual_json(test::fixture_calibration(file)));
+  r.set = sim::plan_patterns(r.unit.nominal);
+  r.rig = sim::make_capture_rig(r.unit.truth.display, width_px, positions, clean);
+  r.captures = sim::simulate_captures(r.set, r.unit.truth, r.rig);
   return r;
 }
 
@@ -33,7 +33,7 @@ TEST(CalibrateRoundTrip, PortraitFromTwoPositionsRecoversLensAndWarp) {
   CalibrateOptions options;
   options.camera = r.rig.intrinsics;
   const CalibrationOutcome out = calibrate_display(r.set, r.captures, options);
-  const CalibrationErrors e = compare_with_truth(out.calibration, r.unit.truth);
+  const sim::CalibrationErrors e = sim::compare_with_truth(out.calibration, r.unit.truth);
   std::printf("slant %.5f deg, pitch %.2e, center %.4f, cone %.3f deg, warp %.4f, phase %.4f\n",
               e.slant_deg, e.pitch_rel, e.center_periods, e.view_cone_deg,
               e.correction_rms_periods, e.phase_rms_periods);

@@ -8,8 +8,8 @@
 
 #include "calib/calibrate.hpp"
 #include "calib/calibration_stages.hpp"
-#include "calib/display/visual_json.hpp"
-#include "calib/synthetic_unit.hpp"
+#include "display/visual_json.hpp"
+#include "sim/synthetic_unit.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
@@ -17,10 +17,10 @@ namespace lfd::calib {
 namespace {
 
 struct Simulated {
-  SyntheticUnit unit;
-  PatternSet set;
-  CaptureRig rig;
-  std::vector<PositionCaptures> captures;
+  sim::SyntheticUnit unit;
+  sim::PatternSet set;
+  sim::CaptureRig rig;
+  std::vector<sim::PositionCaptures> captures;
 };
 
 // The round trip's three positions, `side` times further to the side: a planar board fixes
@@ -28,19 +28,19 @@ struct Simulated {
 // hardly show; the fringe points then must (HeadOnPositionsAreCalibratedWithHonestSigmas below).
 Simulated simulate(int width_px, double side, int positions = 3) {
   Simulated s;
-  s.unit = make_synthetic_unit(read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
-  s.set = plan_patterns(s.unit.nominal);
-  s.rig = make_capture_rig(s.unit.truth.display, width_px, positions, false);
-  for (CameraPose& pose : s.rig.poses) {
+  s.unit = sim::make_synthetic_unit(display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
+  s.set = sim::plan_patterns(s.unit.nominal);
+  s.rig = sim::make_capture_rig(s.unit.truth.display, width_px, positions, false);
+  for (sim::CameraPose& pose : s.rig.poses) {
     pose.position_m.x() *= side;
     pose.position_m.y() *= side;
   }
-  s.captures = simulate_captures(s.set, s.unit.truth, s.rig);
+  s.captures = sim::simulate_captures(s.set, s.unit.truth, s.rig);
   return s;
 }
 
 
-void expect_camera_near(const CameraIntrinsics& estimate, const CameraIntrinsics& truth, double rel) {
+void expect_camera_near(const sim::CameraIntrinsics& estimate, const sim::CameraIntrinsics& truth, double rel) {
   const cv::Matx33d& t = truth.camera_matrix;
   const cv::Matx33d& k = estimate.camera_matrix;
   std::printf("fx %.1f (true %.1f), fy %.1f (%.1f), cx %.1f (%.1f), cy %.1f (%.1f)\n", k(0, 0),
@@ -75,7 +75,7 @@ TEST(CalibrateSelfCalibration, ThreePositionsWithoutIntrinsicsRecoverCameraAndLe
   EXPECT_LT(std::abs(focal_error), 3 * out.camera_focal_sigma_rel);
 
   // The display, through the self-calibrated camera.
-  const CalibrationErrors e = compare_with_truth(out.calibration, s.unit.truth);
+  const sim::CalibrationErrors e = sim::compare_with_truth(out.calibration, s.unit.truth);
   std::printf("slant %.5f deg, pitch %.2e, center %.4f, cone %.3f deg, warp %.4f\n", e.slant_deg,
               e.pitch_rel, e.center_periods, e.view_cone_deg, e.correction_rms_periods);
   for (const auto& f : out.gate_failures) std::printf("gate: %s\n", f.c_str());
@@ -113,7 +113,7 @@ TEST(CalibrateSelfCalibration, HeadOnPositionsAreCalibratedWithHonestSigmas) {
   const CalibrationOutcome out = calibrate_display(s.set, s.captures, CalibrateOptions{});
   const double focal_error =
       out.camera.camera_matrix(0, 0) / s.rig.intrinsics.camera_matrix(0, 0) - 1;
-  const CalibrationErrors e = compare_with_truth(out.calibration, s.unit.truth);
+  const sim::CalibrationErrors e = sim::compare_with_truth(out.calibration, s.unit.truth);
   const double cone_sigma = out.calibration.uncertainty.at("view_cone_deg");
   std::printf("focal error %+.4f, sigma %.4f; cone error %.3f, sigma %.3f deg; center %.4f\n",
               focal_error, out.camera_focal_sigma_rel, e.view_cone_deg, cone_sigma,

@@ -9,7 +9,7 @@
 
 #include <opencv2/imgcodecs.hpp>
 
-#include "calib/camera_calibration.hpp"
+#include "calib/camera/camera_calibration.hpp"
 #include "charuco_photos.hpp"
 #include "util/error.hpp"
 
@@ -141,7 +141,7 @@ TEST_F(CameraCalibrationTest, CameraFileFromPhotosReadsBack) {
   const CameraCalibration c = calibrate_camera_from_photos(photos, {});
   const auto yaml = dir_ / "camera.yaml";
   c.intrinsics.write_yaml(yaml);
-  const CameraIntrinsics back = CameraIntrinsics::read_yaml(yaml);
+  const sim::CameraIntrinsics back = sim::CameraIntrinsics::read_yaml(yaml);
   EXPECT_NEAR(back.camera_matrix(0, 0), camera.K(0, 0), 0.005 * camera.K(0, 0));
   EXPECT_EQ(back.distortion.size(), 5u);
   EXPECT_EQ(back.width, camera.size.width);

@@ -1,4 +1,4 @@
-// Framing before a position's photographs (calib/camera_framing.hpp): the panel's outline
+// Framing before a position's photographs (calib/camera/camera_framing.hpp): the panel's outline
 // from the board corners found, and the verdict. The "detections" are the board's own corners
 // mapped into a 640x480 frame by a known similarity or perspective map, so the true outline
 // is known exactly.
@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/camera_framing.hpp"
-#include "calib/display/visual_json.hpp"
+#include "calib/camera/camera_framing.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {
@@ -17,16 +17,16 @@ namespace {
 
 const cv::Size kFrame(640, 480);
 
-PatternSet portrait_set() {
-  Calibration nominal;
+sim::PatternSet portrait_set() {
+  display::Calibration nominal;
   nominal.display =
-      read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
-  return plan_patterns(nominal);
+      display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+  return sim::plan_patterns(nominal);
 }
 
 // Panel pixel -> image pixel: the panel's height is `fill` of the frame's height, its centre
 // at `centre`, turned `roll_deg` clockwise; `keystone` > 0 makes the left edge longer.
-cv::Matx33d panel_to_image(const PatternSet& set, double fill, cv::Point2d centre,
+cv::Matx33d panel_to_image(const sim::PatternSet& set, double fill, cv::Point2d centre,
                            double roll_deg, double keystone) {
   const double w = set.nominal.display.screen_w, h = set.nominal.display.screen_h;
   const double s = fill * kFrame.height / h, a = roll_deg * M_PI / 180;
@@ -37,7 +37,7 @@ cv::Matx33d panel_to_image(const PatternSet& set, double fill, cv::Point2d centr
   return place * persp * to_centre;
 }
 
-CharucoCorners seen(const PatternSet& set, const cv::Matx33d& map, size_t max_corners = 1000) {
+CharucoCorners seen(const sim::PatternSet& set, const cv::Matx33d& map, size_t max_corners = 1000) {
   CharucoCorners c;
   c.markers = 12;
   for (size_t id = 0; id < set.board.corners_px.size() && id < max_corners; ++id) {
@@ -59,7 +59,7 @@ struct Case {
 };
 
 TEST(CameraFraming, VerdictFromThePanelOutline) {
-  const PatternSet set = portrait_set();
+  const sim::PatternSet set = portrait_set();
   const std::vector<Case> cases = {
       {"centred, 60 %", 0.6, {320, 240}, 0, FramingVerdict::kGood, ""},
       {"centred, 90 %", 0.9, {320, 240}, 0, FramingVerdict::kGood, ""},
@@ -80,7 +80,7 @@ TEST(CameraFraming, VerdictFromThePanelOutline) {
 }
 
 TEST(CameraFraming, OutlineIsThePanelsCornersInTheImage) {
-  const PatternSet set = portrait_set();
+  const sim::PatternSet set = portrait_set();
   const cv::Matx33d map = panel_to_image(set, 0.6, {320, 240}, 3, 0.2);
   const Framing f = assess_framing(seen(set, map), set, kFrame);
   const double w = set.nominal.display.screen_w, h = set.nominal.display.screen_h;
@@ -94,7 +94,7 @@ TEST(CameraFraming, OutlineIsThePanelsCornersInTheImage) {
 }
 
 TEST(CameraFraming, TooFewCornersIsNoBoard) {
-  const PatternSet set = portrait_set();
+  const sim::PatternSet set = portrait_set();
   const Framing f =
       assess_framing(seen(set, panel_to_image(set, 0.6, {320, 240}, 0, 0), 5), set, kFrame);
   EXPECT_EQ(f.verdict, FramingVerdict::kNoBoard);

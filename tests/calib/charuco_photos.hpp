@@ -10,7 +10,7 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "calib/camera_calibration.hpp"
+#include "calib/camera/camera_calibration.hpp"
 
 namespace lfd::calib::testing {
 

@@ -1,7 +1,7 @@
-// The coarse start (calib/coarse_start.hpp): from a nominal model 1 % off in pitch and 0.5 deg
+// The coarse start (calib/solver/coarse_start.hpp): from a nominal model 1 % off in pitch and 0.5 deg
 // in slant, whose phase wraps many times across the screen, the planes of the decoded phase
 // give a start from which the local solver reaches the truth.
-#include "calib/coarse_start.hpp"
+#include "calib/solver/coarse_start.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "tests/calib/synthetic_phase_samples.hpp"
 #include "tests/test_data.hpp"
 
@@ -26,17 +26,17 @@ double wrapped(double x) { return x - std::round(x); }
 // solver's linear model predicts with `lens` and with the truth (the warp left out): the
 // solver's first stage locks onto the right wrap only where it is well under half a period.
 double worst_phase_error(const SyntheticPhaseData& data, const LensEstimate& lens) {
-  const DisplayCalibration& t = data.unit.truth.display;
-  const DisplayCalibration& nom = data.unit.nominal.display;
+  const display::DisplayCalibration& t = data.unit.truth.display;
+  const display::DisplayCalibration& nom = data.unit.nominal.display;
   const double s = t.inv_view ? 1.0 : -1.0;
   auto linear_psi = [&](double pitch, double slope, double center, double cone,
                         const Eigen::Vector3d& c, double u, double v) {
-    const ShaderTerms<double> terms = shader_terms(t.geometry(), pitch, slope);
-    const ShaderTerms<double> nominal = shader_terms(nom.geometry(), nom.pitch_lpi, nom.slope);
+    const display::ShaderTerms<double> terms = display::shader_terms(t.geometry(), pitch, slope);
+    const display::ShaderTerms<double> nominal = display::shader_terms(nom.geometry(), nom.pitch_lpi, nom.slope);
     const double a = (u + v * terms.tilt) * terms.pitch_periods - center;
     const double a_nom = (u + v * nominal.tilt) * nominal.pitch_periods - nom.center_periods;
-    return seen_fraction(c.x() - (u - 0.5) * t.width_m(), c.y() - (v - 0.5) * t.height_m(), c.z(),
-                         line_tilt(t.geometry(), terms.tilt), cone) +
+    return display::seen_fraction(c.x() - (u - 0.5) * t.width_m(), c.y() - (v - 0.5) * t.height_m(), c.z(),
+                         display::line_tilt(t.geometry(), terms.tilt), cone) +
            s * (a - a_nom);
   };
   double worst = 0;
@@ -52,7 +52,7 @@ double worst_phase_error(const SyntheticPhaseData& data, const LensEstimate& len
   return worst;
 }
 
-LensEstimate nominal_lens(const Calibration& nominal) {
+LensEstimate nominal_lens(const display::Calibration& nominal) {
   return {nominal.display.pitch_lpi, nominal.display.slope, nominal.display.center_periods,
           nominal.display.view_cone_deg};
 }
@@ -60,16 +60,16 @@ LensEstimate nominal_lens(const Calibration& nominal) {
 class CoarseStart : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CoarseStart, LandsWithinTheSolversReachOfTheTruth) {
-  const DisplayCalibration real = read_visual_json(test::fixture_calibration(GetParam()));
+  const display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration(GetParam()));
   const SyntheticPhaseData data = make_synthetic_phase_data(real, {}, three_cameras(real));
-  const DisplayCalibration& t = data.unit.truth.display;
+  const display::DisplayCalibration& t = data.unit.truth.display;
   std::vector<PhasePlane> planes;
   const LensEstimate e = coarse_start(data.unit.nominal, data.positions, true, &planes);
   const double start_error = worst_phase_error(data, e);
   std::printf("%s: pitch %.2e rel, slant %.4f deg, center %.4f, cone %.2f deg; worst phase %.3f "
               "(nominal %.3f)\n",
               GetParam(), e.pitch_lpi / t.pitch_lpi - 1,
-              slant_deg_of_slope(e.slope) - slant_deg_of_slope(t.slope),
+              display::slant_deg_of_slope(e.slope) - display::slant_deg_of_slope(t.slope),
               wrapped(e.center_periods - t.center_periods), e.view_cone_deg - t.view_cone_deg,
               start_error, worst_phase_error(data, nominal_lens(data.unit.nominal)));
 
@@ -78,7 +78,7 @@ TEST_P(CoarseStart, LandsWithinTheSolversReachOfTheTruth) {
   // The start is within a fraction of a period everywhere.
   EXPECT_LT(start_error, 0.2);
   EXPECT_LT(std::abs(e.pitch_lpi / t.pitch_lpi - 1), 5e-4);  // from 1 %
-  EXPECT_LT(std::abs(slant_deg_of_slope(e.slope) - slant_deg_of_slope(t.slope)), 0.02);  // from 0.5
+  EXPECT_LT(std::abs(display::slant_deg_of_slope(e.slope) - display::slant_deg_of_slope(t.slope)), 0.02);  // from 0.5
   EXPECT_LT(std::abs(wrapped(e.center_periods - t.center_periods)), 0.1);
   // The cone enters the phase weakly (it scales the seen fraction, 0.5 +- 0.2 here), so the
   // planes measure it coarsely: a few degrees off costs a few hundredths of a period.

@@ -1,28 +1,28 @@
-// The colour-order check (calib/colour_order.hpp, issue #12): each colour channel decodes its
+// The colour-order check (calib/decoding/colour_order.hpp, issue #12): each colour channel decodes its
 // own phase; a subpixel layout that is not the panel's (RGB taken for BGR, a Gen3 cell table
 // on a striped panel) leaves a constant offset per channel of known size, and the check names
 // the layout the photos favour. Phase photos of the small bench display from one camera with
 // the bench's effects (noise, blur, vignetting, distortion, glare), registered by projection.
-#include "calib/colour_order.hpp"
+#include "calib/decoding/colour_order.hpp"
 
 #include <cmath>
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "calib/capture_io.hpp"
-#include "calib/display/lens_model.hpp"
-#include "calib/synthetic_unit.hpp"
-#include "tests/calib/simulator_test_support.hpp"
+#include "sim/capture_io.hpp"
+#include "display/lens_model.hpp"
+#include "sim/synthetic_unit.hpp"
+#include "tests/sim/simulator_test_support.hpp"
 
 namespace lfd::calib {
 namespace {
 
-Registration register_by_projection(const PatternSet& set, const PhysicalCamera& camera) {
+Registration register_by_projection(const sim::PatternSet& set, const sim::PhysicalCamera& camera) {
   BoardDetection board;
   board.image_size = {camera.intrinsics().width, camera.intrinsics().height};
   for (size_t id = 0; id < set.board.corners_px.size(); ++id) {
-    const ScreenUV uv = panel_px_to_uv(set.nominal.display, set.board.corners_px[id]);
+    const display::ScreenUV uv = panel_px_to_uv(set.nominal.display, set.board.corners_px[id]);
     Eigen::Vector2d px;
     if (!camera.project(uv_to_display_m(set.nominal.display, uv), px)) continue;
     board.ids.push_back(int(id));
@@ -38,31 +38,31 @@ struct Bench {
 
 // The phase photos of a panel whose true layout is `truth`'s, showing patterns drawn for
 // `drawn`, decoded as `lfd calibrate` decodes them.
-DecodedPhase photograph(const DisplayCalibration& truth, const DisplayCalibration& drawn,
+DecodedPhase photograph(const display::DisplayCalibration& truth, const display::DisplayCalibration& drawn,
                         const Bench& bench = {}) {
-  Calibration nominal;
+  display::Calibration nominal;
   nominal.display = drawn;
-  PatternOptions po;
+  sim::PatternOptions po;
   po.fringes = false;
-  const PatternSet set = plan_patterns(nominal, po);
-  CaptureRig rig = make_capture_rig(truth, 320, 1);
+  const sim::PatternSet set = sim::plan_patterns(nominal, po);
+  sim::CaptureRig rig = sim::make_capture_rig(truth, 320, 1);
   rig.effects.exposure_drift = bench.exposure_drift;
   rig.effects.colour_crosstalk = bench.colour_crosstalk;
-  const DisplaySimulator sim{LensModel(truth)};
-  const PhysicalCamera camera(rig.intrinsics, rig.poses[0]);
+  const sim::DisplaySimulator sim{display::LensModel(truth)};
+  const sim::PhysicalCamera camera(rig.intrinsics, rig.poses[0]);
   double exposure = rig.effects.exposure;
-  for (const auto* p : set.of_kind(PatternKind::kWhite))
-    exposure = exposure_on_white(sim, to_float(render_pattern(set, *p)), camera, rig.effects);
+  for (const auto* p : set.of_kind(sim::PatternKind::kWhite))
+    exposure = sim::exposure_on_white(sim, to_float(sim::render_pattern(set, *p)), camera, rig.effects);
   std::vector<cv::Mat> captures;
-  for (const auto* p : set.of_kind(PatternKind::kPhase)) {
-    CaptureEffects e = photo_effects(rig, 0, size_t(p->index));
+  for (const auto* p : set.of_kind(sim::PatternKind::kPhase)) {
+    sim::CaptureEffects e = sim::photo_effects(rig, 0, size_t(p->index));
     e.exposure = exposure;
-    captures.push_back(to_mat(sim.capture(to_float(render_pattern(set, *p)), camera, e)));
+    captures.push_back(sim::to_mat(sim.capture(to_float(sim::render_pattern(set, *p)), camera, e)));
   }
   return decode_phase(captures, register_by_projection(set, camera), set);
 }
 
-ColourOrderCheck check(const DisplayCalibration& drawn, const DecodedPhase& phase,
+ColourOrderCheck check(const display::DisplayCalibration& drawn, const DecodedPhase& phase,
                        std::optional<SubpixelLayout> given = {}, bool estimate = false) {
   ColourOrderOptions o;
   o.estimate = estimate;
@@ -72,7 +72,7 @@ ColourOrderCheck check(const DisplayCalibration& drawn, const DecodedPhase& phas
   return c;
 }
 
-DisplayCalibration bgr(DisplayCalibration d) {
+display::DisplayCalibration bgr(display::DisplayCalibration d) {
   d.flip_subp = true;
   return d;
 }
@@ -80,8 +80,8 @@ DisplayCalibration bgr(DisplayCalibration d) {
 // R and B trade places: each moves 2/3 pixel, pitch / DPI lens periods per pixel across the
 // lines (the slant's cosine in pitch'), against the phase under invView.
 TEST(ColourOrder, PredictsTwoThirdsOfAPixelForSwappedRedAndBlue) {
-  const DisplayCalibration rgb = testing::small_display();
-  const LensModel lens(rgb);
+  const display::DisplayCalibration rgb = sim::testing::small_display();
+  const display::LensModel lens(rgb);
   const double per_px = lens.pitch_periods() / rgb.screen_w;
   const auto o = predicted_channel_offsets(rgb, {false, true});
   EXPECT_NEAR(o[0], 2.0 / 3.0 * per_px, 1e-9);  // inv_view: + for a drawn position to the left
@@ -92,7 +92,7 @@ TEST(ColourOrder, PredictsTwoThirdsOfAPixelForSwappedRedAndBlue) {
 }
 
 TEST(ColourOrder, BgrPanelPhotographedWithRgbPatternsIsRefusedNamingFlipSubp1) {
-  const DisplayCalibration rgb = testing::small_display();
+  const display::DisplayCalibration rgb = sim::testing::small_display();
   const ColourOrderCheck c = check(rgb, photograph(bgr(rgb), rgb));
   ASSERT_TRUE(c.refused());
   EXPECT_EQ(c.best, (SubpixelLayout{false, true}));
@@ -103,7 +103,7 @@ TEST(ColourOrder, BgrPanelPhotographedWithRgbPatternsIsRefusedNamingFlipSubp1) {
 }
 
 TEST(ColourOrder, RgbPanelDescribedAsBgrIsRefusedNamingFlipSubp0) {
-  const DisplayCalibration rgb = testing::small_display();
+  const display::DisplayCalibration rgb = sim::testing::small_display();
   const ColourOrderCheck c = check(bgr(rgb), photograph(rgb, bgr(rgb)));
   ASSERT_TRUE(c.refused());
   EXPECT_EQ(c.best, (SubpixelLayout{false, false}));
@@ -113,7 +113,7 @@ TEST(ColourOrder, RgbPanelDescribedAsBgrIsRefusedNamingFlipSubp0) {
 }
 
 TEST(ColourOrder, RightLayoutPassesUnderExposureDriftAndCameraNoise) {
-  const DisplayCalibration rgb = testing::small_display();
+  const display::DisplayCalibration rgb = sim::testing::small_display();
   Bench bench;
   bench.exposure_drift = 0.03;
   const ColourOrderCheck c = check(rgb, photograph(rgb, rgb, bench));
@@ -126,7 +126,7 @@ TEST(ColourOrder, RightLayoutPassesUnderExposureDriftAndCameraNoise) {
 TEST(ColourOrder, GivenLayoutOverridesThePatternsAndEstimationAdoptsTheBest) {
   // Patterns drawn for RGB on a BGR panel, the user says BGR: accepted, and the samples are
   // re-decoded for BGR. Says RGB with estimation: BGR is adopted, not refused.
-  const DisplayCalibration rgb = testing::small_display();
+  const display::DisplayCalibration rgb = sim::testing::small_display();
   const DecodedPhase phase = photograph(bgr(rgb), rgb);
   const ColourOrderCheck told = check(rgb, phase, SubpixelLayout{false, true});
   EXPECT_FALSE(told.photos_disagree) << told.finding;
@@ -139,7 +139,7 @@ TEST(ColourOrder, GivenLayoutOverridesThePatternsAndEstimationAdoptsTheBest) {
 }
 
 TEST(ColourOrder, CameraColourCrosstalkDilutesButKeepsTheVerdict) {
-  const DisplayCalibration rgb = testing::small_display();
+  const display::DisplayCalibration rgb = sim::testing::small_display();
   for (double x : {0.05, 0.10, 0.15}) {
     Bench bench;
     bench.colour_crosstalk = x;
@@ -161,7 +161,7 @@ TEST(ColourOrder, CameraColourCrosstalkDilutesButKeepsTheVerdict) {
 }
 
 TEST(ColourOrder, StripedPanelDescribedWithGen3CellsIsRefused) {
-  const DisplayCalibration cells = testing::small_gen3_portrait();
+  const display::DisplayCalibration cells = sim::testing::small_gen3_portrait();
   const ColourOrderCheck c = check(cells, photograph(SubpixelLayout{false, false}.apply(cells), cells));
   ASSERT_TRUE(c.refused());
   EXPECT_EQ(c.best, (SubpixelLayout{false, false}));
@@ -169,7 +169,7 @@ TEST(ColourOrder, StripedPanelDescribedWithGen3CellsIsRefused) {
 }
 
 TEST(ColourOrder, Gen3CellsThatAreRightPass) {
-  const DisplayCalibration cells = testing::small_gen3_portrait();
+  const display::DisplayCalibration cells = sim::testing::small_gen3_portrait();
   const ColourOrderCheck c = check(cells, photograph(cells, cells));
   EXPECT_FALSE(c.photos_disagree) << c.finding;
   EXPECT_EQ(c.best, (SubpixelLayout{true, false}));

@@ -9,9 +9,9 @@
 
 #include "util/error.hpp"
 
-#include "calib/block_phasors.hpp"
-#include "calib/camera_effects.hpp"
-#include "calib/exposure_drift.hpp"
+#include "calib/phasors/block_phasors.hpp"
+#include "sim/camera_effects.hpp"
+#include "calib/phasors/exposure_drift.hpp"
 
 namespace lfd::calib {
 namespace {
@@ -162,13 +162,13 @@ TEST(ExposureDrift, RowsWithoutReferencesFallBackToOneGainPerPhoto) {
 
 // The simulator's side: each photo (seed) gets its own gain, scaling all its light.
 TEST(ExposureDrift, SimulatedPhotosOfOneSceneDifferInGainBySeed) {
-  const CameraIntrinsics camera = CameraIntrinsics::from_fov(60, 64, 48);
+  const sim::CameraIntrinsics camera = sim::CameraIntrinsics::from_fov(60, 64, 48);
   auto photo_mean = [&](double drift, uint64_t seed) {
     ImageF image(64, 48, 3, 0.25f);
-    CaptureEffects e;
+    sim::CaptureEffects e;
     e.exposure_drift = drift;
     e.seed = seed;
-    apply_camera_effects(image, camera, e);
+    sim::apply_camera_effects(image, camera, e);
     double sum = 0;
     for (float v : image.pixels) sum += v;
     return sum / double(image.pixels.size());
@@ -181,22 +181,22 @@ TEST(ExposureDrift, SimulatedPhotosOfOneSceneDifferInGainBySeed) {
     hi = std::max(hi, photo_mean(0.05, seed));
   }
   EXPECT_GT(hi / lo, 1.03);
-  CaptureEffects bad;
+  sim::CaptureEffects bad;
   bad.exposure_drift = 0.5;
-  EXPECT_THROW(check_effects(bad), InputError);
+  EXPECT_THROW(sim::check_effects(bad), InputError);
 }
 
 // The simulator's banding: rows brighter and darker by the amplitude, with a phase that
 // changes from photo to photo.
 TEST(ExposureDrift, SimulatedFlickerBandsTheRowsWithAPhasePerPhoto) {
-  const CameraIntrinsics camera = CameraIntrinsics::from_fov(60, 64, 48);
+  const sim::CameraIntrinsics camera = sim::CameraIntrinsics::from_fov(60, 64, 48);
   auto row_means = [&](uint64_t seed) {
     ImageF image(64, 48, 3, 0.4f);
-    CaptureEffects e;
+    sim::CaptureEffects e;
     e.flicker_amplitude = 0.1;
     e.flicker_bands = 2;
     e.seed = seed;
-    apply_camera_effects(image, camera, e);
+    sim::apply_camera_effects(image, camera, e);
     std::vector<double> means;
     for (int y = 0; y < image.height; ++y) {
       double sum = 0;
@@ -213,10 +213,10 @@ TEST(ExposureDrift, SimulatedFlickerBandsTheRowsWithAPhasePerPhoto) {
   EXPECT_GT(differ, 0.01);
   for (auto [amplitude, bands] : {std::pair{0.3, 2.0}, {-0.01, 2.0}, {0.05, 0.0},
                                   {0.05, std::nan("")}}) {
-    CaptureEffects bad;
+    sim::CaptureEffects bad;
     bad.flicker_amplitude = amplitude;
     bad.flicker_bands = bands;
-    EXPECT_THROW(check_effects(bad), InputError) << amplitude << " " << bands;
+    EXPECT_THROW(sim::check_effects(bad), InputError) << amplitude << " " << bands;
   }
 }
 

@@ -5,20 +5,20 @@
 #include <gtest/gtest.h>
 
 #include "calib/calibrate.hpp"
-#include "calib/synthetic_unit.hpp"
-#include "calib/display/visual_json.hpp"
+#include "sim/synthetic_unit.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {
 namespace {
 
 TEST(FringeRegistration, PinsTheCameraPositionToAMillimetre) {
-  const auto real = read_visual_json(lfd::test::fixture_calibration("LKG-APW92011.visual.json"));
-  const SyntheticUnit unit = make_synthetic_unit(real);
-  const PatternSet set = plan_patterns(unit.nominal);
-  ASSERT_EQ(set.of_kind(PatternKind::kFringeX).size(), 4u);
-  const CaptureRig rig = make_capture_rig(unit.truth.display, 800, 2, false);
-  const auto captures = simulate_captures(set, unit.truth, rig);
+  const auto real = display::read_visual_json(lfd::test::fixture_calibration("LKG-APW92011.visual.json"));
+  const sim::SyntheticUnit unit = sim::make_synthetic_unit(real);
+  const sim::PatternSet set = sim::plan_patterns(unit.nominal);
+  ASSERT_EQ(set.of_kind(sim::PatternKind::kFringeX).size(), 4u);
+  const sim::CaptureRig rig = sim::make_capture_rig(unit.truth.display, 800, 2, false);
+  const auto captures = sim::simulate_captures(set, unit.truth, rig);
   CalibrateOptions options;
   options.camera = rig.intrinsics;
   const CalibrationOutcome out = calibrate_display(set, captures, options);
@@ -32,7 +32,7 @@ TEST(FringeRegistration, PinsTheCameraPositionToAMillimetre) {
     EXPECT_LT(std::abs(error.x()), 1e-3) << p.name;
     EXPECT_LT(std::abs(error.z()), 1e-3) << p.name;
   }
-  const CalibrationErrors e = compare_with_truth(out.calibration, unit.truth);
+  const sim::CalibrationErrors e = sim::compare_with_truth(out.calibration, unit.truth);
   EXPECT_LT(e.center_periods, 0.005);
 }
 

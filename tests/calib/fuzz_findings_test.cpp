@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/camera_model.hpp"
-#include "calib/patterns.hpp"
+#include "sim/camera_model.hpp"
+#include "sim/patterns.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -33,7 +33,7 @@ void expect_camera_rejected(const std::string& text, const std::string& field) {
   const fs::path path = test::temp_dir("camera_fuzz") / "camera.yaml";
   std::ofstream(path, std::ios::binary) << text;
   try {
-    CameraIntrinsics::read_yaml(path);
+    sim::CameraIntrinsics::read_yaml(path);
     FAIL() << "accepted: " << text;
   } catch (const InputError& e) {
     const std::string what = e.what();
@@ -45,7 +45,7 @@ void expect_camera_rejected(const std::string& text, const std::string& field) {
 TEST(CameraYamlFuzzFindings, AWellFormedFileStillReads) {
   const fs::path path = test::temp_dir("camera_fuzz_ok") / "camera.yaml";
   std::ofstream(path) << kCameraFile << "# from a calibration tool\n...\n";
-  EXPECT_EQ(CameraIntrinsics::read_yaml(path).distortion.size(), 5u);
+  EXPECT_EQ(sim::CameraIntrinsics::read_yaml(path).distortion.size(), 5u);
 }
 
 TEST(CameraYamlFuzzFindings, ANulByteIsRefused) {  // OpenCV's YAML reader loops forever on it
@@ -95,7 +95,7 @@ fs::path write_manifest(const nlohmann::ordered_json& j) {
 
 void expect_manifest_rejected(const nlohmann::ordered_json& j, const std::string& field) {
   try {
-    read_pattern_set(write_manifest(j));
+    sim::read_pattern_set(write_manifest(j));
     FAIL() << "accepted a manifest with a bad " << field;
   } catch (const InputError& e) {
     const std::string what = e.what();
@@ -105,7 +105,7 @@ void expect_manifest_rejected(const nlohmann::ordered_json& j, const std::string
 }
 
 TEST(CaptureManifestFuzzFindings, TheSeedManifestReads) {
-  const PatternSet set = read_pattern_set(write_manifest(seed_manifest()));
+  const sim::PatternSet set = sim::read_pattern_set(write_manifest(seed_manifest()));
   EXPECT_EQ(set.fringe_steps, 0);
   EXPECT_EQ(set.phase_steps, 8);
 }

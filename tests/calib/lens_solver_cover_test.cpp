@@ -12,8 +12,8 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
-#include "calib/lens_solver.hpp"
+#include "display/visual_json.hpp"
+#include "calib/solver/lens_solver.hpp"
 #include "tests/calib/synthetic_phase_samples.hpp"
 #include "tests/test_data.hpp"
 
@@ -24,28 +24,28 @@ struct Misses {
   double slant_deg, pitch_rel, center, cone_deg;
 };
 
-Misses misses(const SolverResult& r, const Calibration& truth) {
-  const DisplayCalibration& t = truth.display;
+Misses misses(const SolverResult& r, const display::Calibration& truth) {
+  const display::DisplayCalibration& t = truth.display;
   const double dc = r.lens.center_periods - t.center_periods;
-  return {std::abs(slant_deg_of_slope(r.lens.slope) - slant_deg_of_slope(t.slope)),
+  return {std::abs(display::slant_deg_of_slope(r.lens.slope) - display::slant_deg_of_slope(t.slope)),
           std::abs(r.lens.pitch_lpi / t.pitch_lpi - 1), std::abs(dc - std::round(dc)),
           std::abs(r.lens.view_cone_deg - t.view_cone_deg)};
 }
 
 TEST(LensSolverThroughCover, MeetsTheBarsAndFindsTheCamerasBehindTheBlock) {
-  DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
   real.cover = {0.02, 1.49};
-  SyntheticUnitOptions unit;
+  sim::SyntheticUnitOptions unit;
   unit.warp_amplitude = 0.1;
   testing::SyntheticPhaseOptions o;
   o.noise_periods = 0.005;
   const std::vector<Eigen::Vector3d> cameras{
       {0.23, 0.02, 0.5}, {-0.26, -0.03, 0.56}, {0.02, 0.03, 0.66}};
   const testing::SyntheticPhaseData data = testing::make_synthetic_phase_data(real, unit, cameras, o);
-  const Calibration& truth = data.unit.truth;
+  const display::Calibration& truth = data.unit.truth;
   LensEstimate start;
   start.pitch_lpi = truth.display.pitch_lpi * (1 + 1e-4);
-  start.slope = slope_of_slant_deg(slant_deg_of_slope(truth.display.slope) + 0.01);
+  start.slope = display::slope_of_slant_deg(display::slant_deg_of_slope(truth.display.slope) + 0.01);
   start.center_periods = truth.display.center_periods + 0.04;
   start.view_cone_deg = truth.display.view_cone_deg - 1.5;
   SolverOptions grid;
@@ -64,7 +64,7 @@ TEST(LensSolverThroughCover, MeetsTheBarsAndFindsTheCamerasBehindTheBlock) {
   for (size_t i = 0; i < cameras.size(); ++i)
     EXPECT_NEAR(with.cameras_m[i].z(), cameras[i].z(), 0.002) << "camera " << i;
 
-  Calibration bare = data.unit.nominal;
+  display::Calibration bare = data.unit.nominal;
   bare.display.cover = {};
   std::vector<PositionData> apparent = data.positions;
   for (auto& p : apparent) p.camera_m.z() -= real.cover.apparent_shift_m();

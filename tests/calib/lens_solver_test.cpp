@@ -1,7 +1,7 @@
-// The lens solver (calib/lens_solver.hpp) on phase samples made from a known truth by the
+// The lens solver (calib/solver/lens_solver.hpp) on phase samples made from a known truth by the
 // model it documents (tests/calib/synthetic_phase_samples.hpp): the truth comes back, and the
 // uncertainties it reports cover the errors.
-#include "calib/lens_solver.hpp"
+#include "calib/solver/lens_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
-#include "calib/quality_gates.hpp"
+#include "display/visual_json.hpp"
+#include "calib/solver/quality_gates.hpp"
 #include "tests/calib/synthetic_phase_samples.hpp"
 #include "tests/test_data.hpp"
 
@@ -26,11 +26,11 @@ using calib::testing::three_cameras;
 double wrapped(double x) { return x - std::round(x); }
 
 // A start within the solver's reach of the truth (what the coarse start delivers).
-LensEstimate start_near(const Calibration& truth) {
-  const DisplayCalibration& t = truth.display;
+LensEstimate start_near(const display::Calibration& truth) {
+  const display::DisplayCalibration& t = truth.display;
   LensEstimate e;
   e.pitch_lpi = t.pitch_lpi * (1 + 1e-4);
-  e.slope = slope_of_slant_deg(slant_deg_of_slope(t.slope) + 0.01);
+  e.slope = display::slope_of_slant_deg(display::slant_deg_of_slope(t.slope) + 0.01);
   e.center_periods = t.center_periods + 0.04;
   e.view_cone_deg = t.view_cone_deg - 1.5;
   return e;
@@ -40,8 +40,8 @@ struct Errors {
   double pitch_lpi, slope, center_periods, view_cone_deg, correction_rms;
 };
 
-Errors errors_of(const SolverResult& r, const Calibration& truth) {
-  const DisplayCalibration& t = truth.display;
+Errors errors_of(const SolverResult& r, const display::Calibration& truth) {
+  const display::DisplayCalibration& t = truth.display;
   double sw = 0;
   const int n = 32;
   for (int j = 0; j < n; ++j)
@@ -72,11 +72,11 @@ SolverOptions small_grid() {
 }
 
 TEST(LensSolver, RecoversTheTruthFromThreePositionsWithHonestSigmas) {
-  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
+  const display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  sim::SyntheticUnitOptions unit;
   unit.warp_amplitude = 0.1;
   const SyntheticPhaseData data = make_synthetic_phase_data(real, unit, three_cameras(real));
-  const Calibration& truth = data.unit.truth;
+  const display::Calibration& truth = data.unit.truth;
   const SolverResult r =
       solve_lens(data.unit.nominal, start_near(truth), data.positions, small_grid());
   ASSERT_TRUE(r.converged) << r.report;
@@ -85,7 +85,7 @@ TEST(LensSolver, RecoversTheTruthFromThreePositionsWithHonestSigmas) {
 
   // The truth, to the accuracy the calibration needs (DESIGN section 5).
   EXPECT_LT(std::abs(e.pitch_lpi) / truth.display.pitch_lpi, 2e-5);
-  EXPECT_LT(std::abs(slant_deg_of_slope(r.lens.slope) - slant_deg_of_slope(truth.display.slope)), 0.002);
+  EXPECT_LT(std::abs(display::slant_deg_of_slope(r.lens.slope) - display::slant_deg_of_slope(truth.display.slope)), 0.002);
   EXPECT_LT(std::abs(e.center_periods), 0.01);
   // The cone: the 3 mm depth priors leave it a sigma of 0.42 degree, so the bar is on the
   // sigma and the error is held to 2 sigma (with vertical parallax this draw is 0.55 degree off).
@@ -118,12 +118,12 @@ TEST(LensSolver, RecoversTheTruthFromThreePositionsWithHonestSigmas) {
 // cannot separate from it (a longer focal length puts the cameras farther, a wider cone
 // undoes it).
 TEST(LensSolver, ASelfCalibratedFocalLengthWidensTheConesSigma) {
-  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
+  const display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  sim::SyntheticUnitOptions unit;
   unit.warp_amplitude = 0.1;
   SyntheticPhaseData data = make_synthetic_phase_data(real, unit, three_cameras(real));
   for (auto& p : data.positions) p.camera_per_focal_m = p.camera_m;
-  const Calibration& truth = data.unit.truth;
+  const display::Calibration& truth = data.unit.truth;
   const SolverResult known =
       solve_lens(data.unit.nominal, start_near(truth), data.positions, small_grid());
   SolverOptions free_focal = small_grid();
@@ -148,8 +148,8 @@ TEST(LensSolver, ASelfCalibratedFocalLengthWidensTheConesSigma) {
 TEST(LensSolver, WithKnownCamerasTheSigmasFollowTheSampleNoise) {
   // Cameras known to 10 micrometres (a measured rig): the sample noise alone sets the sigmas,
   // so four times the noise gives about four times the sigmas, and they still cover the errors.
-  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
+  const display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  sim::SyntheticUnitOptions unit;
   unit.warp_amplitude = 0.1;
   SyntheticPhaseOptions quiet, noisy;
   quiet.lateral_sigma_m = quiet.depth_sigma_m = 1e-5;
@@ -177,13 +177,13 @@ TEST(LensSolver, WithKnownCamerasTheSigmasFollowTheSampleNoise) {
 }
 
 TEST(LensSolver, OnePositionKeepsTheNominalConeAndStillFindsTheLens) {
-  const DisplayCalibration real = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
+  const display::DisplayCalibration real = display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  sim::SyntheticUnitOptions unit;
   unit.warp_amplitude = 0.0;
   unit.view_cone_error_deg = 0.0;  // one position cannot measure the cone: the nominal is true
   const SyntheticPhaseData data =
       make_synthetic_phase_data(real, unit, {three_cameras(real)[0]});
-  const Calibration& truth = data.unit.truth;
+  const display::Calibration& truth = data.unit.truth;
   LensEstimate start = start_near(truth);
   start.view_cone_deg = truth.display.view_cone_deg;
   const SolverResult r = solve_lens(data.unit.nominal, start, data.positions, small_grid());
@@ -196,9 +196,9 @@ TEST(LensSolver, OnePositionKeepsTheNominalConeAndStillFindsTheLens) {
 
 // A smaller problem for the gates' solver-level cases (a second or two each).
 SyntheticPhaseData small_problem(unsigned seed = 1) {
-  const DisplayCalibration real =
-      read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  SyntheticUnitOptions unit;
+  const display::DisplayCalibration real =
+      display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  sim::SyntheticUnitOptions unit;
   unit.warp_amplitude = 0.1;
   SyntheticPhaseOptions o;
   o.samples_u = 48;
@@ -286,13 +286,13 @@ TEST(LensSolver, ErrorsSharedOverAQuarterOfTheScreenStayWithinTheSlantsSigma) {
 // The small problem's 16" Gen2 with the synthetic unit's default warp (0.3 period on 5x5
 // knots) and the given sample noise.
 SyntheticPhaseData strongly_warped(double noise_periods) {
-  const DisplayCalibration real =
-      read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  const display::DisplayCalibration real =
+      display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
   SyntheticPhaseOptions o;
   o.samples_u = 48;
   o.samples_v = 27;
   o.noise_periods = noise_periods;
-  return make_synthetic_phase_data(real, SyntheticUnitOptions{}, three_cameras(real), o);
+  return make_synthetic_phase_data(real, sim::SyntheticUnitOptions{}, three_cameras(real), o);
 }
 
 // A strong warp (0.3 period, the synthetic unit's 5x5 knots) on noise-free samples, solved
@@ -357,7 +357,7 @@ TEST(LensSolver, WhatTheGridCannotFollowOfTheWarpEntersTheSigmas) {
 TEST(LensSolver, RemoveGaugeLeavesNoMeanOrTrend) {
   std::vector<double> c(36);
   for (size_t i = 0; i < c.size(); ++i) c[i] = 0.3 + 0.01 * double(i) + 0.02 * std::sin(double(i));
-  const CorrectionField w = remove_gauge(CorrectionField(6, 6, c));
+  const display::CorrectionField w = display::remove_gauge(display::CorrectionField(6, 6, c));
   double mean = 0, mu = 0, mv = 0;
   const int n = 64;
   for (int j = 0; j < n; ++j)

@@ -6,19 +6,19 @@
 #include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
-#include "calib/display/lens_model.hpp"
-#include "calib/patterns.hpp"
-#include "calib/registration.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/lens_model.hpp"
+#include "sim/patterns.hpp"
+#include "calib/registration/registration.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
 namespace {
 
-Calibration portrait() {
-  Calibration c;
-  c.display = read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+display::Calibration portrait() {
+  display::Calibration c;
+  c.display = display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   return c;
 }
 
@@ -30,25 +30,25 @@ cv::Mat gray_quarter(const Image8& img) {
 }
 
 TEST(PatternsGeneration, ListsBoardWhiteBlackAndKPhaseSteps) {
-  PatternOptions o;
+  sim::PatternOptions o;
   o.phase_steps = 6;
-  const PatternSet set = plan_patterns(portrait(), o);
+  const sim::PatternSet set = sim::plan_patterns(portrait(), o);
   EXPECT_EQ(set.patterns.size(), 3u + 6u + 8u);
-  EXPECT_EQ(set.of_kind(PatternKind::kBoard).size(), 1u);
-  EXPECT_EQ(set.of_kind(PatternKind::kPhase).size(), 6u);
-  EXPECT_EQ(set.of_kind(PatternKind::kFringeX).size(), 4u);
-  EXPECT_EQ(set.of_kind(PatternKind::kFringeY).size(), 4u);
+  EXPECT_EQ(set.of_kind(sim::PatternKind::kBoard).size(), 1u);
+  EXPECT_EQ(set.of_kind(sim::PatternKind::kPhase).size(), 6u);
+  EXPECT_EQ(set.of_kind(sim::PatternKind::kFringeX).size(), 4u);
+  EXPECT_EQ(set.of_kind(sim::PatternKind::kFringeY).size(), 4u);
   o.fringes = false;
-  EXPECT_EQ(plan_patterns(portrait(), o).patterns.size(), 3u + 6u);
+  EXPECT_EQ(sim::plan_patterns(portrait(), o).patterns.size(), 3u + 6u);
   EXPECT_NE(set.find("00_board"), nullptr);
   EXPECT_EQ(set.find("nonexistent"), nullptr);
 }
 
 TEST(PatternsGeneration, PhasePatternShowsTheNominalViewFractionSinusoid) {
-  const PatternSet set = plan_patterns(portrait());
-  const PatternInfo& p = *set.of_kind(PatternKind::kPhase).at(3);
-  const Image8 img = render_pattern(set, p);
-  const LensModel lens(set.nominal.display);
+  const sim::PatternSet set = sim::plan_patterns(portrait());
+  const sim::PatternInfo& p = *set.of_kind(sim::PatternKind::kPhase).at(3);
+  const Image8 img = sim::render_pattern(set, p);
+  const display::LensModel lens(set.nominal.display);
   for (auto [x, row] : {std::pair{700, 900}, {800, 1500}, {401, 1203}})
     for (int c = 0; c < 3; ++c) {
       const double f = lens.subpixel_view_fraction(x, row, c);
@@ -58,13 +58,13 @@ TEST(PatternsGeneration, PhasePatternShowsTheNominalViewFractionSinusoid) {
 }
 
 TEST(PatternsGeneration, FringePatternsShowTheSameSinusoidInEveryViewAlongTheirAxis) {
-  const PatternSet set = plan_patterns(portrait());
+  const sim::PatternSet set = sim::plan_patterns(portrait());
   ASSERT_GE(set.fringe_period_px, 48.0);
-  for (PatternKind kind : {PatternKind::kFringeX, PatternKind::kFringeY}) {
-    const PatternInfo& p = *set.of_kind(kind).at(1);
-    const Image8 img = render_pattern(set, p);
+  for (sim::PatternKind kind : {sim::PatternKind::kFringeX, sim::PatternKind::kFringeY}) {
+    const sim::PatternInfo& p = *set.of_kind(kind).at(1);
+    const Image8 img = sim::render_pattern(set, p);
     for (auto [x, row] : {std::pair{700, 900}, {800, 1500}, {401, 1203}}) {
-      const double t = (kind == PatternKind::kFringeX ? x : row) / set.fringe_period_px - 0.25;
+      const double t = (kind == sim::PatternKind::kFringeX ? x : row) / set.fringe_period_px - 0.25;
       const double expected = 0.5 + 0.5 * std::cos(2 * std::numbers::pi * t);
       for (int c = 0; c < 3; ++c)  // all subpixels of a pixel alike: no view dependence
         EXPECT_NEAR(img.at(x, row, c) / 255.0, expected, 0.5 / 255 + 1e-9) << to_string(kind);
@@ -73,8 +73,8 @@ TEST(PatternsGeneration, FringePatternsShowTheSameSinusoidInEveryViewAlongTheirA
 }
 
 TEST(PatternsGeneration, BoardCornersInTheManifestAreWhereTheBoardIsDrawn) {
-  const PatternSet set = plan_patterns(portrait());
-  const Image8 img = render_pattern(set, set.patterns.at(0));
+  const sim::PatternSet set = sim::plan_patterns(portrait());
+  const Image8 img = sim::render_pattern(set, set.patterns.at(0));
   const BoardDetection b = detect_board(gray_quarter(img), set);
   ASSERT_GT(b.ids.size(), 20u);
   for (size_t i = 0; i < b.ids.size(); ++i) {
@@ -85,9 +85,9 @@ TEST(PatternsGeneration, BoardCornersInTheManifestAreWhereTheBoardIsDrawn) {
 }
 
 TEST(PatternsGeneration, CornerMarkersEncodeThePatternIndex) {
-  const PatternSet set = plan_patterns(portrait());
-  const PatternInfo& p = set.patterns.at(5);
-  const auto markers = detect_corner_markers(gray_quarter(render_pattern(set, p)));
+  const sim::PatternSet set = sim::plan_patterns(portrait());
+  const sim::PatternInfo& p = set.patterns.at(5);
+  const auto markers = detect_corner_markers(gray_quarter(sim::render_pattern(set, p)));
   ASSERT_EQ(markers.size(), 4u);
   for (const auto& [id, centre] : markers) {
     EXPECT_EQ(id / 4, p.index);
@@ -99,12 +99,12 @@ TEST(PatternsGeneration, CornerMarkersEncodeThePatternIndex) {
 TEST(PatternsGeneration, ManifestRoundTripsAndIsNotOverwrittenWithoutForce) {
   const auto dir = std::filesystem::temp_directory_path() / ("lfd_patterns_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
-  PatternOptions o;
+  sim::PatternOptions o;
   o.phase_steps = 3;
-  const PatternSet set = plan_patterns(portrait(), o);
-  write_pattern_set(dir, set, false);
+  const sim::PatternSet set = sim::plan_patterns(portrait(), o);
+  sim::write_pattern_set(dir, set, false);
   for (const auto& p : set.patterns) EXPECT_TRUE(std::filesystem::exists(dir / "patterns" / p.file));
-  const PatternSet back = read_pattern_set(dir);
+  const sim::PatternSet back = sim::read_pattern_set(dir);
   EXPECT_EQ(back.phase_steps, 3);
   EXPECT_EQ(back.fringe_steps, set.fringe_steps);
   EXPECT_DOUBLE_EQ(back.fringe_period_px, set.fringe_period_px);
@@ -115,7 +115,7 @@ TEST(PatternsGeneration, ManifestRoundTripsAndIsNotOverwrittenWithoutForce) {
   }
   EXPECT_EQ(back.board.corners_px.size(), set.board.corners_px.size());
   EXPECT_DOUBLE_EQ(back.nominal.display.pitch_lpi, set.nominal.display.pitch_lpi);
-  EXPECT_THROW(write_pattern_set(dir, set, false), InputError);
+  EXPECT_THROW(sim::write_pattern_set(dir, set, false), InputError);
   std::filesystem::remove_all(dir);
 }
 
@@ -124,19 +124,19 @@ TEST(PatternsGeneration, ManifestWithoutFringesReadsAsBoardOnlyRegistration) {
   const auto dir = std::filesystem::temp_directory_path() /
                    ("lfd_patterns_nofringe_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
-  PatternOptions o;
+  sim::PatternOptions o;
   o.fringes = false;
-  write_pattern_set(dir, plan_patterns(portrait(), o), false);
-  const PatternSet back = read_pattern_set(dir);
+  sim::write_pattern_set(dir, sim::plan_patterns(portrait(), o), false);
+  const sim::PatternSet back = sim::read_pattern_set(dir);
   EXPECT_EQ(back.fringe_steps, 0);
-  EXPECT_TRUE(back.of_kind(PatternKind::kFringeX).empty());
+  EXPECT_TRUE(back.of_kind(sim::PatternKind::kFringeX).empty());
   EXPECT_EQ(back.patterns.size(), 3u + 8u);
   std::filesystem::remove_all(dir);
 }
 
 TEST(PatternsGeneration, MissingManifestNamesTheFileAndTheCommand) {
   try {
-    read_pattern_set("/nonexistent/unit");
+    sim::read_pattern_set("/nonexistent/unit");
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("manifest.json"), std::string::npos);

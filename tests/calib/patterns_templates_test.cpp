@@ -2,8 +2,8 @@
 // displays from which patterns can be planned.
 #include <gtest/gtest.h>
 
-#include "calib/patterns.hpp"
-#include "calib/display/visual_json.hpp"
+#include "sim/patterns.hpp"
+#include "display/visual_json.hpp"
 
 namespace lfd::calib {
 namespace {
@@ -14,11 +14,11 @@ TEST(PatternsTemplates, EveryShippedTemplateParsesAndPlansPatterns) {
   int count = 0;
   for (const auto& e : std::filesystem::directory_iterator(templates())) {
     if (e.path().string().find(".visual.json") == std::string::npos) continue;
-    const DisplayCalibration d = read_visual_json(e.path());
+    const display::DisplayCalibration d = display::read_visual_json(e.path());
     EXPECT_NO_THROW(d.check(e.path().string()));
-    Calibration c;
+    display::Calibration c;
     c.display = d;
-    const PatternSet set = plan_patterns(c);
+    const sim::PatternSet set = sim::plan_patterns(c);
     EXPECT_GE(set.board.corners_px.size(), 10u) << e.path();
     ++count;
   }
@@ -26,14 +26,14 @@ TEST(PatternsTemplates, EveryShippedTemplateParsesAndPlansPatterns) {
 }
 
 TEST(PatternsTemplates, Gen3TemplatesCarryTheirSubpixelCells) {
-  const DisplayCalibration p = read_visual_json(templates() / "16in-portrait-gen3.visual.json");
+  const display::DisplayCalibration p = display::read_visual_json(templates() / "16in-portrait-gen3.visual.json");
   EXPECT_EQ(p.cell_pattern_mode, 4);
   ASSERT_EQ(p.subpixel_cells.size(), 2u);
   EXPECT_DOUBLE_EQ(p.subpixel_cells[0].r_y, -0.31);
-  const DisplayCalibration l = read_visual_json(templates() / "16in-landscape-gen3.visual.json");
+  const display::DisplayCalibration l = display::read_visual_json(templates() / "16in-landscape-gen3.visual.json");
   EXPECT_EQ(l.cell_pattern_mode, 2);
   EXPECT_DOUBLE_EQ(l.slope, -6.9);
-  EXPECT_DOUBLE_EQ(read_visual_json(templates() / "go.visual.json").view_cone_deg, 54);
+  EXPECT_DOUBLE_EQ(display::read_visual_json(templates() / "go.visual.json").view_cone_deg, 54);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
-// Phase decoding (calib/phase_decoding.hpp) on synthetic K-step images: a camera whose pose is
+// Phase decoding (calib/decoding/phase_decoding.hpp) on synthetic K-step images: a camera whose pose is
 // known looks at a panel that shows I_k = a + b cos(2 pi (psi(u, v) - k/K)) for a known psi;
 // the decoded samples must give back psi where the camera looks, and say what they left out.
-#include "calib/phase_decoding.hpp"
+#include "calib/decoding/phase_decoding.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/camera_model.hpp"
-#include "calib/display/visual_json.hpp"
+#include "sim/camera_model.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::calib {
@@ -26,17 +26,17 @@ double true_psi(double u, double v) {
 }
 
 struct Scene {
-  PatternSet set;
-  PhysicalCamera camera;
+  sim::PatternSet set;
+  sim::PhysicalCamera camera;
   Registration registration;
 };
 
 // The board corners as the camera sees them (exact projections) register the panel.
-Registration register_by_projection(const PatternSet& set, const PhysicalCamera& camera) {
+Registration register_by_projection(const sim::PatternSet& set, const sim::PhysicalCamera& camera) {
   BoardDetection board;
   board.image_size = {camera.intrinsics().width, camera.intrinsics().height};
   for (size_t id = 0; id < set.board.corners_px.size(); ++id) {
-    const ScreenUV uv = panel_px_to_uv(set.nominal.display, set.board.corners_px[id]);
+    const display::ScreenUV uv = panel_px_to_uv(set.nominal.display, set.board.corners_px[id]);
     Eigen::Vector2d px;
     if (!camera.project(uv_to_display_m(set.nominal.display, uv), px)) continue;
     board.ids.push_back(int(id));
@@ -46,13 +46,13 @@ Registration register_by_projection(const PatternSet& set, const PhysicalCamera&
 }
 
 Scene make_scene() {
-  Calibration nominal;
-  nominal.display = read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
-  PatternSet set = plan_patterns(nominal);
-  CameraPose pose;
+  display::Calibration nominal;
+  nominal.display = display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json"));
+  sim::PatternSet set = sim::plan_patterns(nominal);
+  sim::CameraPose pose;
   pose.position_m = {0.03, 0.01, 0.5};
   pose.look_at_m = {0.0, 0.0, 0.0};
-  PhysicalCamera camera(CameraIntrinsics::from_fov(50.0, 320, 240), pose);
+  sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(50.0, 320, 240), pose);
   Registration registration = register_by_projection(set, camera);
   return {std::move(set), std::move(camera), std::move(registration)};
 }
@@ -70,7 +70,7 @@ std::vector<cv::Mat> capture(const Scene& s, const CaptureOptions& o) {
   std::vector<cv::Mat> out;
   std::mt19937 rng(7);
   std::normal_distribution<float> noise(0.0f, float(o.noise));
-  const DisplayCalibration& d = s.set.nominal.display;
+  const display::DisplayCalibration& d = s.set.nominal.display;
   for (int k = 0; k < o.steps; ++k) {
     cv::Mat img(in.height, in.width, CV_32FC3, cv::Scalar::all(0.02));
     for (int y = 0; y < in.height; ++y)

@@ -1,8 +1,8 @@
-// The quality gates (calib/quality_gates.hpp): each gate fires on a solve that should fail it,
+// The quality gates (calib/solver/quality_gates.hpp): each gate fires on a solve that should fail it,
 // names the measured value and the bound, and stays quiet on one that should pass. Crafted
 // solver results for the bounds; the robust residual statistics and the camera shifts from
 // their own functions.
-#include "calib/quality_gates.hpp"
+#include "calib/solver/quality_gates.hpp"
 
 #include <cmath>
 #include <random>
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/residual_statistics.hpp"
+#include "calib/solver/residual_statistics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -18,7 +18,7 @@ namespace {
 
 // A calibration and a solve that pass every gate: two positions, the cone measured.
 struct Passing {
-  Calibration calibration;
+  display::Calibration calibration;
   SolverResult solve;
   Passing() {
     calibration.display.pitch_lpi = 50;

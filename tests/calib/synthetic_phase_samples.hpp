@@ -1,6 +1,6 @@
 #pragma once
 // Decoded phase samples made straight from a known truth, without images: what the lens
-// solver's model (calib/lens_solver.hpp) says a camera at C decodes at panel point P,
+// solver's model (calib/solver/lens_solver.hpp) says a camera at C decodes at panel point P,
 //   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))  (mod 1),   s = +1 with invView, else -1,
 //   f_seen(P) = seen_fraction_through_cover(Cx - Px, Cy - Py, Cz, cover, line_tilt_true, cone_true),
 //   X = P + lens_content_shift / pitch',
@@ -9,10 +9,10 @@
 #include <random>
 #include <vector>
 
-#include "calib/display/lens_model.hpp"
-#include "calib/display/lens_relations.hpp"
-#include "calib/lens_solver.hpp"
-#include "calib/synthetic_unit.hpp"
+#include "display/lens_model.hpp"
+#include "display/lens_relations.hpp"
+#include "calib/solver/lens_solver.hpp"
+#include "sim/synthetic_unit.hpp"
 
 namespace lfd::calib::testing {
 
@@ -25,33 +25,33 @@ struct SyntheticPhaseOptions {
 };
 
 struct SyntheticPhaseData {
-  SyntheticUnit unit;                    // truth (with its correction warp) and nominal
+  sim::SyntheticUnit unit;                    // truth (with its correction warp) and nominal
   std::vector<Eigen::Vector3d> cameras;  // true camera positions
   std::vector<PositionData> positions;   // samples + registration priors
 };
 
 // The noise-free phase a camera at `camera` decodes at physical panel point (u, v).
-inline double synthetic_psi(const SyntheticUnit& unit, const LensModel& truth,
-                            const LensModel& nominal, const Eigen::Vector3d& camera, double u,
+inline double synthetic_psi(const sim::SyntheticUnit& unit, const display::LensModel& truth,
+                            const display::LensModel& nominal, const Eigen::Vector3d& camera, double u,
                             double v) {
-  const DisplayCalibration& d = unit.truth.display;
+  const display::DisplayCalibration& d = unit.truth.display;
   const double s = d.inv_view ? 1.0 : -1.0;
   const double px = (u - 0.5) * d.width_m(), py = (v - 0.5) * d.height_m();
-  const double f_seen = seen_fraction_through_cover(camera.x() - px, camera.y() - py, camera.z(),
+  const double f_seen = display::seen_fraction_through_cover(camera.x() - px, camera.y() - py, camera.z(),
                                                     d.cover, truth.line_tilt(), d.view_cone_deg);
-  const double content_u = u + lens_content_shift(f_seen, d.inv_view) / truth.pitch_periods();
+  const double content_u = u + display::lens_content_shift(f_seen, d.inv_view) / truth.pitch_periods();
   return f_seen + s * (truth.phase(content_u, v) - nominal.phase(content_u, v));
 }
 
-inline SyntheticPhaseData make_synthetic_phase_data(const DisplayCalibration& real,
-                                                    const SyntheticUnitOptions& unit_options,
+inline SyntheticPhaseData make_synthetic_phase_data(const display::DisplayCalibration& real,
+                                                    const sim::SyntheticUnitOptions& unit_options,
                                                     const std::vector<Eigen::Vector3d>& cameras,
                                                     const SyntheticPhaseOptions& o = {}) {
   SyntheticPhaseData data;
-  data.unit = make_synthetic_unit(real, unit_options);
+  data.unit = sim::make_synthetic_unit(real, unit_options);
   data.cameras = cameras;
-  const LensModel truth(data.unit.truth.display, data.unit.truth.correction);
-  const LensModel nominal(data.unit.nominal.display, data.unit.nominal.correction);
+  const display::LensModel truth(data.unit.truth.display, data.unit.truth.correction);
+  const display::LensModel nominal(data.unit.nominal.display, data.unit.nominal.correction);
   std::mt19937_64 rng(o.seed);
   std::uniform_real_distribution<double> jitter(0.0, 1.0);
   std::normal_distribution<double> gauss(0.0, 1.0);
@@ -80,11 +80,11 @@ inline SyntheticPhaseData make_synthetic_phase_data(const DisplayCalibration& re
   return data;
 }
 
-// Three cameras where calib::make_capture_rig puts them: clearly different distances and
+// Three cameras where sim::make_capture_rig puts them: clearly different distances and
 // sides, which separates the view cone from the pitch.
-inline std::vector<Eigen::Vector3d> three_cameras(const DisplayCalibration& d) {
+inline std::vector<Eigen::Vector3d> three_cameras(const display::DisplayCalibration& d) {
   std::vector<Eigen::Vector3d> cameras;
-  for (const CameraPose& pose : make_capture_rig(d, 640, 3, true).poses)
+  for (const sim::CameraPose& pose : sim::make_capture_rig(d, 640, 3, true).poses)
     cameras.push_back(pose.position_m);
   return cameras;
 }

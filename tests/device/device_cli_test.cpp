@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/calibration_file.hpp"
+#include "display/visual_json.hpp"
 #include "tests/apps/run_lfd.hpp"
 #include "tests/device/device_test_tree.hpp"
 #include "tests/test_data.hpp"
@@ -92,9 +92,9 @@ TEST(DeviceCli, ReadWritesTheServedCalibrationAndVisualJsonByteForByte) {
                                " --visual-json " + q(out / "visual.json"));
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_EQ(bytes_of(out / "visual.json"), small_unit_text());
-  const calib::Calibration read = calib::read_calibration(out / "cal.json");
-  const calib::DisplayCalibration served = calib::parse_visual_json(small_unit_text(), "served");
-  EXPECT_EQ(calib::to_visual_json(read.display), calib::to_visual_json(served));
+  const display::Calibration read = display::read_calibration(out / "cal.json");
+  const display::DisplayCalibration served = display::parse_visual_json(small_unit_text(), "served");
+  EXPECT_EQ(display::to_visual_json(read.display), display::to_visual_json(served));
   EXPECT_EQ(read.provenance["device"]["serial"], "LKG-A0SMALL");
 }
 

@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/device/device_discovery.hpp"
-#include "calib/device/device_error.hpp"
-#include "calib/display/visual_json.hpp"
+#include "device/device_discovery.hpp"
+#include "device/device_error.hpp"
+#include "display/visual_json.hpp"
 #include "tests/device/device_test_tree.hpp"
 #include "tests/device/fake_holoplay.hpp"
 #include "tests/test_data.hpp"
@@ -93,14 +93,14 @@ TEST(DeviceDiscovery, TheCalibrationOfADeviceEqualsTheServedOne) {
   FakeMachine m;
   m.root = test::temp_dir("disc_cal");
   m.eeproms = {text_of("gen1-hid-00297.visual.json")};
-  const calib::Calibration c = read_device_calibration("auto", m.options());
-  const calib::DisplayCalibration served =
-      calib::parse_visual_json(text_of("gen1-hid-00297.visual.json"), "served");
+  const display::Calibration c = read_device_calibration("auto", m.options());
+  const display::DisplayCalibration served =
+      display::parse_visual_json(text_of("gen1-hid-00297.visual.json"), "served");
   EXPECT_EQ(c.display.serial, served.serial);
   EXPECT_EQ(c.display.pitch_lpi, served.pitch_lpi);
   EXPECT_EQ(c.display.slope, served.slope);
   EXPECT_EQ(c.display.center_periods, served.center_periods);
-  EXPECT_EQ(calib::to_visual_json(c.display), calib::to_visual_json(served));
+  EXPECT_EQ(display::to_visual_json(c.display), display::to_visual_json(served));
   EXPECT_EQ(c.provenance["device"]["source"], "/dev/hidraw0");
 }
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "calib/device/device_error.hpp"
-#include "calib/device/gen1_eeprom.hpp"
-#include "calib/device/hid_transport.hpp"
+#include "device/device_error.hpp"
+#include "device/gen1_eeprom.hpp"
+#include "device/hid_transport.hpp"
 
 namespace lfd::test {
 

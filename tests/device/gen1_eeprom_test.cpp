@@ -8,9 +8,9 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/device/device_error.hpp"
-#include "calib/device/gen1_eeprom.hpp"
-#include "calib/display/visual_json.hpp"
+#include "device/device_error.hpp"
+#include "device/gen1_eeprom.hpp"
+#include "display/visual_json.hpp"
 #include "tests/device/fake_holoplay.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"

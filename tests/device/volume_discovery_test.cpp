@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/device/volume_discovery.hpp"
+#include "device/volume_discovery.hpp"
 #include "tests/device/device_test_tree.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"

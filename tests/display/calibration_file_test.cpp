@@ -1,13 +1,13 @@
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 Calibration sample_calibration() {
@@ -176,4 +176,4 @@ TEST(CalibrationFile, RejectsBadValuesInTheSuperset) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

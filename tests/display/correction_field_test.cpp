@@ -1,4 +1,4 @@
-#include "calib/display/correction_field.hpp"
+#include "display/correction_field.hpp"
 
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 TEST(BSpline, WeightsArePositiveAndSumToOne) {
@@ -59,4 +59,4 @@ TEST(CorrectionField, RejectsNonFiniteCoefficients) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

@@ -1,4 +1,4 @@
-// The cover layer (calib/display/lens_relations.hpp, cover_rays.hpp, cover_layer.hpp): the
+// The cover layer (display/lens_relations.hpp, cover_rays.hpp, cover_layer.hpp): the
 // exact refracted ray checked against Snell's law written out with angles, against the
 // paraxial apparent depth t (1 - 1/n), and the two directions of tracing against each other.
 #include <cmath>
@@ -6,15 +6,15 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/calibration_file.hpp"
-#include "calib/display/cover_layer.hpp"
-#include "calib/display/cover_rays.hpp"
-#include "calib/display/lens_relations.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/calibration_file.hpp"
+#include "display/cover_layer.hpp"
+#include "display/cover_rays.hpp"
+#include "display/lens_relations.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 constexpr CoverLayer kBlock{0.02, 1.49};  // a 2 cm acrylic block
@@ -119,4 +119,4 @@ TEST(CoverLayer, CalibrationJsonKeepsItAndVisualJsonStaysAsItWas) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

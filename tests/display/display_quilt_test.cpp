@@ -1,18 +1,18 @@
-// The quilt for a display (calib/display/display_quilt.hpp): the tile grid for a view count,
+// The quilt for a display (display/display_quilt.hpp): the tile grid for a view count,
 // and what a calibration decides (views, grid, aspect, cone).
-#include "calib/display/display_quilt.hpp"
+#include "display/display_quilt.hpp"
 
 #include <cmath>
 #include <limits>
 
 #include <gtest/gtest.h>
 
-#include "calib/display/view_count.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/view_count.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 struct GridCase {
@@ -152,4 +152,4 @@ TEST(QuiltForDisplay, RejectsAnImpossibleViewCount) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

@@ -5,10 +5,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 // A valid calibration.json (fuzz/corpus/fuzz_calibration_json/gen3-cells.calibration.json).
@@ -51,4 +51,4 @@ TEST(CalibrationFileFuzzFindings, AVersionBeyondIntIsNotReadAsVersion1) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

@@ -1,13 +1,13 @@
-#include "calib/display/lens_model.hpp"
+#include "display/lens_model.hpp"
 
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 DisplayCalibration load(const char* name) {
@@ -106,4 +106,4 @@ TEST(LensModel, ViewIndexClampsToTheLastView) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

@@ -1,17 +1,17 @@
-// The physical relations of the display model (calib/display/lens_relations.hpp), each checked
+// The physical relations of the display model (display/lens_relations.hpp), each checked
 // against its inverse or an independent form of the same relation.
-#include "calib/display/lens_relations.hpp"
+#include "display/lens_relations.hpp"
 
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
-#include "calib/display/lens_model.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/lens_model.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
@@ -200,4 +200,4 @@ TEST(LensContentShift, JumpsAWholeLensWhereTheSeenFractionWraps) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

@@ -1,19 +1,19 @@
-// The view-count rule (calib/display/view_count.hpp) as a rule: the count is the largest quilt
+// The view-count rule (display/view_count.hpp) as a rule: the count is the largest quilt
 // count under every limit, and each limit moves it the way its physics says. Whether the rule
 // picks the knee of the parallax blur is measured with the simulator in
 // tests/validate/view_count_check_test.cpp.
-#include "calib/display/view_count.hpp"
+#include "display/view_count.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "calib/display/display_quilt.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/display_quilt.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 Calibration unit(const std::filesystem::path& file) {
@@ -70,4 +70,4 @@ TEST(ViewCount, PhaseUncertaintyLimitsTheCountButSampleNoiseDoesNot) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

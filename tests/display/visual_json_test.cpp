@@ -1,16 +1,16 @@
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 
 #include <cmath>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
-namespace lfd::calib {
+namespace lfd::display {
 namespace {
 
 std::string trim(std::string s) {
@@ -149,4 +149,4 @@ TEST(VisualJson, NotJsonNamesTheFile) {
 }
 
 }  // namespace
-}  // namespace lfd::calib
+}  // namespace lfd::display

@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "gpu/gl_context.hpp"
 #include "interlace/interlacer.hpp"
 #include "tests/test_data.hpp"
@@ -21,9 +21,9 @@
 namespace lfd::gpu {
 namespace {
 
-using calib::CorrectionField;
-using calib::DisplayCalibration;
-using calib::LensModel;
+using display::CorrectionField;
+using display::DisplayCalibration;
+using display::LensModel;
 using interlace::InterlaceOptions;
 using interlace::ViewBlend;
 using render::QuiltLayout;
@@ -131,7 +131,7 @@ class GlInterlacerOnFixture : public testing::TestWithParam<std::filesystem::pat
 
 TEST_P(GlInterlacerOnFixture, MatchesTheCpuInterlacer) {
   HeadlessContext context;
-  const DisplayCalibration full = calib::read_visual_json(GetParam());
+  const DisplayCalibration full = display::read_visual_json(GetParam());
   const DisplayCalibration small = shrunk(full, full.screen_w > 2000 ? 8 : 4);
   const double display_aspect = double(small.screen_w) / small.screen_h;
   expect_shader_matches_cpu(GetParam().stem().stem().string(), small,
@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(EveryCalibration, GlInterlacerOnFixture,
 TEST(GlInterlacer, MatchesWithACorrectionField) {
   HeadlessContext context;
   const DisplayCalibration c =
-      shrunk(calib::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 4);
+      shrunk(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 4);
   expect_shader_matches_cpu("LKG-2K-04409 + correction", c, quilt_layout(8, 6, 1.25),
                             some_correction());
 }
@@ -158,7 +158,7 @@ TEST(GlInterlacer, MatchesWithACorrectionField) {
 TEST(GlInterlacer, MatchesOnBgrPanelsWithFringeAndEitherViewOrder) {
   HeadlessContext context;
   DisplayCalibration c =
-      shrunk(calib::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json")), 8);
+      shrunk(display::read_visual_json(test::fixture_calibration("LKG-APW92011.visual.json")), 8);
   c.flip_subp = true;  // no fixture has a BGR panel
   c.fringe = 0.1;
   expect_shader_matches_cpu("LKG-APW92011 flipSubp fringe", c, quilt_layout(5, 9, 1.2));
@@ -171,7 +171,7 @@ TEST(GlInterlacer, MatchesOnBgrPanelsWithFringeAndEitherViewOrder) {
 TEST(GlInterlacer, MatchesEveryGen3CellPattern) {
   HeadlessContext context;
   DisplayCalibration c = shrunk(
-      calib::read_visual_json(test::fixture_calibration("template-16in-portrait-gen3.visual.json")), 8);
+      display::read_visual_json(test::fixture_calibration("template-16in-portrait-gen3.visual.json")), 8);
   ASSERT_TRUE(c.has_cells());
   // Four cells so pattern 3 (period 4 in j) shows all of them.
   c.subpixel_cells.push_back({-0.3, 0.1, 0.1, -0.2, 0.3, 0.3});
@@ -186,7 +186,7 @@ TEST(GlInterlacer, MatchesEveryGen3CellPattern) {
 TEST(GlInterlacer, MatchesAFullSizePanel) {
   HeadlessContext context;
   const DisplayCalibration c =
-      calib::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+      display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   const LensModel lens(c, some_correction());
   const QuiltLayout q = quilt_layout(8, 6, 0.75);
   const ImageF quilt = varying_quilt(q);
@@ -204,7 +204,7 @@ TEST(GlInterlacer, Rgba8PanelTextureHoldsTheCpuPanelsBytes) {
   // with the 8-bit image the CPU path writes.
   HeadlessContext context;
   const DisplayCalibration c =
-      shrunk(calib::read_visual_json(test::fixture_calibration("gen1-hid-00297.visual.json")), 4);
+      shrunk(display::read_visual_json(test::fixture_calibration("gen1-hid-00297.visual.json")), 4);
   const LensModel lens(c);
   const QuiltLayout q = quilt_layout(5, 9, 1.6);
   const ImageF quilt = varying_quilt(q);
@@ -222,7 +222,7 @@ TEST(GlInterlacer, Rgba8PanelTextureHoldsTheCpuPanelsBytes) {
 TEST(GlInterlacer, TheCorrectionGridInterpolatesTheFieldWithinItsTolerance) {
   HeadlessContext context;
   const DisplayCalibration c =
-      shrunk(calib::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 4);
+      shrunk(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 4);
   const QuiltLayout q = quilt_layout(5, 9, 1.6);
   const GlInterlacer plain(LensModel(c), q);
   EXPECT_EQ(plain.correction_grid().width(), 2);
@@ -251,7 +251,7 @@ TEST(GlInterlacer, TheCorrectionGridInterpolatesTheFieldWithinItsTolerance) {
 TEST(GlInterlacer, AQuiltOrPanelOfTheWrongSizeIsAnInputError) {
   HeadlessContext context;
   const DisplayCalibration c =
-      shrunk(calib::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 8);
+      shrunk(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 8);
   const LensModel lens(c);
   const QuiltLayout q = quilt_layout(5, 9, 1.6);
   GlInterlacer interlacer(lens, q);

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "tests/apps/run_lfd.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"
@@ -29,11 +29,11 @@ class InterlaceBackendCli : public testing::Test {
   void SetUp() override {
     dir_ = test::temp_dir("interlace_backend");
     // A real unit's lens on a 320 x 200 panel.
-    calib::DisplayCalibration c =
-        calib::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json"));
+    display::DisplayCalibration c =
+        display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json"));
     c.screen_w /= 8;
     c.screen_h /= 8;
-    calib::write_visual_json(dir_ / "small.visual.json", c);
+    display::write_visual_json(dir_ / "small.visual.json", c);
     // 45 tiles of 40 x 24 with content that differs per view and channel.
     Image8 quilt(200, 216, 3);
     for (int y = 0; y < quilt.height; ++y)

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "interlace/quilt_file.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
@@ -12,8 +12,8 @@
 namespace lfd::interlace {
 namespace {
 
-using calib::DisplayCalibration;
-using calib::LensModel;
+using display::DisplayCalibration;
+using display::LensModel;
 using render::QuiltLayout;
 
 // A quilt whose tile k is filled with value(k) in every channel (top-down image).
@@ -40,7 +40,7 @@ QuiltLayout layout(int cols, int rows, int w, int h, double aspect) {
 
 DisplayCalibration small_display() {
   // A real unit's lens scaled down to a small panel so tests stay fast.
-  return calib::parse_visual_json(
+  return display::parse_visual_json(
       R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
       R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
       R"("screenW":{"value":320},"screenH":{"value":200}})",
@@ -129,7 +129,7 @@ TEST(Interlacer, SquareQuiltOnAWidePanelGetsBlackBarsUnlessOverscan) {
 TEST(Interlacer, EveryRealCalibrationInterlacesToItsPanelSize) {
   for (const auto& file : test::fixture_calibrations()) {
     SCOPED_TRACE(file.string());
-    const DisplayCalibration c = calib::read_visual_json(file);
+    const DisplayCalibration c = display::read_visual_json(file);
     const LensModel lens(c);
     const QuiltLayout q = layout(5, 9, 250, 450, double(c.screen_w) / c.screen_h);
     const ImageF quilt = constant_tile_quilt(q, [&](int k) { return (k + 0.5f) / q.views; });

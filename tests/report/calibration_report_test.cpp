@@ -10,8 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "calib/synthetic_unit.hpp"
-#include "calib/display/visual_json.hpp"
+#include "sim/synthetic_unit.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"
 #include "report/calibration_report.hpp"
@@ -62,7 +62,7 @@ calib::CalibrationOutcome outcome_with_two_positions() {
   std::vector<double> coefficients(64);
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 8; ++i) coefficients[size_t(j * 8 + i)] = 0.1 * std::sin(i * 0.7 + j * 0.4);
-  c.correction = calib::CorrectionField(8, 8, coefficients);
+  c.correction = display::CorrectionField(8, 8, coefficients);
   c.recommended_views = 48;
   c.view_count_rule = "views = min(sampling, blur, accuracy)";
   std::mt19937 rng(3);
@@ -208,15 +208,15 @@ TEST(CalibrationReport, WithoutGnuplotThePageSaysSoAndShowsNoFigure) {
 // figures of every position and names the gate.
 TEST(CalibrationReport, SimulatedRejectedCalibrationHasFiguresForEveryPosition) {
   REQUIRE_GNUPLOT();
-  const calib::SyntheticUnit unit = calib::make_synthetic_unit(
-      calib::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
-  const calib::PatternSet set = calib::plan_patterns(unit.nominal);
-  const calib::CaptureRig rig = calib::make_capture_rig(unit.truth.display, 480, 2);
+  const sim::SyntheticUnit unit = sim::make_synthetic_unit(
+      display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
+  const sim::PatternSet set = sim::plan_patterns(unit.nominal);
+  const sim::CaptureRig rig = sim::make_capture_rig(unit.truth.display, 480, 2);
   calib::CalibrateOptions options;
   options.camera = rig.intrinsics;
   options.gates.max_residual_rms_periods = 1e-6;
   const calib::CalibrationOutcome out =
-      calib::calibrate_display(set, calib::simulate_captures(set, unit.truth, rig), options);
+      calib::calibrate_display(set, sim::simulate_captures(set, unit.truth, rig), options);
   ASSERT_FALSE(out.gate_failures.empty());
   const fs::path dir = test::temp_dir("calibration_report_simulated");
   write_calibration_report(out, dir);

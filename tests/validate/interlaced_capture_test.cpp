@@ -7,17 +7,17 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/simulator.hpp"
+#include "sim/simulator.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/quilt_layout.hpp"
-#include "tests/calib/simulator_test_support.hpp"
+#include "tests/sim/simulator_test_support.hpp"
 
 namespace lfd::validate {
 namespace {
 
 TEST(InterlacedCapture, EveryCameraPixelSeesTheViewItsDirectionSelects) {
   const int views = 16;
-  const calib::LensModel lens(calib::testing::small_display());
+  const display::LensModel lens(sim::testing::small_display());
   const auto& c = lens.calibration();
   render::QuiltLayout layout;
   layout.cols = 4;
@@ -35,10 +35,10 @@ TEST(InterlacedCapture, EveryCameraPixelSeesTheViewItsDirectionSelects) {
   const ImageF panel = interlace::interlace(quilt, layout, lens);
   const ImageF white(c.screen_w, c.screen_h, 3, 1.0f);
 
-  const calib::DisplaySimulator sim{lens};
-  const calib::PhysicalCamera camera(calib::CameraIntrinsics::from_fov(45.0, 192, 108),
-                                     calib::CameraPose{{0.04, 0.01, 0.5}, {0, 0, 0}, {0, 1, 0}});
-  calib::CaptureEffects fx;
+  const sim::DisplaySimulator sim{lens};
+  const sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(45.0, 192, 108),
+                                     sim::CameraPose{{0.04, 0.01, 0.5}, {0, 0, 0}, {0, 1, 0}});
+  sim::CaptureEffects fx;
   fx.supersample = 2;
   fx.exposure = 0.3;  // nothing clips: the ratio below is linear
   const ImageF seen = sim.capture(panel, camera, fx);

@@ -5,22 +5,22 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 
 namespace lfd::validate {
 namespace {
 
-calib::Calibration unit() {
-  calib::Calibration c;
-  c.display = calib::parse_visual_json(
+display::Calibration unit() {
+  display::Calibration c;
+  c.display = display::parse_visual_json(
       R"({"pitch":{"value":50.0693473815918},"slope":{"value":-7.521984100341797},"center":{"value":0.076},)"
       R"("DPI":{"value":283},"screenW":{"value":3840},"screenH":{"value":2160}})",
       "unit");
-  c.correction = calib::CorrectionField(4, 4, std::vector<double>(16, 0.05));
+  c.correction = display::CorrectionField(4, 4, std::vector<double>(16, 0.05));
   return c;
 }
 
-double slant_deg(const calib::Calibration& c) {
+double slant_deg(const display::Calibration& c) {
   return std::atan(1.0 / c.display.slope) * 180.0 / std::numbers::pi;
 }
 

@@ -4,21 +4,21 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/visual_json.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
 namespace lfd::validate {
 namespace {
 
-calib::Calibration portrait() {
-  calib::Calibration c;
-  c.display = calib::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
+display::Calibration portrait() {
+  display::Calibration c;
+  c.display = display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
   return c;
 }
 
 TEST(SeenDownTheScreen, AnEyeAboveTheCentreSeesOtherViewsAtTheTopThanAtTheBottom) {
-  const calib::Calibration truth = portrait();
+  const display::Calibration truth = portrait();
   const auto rows = seen_down_the_screen(truth, Eigen::Vector3d(0.0, 0.1, 0.5), 5);
   ASSERT_EQ(rows.size(), 5u);
   EXPECT_LT(rows.front().y_m, 0.0);

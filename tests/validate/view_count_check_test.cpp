@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/view_count.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/view_count.hpp"
+#include "display/visual_json.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::validate {
@@ -63,9 +63,9 @@ TEST(ParallaxBlur, BlackLevelIsSubtracted) {
 class ViewCountKnee : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ViewCountKnee, TheRecommendedCountSitsAtTheKnee) {
-  calib::Calibration truth;
-  truth.display = calib::read_visual_json(test::fixture_calibration(GetParam()));
-  const int recommended = calib::recommend_view_count(truth).views;
+  display::Calibration truth;
+  truth.display = display::read_visual_json(test::fixture_calibration(GetParam()));
+  const int recommended = display::recommend_view_count(truth).views;
   const std::vector<int> counts = {16, 24, 32, 40, 48, 64, 96};
   ASSERT_NE(std::find(counts.begin(), counts.end(), recommended), counts.end()) << recommended;
   ASSERT_GT(recommended, counts.front());

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/calib/simulator_test_support.hpp"
+#include "tests/sim/simulator_test_support.hpp"
 #include "util/error.hpp"
 #include "validate/view_metrics.hpp"
 #include "validate/view_profiles.hpp"
@@ -14,8 +14,8 @@ namespace lfd::validate {
 namespace {
 
 TEST(ViewProfilesEyeHeight, AViewerAtAFixedHeightSeesViewsLessSeparated) {
-  calib::Calibration unit;
-  unit.display = calib::testing::small_display();  // 16" Gen2 optics on a small panel
+  display::Calibration unit;
+  unit.display = sim::testing::small_display();  // 16" Gen2 optics on a small panel
   ProfileOptions o;
   o.views = 24;
   o.panel_points = 120;

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/calib/simulator_test_support.hpp"
+#include "tests/sim/simulator_test_support.hpp"
 #include "validate/view_metrics.hpp"
 #include "validate/view_profiles.hpp"
 #include "util/error.hpp"
@@ -13,15 +13,15 @@
 namespace lfd::validate {
 namespace {
 
-calib::Calibration real_unit() {
-  calib::Calibration c;
-  c.display = calib::testing::apw92011();
+display::Calibration real_unit() {
+  display::Calibration c;
+  c.display = sim::testing::apw92011();
   return c;
 }
 
 // The same unit as the interlacer would see it with the slant 0.01 degree off.
-calib::Calibration slant_off(double delta_deg) {
-  calib::Calibration c = real_unit();
+display::Calibration slant_off(double delta_deg) {
+  display::Calibration c = real_unit();
   const double slant = std::atan(1.0 / c.display.slope) + delta_deg * std::numbers::pi / 180.0;
   c.display.slope = 1.0 / std::tan(slant);
   return c;
@@ -80,8 +80,8 @@ TEST_F(ViewSeparation, SlantOffByAHundredthOfADegreeScramblesViews) {
 // Linear view blending (the interlacer's option) mixes neighbouring views on purpose: smoother
 // transitions, measurably more crosstalk. Small display with the same optics per lens.
 TEST(ViewSeparationBlend, LinearBlendingTradesSeparationForSmoothness) {
-  calib::Calibration small;
-  small.display = calib::testing::small_display();
+  display::Calibration small;
+  small.display = sim::testing::small_display();
   ProfileOptions o = small_options();
   const ViewSummary nearest = summarise(measure_view_profiles(small, small, o));
   o.blend = interlace::ViewBlend::kLinear;
@@ -101,7 +101,7 @@ TEST(ViewSeparationOptions, ImpossibleOptionsAreInputErrors) {
 }
 
 TEST(ViewSeparationOptions, AssumedDisplayOfAnotherSizeIsInputError) {
-  calib::Calibration other = real_unit();
+  display::Calibration other = real_unit();
   other.display.screen_w = 1920;
   EXPECT_THROW(measure_view_profiles(real_unit(), other, small_options()), InputError);
 }

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "render/image_metrics.hpp"
@@ -20,8 +20,8 @@
 namespace lfd::viewer {
 namespace {
 
-calib::Calibration test_display() {
-  return calib::read_calibration(std::filesystem::path(LFD_TEST_DATA_DIR) / "calibrations" /
+display::Calibration test_display() {
+  return display::read_calibration(std::filesystem::path(LFD_TEST_DATA_DIR) / "calibrations" /
                                  "LKG-PORT-portrait.visual.json");
 }
 

@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/lens_relations.hpp"
-#include "calib/display/visual_json.hpp"
+#include "display/lens_relations.hpp"
+#include "display/visual_json.hpp"
 #include "interlace/interlacer.hpp"
 #include "util/error.hpp"
 #include "viewer/seen_from_preview.hpp"
@@ -26,16 +26,16 @@ constexpr int kViews = 8;
 // do to the brightness.
 std::array<float, 3> view_colour(int k) { return {float(kViews - 1 - k) / (kViews - 1), 0.0f, float(k) / (kViews - 1)}; }
 
-calib::DisplayCalibration small_display() {
+display::DisplayCalibration small_display() {
   // A real unit's lens (LKG-PORT-like) on a small panel so the test stays fast: 24 x 15 mm.
-  return calib::parse_visual_json(
+  return display::parse_visual_json(
       R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
       R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
       R"("screenW":{"value":320},"screenH":{"value":200}})",
       "small");
 }
 
-ImageF flat_view_panel(const calib::LensModel& lens) {
+ImageF flat_view_panel(const display::LensModel& lens) {
   render::QuiltLayout q;
   q.cols = 4;
   q.rows = 2;
@@ -67,7 +67,7 @@ std::array<double, 3> central_mean(const ImageF& preview) {
 double seen_view(const std::array<double, 3>& rgb) { return (kViews - 1) * rgb[2] / (rgb[0] + rgb[2]); }
 
 double angle_of_view_deg(int view, double cone_deg) {
-  const double tan_theta = calib::tan_of_seen_fraction((view + 0.5) / kViews, cone_deg);
+  const double tan_theta = display::tan_of_seen_fraction((view + 0.5) / kViews, cone_deg);
   return std::atan(tan_theta) * 180.0 / std::numbers::pi;
 }
 
@@ -78,7 +78,7 @@ SeenFromOptions small_preview() {
 }
 
 TEST(SeenFromPreview, HasThePanelsAspect) {
-  const calib::LensModel lens(small_display());
+  const display::LensModel lens(small_display());
   const ImageF preview = seen_from_preview(lens, flat_view_panel(lens), SeenFromEye{}, small_preview());
   EXPECT_EQ(preview.height, 48);
   EXPECT_EQ(preview.width, 77);  // 48 x 320 / 200
@@ -86,7 +86,7 @@ TEST(SeenFromPreview, HasThePanelsAspect) {
 }
 
 TEST(SeenFromPreview, FromTheAngleOfViewJTheCentreShowsViewJ) {
-  const calib::LensModel lens(small_display());
+  const display::LensModel lens(small_display());
   const ImageF panel = flat_view_panel(lens);
   for (int j = 0; j < kViews; ++j) {
     SeenFromEye eye;
@@ -99,7 +99,7 @@ TEST(SeenFromPreview, FromTheAngleOfViewJTheCentreShowsViewJ) {
 }
 
 TEST(SeenFromPreview, AnEyeMovingAcrossTheConeWalksThroughTheViewsInOrder) {
-  const calib::LensModel lens(small_display());
+  const display::LensModel lens(small_display());
   const ImageF panel = flat_view_panel(lens);
   std::vector<double> walked;
   // From view 0's centre to view 7's (+-17.7 deg): past them, toward the cone's edges (+-20),
@@ -123,7 +123,7 @@ TEST(SeenFromPreview, IsRecomputedOnlyWhenShownChangedAndNotTooOften) {
 }
 
 TEST(SeenFromPreview, BadOptionsAndPanelsAreInputErrors) {
-  const calib::LensModel lens(small_display());
+  const display::LensModel lens(small_display());
   SeenFromOptions o;
   o.height_px = 0;
   EXPECT_THROW(seen_from_preview(lens, flat_view_panel(lens), SeenFromEye{}, o), InputError);

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "calib/display/calibration_file.hpp"
+#include "display/calibration_file.hpp"
 #include "gpu/gl_context.hpp"
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
@@ -25,9 +25,9 @@ namespace fs = std::filesystem;
 
 const fs::path kDir = fs::temp_directory_path() / "lfd_viewer_window_test";
 
-calib::Calibration test_display() {
+display::Calibration test_display() {
   // The Xvfb screen is this panel's size (CMakeLists.txt), so the viewer finds its "monitor".
-  return calib::read_calibration(fs::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json");
+  return display::read_calibration(fs::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json");
 }
 
 render::GaussianScene test_scene() {

@@ -1,0 +1,652 @@
+// All Ceres cost functions of the calibration live in this one translation unit (Ceres
+// templates are slow to compile).
+#include "calib/solver/lens_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+#include <Eigen/Dense>
+#include <ceres/ceres.h>
+#include <fmt/format.h>
+
+#include "display/lens_model.hpp"
+#include "display/lens_relations.hpp"
+#include "calib/solver/residual_statistics.hpp"
+
+namespace lfd::calib {
+
+namespace {
+
+
+template <typename T>
+T wrap_half(const T& x) {  // to [-0.5, 0.5): the residual of a phase known modulo 1
+  return x - T(std::floor(display::scalar_part(x) + 0.5));
+}
+
+// The display constants the phase model needs besides the unknowns.
+struct DisplayConstants {
+  display::ScreenGeometry geometry;
+  double width_m, height_m;
+  double sign;  // s = +1 with invView, -1 without (DESIGN section 5 step 2)
+  bool vertical_parallax;  // false: the model of horizontal offsets only (for comparison)
+  display::CoverLayer cover;        // held at the nominal's value (docs/calibration.md, "The cover layer")
+  static DisplayConstants of(const display::DisplayCalibration& d, bool vertical_parallax) {
+    return {d.geometry(), d.width_m(), d.height_m(), d.inv_view ? 1.0 : -1.0, vertical_parallax,
+            d.cover};
+  }
+  // Px, Py of a panel point at screen (u, v), display frame (metres, origin at the screen
+  // centre, y up as v).
+  double panel_x_m(double u) const { return (u - 0.5) * width_m; }
+  double panel_y_m(double v) const { return (v - 0.5) * height_m; }
+  // f_seen at physical point (u, v) for a camera {Cx, Cy, Cz} and the lens' tilt.
+  template <typename T>
+  T seen(const T* cam, double u, double v, const T& tilt, const T& view_cone_deg) const {
+    const T dy = vertical_parallax ? T(cam[1] - T(panel_y_m(v))) : T(0.0);
+    return display::seen_fraction_through_cover(T(cam[0] - T(panel_x_m(u))), dy, cam[2], cover,
+                                       display::line_tilt(geometry, tilt), view_cone_deg);
+  }
+};
+
+// psi model without the correction field: f_seen(P) + s (A_true_linear(X) - A_nom(X)).
+// lens = {pitch_lpi, slope, center, view_cone_deg}, cam = {Cx, Cy, Cz}.
+template <typename T>
+T psi_linear(const DisplayConstants& dc, const T* lens, const T* cam, double u, double v,
+             double u_phys, double a_nom) {
+  const display::ShaderTerms<T> terms = display::shader_terms(dc.geometry, lens[0], lens[1]);
+  const T a_true = (T(u) + T(v) * terms.tilt) * terms.pitch_periods - lens[2];
+  const T f_seen = dc.seen(cam, u_phys, v, terms.tilt, lens[3]);
+  return f_seen + T(dc.sign) * (a_true - T(a_nom));
+}
+
+struct Sample {
+  double u, v, u_phys, a_nom, psi;
+  display::BSplineWeights wu, wv;
+};
+
+// The data term. Parameter blocks: lens (4), camera (3), then the 16 control points whose
+// B-spline basis covers the sample (one block each, so the Jacobian stays sparse). The
+// correction field enters linearly, r = wrap(psi_obs - psi_lin - s w) / sigma, so its
+// derivatives are the basis weights; the rest is differentiated with Jets.
+class PhaseResidual : public ceres::CostFunction {
+ public:
+  PhaseResidual(const DisplayConstants& dc, const Sample& s, double inv_sigma, bool with_field)
+      : dc_(dc), s_(s), inv_sigma_(inv_sigma), with_field_(with_field) {
+    set_num_residuals(1);
+    mutable_parameter_block_sizes()->push_back(4);
+    mutable_parameter_block_sizes()->push_back(3);
+    if (with_field_)
+      for (int i = 0; i < 16; ++i) mutable_parameter_block_sizes()->push_back(1);
+  }
+
+  bool Evaluate(double const* const* p, double* residual, double** jacobians) const override {
+    using Jet = ceres::Jet<double, 7>;
+    Jet lens[4], cam[3];
+    for (int i = 0; i < 4; ++i) lens[i] = Jet(p[0][i], i);
+    for (int i = 0; i < 3; ++i) cam[i] = Jet(p[1][i], 4 + i);
+    double w = 0;
+    if (with_field_)
+      for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a) w += p[2 + 4 * b + a][0] * (s_.wu.w[a] * s_.wv.w[b]);
+    const Jet model = psi_linear(dc_, lens, cam, s_.u, s_.v, s_.u_phys, s_.a_nom) + dc_.sign * w;
+    const Jet r = wrap_half(Jet(s_.psi) - model) * inv_sigma_;
+    residual[0] = r.a;
+    if (jacobians) {
+      if (jacobians[0])
+        for (int i = 0; i < 4; ++i) jacobians[0][i] = r.v[i];
+      if (jacobians[1])
+        for (int i = 0; i < 3; ++i) jacobians[1][i] = r.v[4 + i];
+      if (with_field_)
+        for (int b = 0; b < 4; ++b)
+          for (int a = 0; a < 4; ++a)
+            if (jacobians[2 + 4 * b + a])
+              jacobians[2 + 4 * b + a][0] = -dc_.sign * s_.wu.w[a] * s_.wv.w[b] * inv_sigma_;
+    }
+    return true;
+  }
+
+ private:
+  DisplayConstants dc_;
+  Sample s_;
+  double inv_sigma_;
+  bool with_field_;
+};
+
+// r = sum_j a_j x_j over scalar blocks: the smoothness prior and the gauge constraints.
+class LinearCombination : public ceres::CostFunction {
+ public:
+  explicit LinearCombination(std::vector<double> a) : a_(std::move(a)) {
+    set_num_residuals(1);
+    for (size_t i = 0; i < a_.size(); ++i) mutable_parameter_block_sizes()->push_back(1);
+  }
+  bool Evaluate(double const* const* p, double* residual, double** jacobians) const override {
+    residual[0] = 0;
+    for (size_t i = 0; i < a_.size(); ++i) residual[0] += a_[i] * p[i][0];
+    if (jacobians)
+      for (size_t i = 0; i < a_.size(); ++i)
+        if (jacobians[i]) jacobians[i][0] = a_[i];
+    return true;
+  }
+
+ private:
+  std::vector<double> a_;
+};
+
+// The registration's camera position as a prior on the refined one. Per position the data
+// fix only Cx + Cy line_tilt (both shift f_seen uniformly), so the prior splits the two. The
+// registered position moves with the camera's focal length (`focal`: its relative change,
+// held at 0 for a known camera) along d = d camera / (df / f).
+struct CameraPrior {
+  double cx, cy, cz, dx, dy, dz, inv_sxy, inv_sz;
+  template <typename T>
+  bool operator()(const T* cam, const T* focal, T* r) const {
+    r[0] = (cam[0] - T(cx) - focal[0] * dx) * inv_sxy;
+    r[1] = (cam[1] - T(cy) - focal[0] * dy) * inv_sxy;
+    r[2] = (cam[2] - T(cz) - focal[0] * dz) * inv_sz;
+    return true;
+  }
+};
+
+// The camera calibration's focal length as a prior on its relative change.
+struct FocalPrior {
+  double inv_sigma;
+  template <typename T>
+  bool operator()(const T* focal, T* r) const {
+    r[0] = focal[0] * inv_sigma;
+    return true;
+  }
+};
+
+// Integrals over [0, 1] of each 1D basis function B_i(t) and of B_i(t) (t - 0.5).
+void basis_moments(int n, std::vector<double>& m0, std::vector<double>& m1) {
+  m0.assign(size_t(n), 0);
+  m1.assign(size_t(n), 0);
+  const int steps = 4000;
+  for (int s = 0; s < steps; ++s) {
+    const double t = (s + 0.5) / steps;
+    const display::BSplineWeights w = display::bspline_weights(n, t);
+    for (int a = 0; a < 4; ++a) {
+      m0[size_t(w.i0 + a)] += w.w[a] / steps;
+      m1[size_t(w.i0 + a)] += w.w[a] * (t - 0.5) / steps;
+    }
+  }
+}
+
+}  // namespace
+
+display::DisplayCalibration apply_estimate(const display::DisplayCalibration& nominal, const LensEstimate& lens) {
+  display::DisplayCalibration d = nominal;
+  d.pitch_lpi = lens.pitch_lpi;
+  d.slope = lens.slope;
+  d.center_periods = lens.center_periods - std::floor(lens.center_periods);
+  return d;
+}
+
+namespace {
+
+// One lens problem (the unknowns, the samples) and the steps that solve it:
+//   update_content_points -> solve_stage (linear model) -> solve_stage (with the field)
+//   -> measure_noise -> solve_stage (final loss, measured noise) -> covariance -> statistics.
+class LensProblem {
+ public:
+  LensProblem(const display::Calibration& nominal, const LensEstimate& start,
+              const std::vector<PositionData>& positions, const SolverOptions& options)
+      : nominal_(nominal.display),
+        dc_(DisplayConstants::of(nominal.display, options.vertical_parallax)),
+        nominal_lens_(nominal.display, nominal.correction),
+        positions_(positions),
+        options_(options),
+        with_field_(options.grid_nx >= 4 && options.grid_ny >= 4),
+        nx_(with_field_ ? options.grid_nx : 0),
+        ny_(with_field_ ? options.grid_ny : 0),
+        fit_cone_(options.fit_view_cone && positions.size() >= 2),
+        fit_focal_(options.focal_sigma_rel > 0),
+        obs_sigma_(options.obs_sigma) {
+    lens_[0] = start.pitch_lpi;
+    lens_[1] = start.slope;
+    lens_[2] = start.center_periods;
+    lens_[3] = start.view_cone_deg;
+    for (const auto& p : positions) {
+      cams_.push_back(p.camera_m.x());
+      cams_.push_back(p.camera_m.y());
+      cams_.push_back(p.camera_m.z());
+    }
+    coeffs_.assign(size_t(nx_) * ny_, 0.0);
+    select_samples();
+    if (with_field_) {
+      basis_moments(nx_, m0x_, m1x_);
+      basis_moments(ny_, m0y_, m1y_);
+    }
+  }
+
+  // Each sample's content point (where A is evaluated) from its physical point and the
+  // current estimate: it moves with the estimate, so it is updated between the stages.
+  void update_content_points() {
+    const display::ShaderTerms<double> terms = display::shader_terms(dc_.geometry, lens_[0], lens_[1]);
+    for (size_t i = 0; i < samples_.size(); ++i)
+      for (auto& s : samples_[i]) {
+        const double f_seen = dc_.seen(&cams_[3 * i], s.u_phys, s.v, terms.tilt, lens_[3]);
+        s.u = s.u_phys + display::lens_content_shift(f_seen, nominal_.inv_view) / terms.pitch_periods;
+        s.a_nom = nominal_lens_.phase(s.u, s.v);
+        // The field is part of the phase at the content point, like the rest of A: at the
+        // physical point it would be off by dw/du times the shift (up to half a lens), a
+        // pattern that follows f_seen over the screen.
+        if (with_field_) s.wu = display::bspline_weights(nx_, s.u);
+      }
+  }
+
+  // Builds the Ceres problem at the current estimate and solves it under a Cauchy loss of
+  // `loss_scale` lens periods; the field is held fixed unless `field_free`.
+  void solve_stage(double loss_scale, bool field_free, SolverResult& result) {
+    problem_ = std::make_unique<ceres::Problem>(problem_options());
+    loss_ = std::make_unique<ceres::CauchyLoss>(loss_scale / obs_sigma_);
+    add_phase_residuals();
+    add_camera_priors();
+    if (with_field_) {
+      add_smoothness_prior();
+      add_gauge_constraints();
+      if (!field_free)
+        for (auto& c : coeffs_) problem_->SetParameterBlockConstant(&c);
+    }
+    if (!fit_cone_) problem_->SetManifold(lens_, new ceres::SubsetManifold(4, {3}));
+
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    if (!ceres::IsSparseLinearAlgebraLibraryTypeAvailable(ceres::SUITE_SPARSE))
+      so.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
+    so.max_num_iterations = options_.max_iterations;
+    so.num_threads = options_.threads;
+    so.function_tolerance = 1e-10;
+    so.parameter_tolerance = 1e-12;
+    so.minimizer_progress_to_stdout = options_.verbose;
+    ceres::Solver::Summary summary;
+    ceres::Solve(so, problem_.get(), &summary);
+    result.report += summary.BriefReport() + "\n";
+    // IsSolutionUsable() is also true at the iteration limit: only CONVERGENCE (a tolerance
+    // met) says the minimum was reached.
+    result.converged = summary.termination_type == ceres::CONVERGENCE;
+    result.termination = fmt::format("{} after {} iterations",
+                                     ceres::TerminationTypeToString(summary.termination_type),
+                                     summary.iterations.size() - 1);
+  }
+
+  // The phase noise the final stage weights the samples with: the inlier RMS, inflated by how
+  // much neighbouring samples share their errors (lens-scale moire, registration, what the
+  // field cannot follow). For independent errors the mean of the n residuals in a screen cell
+  // has variance sigma^2 / n; the measured n * mean^2 over sigma^2 is the inflation. Without
+  // it the covariance would count 100k correlated samples as independent and come out several
+  // times too small. The inflation is measured in cells of 1/16, 1/8 and 1/4 of the screen and
+  // the largest is kept: the slant is a gradient over the whole height, so errors shared over
+  // a quarter of the screen weigh on it most, and on the bench's photos the inflation in 1/4
+  // cells is 1.4-3.9 times that in 1/16 cells (docs/calibration.md, "The reported 1-sigma
+  // uncertainties"). An error every position shares at the screen's scale leaves no residual
+  // and no measure of the residuals can see it.
+  void measure_noise(SolverResult& result) {
+    double sum2 = 0;
+    long n = 0;
+    for (size_t i = 0; i < samples_.size(); ++i)
+      for (const auto& s : samples_[i]) {
+        const double r = residual_of(i, s);
+        if (std::abs(r) >= kOutlierBoundPeriods) continue;
+        sum2 += r * r;
+        ++n;
+      }
+    if (n < 10) {
+      obs_sigma_ = options_.obs_sigma;
+      result.obs_sigma_periods = obs_sigma_;
+      return;
+    }
+    const double sigma2 = sum2 / double(n);
+    double inflation = 1.0;
+    for (const int cells : {16, 8, 4}) {
+      const double at_scale = inflation_in_cells(cells, sigma2);
+      if (at_scale > inflation) {
+        inflation = at_scale;
+        result.noise_inflation_cells = cells;
+      }
+    }
+    result.noise_inflation = inflation;
+    obs_sigma_ = std::max(1e-4, std::sqrt(sigma2 * inflation));
+    result.obs_sigma_periods = obs_sigma_;
+  }
+
+  // The mean over cells (of 1/cells of the screen per side, per position, 10 inliers or more)
+  // of n * mean^2 / sigma2: 1 for independent errors, larger when a cell's samples share them.
+  double inflation_in_cells(int cells, double sigma2) const {
+    double inflation_sum = 0;
+    long cells_used = 0;
+    std::vector<std::pair<double, long>> sums;
+    for (size_t i = 0; i < samples_.size(); ++i) {
+      sums.assign(size_t(cells) * cells, {0.0, 0});
+      for (const auto& s : samples_[i]) {
+        const double r = residual_of(i, s);
+        if (std::abs(r) >= kOutlierBoundPeriods) continue;
+        const int cu = std::clamp(int(s.u_phys * cells), 0, cells - 1);
+        const int cv = std::clamp(int(s.v * cells), 0, cells - 1);
+        sums[size_t(cv) * cells + cu].first += r;
+        sums[size_t(cv) * cells + cu].second += 1;
+      }
+      for (const auto& [sum, count] : sums)
+        if (count >= 10) {
+          inflation_sum += sum * sum / double(count);  // = count * mean^2
+          ++cells_used;
+        }
+    }
+    return cells_used ? inflation_sum / double(cells_used) / sigma2 : 1.0;
+  }
+
+  // Uncertainties: the Gauss-Newton covariance at the solution of the last stage. The samples
+  // are weighted by their measured effective noise (measure_noise) and the priors by theirs,
+  // so it needs no rescaling.
+  void covariance(SolverResult& result) {
+    ceres::Covariance::Options co;
+    co.algorithm_type = ceres::DENSE_SVD;
+    co.null_space_rank = -1;
+    co.min_reciprocal_condition_number = 1e-14;
+    co.num_threads = options_.threads;
+    ceres::Covariance cov(co);
+    std::vector<const double*> blocks{lens_};
+    for (auto& c : coeffs_) blocks.push_back(&c);
+    std::vector<std::pair<const double*, const double*>> pairs;
+    for (size_t a = 0; a < blocks.size(); ++a)
+      for (size_t b = a; b < blocks.size(); ++b) pairs.emplace_back(blocks[a], blocks[b]);
+    if (fit_focal_) pairs.emplace_back(focal_, focal_);
+    if (!cov.Compute(pairs, problem_.get())) return;
+    const size_t dim = 4 + coeffs_.size();
+    Eigen::MatrixXd c(dim, dim);
+    if (!cov.GetCovarianceMatrix(blocks, c.data())) return;
+    const char* names[4] = {"pitch_lpi", "slope", "center_periods", "view_cone_deg"};
+    for (int i = 0; i < 4; ++i) result.sigma[names[i]] = std::sqrt(std::max(0.0, c(i, i)));
+    if (!fit_cone_) result.sigma["view_cone_deg"] = 0;
+    double focal_variance = 0;
+    if (fit_focal_ && cov.GetCovarianceBlock(focal_, focal_, &focal_variance))
+      result.sigma["focal_rel"] = std::sqrt(std::max(0.0, focal_variance));
+    if (with_field_) {
+      // RMS over the screen of the standard deviation of w.
+      double sum = 0;
+      const int n = 16;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const display::BSplineWeights wu = display::bspline_weights(nx_, (i + 0.5) / n);
+          const display::BSplineWeights wv = display::bspline_weights(ny_, (j + 0.5) / n);
+          Eigen::VectorXd g = Eigen::VectorXd::Zero(long(dim));
+          for (int b = 0; b < 4; ++b)
+            for (int a = 0; a < 4; ++a) g[4 + (wv.i0 + b) * nx_ + wu.i0 + a] = wu.w[a] * wv.w[b];
+          sum += g.dot(c * g);
+        }
+      result.sigma["correction_rms_periods"] = std::sqrt(std::max(0.0, sum / (n * n)));
+    }
+  }
+
+  // The estimate, the refined cameras and the residual statistics (lens periods).
+  void statistics(SolverResult& result) const {
+    result.lens = {lens_[0], lens_[1], lens_[2] - std::floor(lens_[2]), lens_[3]};
+    if (with_field_) result.correction = display::CorrectionField(nx_, ny_, coeffs_);
+    for (size_t i = 0; i < positions_.size(); ++i)
+      result.cameras_m.push_back({cams_[3 * i], cams_[3 * i + 1], cams_[3 * i + 2]});
+    result.focal_change_rel = focal_[0];
+    // Over all samples with a robust scale (residual_statistics.hpp): pooled, per position on
+    // its own scale, and against the other positions pooled (leave one out: against a pool
+    // that holds it, a position's ratio could not exceed sqrt(N / N_i)).
+    std::vector<std::vector<double>> mine(samples_.size());
+    std::vector<double> all;
+    for (size_t i = 0; i < samples_.size(); ++i) {
+      auto& kept = result.position_samples.emplace_back();
+      kept.reserve(samples_[i].size());
+      for (const auto& s : samples_[i]) {
+        const double r = residual_of(i, s);
+        mine[i].push_back(r);
+        kept.push_back({float(s.u_phys), float(s.v), float(s.psi), float(r)});
+      }
+      all.insert(all.end(), mine[i].begin(), mine[i].end());
+      result.position_rms.push_back(robust_residuals(mine[i]).stats.rms_periods);
+    }
+    for (size_t i = 0; i < mine.size() && mine.size() >= 2; ++i) {
+      std::vector<double> others;
+      for (size_t j = 0; j < mine.size(); ++j)
+        if (j != i) others.insert(others.end(), mine[j].begin(), mine[j].end());
+      const double rest = robust_residuals(std::move(others)).stats.rms_periods;
+      result.position_rms_ratio.push_back(rest > 0 ? result.position_rms[i] / rest : 1.0);
+    }
+    const RobustResiduals pooled = robust_residuals(std::move(all));
+    result.residuals = pooled.stats;
+    result.residual_robust_sigma_periods = pooled.robust_sigma_periods;
+  }
+
+ private:
+  static ceres::Problem::Options problem_options() {
+    ceres::Problem::Options po;
+    po.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
+    return po;
+  }
+
+  // Samples: subsampled evenly to the cap; their content points (and the field's basis
+  // weights there) follow from the start.
+  void select_samples() {
+    samples_.resize(positions_.size());
+    for (size_t i = 0; i < positions_.size(); ++i) {
+      const auto& in = positions_[i].samples;
+      const size_t cap = size_t(options_.max_samples_per_position);
+      const size_t stride = std::max<size_t>(1, (in.size() + cap - 1) / cap);
+      for (size_t j = 0; j < in.size(); j += stride) {
+        Sample s;
+        s.u_phys = in[j].u;
+        s.v = in[j].v;
+        s.psi = in[j].psi;
+        if (with_field_) s.wv = display::bspline_weights(ny_, s.v);
+        samples_[i].push_back(s);
+      }
+    }
+    update_content_points();
+  }
+
+  double* coeff(int ix, int iy) { return &coeffs_[size_t(iy) * nx_ + ix]; }
+
+  // The wrapped residual (lens periods) of sample s of position i at the current estimate.
+  double residual_of(size_t i, const Sample& s) const {
+    double w = 0;
+    if (with_field_)
+      for (int b = 0; b < 4; ++b)
+        for (int a = 0; a < 4; ++a)
+          w += coeffs_[size_t(s.wv.i0 + b) * nx_ + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
+    return wrap_half(s.psi - psi_linear(dc_, lens_, &cams_[3 * i], s.u, s.v, s.u_phys, s.a_nom) -
+                     dc_.sign * w);
+  }
+
+  void add_phase_residuals() {
+    const double inv_sigma = 1.0 / obs_sigma_;
+    for (size_t i = 0; i < samples_.size(); ++i)
+      for (const auto& s : samples_[i]) {
+        std::vector<double*> blocks{lens_, &cams_[3 * i]};
+        if (with_field_)
+          for (int b = 0; b < 4; ++b)
+            for (int a = 0; a < 4; ++a) blocks.push_back(coeff(s.wu.i0 + a, s.wv.i0 + b));
+        problem_->AddResidualBlock(new PhaseResidual(dc_, s, inv_sigma, with_field_), loss_.get(),
+                                   blocks);
+      }
+  }
+
+  void add_camera_priors() {
+    for (size_t i = 0; i < positions_.size(); ++i) {
+      const PositionData& p = positions_[i];
+      problem_->AddResidualBlock(
+          new ceres::AutoDiffCostFunction<CameraPrior, 3, 3, 1>(new CameraPrior{
+              p.camera_m.x(), p.camera_m.y(), p.camera_m.z(), p.camera_per_focal_m.x(),
+              p.camera_per_focal_m.y(), p.camera_per_focal_m.z(), 1.0 / p.lateral_sigma_m,
+              1.0 / p.depth_sigma_m}),
+          nullptr, &cams_[3 * i], focal_);
+    }
+    if (fit_focal_)
+      problem_->AddResidualBlock(new ceres::AutoDiffCostFunction<FocalPrior, 1, 1>(
+                                     new FocalPrior{1.0 / options_.focal_sigma_rel}),
+                                 nullptr, focal_);
+    else
+      problem_->SetParameterBlockConstant(focal_);
+  }
+
+  // Second differences of the control points (a prior on the warp's curvature), whitened
+  // by the stage's phase noise like the data, so every stage weighs them alike.
+  void add_smoothness_prior() {
+    const double l = options_.smoothness / obs_sigma_;
+    for (int iy = 0; iy < ny_; ++iy)
+      for (int ix = 1; ix + 1 < nx_; ++ix)
+        problem_->AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
+                                   {coeff(ix - 1, iy), coeff(ix, iy), coeff(ix + 1, iy)});
+    for (int iy = 1; iy + 1 < ny_; ++iy)
+      for (int ix = 0; ix < nx_; ++ix)
+        problem_->AddResidualBlock(new LinearCombination({l, -2 * l, l}), nullptr,
+                                   {coeff(ix, iy - 1), coeff(ix, iy), coeff(ix, iy + 1)});
+    for (int iy = 0; iy + 1 < ny_; ++iy)
+      for (int ix = 0; ix + 1 < nx_; ++ix)
+        problem_->AddResidualBlock(
+            new LinearCombination({l, -l, -l, l}), nullptr,
+            {coeff(ix, iy), coeff(ix + 1, iy), coeff(ix, iy + 1), coeff(ix + 1, iy + 1)});
+  }
+
+  // Gauge: the integrals of w times 1, (u - 1/2), (v - 1/2) over the screen are zero, so the
+  // field cannot absorb center, pitch or slope.
+  void add_gauge_constraints() {
+    std::vector<double*> all;
+    for (auto& c : coeffs_) all.push_back(&c);
+    const double g = 1e4;
+    for (int moment = 0; moment < 3; ++moment) {
+      std::vector<double> a;
+      for (int iy = 0; iy < ny_; ++iy)
+        for (int ix = 0; ix < nx_; ++ix) {
+          const double mx = moment == 1 ? m1x_[size_t(ix)] * 12 : m0x_[size_t(ix)];
+          const double my = moment == 2 ? m1y_[size_t(iy)] * 12 : m0y_[size_t(iy)];
+          a.push_back(g * mx * my);
+        }
+      problem_->AddResidualBlock(new LinearCombination(a), nullptr, all);
+    }
+  }
+
+  const display::DisplayCalibration& nominal_;
+  const DisplayConstants dc_;
+  const display::LensModel nominal_lens_;
+  const std::vector<PositionData>& positions_;
+  const SolverOptions& options_;
+  const bool with_field_;
+  const int nx_, ny_;
+  const bool fit_cone_;
+  const bool fit_focal_;  // a self-calibrated camera's focal length (SolverOptions)
+  double obs_sigma_;
+  double focal_[1] = {0};       // relative change of the camera's focal length
+  double lens_[4];              // pitch_lpi, slope, center_periods, view_cone_deg
+  std::vector<double> cams_;    // Cx, Cy, Cz per position
+  std::vector<double> coeffs_;  // nx * ny correction control points
+  std::vector<std::vector<Sample>> samples_;
+  std::vector<double> m0x_, m1x_, m0y_, m1y_;
+  std::unique_ptr<ceres::CauchyLoss> loss_;  // outlives the problem that uses it
+  std::unique_ptr<ceres::Problem> problem_;
+};
+
+}  // namespace
+
+std::vector<double> camera_shifts_in_sigmas(const std::vector<PositionData>& positions,
+                                            const std::vector<Eigen::Vector3d>& refined_m) {
+  std::vector<double> out;
+  for (size_t i = 0; i < positions.size() && i < refined_m.size(); ++i) {
+    const PositionData& p = positions[i];
+    const Eigen::Vector3d d = refined_m[i] - p.camera_m;
+    out.push_back(Eigen::Vector3d(d.x() / p.lateral_sigma_m, d.y() / p.lateral_sigma_m,
+                                  d.z() / p.depth_sigma_m)
+                      .norm());
+  }
+  return out;
+}
+
+namespace {
+
+// The three stages on the options' field grid; with `uncertainties`, sigmas from the
+// covariance alone (the refined-grid solve needs only its estimate).
+SolverResult solve_on_grid(const display::Calibration& nominal, const LensEstimate& start,
+                           const std::vector<PositionData>& positions,
+                           const SolverOptions& options, bool uncertainties) {
+  LensProblem problem(nominal, start, positions, options);
+  SolverResult result;
+  // Stage 1: the linear model only, wide loss (the unmodelled warp is up to ~0.3 period).
+  problem.solve_stage(0.2, false, result);
+  problem.update_content_points();
+  // Stage 2: with the correction field.
+  problem.solve_stage(0.1, true, result);
+  problem.update_content_points();
+  // Stage 3: final robust scale, the measured noise, uncertainties.
+  problem.measure_noise(result);
+  problem.solve_stage(options.loss_scale, true, result);
+  if (uncertainties) problem.covariance(result);
+  problem.statistics(result);
+  result.view_cone_fitted = options.fit_view_cone && positions.size() >= 2;
+  for (const auto& p : positions) result.position_names.push_back(p.name);
+  // Against the registered positions moved with the solve's focal length (the prior's mean).
+  std::vector<PositionData> moved;
+  for (const auto& p : positions) {
+    PositionData& m = moved.emplace_back();  // without the samples
+    m.camera_m = p.camera_m + result.focal_change_rel * p.camera_per_focal_m;
+    m.lateral_sigma_m = p.lateral_sigma_m;
+    m.depth_sigma_m = p.depth_sigma_m;
+  }
+  result.camera_shift_sigmas = camera_shifts_in_sigmas(moved, result.cameras_m);
+  return result;
+}
+
+// What the field's resolution costs (SolverOptions::field_refinement): the same problem on a
+// grid with half the knot spacing, so it holds every field of the solved grid (uniform cubic
+// B-splines nest when the segments double), under the same curvature prior per unit of screen:
+// the prior's energy sum_nodes (smoothness x second difference)^2 approximates smoothness^2 h^2
+// times the integral of the squared second derivatives (h the knot spacing), so halving h
+// doubles the weight. What the refined solve moves is what the solved grid could not follow
+// of the warp; it leaves no residual, so the covariance cannot see it. Each value's change is
+// added to its sigma in quadrature.
+void refine_field(const display::Calibration& nominal, const std::vector<PositionData>& positions,
+                  const SolverOptions& options, SolverResult& result) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolverOptions fine = options;
+  fine.grid_nx = 2 * (options.grid_nx - 3) + 3;
+  fine.grid_ny = 2 * (options.grid_ny - 3) + 3;
+  fine.smoothness = 2 * options.smoothness;
+  const SolverResult r = solve_on_grid(nominal, result.lens, positions, fine, false);
+  FieldRefinement& out = result.field_refinement;
+  out.grid_nx = fine.grid_nx;
+  out.grid_ny = fine.grid_ny;
+  out.converged = r.converged;
+  out.change["pitch_lpi"] = r.lens.pitch_lpi - result.lens.pitch_lpi;
+  out.change["slope"] = r.lens.slope - result.lens.slope;
+  out.change["center_periods"] = wrap_half(r.lens.center_periods - result.lens.center_periods);
+  if (result.view_cone_fitted)
+    out.change["view_cone_deg"] = r.lens.view_cone_deg - result.lens.view_cone_deg;
+  if (options.focal_sigma_rel > 0)
+    out.change["focal_rel"] = r.focal_change_rel - result.focal_change_rel;
+  // The field's: the screen RMS of the two fields' difference (both in the same gauge).
+  double sum = 0;
+  const int n = 32;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double u = (i + 0.5) / n, v = (j + 0.5) / n;
+      const double d = r.correction(u, v) - result.correction(u, v);
+      sum += d * d;
+    }
+  out.change["correction_rms_periods"] = std::sqrt(sum / (n * n));
+  for (const auto& [key, change] : out.change) {
+    const auto it = result.sigma.find(key);
+    if (it != result.sigma.end()) it->second = std::hypot(it->second, change);
+  }
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+SolverResult solve_lens(const display::Calibration& nominal, const LensEstimate& start,
+                        const std::vector<PositionData>& positions, const SolverOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SolverResult result = solve_on_grid(nominal, start, positions, options, true);
+  if (options.field_refinement && !result.correction.empty() && !result.sigma.empty())
+    refine_field(nominal, positions, options, result);
+  result.solve_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace lfd::calib

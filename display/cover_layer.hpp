@@ -1,0 +1,21 @@
+#pragma once
+// The cover layer a Looking Glass unit family has in front of its lens array, by default
+// (issue #12). visual.json holds no such field, so a plain visual.json reads as a bare panel;
+// the calibration pipeline starts from the family's value, and calibration.json's "cover"
+// records what was used (docs/display-model.md, "The cover layer").
+#include <string>
+
+#include "display/display_calibration.hpp"
+
+namespace lfd::display {
+
+struct CoverDefault {
+  CoverLayer cover;     // thickness 0: a bare panel (unknown family)
+  std::string family;   // "Portrait", "Gen1 8.9\"", ... or "unknown"
+};
+
+// By the serial's family prefix (LKG-2K, LKG-4K, LKG-PORT, LKG-A, LKG-B, LKG-H, LKG-J, LKG-E),
+// else by the panel (resolution and DPI) of a known family, else a bare panel.
+CoverDefault cover_layer_for_family(const DisplayCalibration& display);
+
+}  // namespace lfd::display
