@@ -6,18 +6,13 @@
 #include <fmt/format.h>
 
 #include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl_quilt_target.hpp"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
 namespace {
 
 double mib(double bytes) { return bytes / 1048576.0; }
-
-// D_shift < 0 means D_forward (render::render_quilt_g2lf).
-render::ReferenceCamera reference_camera(const render::G2lfOptions& o, const render::QuiltGeometry& g) {
-  const float d_shift = o.d_shift >= 0.0f ? o.d_shift : render::make_reference_camera(g, 0.0f, 1).d_forward;
-  return render::make_reference_camera(g, d_shift, o.plane_scale);
-}
 
 int batch_layers_for(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
   const int s = options.g2lf.plane_scale;
@@ -75,32 +70,13 @@ void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& 
 
 GlG2lfRenderer::GlG2lfRenderer(const GlScene& scene, const GlInfo& info) : scene_(scene), info_(info) {}
 
-void GlG2lfRenderer::stamp(Stamp at) {
-  if (!timed_) return;
-  while (stamps_.size() < kStamps) {
-    GLuint id = 0;
-    glGenQueries(1, &id);
-    stamps_.emplace_back(id);
-  }
-  glQueryCounter(stamps_[at].id(), GL_TIMESTAMP);
-}
-
-double GlG2lfRenderer::seconds_between(Stamp a, Stamp b) const {
-  GLuint64 ns_a = 0, ns_b = 0;
-  glGetQueryObjectui64v(stamps_[a].id(), GL_QUERY_RESULT, &ns_a);
-  glGetQueryObjectui64v(stamps_[b].id(), GL_QUERY_RESULT, &ns_b);
-  return double(ns_b - ns_a) * 1e-9;
-}
-
 void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
   const render::G2lfOptions& o = options.g2lf;
   const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
   const int batch_layers = batch_layers_for(options, geometry);
-  const bool same = planes_.texels.id() && planes_.format == options.format() &&
-                    planes_.max_planes == o.chunks && planes_.width == wp && planes_.height == hp &&
-                    batch_layers_ == batch_layers;
-  const size_t held = same ? 0 : planes_.texels.bytes() + planes_.table.buffer.bytes() + buffers_.bytes() +
-                                     layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
+  const bool same = sweeping_.has_planes(options.format(), o.chunks, wp, hp) && batch_layers_ == batch_layers;
+  const size_t held = same ? 0 : sweeping_.bytes() + buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() +
+                                     plane_raster_.bytes();
   // What the driver says is free, plus what this renderer would give back before allocating.
   std::optional<long long> free_bytes;
   if (!same && options.memory_budget_bytes == 0) {
@@ -109,26 +85,12 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::Q
   }
   check_g2lf_fits(options, geometry, scene_.size(), info_, free_bytes);
   if (same) return;
-  planes_ = GlPlanes();  // free the old array before the new one: a lower peak
-  planes_ = GlPlanes(options.format(), o.chunks, wp, hp);
+  sweeping_.allocate_planes(options.format(), o.chunks, wp, hp);
   batch_layers_ = batch_layers;  // GlPlaneRaster sizes its accumulation array to it
 }
 
-void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
-                                  const GlG2lfOptions& options, const render::RasterSettings& settings,
-                                  const Texture& quilt) {
-  const render::G2lfOptions& o = options.g2lf;
-  o.check(geometry);
-  layout.check("quilt");
-  if (quilt.width() != layout.width || quilt.height() != layout.height || quilt.layers() != 0)
-    throw_input_error("G2LF on the GPU: the quilt texture is {}x{}, the layout {}x{}", quilt.width(),
-                      quilt.height(), layout.width, layout.height);
-  if (geometry.views > layout.cols * layout.rows)
-    throw_input_error("G2LF on the GPU: {} views do not fit a quilt of {} tiles", geometry.views,
-                      layout.cols * layout.rows);
-  ensure_planes(options, geometry);
-  const render::ReferenceCamera ref = reference_camera(o, geometry);
-
+void GlG2lfRenderer::preprocess(const render::ReferenceCamera& ref, const render::QuiltGeometry& geometry,
+                                const render::G2lfOptions& o, const render::RasterSettings& settings) {
   // The planes' rasterizer settings, as render_quilt_g2lf and render_sweeping_planes set them.
   render::RasterSettings plane_settings = settings;
   if (o.adaptive_filter)
@@ -136,39 +98,53 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
         render::adaptive_filter_variance(geometry, ref, o.plane_scale, settings.dilation_px2);
   plane_settings.background = glm::vec3(0.0f);
   plane_settings.sh_origin = geometry.base.position_world;
-
-  timed_ = options.gpu_timers;
-  stamp(kStart);
   preprocess_.run(scene_, ref.camera, plane_settings, buffers_);
-  stamp(kPreprocessed);
+}
+
+void GlG2lfRenderer::bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes) {
   // Overwrites the preprocess's keys and values (the planes need the binning's order) and sets
   // the draw's instance count to the binned count; culled records are zero and draw nothing.
-  binning_.run(scene_, ref, o.chunks, o.binning, sort_, buffers_.keys, buffers_.values, layers_,
-               planes_.table, &buffers_.draw);
-  stamp(kBinned);
-  plane_raster_.run(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(),
-                    batch_layers_, planes_);
-  stamp(kRasterised);
-  const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
-  glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
-  swizzle_.run(planes_, geometry, ref, layout, o.filter, settings.background, quilt);
-  stamp(kSwizzled);
-  check_gl("a G2LF frame");
+  binning_.run(scene_, ref, o.chunks, o.binning, sort_, buffers_.keys, buffers_.values, layers_, planes.table,
+               &buffers_.draw);
+}
 
+void GlG2lfRenderer::draw_planes(GlPlanes& planes) {
+  plane_raster_.run(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(), batch_layers_,
+                    planes);
+}
+
+void GlG2lfRenderer::record_stats(bool timed) {
+  const GlPlanes& planes = sweeping_.planes();
   stats_ = {};
-  stats_.plane_bytes = planes_.texels.bytes();
-  stats_.gpu_bytes = scene_.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() +
-                     buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
+  stats_.plane_bytes = planes.texels.bytes();
+  stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
+                     sort_.scratch_bytes() + plane_raster_.bytes();
   stats_.gpu_bytes_peak = gpu_bytes_peak();
-  if (timed_) {
-    const PlaneTableHeader header = planes_.table.read_header();
-    stats_.gaussians_in_frustum = header.splats_binned;
-    stats_.planes = int(header.plane_count);
-    stats_.plane_bytes_used = plane_texture_bytes(planes_.format, stats_.planes, planes_.width, planes_.height);
-    stats_.seconds_planes = seconds_between(kStart, kPreprocessed) + seconds_between(kBinned, kRasterised);
-    stats_.seconds_binning = seconds_between(kPreprocessed, kBinned);
-    stats_.seconds_swizzle = seconds_between(kRasterised, kSwizzled);
-  }
+  if (!timed) return;
+  const PlaneTableHeader header = planes.table.read_header();
+  stats_.gaussians_in_frustum = header.splats_binned;
+  stats_.planes = int(header.plane_count);
+  stats_.plane_bytes_used = plane_texture_bytes(planes.format, stats_.planes, planes.width, planes.height);
+  const GlSweepingPlaneSeconds seconds = sweeping_.seconds();
+  stats_.seconds_planes = seconds.planes;
+  stats_.seconds_binning = seconds.binning;
+  stats_.seconds_swizzle = seconds.swizzle;
+}
+
+void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+                                  const GlG2lfOptions& options, const render::RasterSettings& settings,
+                                  const Texture& quilt) {
+  const render::G2lfOptions& o = options.g2lf;
+  o.check(geometry);
+  check_quilt_target("G2LF on the GPU", geometry, layout, quilt);
+  ensure_planes(options, geometry);
+  GlSweepingPlaneStages stages;
+  stages.prepare = [&](const render::ReferenceCamera& ref) { preprocess(ref, geometry, o, settings); };
+  stages.bin = [&](const render::ReferenceCamera& ref, GlPlanes& planes) { bin(ref, o, planes); };
+  stages.draw_planes = [&](const render::ReferenceCamera&, GlPlanes& planes) { draw_planes(planes); };
+  sweeping_.render_quilt(stages, geometry, layout, o, settings.background, quilt, options.gpu_timers,
+                         "a G2LF frame");
+  record_stats(options.gpu_timers);
 }
 
 ImageF render_quilt_g2lf_gl(const render::GaussianScene& scene, const render::QuiltGeometry& geometry,

@@ -1,6 +1,7 @@
 #pragma once
 // G2LF on the GPU (paper Alg. 1; issue #9 "G2LF on the GPU"): the twin of render/g2lf.hpp,
-// the orchestrator of its stages, each behind its own header, pass for pass beside the CPU's:
+// the sweeping-plane skeleton (gpu/gl_sweeping_planes.hpp, shared with V2LF) with Gaussians as
+// the primitives. Its stages, each behind its own header, pass for pass beside the CPU's:
 //   preprocess  GlSplatPreprocess from the reference camera, dilation = the adaptive filter
 //               variance of Eq. gs_prefilter_fix, SH seen from the base camera centre
 //               (render::render_sweeping_planes' settings)
@@ -28,6 +29,7 @@
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_splat_preprocess.hpp"
 #include "gpu/gl_splat_raster.hpp"
+#include "gpu/gl_sweeping_planes.hpp"
 #include "gpu/gl_swizzle.hpp"
 #include "render/g2lf.hpp"
 #include "util/image.hpp"
@@ -89,14 +91,16 @@ class GlG2lfRenderer {
                     const Texture& quilt);
 
   const GlG2lfStats& stats() const { return stats_; }
-  const GlPlanes& planes() const { return planes_; }  // the last frame's
+  const GlPlanes& planes() const { return sweeping_.planes(); }  // the last frame's
 
  private:
-  // GL_TIMESTAMP queries between the stages (llvmpipe's GL_TIME_ELAPSED reads 0 around compute).
-  enum Stamp { kStart, kPreprocessed, kBinned, kRasterised, kSwizzled, kStamps };
-  void stamp(Stamp at);
-  double seconds_between(Stamp a, Stamp b) const;  // waits for the GPU
   void ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
+  // The stages of a frame (gpu/gl_sweeping_planes.hpp).
+  void preprocess(const render::ReferenceCamera& ref, const render::QuiltGeometry& geometry,
+                  const render::G2lfOptions& o, const render::RasterSettings& settings);
+  void bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes);
+  void draw_planes(GlPlanes& planes);
+  void record_stats(bool timed);
 
   const GlScene& scene_;
   GlInfo info_;
@@ -104,13 +108,10 @@ class GlG2lfRenderer {
   GlRadixSort sort_;
   GlDepthBinning binning_;
   GlPlaneRaster plane_raster_;
-  GlSwizzle swizzle_;
+  GlSweepingPlanes sweeping_;
   SplatBuffers buffers_;
   Buffer layers_;
-  GlPlanes planes_;
   int batch_layers_ = -1;  // float accumulation layers (0: RGBA32F planes, drawn directly)
-  std::vector<GlName<delete_query>> stamps_;
-  bool timed_ = false;
   GlG2lfStats stats_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "gpu/gl_quilt_target.hpp"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
@@ -95,12 +96,7 @@ render::RasterImage GlPerViewRenderer::render_view_image(const render::Camera& c
 
 void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                      const render::RasterSettings& settings, Texture& quilt) {
-  layout.check("quilt");
-  if (quilt.width() != layout.width || quilt.height() != layout.height || quilt.layers() != 0)
-    throw_input_error("per-view renderer: the quilt texture is {}x{}, the layout {}x{}", quilt.width(),
-                      quilt.height(), layout.width, layout.height);
-  if (geometry.views > layout.views)
-    throw_input_error("per-view renderer: {} views do not fit a quilt of {}", geometry.views, layout.views);
+  check_quilt_target("per-view renderer", geometry, layout, quilt);
   const bool direct = is_float_format(quilt.internal_format());
   const int W = geometry.base.width, H = geometry.base.height;
   if (!direct) ensure_view_target(W, H);

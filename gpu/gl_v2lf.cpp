@@ -4,9 +4,11 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_plane_raster.hpp"
+#include "gpu/gl_quilt_target.hpp"
 #include "gpu/shaders/voxel_plane_lowpass.comp.glsl.hpp"
 #include "util/error.hpp"
 #include "voxel/plane_lowpass.hpp"
@@ -15,6 +17,62 @@ namespace lfd::gpu {
 namespace {
 
 constexpr GLuint kPlaneTableBinding = 9;  // g2lf_plane_convert.comp.glsl's PlaneTable
+
+// Where each chunk begins in the binned voxels listed chunk by chunk, and one past the last.
+std::vector<uint32_t> chunk_starts(const render::DepthChunks& chunks) {
+  std::vector<uint32_t> start(chunks.members.size() + 1, 0);
+  for (size_t k = 0; k < chunks.members.size(); ++k) start[k + 1] = start[k] + uint32_t(chunks.members[k].size());
+  return start;
+}
+
+// Each chunk's voxels in every octant order of `octants`, taken from the scene's front-to-back
+// orders: for octant slot s and chunk k, entries [s n_b + start_k, s n_b + start_k + count_k)
+// of `ids` (n_b: the binned voxels; the slots of the octants in view, in octant order).
+struct OctantGroups {
+  std::vector<uint32_t> ids;
+  std::vector<VoxelOrderRanges> ranges;  // per chunk
+};
+
+OctantGroups group_by_octant(const GlVoxelScene& scene, const render::DepthChunks& chunks, uint32_t octants) {
+  const int planes = int(chunks.members.size());
+  const std::vector<uint32_t> start = chunk_starts(chunks);
+  std::vector<int> chunk_of(scene.size(), -1);
+  for (int k = 0; k < planes; ++k)
+    for (uint32_t v : chunks.members[size_t(k)]) chunk_of[v] = k;
+  const uint32_t binned_count = start[size_t(planes)];
+  OctantGroups out;
+  out.ranges.resize(size_t(planes));
+  for (int octant = 0; octant < 8; ++octant) {
+    if (!(octants & (1u << octant))) continue;
+    const uint32_t base = uint32_t(out.ids.size());
+    out.ids.resize(out.ids.size() + binned_count);
+    std::vector<uint32_t> next(start.begin(), start.end() - 1);
+    for (uint32_t v : scene.order(octant))
+      if (chunk_of[v] >= 0) out.ids[base + next[size_t(chunk_of[v])]++] = v;
+    for (int k = 0; k < planes; ++k)
+      out.ranges[size_t(k)][size_t(octant)] = {base + start[size_t(k)], start[size_t(k) + 1] - start[size_t(k)]};
+  }
+  return out;
+}
+
+// The plane table (gpu/gl_planes.hpp) of the CPU's chunks for an array of `max_planes` layers:
+// the plane count, the binned voxels, and per plane d_k and where its voxels begin.
+std::vector<uint8_t> plane_table(const render::DepthChunks& chunks, int max_planes) {
+  const int planes = int(chunks.members.size());
+  const std::vector<uint32_t> start = chunk_starts(chunks);
+  std::vector<uint8_t> table(plane_table_bytes(max_planes), 0);
+  PlaneTableHeader header;
+  header.plane_count = uint32_t(planes);
+  header.splats_binned = start[size_t(planes)];
+  std::memcpy(table.data(), &header, sizeof(header));
+  for (int k = 0; k <= planes; ++k) {
+    PlaneTableEntry entry;
+    entry.depth = k < planes ? chunks.plane_depth[size_t(k)] : 0.0f;
+    entry.begin = start[size_t(k)];
+    std::memcpy(table.data() + sizeof(header) + size_t(k) * sizeof(entry), &entry, sizeof(entry));
+  }
+  return table;
+}
 
 }  // namespace
 
@@ -51,123 +109,102 @@ void GlV2lfRenderer::lowpass(float variance_px2) {
   }
 }
 
+void GlV2lfRenderer::ensure_planes(PlaneFormat format, int max_planes, int width, int height) {
+  if (sweeping_.has_planes(format, max_planes, width, height)) return;
+  sweeping_.allocate_planes(format, max_planes, width, height);
+  accumulation_ = Texture(GL_RGBA32F, width, height, 1);
+  accumulation_framebuffer_.attach(0, accumulation_);
+  accumulation_framebuffer_.finish(1);
+}
+
+std::vector<VoxelOrderRanges> GlV2lfRenderer::upload_chunk_orders(const GlVoxelScene& scene,
+                                                                  const render::DepthChunks& chunks,
+                                                                  const render::Camera& camera) {
+  OctantGroups groups = group_by_octant(scene, chunks, octants_in_view(camera));
+  std::vector<uint32_t>& ids = groups.ids;
+  if (ids.empty()) ids.push_back(0);
+  if (chunk_orders_.bytes() < ids.size() * sizeof(uint32_t)) chunk_orders_ = Buffer(ids.size() * sizeof(uint32_t));
+  chunk_orders_.upload(ids.data(), ids.size() * sizeof(uint32_t));
+  return std::move(groups.ranges);
+}
+
+void GlV2lfRenderer::draw_planes(const GlVoxelScene& scene, const std::vector<VoxelOrderRanges>& ranges,
+                                 const render::ReferenceCamera& ref, const glm::vec3& sh_origin,
+                                 float lowpass_variance, GlPlanes& planes) {
+  SplatRasterTarget target;
+  target.framebuffer = accumulation_framebuffer_.id();
+  target.image_size = {planes.width, planes.height};
+  const Program& convert = planes.format == PlaneFormat::kRgba8    ? convert_u8_
+                           : planes.format == PlaneFormat::kRgba16f ? convert_f16_
+                                                                    : convert_f32_;
+  glProgramUniform1ui(convert.id(), convert.uniform("batch_layers"), 1u);
+  glProgramUniform2i(convert.id(), convert.uniform("plane_size"), planes.width, planes.height);
+  for (size_t k = 0; k < ranges.size(); ++k) {
+    targets_.clear(target);
+    raster_.draw(scene, ref.camera, sh_origin, chunk_orders_, ranges[k], target);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    lowpass(lowpass_variance);
+    convert_plane(int(k), convert, planes);
+  }
+}
+
+// Layer k of the planes from the accumulation layer (which the pass resets to empty).
+void GlV2lfRenderer::convert_plane(int k, const Program& convert, GlPlanes& planes) {
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(1, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
+  planes.table.buffer.bind_storage(kPlaneTableBinding);
+  glProgramUniform1ui(convert.id(), convert.uniform("batch"), GLuint(k));
+  convert.use();
+  glDispatchCompute(GLuint((planes.width + 15) / 16), GLuint((planes.height + 7) / 8), 1);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+}
+
 void GlV2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                   const GlV2lfOptions& options, const glm::vec3& background, const Texture& quilt) {
   options.v2lf.check(geometry);
   const render::G2lfOptions& o = options.v2lf.planes;
-  layout.check("quilt");
-  if (quilt.width() != layout.width || quilt.height() != layout.height || quilt.layers() != 0)
-    throw_input_error("V2LF on the GPU: the quilt texture is {}x{}, the layout {}x{}", quilt.width(), quilt.height(),
-                      layout.width, layout.height);
-  if (geometry.views > layout.cols * layout.rows)
-    throw_input_error("V2LF on the GPU: {} views do not fit a quilt of {} tiles", geometry.views,
-                      layout.cols * layout.rows);
+  check_quilt_target("V2LF on the GPU", geometry, layout, quilt);
   // The texture limits and the memory budget, as G2LF's planes (no per-Gaussian buffers here).
   GlG2lfOptions plane_options;
   plane_options.g2lf = o;
   plane_options.plane_format = options.plane_format;
   check_g2lf_fits(plane_options, geometry, 0, info_, std::nullopt);
+  ensure_planes(options.format(), o.chunks, geometry.base.width * o.plane_scale,
+                geometry.base.height * o.plane_scale);
 
-  // Binning: the CPU path's chunks and reference camera.
-  const float d_shift = o.d_shift >= 0.0f ? o.d_shift : render::make_reference_camera(geometry, 0.0f, 1).d_forward;
-  const render::ReferenceCamera ref = render::make_reference_camera(geometry, d_shift, o.plane_scale);
-  const voxel::VoxelChunks binned =
-      voxel::bin_voxels_by_depth(scene_.scene(), geometry, ref, o.chunks, o.binning, options.v2lf.split_levels);
-  const render::DepthChunks& chunks = binned.chunks;
-  const int planes = int(chunks.members.size());
-  // Split voxels' children are appended to the scene: upload that scene for this frame.
+  // The CPU path's chunks. Split voxels' children are appended to the scene: that scene is
+  // uploaded for this frame.
+  voxel::VoxelChunks binned;
   std::optional<GlVoxelScene> split_scene;
-  if (binned.scene.size() != scene_.size()) split_scene.emplace(binned.scene, info_);
-  const GlVoxelScene& scene = split_scene ? *split_scene : scene_;
-  const float lowpass_variance =
-      o.adaptive_filter ? voxel::plane_lowpass_variance(scene_.scene(), geometry, ref, o.plane_scale) : 0.0f;
+  std::vector<VoxelOrderRanges> ranges;
+  const auto frame_scene = [&]() -> const GlVoxelScene& { return split_scene ? *split_scene : scene_; };
+  GlSweepingPlaneStages stages;
+  stages.bin = [&](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    binned = voxel::bin_voxels_by_depth(scene_.scene(), geometry, ref, o.chunks, o.binning, options.v2lf.split_levels);
+    if (binned.scene.size() != scene_.size()) split_scene.emplace(binned.scene, info_);
+    ranges = upload_chunk_orders(frame_scene(), binned.chunks, ref.camera);
+    const std::vector<uint8_t> table = plane_table(binned.chunks, o.chunks);
+    planes.table.buffer.upload(table.data(), table.size());
+  };
+  stages.draw_planes = [&](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    const float lowpass_variance =
+        o.adaptive_filter ? voxel::plane_lowpass_variance(scene_.scene(), geometry, ref, o.plane_scale) : 0.0f;
+    draw_planes(frame_scene(), ranges, ref, geometry.base.position_world, lowpass_variance, planes);
+  };
+  sweeping_.render_quilt(stages, geometry, layout, o, background, quilt, false, "a V2LF frame");
 
-  // Each chunk's voxels in every octant order the reference image needs: for octant slot s
-  // and chunk k, entries [s n_b + start_k, s n_b + start_k + count_k) of one buffer.
-  const size_t n = scene.size();
-  std::vector<int> chunk_of(n, -1);
-  std::vector<uint32_t> start(size_t(planes) + 1, 0);
-  for (int k = 0; k < planes; ++k) {
-    for (uint32_t v : chunks.members[size_t(k)]) chunk_of[v] = k;
-    start[size_t(k) + 1] = start[size_t(k)] + uint32_t(chunks.members[size_t(k)].size());
-  }
-  const uint32_t binned_count = start[size_t(planes)];
-  const uint32_t octants = octants_in_view(ref.camera);
-  std::vector<uint32_t> grouped;
-  std::vector<VoxelOrderRanges> ranges(static_cast<size_t>(planes));
-  for (int octant = 0; octant < 8; ++octant) {
-    if (!(octants & (1u << octant))) continue;
-    const uint32_t base = uint32_t(grouped.size());
-    grouped.resize(grouped.size() + binned_count);
-    std::vector<uint32_t> next(start.begin(), start.end() - 1);
-    for (uint32_t v : scene.order(octant))
-      if (chunk_of[v] >= 0) grouped[base + next[size_t(chunk_of[v])]++] = v;
-    for (int k = 0; k < planes; ++k)
-      ranges[size_t(k)][size_t(octant)] = {base + start[size_t(k)], start[size_t(k) + 1] - start[size_t(k)]};
-  }
-  if (grouped.empty()) grouped.push_back(0);
-  if (chunk_orders_.bytes() < grouped.size() * sizeof(uint32_t)) chunk_orders_ = Buffer(grouped.size() * sizeof(uint32_t));
-  chunk_orders_.upload(grouped.data(), grouped.size() * sizeof(uint32_t));
+  record_stats(binned, frame_scene());
+}
 
-  // Planes: one layer per possible chunk, the table from the CPU's depths.
-  const PlaneFormat format = options.format();
-  const int wp = ref.camera.width, hp = ref.camera.height;
-  if (!planes_.texels.id() || planes_.format != format || planes_.max_planes != o.chunks || planes_.width != wp ||
-      planes_.height != hp) {
-    planes_ = GlPlanes();
-    planes_ = GlPlanes(format, o.chunks, wp, hp);
-    accumulation_ = Texture(GL_RGBA32F, wp, hp, 1);
-    accumulation_framebuffer_.attach(0, accumulation_);
-    accumulation_framebuffer_.finish(1);
-  }
-  std::vector<uint8_t> table(plane_table_bytes(o.chunks), 0);
-  PlaneTableHeader header;
-  header.plane_count = uint32_t(planes);
-  header.splats_binned = binned_count;
-  std::memcpy(table.data(), &header, sizeof(header));
-  for (int k = 0; k <= planes; ++k) {
-    PlaneTableEntry entry;
-    entry.depth = k < planes ? chunks.plane_depth[size_t(k)] : 0.0f;
-    entry.begin = start[size_t(k)];
-    std::memcpy(table.data() + sizeof(header) + size_t(k) * sizeof(entry), &entry, sizeof(entry));
-  }
-  planes_.table.buffer.upload(table.data(), table.size());
-
-  SplatRasterTarget target;
-  target.framebuffer = accumulation_framebuffer_.id();
-  target.image_size = {wp, hp};
-  const Program& convert = format == PlaneFormat::kRgba8    ? convert_u8_
-                           : format == PlaneFormat::kRgba16f ? convert_f16_
-                                                             : convert_f32_;
-  glProgramUniform1ui(convert.id(), convert.uniform("batch_layers"), 1u);
-  glProgramUniform2i(convert.id(), convert.uniform("plane_size"), wp, hp);
-  for (int k = 0; k < planes; ++k) {
-    targets_.clear(target);
-    raster_.draw(scene, ref.camera, geometry.base.position_world, chunk_orders_, ranges[size_t(k)], target);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    lowpass(lowpass_variance);
-    // Layer k of the planes from the accumulation layer (which the pass resets to empty).
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(1, planes_.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(format));
-    planes_.table.buffer.bind_storage(kPlaneTableBinding);
-    glProgramUniform1ui(convert.id(), convert.uniform("batch"), GLuint(k));
-    convert.use();
-    glDispatchCompute(GLuint((wp + 15) / 16), GLuint((hp + 7) / 8), 1);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
-  }
-  const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
-  glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
-  swizzle_.run(planes_, geometry, ref, layout, o.filter, background, quilt);
-  check_gl("a V2LF frame");
-
+void GlV2lfRenderer::record_stats(const voxel::VoxelChunks& binned, const GlVoxelScene& scene) {
   stats_ = {};
-  stats_.planes = planes;
-  stats_.voxels_binned = binned_count;
+  stats_.planes = int(binned.chunks.members.size());
+  stats_.voxels_binned = chunk_starts(binned.chunks).back();
   stats_.voxels_split = binned.voxels_split;
-  stats_.plane_bytes = planes_.texels.bytes();
-  stats_.gpu_bytes = scene.bytes() + planes_.texels.bytes() + planes_.table.buffer.bytes() + accumulation_.bytes() +
-                     lowpass_scratch_.bytes() + chunk_orders_.bytes();
+  stats_.plane_bytes = sweeping_.planes().texels.bytes();
+  stats_.gpu_bytes = scene.bytes() + sweeping_.bytes() + accumulation_.bytes() + lowpass_scratch_.bytes() +
+                     chunk_orders_.bytes();
 }
 
 ImageF render_quilt_v2lf_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,

@@ -1,16 +1,18 @@
 #pragma once
-// V2LF on the GPU (issue #13; paper section "V2LF"): the GL twin of voxel/v2lf.hpp, G2LF's
-// sweeping planes and swizzle with voxels as the primitives:
-//   binding   voxel::bin_voxels_by_depth on the CPU, the same chunks (and split voxels) the
-//             CPU path renders; each chunk's voxels taken from the scene's eight front-to-back
-//             orders in order, uploaded as one buffer of (chunk, octant) ranges. When voxels
-//             were split, the split scene is uploaded for the frame (its orders sorted again).
+// V2LF on the GPU (issue #13; paper section "V2LF"): the GL twin of voxel/v2lf.hpp, the
+// sweeping-plane skeleton (gpu/gl_sweeping_planes.hpp, shared with G2LF) with voxels as the
+// primitives. Its stages:
+//   bin       voxel::bin_voxels_by_depth on the CPU, the same chunks (and split voxels) the
+//             CPU path renders; when voxels were split, the split scene is uploaded for the
+//             frame (its orders sorted again). group_by_octant: each chunk's voxels taken from
+//             the scene's eight front-to-back orders in order, uploaded as one buffer of (chunk,
+//             octant) ranges; the plane table written from the CPU's depths.
 //   planes    per chunk, GlVoxelRaster from the reference camera (zero background, SH from the
 //             base camera) into an RGBA32F accumulation layer, the low-pass filter
 //             (voxel/plane_lowpass.hpp; gpu/shaders/voxel_plane_lowpass.comp.glsl) when
 //             adaptive_filter, then rounded into its plane as the CPU stores it (G2LF's convert
 //             pass, gpu/shaders/g2lf_plane_convert.comp.glsl)
-//   swizzle   GlSwizzle into the quilt, the plane table written from the CPU's depths
+//   swizzle   GlSwizzle into the quilt (the skeleton's)
 // The binning stays on the CPU (one pass over the voxels per frame, O(8 n) for the grouping);
 // the planes and the swizzle, where the time goes, are GPU work.
 #include <optional>
@@ -21,7 +23,7 @@
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_splat_raster.hpp"
-#include "gpu/gl_swizzle.hpp"
+#include "gpu/gl_sweeping_planes.hpp"
 #include "gpu/gl_voxel_raster.hpp"
 #include "gpu/gl_voxel_scene.hpp"
 #include "util/image.hpp"
@@ -56,18 +58,27 @@ class GlV2lfRenderer {
                     const GlV2lfOptions& options, const glm::vec3& background, const Texture& quilt);
 
   const GlV2lfStats& stats() const { return stats_; }
-  const GlPlanes& planes() const { return planes_; }
+  const GlPlanes& planes() const { return sweeping_.planes(); }
 
  private:
+  void ensure_planes(PlaneFormat format, int max_planes, int width, int height);
+  // The stages of a frame (gpu/gl_sweeping_planes.hpp): the chunks' voxels in every octant
+  // order into chunk_orders_ (their ranges per chunk), then every plane drawn.
+  std::vector<VoxelOrderRanges> upload_chunk_orders(const GlVoxelScene& scene, const render::DepthChunks& chunks,
+                                                    const render::Camera& camera);
+  void draw_planes(const GlVoxelScene& scene, const std::vector<VoxelOrderRanges>& ranges,
+                   const render::ReferenceCamera& ref, const glm::vec3& sh_origin, float lowpass_variance,
+                   GlPlanes& planes);
+  void convert_plane(int k, const Program& convert, GlPlanes& planes);
+  void lowpass(float variance_px2);
+  void record_stats(const voxel::VoxelChunks& binned, const GlVoxelScene& scene);
+
   const GlVoxelScene& scene_;
   GlInfo info_;
   GlVoxelRaster raster_;
   GlSplatRaster targets_;
-  GlSwizzle swizzle_;
-  void lowpass(float variance_px2);
-
+  GlSweepingPlanes sweeping_;
   Program convert_u8_, convert_f16_, convert_f32_, lowpass_;
-  GlPlanes planes_;
   Texture accumulation_;  // one RGBA32F layer of the planes' size
   Texture lowpass_scratch_;
   Framebuffer accumulation_framebuffer_;

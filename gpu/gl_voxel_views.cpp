@@ -8,6 +8,7 @@
 
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl_quilt_target.hpp"
 #include "gpu/shaders/voxel_downsample.comp.glsl.hpp"
 #include "util/error.hpp"
 
@@ -84,13 +85,7 @@ void GlVoxelViews::render_into(const render::Camera& camera, const voxel::VoxelR
 
 void GlVoxelViews::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                 const voxel::VoxelRenderSettings& settings, const Texture& quilt) {
-  layout.check("quilt");
-  if (quilt.width() != layout.width || quilt.height() != layout.height || quilt.layers() != 0)
-    throw_input_error("voxel views: the quilt texture is {}x{}, the layout {}x{}", quilt.width(), quilt.height(),
-                      layout.width, layout.height);
-  if (geometry.views > layout.cols * layout.rows)
-    throw_input_error("voxel views: {} views do not fit a quilt of {} tiles", geometry.views,
-                      layout.cols * layout.rows);
+  check_quilt_target("voxel views", geometry, layout, quilt);
   const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // as the CPU's quilt outside the tiles
   glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
   const int W = geometry.base.width, H = geometry.base.height;

@@ -1,6 +1,5 @@
 #include "render/g2lf.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include "util/error.hpp"
@@ -50,34 +49,29 @@ ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geomet
                          const QuiltLayout& layout, const G2lfOptions& options,
                          const RasterSettings& settings, G2lfStats* stats) {
   options.check(geometry);
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
+  DepthChunks chunks;
+  SweepingPlaneStages stages;
+  stages.bin = [&](const ReferenceCamera& ref) -> const DepthChunks& {
+    chunks = bin_by_depth(scene, geometry, ref, options.chunks, options.binning);
+    return chunks;
   };
-  const auto t0 = Clock::now();
-  const float d_shift = options.d_shift >= 0.0f ? options.d_shift
-                                                : make_reference_camera(geometry, 0.0f, 1).d_forward;
-  const ReferenceCamera ref = make_reference_camera(geometry, d_shift, options.plane_scale);
-  const DepthChunks chunks = bin_by_depth(scene, geometry, ref, options.chunks, options.binning);
-  const auto t1 = Clock::now();
-  RasterSettings plane_settings = settings;
-  if (options.adaptive_filter)
-    plane_settings.dilation_px2 =
-        adaptive_filter_variance(geometry, ref, options.plane_scale, settings.dilation_px2);
-  const SweepingPlanes planes =
-      render_sweeping_planes(scene, geometry, ref, chunks, options.precision, plane_settings);
-  const auto t2 = Clock::now();
-  ImageF quilt(layout.width, layout.height, 3, 0.0f);
-  swizzle_blend(planes, geometry, ref, layout, options.filter, settings.background, quilt);
-  const auto t3 = Clock::now();
+  stages.render_planes = [&](const ReferenceCamera& ref, const DepthChunks& binned) {
+    RasterSettings plane_settings = settings;
+    if (options.adaptive_filter)
+      plane_settings.dilation_px2 =
+          adaptive_filter_variance(geometry, ref, options.plane_scale, settings.dilation_px2);
+    return render_sweeping_planes(scene, geometry, ref, binned, options.precision, plane_settings);
+  };
+  SweepingPlaneStats frame;
+  ImageF quilt =
+      render_sweeping_plane_quilt(stages, geometry, layout, options, settings.background, stats ? &frame : nullptr);
   if (stats) {
-    stats->gaussians_in_frustum = 0;
-    for (const auto& m : chunks.members) stats->gaussians_in_frustum += m.size();
-    stats->planes = planes.count;
-    stats->plane_bytes = planes.bytes();
-    stats->seconds_binning = seconds(t0, t1);
-    stats->seconds_planes = seconds(t1, t2);
-    stats->seconds_swizzle = seconds(t2, t3);
+    stats->gaussians_in_frustum = frame.binned;
+    stats->planes = frame.planes;
+    stats->plane_bytes = frame.plane_bytes;
+    stats->seconds_binning = frame.seconds_binning;
+    stats->seconds_planes = frame.seconds_planes;
+    stats->seconds_swizzle = frame.seconds_swizzle;
   }
   return quilt;
 }

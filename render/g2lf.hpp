@@ -1,6 +1,7 @@
 #pragma once
-// G2LF on the CPU (paper section "G2LF" and Alg. 1): the orchestrator of three stages, each
-// behind its own header:
+// G2LF on the CPU (paper section "G2LF" and Alg. 1): the sweeping-plane skeleton
+// (sweeping_plane_pipeline.hpp, shared with V2LF) with Gaussians as the primitives. Its stages,
+// each behind its own header:
 //   depth_binning.hpp    cull to the reference frustum, bin by reference-camera depth into
 //                        N_chunk chunks (Alg. 1 lines 1-3);
 //   sweeping_planes.hpp  rasterise each chunk into its sweeping plane (premultiplied colour +
@@ -17,6 +18,7 @@
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
 #include "render/rasterizer_cpu.hpp"
+#include "render/sweeping_plane_pipeline.hpp"
 #include "render/sweeping_planes.hpp"
 #include "render/swizzle_blend.hpp"
 #include "util/image.hpp"
@@ -26,7 +28,8 @@ namespace lfd::render {
 struct G2lfOptions {
   int chunks = 64;            // N_chunk, 1..4096
   int plane_scale = 1;        // P_s, 1..8
-  // D_shift, scene units: the reference camera moves back from D_forward. Negative: D_forward,
+  // D_shift, scene units: the reference camera moves back from D_forward (reference_camera in
+  // render/sweeping_plane_pipeline.hpp). Negative: D_forward,
   // i.e. the reference camera sits at the base camera, so content between the base camera and
   // D_forward (which the paper's D_shift = 0 drops) is kept; measured in docs/rendering.md.
   // At most D_forward (check(geometry)): further back, planes fall behind the view cameras.

@@ -50,6 +50,59 @@ struct PlaneMap {
   float scale_y;
 };
 
+// The plane rows that output row y reads (row1 = row0 for nearest) and the vertical weight.
+struct PlaneRows {
+  int row0, row1;
+  float fy;
+};
+
+// One view's output row blended with one plane: the columns x_lo..x_hi whose samples can touch
+// the plane row's non-empty texels, px = alpha + beta x. `T`, `C` are the view's row of
+// transmittance and colour; `active` counts its pixels still above kMinTransmittance.
+template <typename Texels, bool kBilinear>
+inline void blend_view_row(const Texels& tex, size_t base, int Wp, int Hp, const PlaneRows& rows, float alpha,
+                           float beta, int x_lo, int x_hi, float* T, float* C, int& active, int& views_active) {
+  const int row0 = rows.row0, row1 = rows.row1;
+  const float fy = rows.fy;
+  for (int x = x_lo; x <= x_hi; ++x) {
+    float& t = T[x];
+    if (t < kMinTransmittance) continue;
+    const float px = alpha + beta * float(x);
+    float s[4];
+    if constexpr (kBilinear) {
+      const int col0 = int(std::floor(px));
+      const float fx = px - float(col0);
+      float a[4], b[4], c[4], d[4];
+      fetch(tex, base, Wp, Hp, col0, row0, a);
+      fetch(tex, base, Wp, Hp, col0 + 1, row0, b);
+      fetch(tex, base, Wp, Hp, col0, row1, c);
+      fetch(tex, base, Wp, Hp, col0 + 1, row1, d);
+      for (int ch = 0; ch < 4; ++ch)
+        s[ch] = (1.0f - fy) * ((1.0f - fx) * a[ch] + fx * b[ch]) + fy * ((1.0f - fx) * c[ch] + fx * d[ch]);
+    } else {
+      fetch(tex, base, Wp, Hp, int(std::floor(px + 0.5f)), row0, s);
+    }
+    C[3 * x] += t * s[0];
+    C[3 * x + 1] += t * s[1];
+    C[3 * x + 2] += t * s[2];
+    t *= s[3];
+    if (t < kMinTransmittance && --active == 0) --views_active;
+  }
+}
+
+// Output row y of every view into its tile: the blended colour over the background.
+void write_row(const QuiltGeometry& geometry, const QuiltLayout& layout, int y, const std::vector<float>& T,
+               const std::vector<float>& C, const glm::vec3& background, ImageF& quilt) {
+  const int W = geometry.base.width;
+  for (int j = 0; j < geometry.views; ++j) {
+    const int x0 = layout.tile_x(j), y0 = layout.tile_y_top_down(j);
+    const float* Tj = T.data() + size_t(j) * W;
+    const float* Cj = C.data() + size_t(j) * W * 3;
+    for (int x = 0; x < W && x < layout.tile_width(); ++x)
+      for (int ch = 0; ch < 3; ++ch) quilt.at(x0 + x, y0 + y, ch) = Cj[3 * x + ch] + Tj[x] * background[ch];
+  }
+}
+
 template <typename Texels, bool kBilinear>
 void swizzle_rows(const SweepingPlanes& planes, const Texels& tex, const QuiltGeometry& geometry,
                   const QuiltLayout& layout, const std::vector<PlaneMap>& maps,
@@ -75,11 +128,12 @@ void swizzle_rows(const SweepingPlanes& planes, const Texels& tex, const QuiltGe
       for (int k = 0; k < planes.count && views_active > 0; ++k) {
         const PlaneMap& m = maps[size_t(k)];
         const float py = ((m.scale_y * v_ndc + 1.0f) * float(Hp) - 1.0f) * 0.5f;
-        const int row0 = kBilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
-        const int row1 = kBilinear ? row0 + 1 : row0;
-        const float fy = py - float(row0);
+        PlaneRows rows;
+        rows.row0 = kBilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
+        rows.row1 = kBilinear ? rows.row0 + 1 : rows.row0;
+        rows.fy = py - float(rows.row0);
         int first = Wp, last = -1;
-        for (int r : {row0, row1})
+        for (int r : {rows.row0, rows.row1})
           if (r >= 0 && r < Hp) {
             first = std::min(first, planes.row_first[size_t(k) * Hp + r]);
             last = std::max(last, planes.row_last[size_t(k) * Hp + r]);
@@ -97,42 +151,12 @@ void swizzle_rows(const SweepingPlanes& planes, const Texels& tex, const QuiltGe
           const float xa = (float(first) - 1.5f - alpha) / beta, xb = (float(last) + 1.5f - alpha) / beta;
           const int x_lo = std::max(0, int(std::floor(std::min(xa, xb))));
           const int x_hi = std::min(W - 1, int(std::ceil(std::max(xa, xb))));
-          float* Tj = T.data() + size_t(j) * W;
-          float* Cj = C.data() + size_t(j) * W * 3;
-          int& act = active[size_t(j)];
-          for (int x = x_lo; x <= x_hi; ++x) {
-            float& t = Tj[x];
-            if (t < kMinTransmittance) continue;
-            const float px = alpha + beta * float(x);
-            float s[4];
-            if constexpr (kBilinear) {
-              const int col0 = int(std::floor(px));
-              const float fx = px - float(col0);
-              float a[4], b[4], c[4], d[4];
-              fetch(tex, base, Wp, Hp, col0, row0, a);
-              fetch(tex, base, Wp, Hp, col0 + 1, row0, b);
-              fetch(tex, base, Wp, Hp, col0, row1, c);
-              fetch(tex, base, Wp, Hp, col0 + 1, row1, d);
-              for (int ch = 0; ch < 4; ++ch)
-                s[ch] = (1.0f - fy) * ((1.0f - fx) * a[ch] + fx * b[ch]) + fy * ((1.0f - fx) * c[ch] + fx * d[ch]);
-            } else {
-              fetch(tex, base, Wp, Hp, int(std::floor(px + 0.5f)), row0, s);
-            }
-            Cj[3 * x] += t * s[0];
-            Cj[3 * x + 1] += t * s[1];
-            Cj[3 * x + 2] += t * s[2];
-            t *= s[3];
-            if (t < kMinTransmittance && --act == 0) --views_active;
-          }
+          blend_view_row<Texels, kBilinear>(tex, base, Wp, Hp, rows, alpha, beta, x_lo, x_hi,
+                                            T.data() + size_t(j) * W, C.data() + size_t(j) * W * 3,
+                                            active[size_t(j)], views_active);
         }
       }
-      for (int j = 0; j < V; ++j) {
-        const int x0 = layout.tile_x(j), y0 = layout.tile_y_top_down(j);
-        const float* Tj = T.data() + size_t(j) * W;
-        const float* Cj = C.data() + size_t(j) * W * 3;
-        for (int x = 0; x < W && x < layout.tile_width(); ++x)
-          for (int ch = 0; ch < 3; ++ch) quilt.at(x0 + x, y0 + y, ch) = Cj[3 * x + ch] + Tj[x] * background[ch];
-      }
+      write_row(geometry, layout, y, T, C, background, quilt);
     }
   }
 }

@@ -1,7 +1,6 @@
 #include "voxel/v2lf.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -117,44 +116,51 @@ VoxelChunks bin_voxels_by_depth(const VoxelScene& scene, const render::QuiltGeom
   return out;
 }
 
+namespace {
+
+// Alg. 1 lines 4-5 for voxels: every chunk through the exact voxel rasterizer from the reference
+// camera (zero background, SH from the base camera), low-pass filtered in place of
+// supersampling. `lowpass_scene` is the input scene (the filter's voxel sizes).
+render::SweepingPlanes render_voxel_planes(const VoxelChunks& binned, const VoxelScene& lowpass_scene,
+                                           const render::QuiltGeometry& geometry,
+                                           const render::ReferenceCamera& ref, const render::G2lfOptions& o) {
+  const float lowpass = o.adaptive_filter ? plane_lowpass_variance(lowpass_scene, geometry, ref, o.plane_scale) : 0.0f;
+  const RayOrder order(binned.scene);  // once per frame, not per chunk
+  return render::make_sweeping_planes(ref, binned.chunks.plane_depth, o.precision, [&](int k) {
+    render::RasterImage image = rasterize_voxels_exact(binned.scene, order, ref.camera, glm::vec3(0.0f),
+                                                       binned.chunks.members[size_t(k)],
+                                                       geometry.base.position_world);
+    gaussian_lowpass(image, lowpass);
+    return image;
+  });
+}
+
+}  // namespace
+
 ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, const V2lfOptions& options,
                          const glm::vec3& background, V2lfStats* stats) {
   options.check(geometry);
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::time_point a, Clock::time_point b) {
-    return std::chrono::duration<double>(b - a).count();
-  };
   const render::G2lfOptions& o = options.planes;
-  const auto t0 = Clock::now();
-  const float d_shift = o.d_shift >= 0.0f ? o.d_shift : render::make_reference_camera(geometry, 0.0f, 1).d_forward;
-  const render::ReferenceCamera ref = render::make_reference_camera(geometry, d_shift, o.plane_scale);
-  const VoxelChunks binned =
-      bin_voxels_by_depth(scene, geometry, ref, o.chunks, o.binning, options.split_levels);
-  const auto t1 = Clock::now();
-  const float lowpass = o.adaptive_filter ? plane_lowpass_variance(scene, geometry, ref, o.plane_scale) : 0.0f;
-  const RayOrder order(binned.scene);  // once per frame, not per chunk
-  const render::SweepingPlanes planes = render::make_sweeping_planes(
-      ref, binned.chunks.plane_depth, o.precision, [&](int k) {
-        render::RasterImage image = rasterize_voxels_exact(binned.scene, order, ref.camera, glm::vec3(0.0f),
-                                                           binned.chunks.members[size_t(k)],
-                                                           geometry.base.position_world);
-        gaussian_lowpass(image, lowpass);
-        return image;
-      });
-  const auto t2 = Clock::now();
-  ImageF quilt(layout.width, layout.height, 3, 0.0f);
-  render::swizzle_blend(planes, geometry, ref, layout, o.filter, background, quilt);
-  const auto t3 = Clock::now();
+  VoxelChunks binned;
+  render::SweepingPlaneStages stages;
+  stages.bin = [&](const render::ReferenceCamera& ref) -> const render::DepthChunks& {
+    binned = bin_voxels_by_depth(scene, geometry, ref, o.chunks, o.binning, options.split_levels);
+    return binned.chunks;
+  };
+  stages.render_planes = [&](const render::ReferenceCamera& ref, const render::DepthChunks&) {
+    return render_voxel_planes(binned, scene, geometry, ref, o);
+  };
+  render::SweepingPlaneStats frame;
+  ImageF quilt = render::render_sweeping_plane_quilt(stages, geometry, layout, o, background, stats ? &frame : nullptr);
   if (stats) {
-    stats->voxels_binned = 0;
-    for (const auto& m : binned.chunks.members) stats->voxels_binned += m.size();
+    stats->voxels_binned = frame.binned;
     stats->voxels_split = binned.voxels_split;
-    stats->planes = planes.count;
-    stats->plane_bytes = planes.bytes();
-    stats->seconds_binning = seconds(t0, t1);
-    stats->seconds_planes = seconds(t1, t2);
-    stats->seconds_swizzle = seconds(t2, t3);
+    stats->planes = frame.planes;
+    stats->plane_bytes = frame.plane_bytes;
+    stats->seconds_binning = frame.seconds_binning;
+    stats->seconds_planes = frame.seconds_planes;
+    stats->seconds_swizzle = frame.seconds_swizzle;
   }
   return quilt;
 }

@@ -1,12 +1,13 @@
 #pragma once
-// V2LF on the CPU (paper section "V2LF -- Sparse Voxels to Light Field"): G2LF's sweeping planes
-// and swizzle blending with voxels as the primitives. Voxels are binned into N_chunk chunks by
-// the reference-camera depth of their centres with G2LF's binnings (render/depth_binning.hpp);
-// a voxel whose depth extent straddles a chunk boundary is split into its 8 children
-// (voxel/voxel_split.hpp, the density field unchanged), each binned by its own centre; every
-// chunk is rendered into its plane by the exact voxel rasterizer (zero background, SH from the
-// base camera, no supersampling), low-pass filtered in place of supersampling
-// (voxel/plane_lowpass.hpp), and render/swizzle_blend.hpp composites the planes into every view.
+// V2LF on the CPU (paper section "V2LF -- Sparse Voxels to Light Field"): G2LF's sweeping-plane
+// skeleton (render/sweeping_plane_pipeline.hpp) with voxels as the primitives. Voxels are
+// binned into N_chunk chunks by the reference-camera depth of their centres with G2LF's
+// binnings (render/depth_binning.hpp); a voxel whose depth extent straddles a chunk boundary is
+// split into its 8 children (voxel/voxel_split.hpp, the density field unchanged), each binned by
+// its own centre; every chunk is rendered into its plane by the exact voxel rasterizer (zero
+// background, SH from the base camera, no supersampling), low-pass filtered in place of
+// supersampling (voxel/plane_lowpass.hpp), and render/swizzle_blend.hpp composites the planes
+// into every view.
 #include <cstddef>
 
 #include "render/g2lf.hpp"

@@ -87,12 +87,6 @@ const TestScene& tabletop() {
   return s;
 }
 
-render::ReferenceCamera reference_camera(const TestScene& s, const render::G2lfOptions& o) {
-  const float d_shift = o.d_shift >= 0.0f ? o.d_shift
-                                          : render::make_reference_camera(s.geometry, 0.0f, 1).d_forward;
-  return render::make_reference_camera(s.geometry, d_shift, o.plane_scale);
-}
-
 // Fraction of a tile-covered quilt's pixels that differ from the background: a comparison
 // of two empty quilts would prove nothing.
 double scene_pixel_fraction(const ImageF& quilt, const TestScene& s) {
@@ -126,7 +120,7 @@ double swizzle_psnr(const SwizzleCase& c, double* max_error) {
   o.chunks = 24;
   o.plane_scale = c.plane_scale;
   o.d_shift = c.d_shift;
-  const render::ReferenceCamera ref = reference_camera(s, o);
+  const render::ReferenceCamera ref = render::reference_camera(o, s.geometry);
   const render::DepthChunks chunks = render::bin_by_depth(s.scene, s.geometry, ref, o.chunks, o.binning);
   render::RasterSettings settings;
   settings.dilation_px2 = render::adaptive_filter_variance(s.geometry, ref, o.plane_scale);
@@ -222,7 +216,7 @@ TEST_P(GlG2lfBinning, SameChunksAndPlaneDepthsAsTheCpu) {
   HeadlessContext& ctx = context();
   render::G2lfOptions o;
   o.d_shift = c.d_shift;
-  const render::ReferenceCamera ref = reference_camera(s, o);
+  const render::ReferenceCamera ref = render::reference_camera(o, s.geometry);
   const render::DepthChunks cpu = render::bin_by_depth(s.scene, s.geometry, ref, c.chunks, c.binning);
 
   const GlScene scene(s.scene, ctx.info());

@@ -64,6 +64,38 @@ TEST(G2lf, FewerChunksLoseQuality) {
   EXPECT_GT(p_many, p_few + 1.0);
 }
 
+// The skeleton (render/sweeping_plane_pipeline.hpp) adds nothing to the stages: the quilt and
+// the stats are those of binning, planes and swizzle called one after another, and the default
+// D_shift puts the reference camera at the base camera.
+TEST(G2lf, QuiltIsItsStagesOneAfterAnother) {
+  const Fixture& f = fixture();
+  G2lfOptions o;
+  o.chunks = 12;
+  o.filter = PlaneFilter::kBilinear;
+  const ReferenceCamera ref = reference_camera(o, f.geometry);
+  EXPECT_LT(glm::length(ref.camera.position_world - f.geometry.base.position_world), 1e-5f);
+  const DepthChunks chunks = bin_by_depth(f.scene, f.geometry, ref, o.chunks, o.binning);
+  RasterSettings plane_settings;
+  plane_settings.dilation_px2 =
+      adaptive_filter_variance(f.geometry, ref, o.plane_scale, plane_settings.dilation_px2);
+  const SweepingPlanes planes =
+      render_sweeping_planes(f.scene, f.geometry, ref, chunks, o.precision, plane_settings);
+  const glm::vec3 background{0.1f, 0.2f, 0.3f};
+  ImageF by_stages(f.layout.width, f.layout.height, 3, 0.0f);
+  swizzle_blend(planes, f.geometry, ref, f.layout, o.filter, background, by_stages);
+
+  RasterSettings settings;
+  settings.background = background;
+  G2lfStats stats;
+  const ImageF quilt = render_quilt_g2lf(f.scene, f.geometry, f.layout, o, settings, &stats);
+  EXPECT_TRUE(quilt.pixels == by_stages.pixels);
+  size_t binned = 0;
+  for (const auto& m : chunks.members) binned += m.size();
+  EXPECT_EQ(stats.gaussians_in_frustum, binned);
+  EXPECT_EQ(stats.planes, planes.count);
+  EXPECT_EQ(stats.plane_bytes, planes.bytes());
+}
+
 TEST(G2lf, DepthChunksAreQuantilesWithMedianPlanes) {
   const Fixture& f = fixture();
   const ReferenceCamera ref = make_reference_camera(f.geometry, 0.5f, 1);

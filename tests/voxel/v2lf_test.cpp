@@ -6,7 +6,10 @@
 #include <iostream>
 
 #include "render/image_metrics.hpp"
+#include "voxel/plane_lowpass.hpp"
+#include "voxel/ray_order.hpp"
 #include "voxel/v2lf.hpp"
+#include "voxel/voxel_rasterizer.hpp"
 #include "voxel/voxel_generator.hpp"
 #include "voxel/voxel_quilt.hpp"
 
@@ -59,6 +62,41 @@ TEST(V2lf, ManyChunksApproachThePerViewQuilt) {
   // bilinear, on trained scenes at 512x512.
   EXPECT_GT(fine, coarse + 5.0);
   EXPECT_GT(fine, 28.0);
+}
+
+// The skeleton (render/sweeping_plane_pipeline.hpp) adds nothing to V2LF's stages: the quilt
+// and the stats are those of the voxel binning, the voxel planes (exact rasterizer, low-pass)
+// and the swizzle called one after another.
+TEST(V2lf, QuiltIsItsStagesOneAfterAnother) {
+  const Fixture& f = fixture();
+  V2lfOptions o;
+  o.planes.chunks = 6;
+  o.split_levels = 1;
+  const render::ReferenceCamera ref = render::reference_camera(o.planes, f.geometry);
+  const VoxelChunks binned =
+      bin_voxels_by_depth(f.scene, f.geometry, ref, o.planes.chunks, o.planes.binning, o.split_levels);
+  const float lowpass = plane_lowpass_variance(f.scene, f.geometry, ref, o.planes.plane_scale);
+  const RayOrder order(binned.scene);
+  const render::SweepingPlanes planes =
+      render::make_sweeping_planes(ref, binned.chunks.plane_depth, o.planes.precision, [&](int k) {
+        render::RasterImage image = rasterize_voxels_exact(binned.scene, order, ref.camera, glm::vec3(0.0f),
+                                                           binned.chunks.members[size_t(k)],
+                                                           f.geometry.base.position_world);
+        gaussian_lowpass(image, lowpass);
+        return image;
+      });
+  ImageF by_stages(f.layout.width, f.layout.height, 3, 0.0f);
+  render::swizzle_blend(planes, f.geometry, ref, f.layout, o.planes.filter, f.scene.background, by_stages);
+
+  V2lfStats stats;
+  const ImageF quilt = render_quilt_v2lf(f.scene, f.geometry, f.layout, o, f.scene.background, &stats);
+  EXPECT_TRUE(quilt.pixels == by_stages.pixels);
+  size_t in_chunks = 0;
+  for (const auto& m : binned.chunks.members) in_chunks += m.size();
+  EXPECT_EQ(stats.voxels_binned, in_chunks);
+  EXPECT_EQ(stats.voxels_split, binned.voxels_split);
+  EXPECT_EQ(stats.planes, planes.count);
+  EXPECT_EQ(stats.plane_bytes, planes.bytes());
 }
 
 TEST(V2lf, ChunksHoldEveryVoxelInFrontOnceFrontToBack) {

@@ -1,0 +1,69 @@
+#pragma once
+// The sweeping-plane skeleton on the GPU, shared by GlG2lfRenderer (gpu/gl_g2lf.hpp) and
+// GlV2lfRenderer (gpu/gl_v2lf.hpp): the GL twin of render/sweeping_plane_pipeline.hpp. It keeps
+// the plane array between frames and runs a frame: the reference camera
+// (render::reference_camera), the renderer's stages (GlSweepingPlaneStages), the quilt cleared
+// outside the tiles and the swizzle (GlSwizzle), with GL_TIMESTAMP queries between the stages
+// when the frame is timed (llvmpipe's GL_TIME_ELAPSED reads 0 around compute).
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_planes.hpp"
+#include "gpu/gl_swizzle.hpp"
+#include "render/g2lf.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/quilt_layout.hpp"
+
+namespace lfd::gpu {
+
+// The stages a renderer supplies for one frame; each enqueues GPU work (or works on the CPU and
+// uploads).
+struct GlSweepingPlaneStages {
+  // Before the binning, timed with the planes (G2LF's preprocess); may be empty.
+  std::function<void(const render::ReferenceCamera&)> prepare;
+  // Alg. 1 lines 1-3: the primitives binned, the plane table of `planes` written.
+  std::function<void(const render::ReferenceCamera&, GlPlanes& planes)> bin;
+  // Alg. 1 lines 4-5: every plane's layer of `planes` drawn.
+  std::function<void(const render::ReferenceCamera&, GlPlanes& planes)> draw_planes;
+};
+
+// GPU seconds of the last timed frame's stages; planes = prepare + draw_planes.
+struct GlSweepingPlaneSeconds {
+  double binning = 0, planes = 0, swizzle = 0;
+};
+
+class GlSweepingPlanes {
+ public:
+  // True when the plane array is allocated with this format, layer count and size.
+  bool has_planes(PlaneFormat format, int max_planes, int width, int height) const;
+  // A new plane array (the old one freed first: a lower peak).
+  void allocate_planes(PlaneFormat format, int max_planes, int width, int height);
+
+  // One frame into `quilt` (checked by the caller: check_quilt_target): the reference camera of
+  // `options`, the stages, the quilt cleared to 0 outside the tiles as the CPU's, the swizzle
+  // with options.filter over `background`. `frame` names the frame in GL errors.
+  void render_quilt(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
+                    const render::QuiltLayout& layout, const render::G2lfOptions& options,
+                    const glm::vec3& background, const Texture& quilt, bool timed, const char* frame);
+
+  GlSweepingPlaneSeconds seconds() const;  // of the last frame, which was timed; waits for the GPU
+  const GlPlanes& planes() const { return planes_; }
+  size_t bytes() const;  // the plane array and its table
+
+ private:
+  enum Stamp { kStart, kPrepared, kBinned, kDrawn, kSwizzled, kStamps };
+  void stamp(Stamp at);
+  double seconds_between(Stamp a, Stamp b) const;  // waits for the GPU
+
+  GlPlanes planes_;
+  GlSwizzle swizzle_;
+  std::vector<GlName<delete_query>> stamps_;
+  bool timed_ = false;
+};
+
+}  // namespace lfd::gpu

@@ -1,0 +1,51 @@
+#pragma once
+// The sweeping-plane skeleton on the CPU (paper Alg. 1; docs/rendering.md), shared by G2LF
+// (render/g2lf.hpp, Gaussians) and V2LF (voxel/v2lf.hpp, voxels): the reference camera, the
+// primitives binned by reference depth into chunks, one plane per chunk, the swizzle blend of
+// the planes into every view, and the time each stage took. What differs between the two (which
+// primitives are binned, how a chunk becomes its plane) comes in through SweepingPlaneStages.
+// The GL twin is gpu/gl_sweeping_planes.hpp.
+#include <cstddef>
+#include <functional>
+
+#include <glm/glm.hpp>
+
+#include "render/depth_binning.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/quilt_layout.hpp"
+#include "render/sweeping_planes.hpp"
+#include "util/image.hpp"
+
+namespace lfd::render {
+
+struct G2lfOptions;  // render/g2lf.hpp
+
+// The reference camera of the planes: moved back from D_forward by options.d_shift, or, when
+// d_shift < 0, by D_forward itself, which puts it at the base camera (docs/rendering.md).
+ReferenceCamera reference_camera(const G2lfOptions& options, const QuiltGeometry& geometry);
+
+// The two stages a sweeping-plane renderer supplies for one frame.
+struct SweepingPlaneStages {
+  // Alg. 1 lines 1-3: the primitives binned for the reference camera; the chunks must stay
+  // valid until render_planes has returned.
+  std::function<const DepthChunks&(const ReferenceCamera&)> bin;
+  // Alg. 1 lines 4-5: one plane per chunk (make_sweeping_planes with the primitives' chunk
+  // rasteriser).
+  std::function<SweepingPlanes(const ReferenceCamera&, const DepthChunks&)> render_planes;
+};
+
+struct SweepingPlaneStats {
+  size_t binned = 0;  // primitives in the chunks
+  int planes = 0;
+  size_t plane_bytes = 0;
+  double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;
+};
+
+// Alg. 1 end to end with `stages`: the quilt (layout size, RGB, rows top-down, 0 outside the
+// tiles) for options.d_shift, plane_scale, filter over `background`. The caller has checked
+// `options` against `geometry`.
+ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
+                                   const QuiltLayout& layout, const G2lfOptions& options,
+                                   const glm::vec3& background, SweepingPlaneStats* stats = nullptr);
+
+}  // namespace lfd::render
