@@ -1,29 +1,15 @@
 // lfd bench render: per-view quilts against G2LF on one backend (bench/render_benchmark.hpp).
 #include <cstdio>
-#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
-#include "bench/cpu_quilt_renderer.hpp"
-#include "bench/gl_quilt_renderer.hpp"
+#include "bench/bench_renderers.hpp"
 #include "bench/render_benchmark.hpp"
 #include "util/atomic_file.hpp"
-#include "util/error.hpp"
 
 namespace lfd::apps {
-
-namespace {
-
-// The backends: the CPU reference and OpenGL (bench/gl_quilt_renderer.hpp).
-std::unique_ptr<bench::QuiltRenderer> make_quilt_renderer(const std::string& backend) {
-  if (backend == "cpu") return bench::make_cpu_quilt_renderer();
-  if (backend == "gl") return bench::make_gl_quilt_renderer();
-  throw_input_error("--backend: '{}' is neither cpu nor gl", backend);
-}
-
-}  // namespace
 
 int RunBenchRender(int argc, char** argv) {
   CLI::App app{
@@ -90,8 +76,8 @@ int RunBenchRender(int argc, char** argv) {
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
-  const std::unique_ptr<bench::QuiltRenderer> renderer = make_quilt_renderer(backend);
-  const nlohmann::ordered_json result = bench::run_render_benchmark(*renderer, o);
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
+  const nlohmann::ordered_json result = bench::run_render_benchmark(*renderers.per_view, *renderers.sweeping, o);
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");
     std::printf("\nwrote %s\n", json_path.c_str());

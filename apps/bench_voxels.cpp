@@ -5,6 +5,7 @@
 
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
+#include "bench/bench_renderers.hpp"
 #include "bench/voxel_benchmark.hpp"
 #include "util/atomic_file.hpp"
 
@@ -52,8 +53,8 @@ int RunBenchVoxels(int argc, char** argv) {
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
-  const auto renderer = backend == "gl" ? bench::make_gl_voxel_renderer() : bench::make_cpu_voxel_renderer();
-  const nlohmann::ordered_json result = bench::run_voxel_benchmark(*renderer, o);
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kVoxels);
+  const nlohmann::ordered_json result = bench::run_voxel_benchmark(*renderers.per_view, *renderers.sweeping, o);
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");
     std::printf("\nwrote %s\n", json_path.c_str());

@@ -1,16 +1,15 @@
 #include "bench/render_benchmark.hpp"
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <optional>
 
 #include <fmt/format.h>
 
+#include "bench/frame_timing.hpp"
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
 #include "display/display_quilt.hpp"
@@ -31,15 +30,6 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-// User + system time of all threads: on a shared machine it tells the work done, which wall
-// time does not when other jobs take the cores.
-double process_cpu_seconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
 // A tabletop framed as a person would: 3 units above the ground (y = +1, "up" is -y), 7.5 in
 // front of the middle object row, looking down 18 degrees at the objects, which fill the view;
 // the ground's near edge is below the view, nothing lies nearer than ~4.9 (D_forward 4.2).
@@ -52,20 +42,15 @@ render::CameraSpec tabletop_camera() {
   return s;
 }
 
-// One configuration's measurements.
-struct Measured {
-  TimingStats render;     // render-only frame time
-  TimingStats with_png;   // frame + read-back + 8-bit conversion + PNG write
-  TimingStats cpu;        // process CPU seconds per frame
-  size_t peak_bytes = 0;
-  std::vector<render::G2lfStats> g2lf;  // per timed frame (G2LF only)
-};
+// The rows' quality against the per-view quilt: PSNR, SSIM.
+using Quality = std::optional<std::pair<double, double>>;
 
 class Runner {
  public:
-  Runner(QuiltRenderer& renderer, const RenderBenchOptions& options)
-      : renderer_(renderer), options_(options),
-        runs_(options.runs > 0 ? options.runs : renderer.default_runs()),
+  Runner(lightfield::LightFieldRenderer& per_view, lightfield::LightFieldRenderer& g2lf,
+         const RenderBenchOptions& options)
+      : per_view_(per_view), g2lf_(g2lf), options_(options),
+        runs_(options.runs > 0 ? options.runs : g2lf.default_runs()),
         png_dir_(fs::temp_directory_path() / fmt::format("lfd_bench_render_{}", getpid())) {}
   ~Runner() {
     std::error_code ec;
@@ -74,9 +59,9 @@ class Runner {
 
   nlohmann::ordered_json run() {
     nlohmann::ordered_json out = {{"benchmark", "render"},
-                                  {"backend", renderer_.name()},
-                                  {"device", renderer_.device()},
-                                  {"memory", renderer_.memory_kind()},
+                                  {"backend", g2lf_.name()},
+                                  {"device", g2lf_.device()},
+                                  {"memory", g2lf_.memory_kind()},
                                   {"runs", runs_},
                                   {"warmup", options_.warmup},
                                   {"png_runs", std::min(options_.png_runs, runs_)},
@@ -87,133 +72,133 @@ class Runner {
     std::printf("lfd bench render: backend %s (%s); median of %d frames after %d warm-up; "
                 "CPU: process CPU seconds per frame (all threads); '+PNG': the first %d also read "
                 "back, converted to 8 bits and written as PNG; peak memory: %s\n",
-                renderer_.name().c_str(), renderer_.device().c_str(), runs_, options_.warmup,
-                std::min(options_.png_runs, runs_), renderer_.memory_kind().c_str());
+                g2lf_.name().c_str(), g2lf_.device().c_str(), runs_, options_.warmup,
+                std::min(options_.png_runs, runs_), g2lf_.memory_kind().c_str());
     for (const SceneSource& source : options_.scenes) {
       const auto t0 = Clock::now();
-      render::GaussianScene scene;
-      if (!source.path.empty()) {
-        scene = render::load_scene(source.path);
-      } else {
-        render::SceneGeneratorOptions g;
-        g.count = source.generated;
-        scene = render::generate_scene(g);
-      }
+      const lightfield::LightFieldScene scene(source.path.empty() ? generated_scene(source.generated)
+                                                                  : render::load_scene(source.path));
       const double load_seconds = seconds_since(t0);
-      renderer_.set_scene(scene);
+      per_view_.set_scene(scene);
+      g2lf_.set_scene(scene);
       for (int views : options_.views)
-        out["tables"].push_back(run_table(source, scene, load_seconds, views));
+        out["tables"].push_back(run_table(source, scene.gaussians(), load_seconds, views));
     }
     return out;
   }
 
  private:
-  // Warm-up, then the timed frames of `frame`; the first png_runs of them are written as PNG.
-  Measured measure(const std::function<void()>& frame, bool g2lf) {
-    Measured m;
-    renderer_.reset_peak_memory();
-    for (int w = 0; w < options_.warmup; ++w) frame();
-    std::vector<double> render, with_png, cpu;
-    for (int r = 0; r < runs_; ++r) {
-      const double c0 = process_cpu_seconds();
-      const auto t0 = Clock::now();
-      frame();
-      const double t = seconds_since(t0);
-      render.push_back(t);
-      cpu.push_back(process_cpu_seconds() - c0);
-      if (g2lf) m.g2lf.push_back(last_g2lf_);
-      if (r < options_.png_runs) {
-        const auto t1 = Clock::now();
-        write_png(png_dir_ / "quilt.png", to_uint8(renderer_.read_quilt()));
-        with_png.push_back(t + seconds_since(t1));
-      }
-    }
-    m.peak_bytes = renderer_.peak_memory_bytes();
-    m.render = summarize(render);
-    m.with_png = summarize(with_png);
-    m.cpu = summarize(cpu);
-    return m;
+  static render::GaussianScene generated_scene(size_t gaussians) {
+    render::SceneGeneratorOptions g;
+    g.count = gaussians;
+    return render::generate_scene(g);
   }
 
-  nlohmann::ordered_json run_table(const SceneSource& source, const render::GaussianScene& scene,
-                                   double load_seconds, int views) {
-    const bool generated = source.path.empty();
-    const render::CameraSpec spec = generated && options_.tabletop_camera
-                                        ? tabletop_camera()
-                                        : render::frame_scene(scene);
-    const render::Camera base = render::camera_from_spec(spec, options_.size, options_.size);
-    const render::QuiltGeometry geometry = render::make_quilt_geometry(
-        base, glm::length(spec.look_at - spec.position), options_.view_cone_deg, views);
-    const display::QuiltGrid grid = display::quilt_grid_for_views(views, 1.0);
-    const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
-    const float d_forward = render::make_reference_camera(geometry, 0.0f, 1).d_forward;
-    const float d_shift = options_.shift_fraction * d_forward;
-    const std::string label = source.label() + (generated && options_.tabletop_camera ? ", tabletop camera" : "");
+  FrameTimings measure(lightfield::LightFieldRenderer& renderer, const render::QuiltGeometry& geometry,
+                       const render::QuiltLayout& layout) {
+    return time_frames(renderer, geometry, layout,
+                       {.warmup = options_.warmup, .runs = runs_, .png_runs = options_.png_runs,
+                        .png_path = png_dir_ / "quilt.png"});
+  }
 
+  // One table's quilt: the views of `views` cameras around the scene's framing.
+  struct TableSetup {
+    render::QuiltGeometry geometry;
+    display::QuiltGrid grid;
+    render::QuiltLayout layout;
+    float d_forward = 0, d_shift = 0;
+    std::string label;
+  };
+
+  TableSetup setup_table(const SceneSource& source, const render::GaussianScene& scene, int views) const {
+    const bool tabletop = source.path.empty() && options_.tabletop_camera;
+    const render::CameraSpec spec = tabletop ? tabletop_camera() : render::frame_scene(scene);
+    const render::Camera base = render::camera_from_spec(spec, options_.size, options_.size);
+    TableSetup t;
+    t.geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
+                                             options_.view_cone_deg, views);
+    t.grid = display::quilt_grid_for_views(views, 1.0);
+    t.layout = render::make_quilt_layout(t.geometry, t.grid.cols, t.grid.rows);
+    t.d_forward = render::make_reference_camera(t.geometry, 0.0f, 1).d_forward;
+    t.d_shift = options_.shift_fraction * t.d_forward;
+    t.label = source.label() + (tabletop ? ", tabletop camera" : "");
+    return t;
+  }
+
+  void print_table_head(const SceneSource& source, const render::GaussianScene& scene, double load_seconds,
+                        const TableSetup& t) const {
     std::printf("\n#### %s: %s Gaussians, %d views of %dx%d (%dx%d quilt), view cone %.0f deg, "
                 "D_focal %.2f, D_shift %.2f (D_forward %.2f)%s\n\n",
-                label.c_str(), fmt::format("{}", scene.size()).c_str(), views, options_.size,
-                options_.size, layout.width, layout.height, options_.view_cone_deg,
-                geometry.focal_distance, d_shift, d_forward,
+                t.label.c_str(), fmt::format("{}", scene.size()).c_str(), t.geometry.views, options_.size,
+                options_.size, t.layout.width, t.layout.height, options_.view_cone_deg,
+                t.geometry.focal_distance, t.d_shift, t.d_forward,
                 source.path.empty() ? "" : fmt::format(", loaded in {:.2f} s", load_seconds).c_str());
     std::printf("| method | binning | median [s] | min-max [s] | MAD [s] | CPU [s] | FPS | speed-up "
                 "| +PNG [s] | speed-up +PNG | planes [GB] | peak [GB] | PSNR [dB] | SSIM |\n");
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  }
 
-    nlohmann::ordered_json table = {{"scene", label},
+  nlohmann::ordered_json run_table(const SceneSource& source, const render::GaussianScene& scene,
+                                   double load_seconds, int views) {
+    const TableSetup t = setup_table(source, scene, views);
+    print_table_head(source, scene, load_seconds, t);
+    nlohmann::ordered_json table = {{"scene", t.label},
                                     {"gaussians", scene.size()},
                                     {"load_seconds", load_seconds},
                                     {"views", views},
-                                    {"grid", {grid.cols, grid.rows}},
-                                    {"quilt", {layout.width, layout.height}},
-                                    {"focal_distance", geometry.focal_distance},
-                                    {"d_forward", d_forward},
-                                    {"d_shift", d_shift},
+                                    {"grid", {t.grid.cols, t.grid.rows}},
+                                    {"quilt", {t.layout.width, t.layout.height}},
+                                    {"focal_distance", t.geometry.focal_distance},
+                                    {"d_forward", t.d_forward},
+                                    {"d_shift", t.d_shift},
                                     {"rows", nlohmann::ordered_json::array()}};
-    std::optional<Measured> per_view;
+    std::optional<FrameTimings> per_view;
     ImageF truth;
     if (options_.per_view) {
-      per_view = measure([&] { renderer_.render_per_view(geometry, layout); }, false);
-      truth = renderer_.read_quilt();
-      table["rows"].push_back(row("per-view 3DGS (ground truth)", "-", *per_view, per_view, 0, {},
-                                  std::nullopt));
+      per_view = measure(per_view_, t.geometry, t.layout);
+      truth = per_view_.read_quilt();
+      table["rows"].push_back(row("per-view 3DGS (ground truth)", "-", *per_view, per_view, 0, false, std::nullopt));
     }
-
-    std::vector<G2lfConfig> configs = g2lf_configs_in(options_.config_sets, "render benchmark: config_sets");
     for (const std::string& binning : options_.binnings)
-      for (const G2lfConfig& c : configs) {
+      for (const G2lfConfig& c : g2lf_configs_in(options_.config_sets, "render benchmark: config_sets")) {
         if (options_.only_chunks > 0 && c.chunks != options_.only_chunks) continue;
-        render::G2lfOptions o;
-        o.binning = render::parse_chunk_binning(binning);
-        o.chunks = c.chunks;
-        o.plane_scale = c.plane_scale > 0 ? c.plane_scale : equal_density_plane_scale(geometry, d_shift);
-        o.filter = c.filter;
-        o.precision = c.precision;
-        o.d_shift = d_shift;
-        const Measured m = measure(
-            [&] { last_g2lf_ = renderer_.render_g2lf(geometry, layout, o); }, true);
-        std::optional<std::pair<double, double>> quality;
-        if (per_view) {
-          const ImageF& quilt = renderer_.read_quilt();
-          quality = std::make_pair(render::psnr(quilt, truth), render::ssim(quilt, truth));
-        }
-        nlohmann::ordered_json r = row(config_label(c, o.plane_scale), binning, m, per_view,
-                                       m.g2lf.empty() ? 0 : m.g2lf.back().plane_bytes, m.g2lf, quality);
-        r["config_set"] = c.set;
-        r["chunks"] = c.chunks;
-        r["plane_scale"] = o.plane_scale;
-        r["filter"] = c.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
-        r["precision"] = c.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
-        table["rows"].push_back(std::move(r));
+        table["rows"].push_back(g2lf_row(t, binning, c, per_view, truth));
       }
     return table;
   }
 
-  // Prints one table row and returns it as JSON.
-  nlohmann::ordered_json row(const std::string& method, const std::string& binning, const Measured& m,
-                             const std::optional<Measured>& per_view, size_t plane_bytes,
-                             const std::vector<render::G2lfStats>& g2lf,
-                             const std::optional<std::pair<double, double>>& quality) {
+  // One G2LF configuration timed, compared with the per-view quilt and printed.
+  nlohmann::ordered_json g2lf_row(const TableSetup& t, const std::string& binning, const G2lfConfig& c,
+                                  const std::optional<FrameTimings>& per_view, const ImageF& truth) {
+    lightfield::RendererOptions o = g2lf_.options();
+    o.planes = render::G2lfOptions{};
+    o.planes.binning = render::parse_chunk_binning(binning);
+    o.planes.chunks = c.chunks;
+    o.planes.plane_scale = c.plane_scale > 0 ? c.plane_scale : equal_density_plane_scale(t.geometry, t.d_shift);
+    o.planes.filter = c.filter;
+    o.planes.precision = c.precision;
+    o.planes.d_shift = t.d_shift;
+    g2lf_.set_options(o);
+    const FrameTimings m = measure(g2lf_, t.geometry, t.layout);
+    Quality quality;
+    if (per_view) {
+      const ImageF& quilt = g2lf_.read_quilt();
+      quality = std::make_pair(render::psnr(quilt, truth), render::ssim(quilt, truth));
+    }
+    nlohmann::ordered_json r = row(config_label(c, o.planes.plane_scale), binning, m, per_view,
+                                   m.stats.empty() ? 0 : m.stats.back().plane_bytes, true, quality);
+    r["config_set"] = c.set;
+    r["chunks"] = c.chunks;
+    r["plane_scale"] = o.planes.plane_scale;
+    r["filter"] = c.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
+    r["precision"] = c.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
+    return r;
+  }
+
+  // Prints one table row and returns it as JSON (`g2lf`: with the planes' figures).
+  nlohmann::ordered_json row(const std::string& method, const std::string& binning, const FrameTimings& m,
+                             const std::optional<FrameTimings>& per_view, size_t plane_bytes, bool g2lf,
+                             const Quality& quality) {
     const auto speedup = [&](const TimingStats& mine, const TimingStats& theirs) -> std::optional<double> {
       if (!per_view || mine.median <= 0.0 || theirs.median <= 0.0) return std::nullopt;
       return theirs.median / mine.median;
@@ -246,27 +231,30 @@ class Runner {
                                 {"plane_bytes", plane_bytes},
                                 {"psnr_db", quality ? nlohmann::ordered_json(quality->first) : nullptr},
                                 {"ssim", quality ? nlohmann::ordered_json(quality->second) : nullptr}};
-    if (!g2lf.empty()) {
-      std::vector<double> binning_s, planes_s, swizzle_s;
-      for (const auto& st : g2lf) {
-        binning_s.push_back(st.seconds_binning);
-        planes_s.push_back(st.seconds_planes);
-        swizzle_s.push_back(st.seconds_swizzle);
-      }
-      r["planes"] = g2lf.back().planes;
-      r["gaussians_in_frustum"] = g2lf.back().gaussians_in_frustum;
-      r["stage_seconds_median"] = {{"binning", summarize(binning_s).median},
-                                   {"planes", summarize(planes_s).median},
-                                   {"swizzle", summarize(swizzle_s).median}};
-    }
+    if (g2lf && !m.stats.empty()) add_plane_figures(r, m.stats);
     return r;
   }
 
-  QuiltRenderer& renderer_;
+  // The planes of the last frame and the median stage times.
+  static void add_plane_figures(nlohmann::ordered_json& r, const std::vector<lightfield::QuiltStats>& stats) {
+    std::vector<double> binning_s, planes_s, swizzle_s;
+    for (const auto& st : stats) {
+      binning_s.push_back(st.seconds_binning);
+      planes_s.push_back(st.seconds_planes);
+      swizzle_s.push_back(st.seconds_swizzle);
+    }
+    r["planes"] = stats.back().planes;
+    r["gaussians_in_frustum"] = stats.back().binned;
+    r["stage_seconds_median"] = {{"binning", summarize(binning_s).median},
+                                 {"planes", summarize(planes_s).median},
+                                 {"swizzle", summarize(swizzle_s).median}};
+  }
+
+  lightfield::LightFieldRenderer& per_view_;
+  lightfield::LightFieldRenderer& g2lf_;
   const RenderBenchOptions& options_;
   const int runs_;
   const fs::path png_dir_;
-  render::G2lfStats last_g2lf_;
 };
 
 }  // namespace
@@ -299,10 +287,10 @@ void RenderBenchOptions::check() const {
   if (png_runs < 0) fail("png_runs", "must not be negative");
 }
 
-nlohmann::ordered_json run_render_benchmark(QuiltRenderer& renderer,
-                                            const RenderBenchOptions& options) {
+nlohmann::ordered_json run_render_benchmark(lightfield::LightFieldRenderer& per_view,
+                                            lightfield::LightFieldRenderer& g2lf, const RenderBenchOptions& options) {
   options.check();
-  return Runner(renderer, options).run();
+  return Runner(per_view, g2lf, options).run();
 }
 
 }  // namespace lfd::bench

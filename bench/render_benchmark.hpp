@@ -1,17 +1,18 @@
 #pragma once
-// `lfd bench render`: per-view quilt rendering against G2LF, both on one backend
-// (bench/quilt_renderer.hpp) in one process on the same scenes: per configuration the median
-// frame time of repeated runs after warm-up and its spread, FPS, the speed-up over the per-view
-// quilt, the time with the PNG written (what `lfd render` spends after loading the scene),
-// PSNR / SSIM against the per-view quilt, plane memory and peak memory. Prints Markdown tables
-// as rows finish; returns the figures as JSON.
+// `lfd bench render`: per-view quilt rendering against G2LF, both on one backend (the library's
+// renderers, lightfield/light_field_renderer.hpp; bench/bench_renderers.hpp) in one process on
+// the same scenes: per configuration the median frame time of repeated runs after warm-up and
+// its spread (bench/frame_timing.hpp), FPS, the speed-up over the per-view quilt, the time with
+// the PNG written (what `lfd render` spends after loading the scene), PSNR / SSIM against the
+// per-view quilt, plane memory and peak memory. Prints Markdown tables as rows finish; returns
+// the figures as JSON.
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "bench/quilt_renderer.hpp"
+#include "lightfield/light_field_renderer.hpp"
 
 namespace lfd::bench {
 
@@ -45,7 +46,9 @@ struct RenderBenchOptions {
   void check() const;
 };
 
-nlohmann::ordered_json run_render_benchmark(QuiltRenderer& renderer,
-                                            const RenderBenchOptions& options);
+// `per_view` renders the ground truth, `g2lf` the configurations (its plane options set per row);
+// both Gaussian renderers of one backend.
+nlohmann::ordered_json run_render_benchmark(lightfield::LightFieldRenderer& per_view,
+                                            lightfield::LightFieldRenderer& g2lf, const RenderBenchOptions& options);
 
 }  // namespace lfd::bench

@@ -3,11 +3,11 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <functional>
 #include <optional>
 
 #include <fmt/format.h>
 
+#include "bench/frame_timing.hpp"
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
 #include "display/display_quilt.hpp"
@@ -35,28 +35,16 @@ render::CameraSpec tabletop_voxel_camera() {
   return s;
 }
 
+// A row's frames and the last quilt, read back after them (untimed).
 struct Measured {
-  TimingStats seconds;
-  size_t peak_bytes = 0;
-  ImageF quilt;                    // the last frame's
-  std::optional<voxel::V2lfStats> v2lf;
+  FrameTimings timings;
+  ImageF quilt;
 };
 
-// Warm-up, then the timed frames (`frame` returns V2LF's stats, if it is V2LF); the quilt is
-// read back after them, untimed.
-Measured measure(VoxelQuiltRenderer& renderer, const std::function<std::optional<voxel::V2lfStats>()>& frame,
-                 int warmup, int runs) {
+Measured measure(lightfield::LightFieldRenderer& renderer, const render::QuiltGeometry& geometry,
+                 const render::QuiltLayout& layout, int warmup, int runs) {
   Measured m;
-  renderer.reset_peak_memory();
-  for (int w = 0; w < warmup; ++w) frame();
-  std::vector<double> t;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = Clock::now();
-    m.v2lf = frame();
-    t.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  }
-  m.peak_bytes = renderer.peak_memory_bytes();
-  m.seconds = summarize(t);
+  m.timings = time_frames(renderer, geometry, layout, {.warmup = warmup, .runs = runs, .png_runs = 0, .png_path = {}});
   m.quilt = renderer.read_quilt();
   return m;
 }
@@ -91,130 +79,170 @@ void VoxelBenchOptions::check() const {
   if (warmup < 0 || warmup > 100) fail("warmup", fmt::format("{} is outside 0..100", warmup));
 }
 
-nlohmann::ordered_json run_voxel_benchmark(VoxelQuiltRenderer& renderer, const VoxelBenchOptions& options) {
-  options.check();
-  const int runs = options.runs > 0 ? options.runs : renderer.default_runs();
-  const auto t_load = Clock::now();
-  voxel::VoxelScene scene;
-  std::string label;
-  if (!options.scene_path.empty()) {
-    scene = voxel::load_voxel_scene(options.scene_path);
-    label = std::filesystem::path(options.scene_path).filename().string();
-  } else {
-    voxel::VoxelGeneratorOptions g;
-    g.detail_level = options.generated_level;
-    scene = voxel::generate_voxel_scene(g);
-    label = fmt::format("generated tabletop (level {})", options.generated_level);
-  }
-  const double load_seconds = std::chrono::duration<double>(Clock::now() - t_load).count();
-  renderer.set_scene(scene);
-  const render::CameraSpec spec = !options.camera_path.empty() ? render::read_camera_json(options.camera_path)
-                                  : options.scene_path.empty() ? tabletop_voxel_camera()
-                                                               : voxel::frame_voxel_scene(scene, 40.0f);
-  const render::Camera base = render::camera_from_spec(spec, options.size, options.size);
+namespace {
 
-  nlohmann::ordered_json out = {{"benchmark", "voxels"},
-                                {"backend", renderer.name()},
-                                {"device", renderer.device()},
-                                {"memory", renderer.memory_kind()},
-                                {"scene", label},
-                                {"voxels", scene.size()},
-                                {"supersampling", scene.supersampling},
-                                {"samples_per_voxel", scene.samples_per_voxel},
-                                {"load_seconds", load_seconds},
-                                {"runs", runs},
-                                {"warmup", options.warmup},
-                                {"size", options.size},
-                                {"view_cone_deg", options.view_cone_deg},
-                                {"split_levels", options.split_levels},
-                                {"plane_lowpass", options.plane_lowpass},
-                                {"tables", nlohmann::ordered_json::array()}};
-  std::printf("lfd bench voxels: %s (%s); median of %d frames after %d warm-up; peak memory: %s; PSNR/SSIM "
-              "against the per-view quilt of the same backend\n",
-              renderer.name().c_str(), renderer.device().c_str(), runs, options.warmup,
-              renderer.memory_kind().c_str());
-  for (int views : options.views) {
-    const render::QuiltGeometry geometry = render::make_quilt_geometry(
-        base, glm::length(spec.look_at - spec.position), options.view_cone_deg, views);
+struct LoadedScene {
+  lightfield::LightFieldScene scene;
+  std::string label;
+  double load_seconds = 0;
+};
+
+LoadedScene load_scene(const VoxelBenchOptions& options) {
+  const auto t_load = Clock::now();
+  if (!options.scene_path.empty()) {
+    lightfield::LightFieldScene scene(voxel::load_voxel_scene(options.scene_path));
+    return {std::move(scene), std::filesystem::path(options.scene_path).filename().string(),
+            std::chrono::duration<double>(Clock::now() - t_load).count()};
+  }
+  voxel::VoxelGeneratorOptions g;
+  g.detail_level = options.generated_level;
+  lightfield::LightFieldScene scene(voxel::generate_voxel_scene(g));
+  return {std::move(scene), fmt::format("generated tabletop (level {})", options.generated_level),
+          std::chrono::duration<double>(Clock::now() - t_load).count()};
+}
+
+// Prints one table row and returns it as JSON (`v2lf`: with the planes' figures).
+nlohmann::ordered_json print_row(const std::string& method, const std::string& binning, const Measured& m,
+                                 const Measured& truth, bool v2lf, std::optional<std::pair<double, double>> quality) {
+  const TimingStats& t = m.timings.render;
+  const double speedup = truth.timings.render.median / t.median;
+  const lightfield::QuiltStats last = m.timings.stats.empty() ? lightfield::QuiltStats{} : m.timings.stats.back();
+  const size_t plane_bytes = v2lf ? last.plane_bytes : 0;
+  std::printf("| %s | %s | %.3f | %.3f-%.3f | %.2f | %.1fx | %s | %.3f | %s | %s |\n", method.c_str(),
+              binning.c_str(), t.median, t.min, t.max, 1.0 / t.median, speedup,
+              plane_bytes ? fmt::format("{:.3f}", double(plane_bytes) / 1e9).c_str() : "-",
+              double(m.timings.peak_bytes) / 1e9, quality ? fmt::format("{:.2f}", quality->first).c_str() : "-",
+              quality ? fmt::format("{:.4f}", quality->second).c_str() : "-");
+  std::fflush(stdout);
+  nlohmann::ordered_json r = {{"method", method},
+                              {"binning", binning},
+                              {"seconds", t.to_json()},
+                              {"fps", 1.0 / t.median},
+                              {"speedup", speedup},
+                              {"peak_bytes", m.timings.peak_bytes},
+                              {"plane_bytes", plane_bytes},
+                              {"psnr_db", quality ? nlohmann::ordered_json(quality->first) : nullptr},
+                              {"ssim", quality ? nlohmann::ordered_json(quality->second) : nullptr}};
+  if (v2lf) {
+    r["planes"] = last.planes;
+    r["voxels_binned"] = last.binned;
+    r["voxels_split"] = last.voxels_split;
+    r["stage_seconds_last"] = {{"binning", last.seconds_binning},
+                               {"planes", last.seconds_planes},
+                               {"swizzle", last.seconds_swizzle}};
+  }
+  return r;
+}
+
+// One benchmark run: the scene on both renderers, one table per view count.
+class VoxelRunner {
+ public:
+  VoxelRunner(lightfield::LightFieldRenderer& per_view, lightfield::LightFieldRenderer& v2lf,
+              const VoxelBenchOptions& options)
+      : per_view_(per_view), v2lf_(v2lf), options_(options),
+        runs_(options.runs > 0 ? options.runs : v2lf.default_runs()) {}
+
+  nlohmann::ordered_json run() {
+    const LoadedScene loaded = load_scene(options_);
+    const voxel::VoxelScene& scene = loaded.scene.voxels();
+    per_view_.set_scene(loaded.scene);
+    v2lf_.set_scene(loaded.scene);
+    const render::CameraSpec spec = !options_.camera_path.empty() ? render::read_camera_json(options_.camera_path)
+                                    : options_.scene_path.empty() ? tabletop_voxel_camera()
+                                                                  : voxel::frame_voxel_scene(scene, 40.0f);
+    nlohmann::ordered_json out = {{"benchmark", "voxels"},
+                                  {"backend", v2lf_.name()},
+                                  {"device", v2lf_.device()},
+                                  {"memory", v2lf_.memory_kind()},
+                                  {"scene", loaded.label},
+                                  {"voxels", scene.size()},
+                                  {"supersampling", scene.supersampling},
+                                  {"samples_per_voxel", scene.samples_per_voxel},
+                                  {"load_seconds", loaded.load_seconds},
+                                  {"runs", runs_},
+                                  {"warmup", options_.warmup},
+                                  {"size", options_.size},
+                                  {"view_cone_deg", options_.view_cone_deg},
+                                  {"split_levels", options_.split_levels},
+                                  {"plane_lowpass", options_.plane_lowpass},
+                                  {"tables", nlohmann::ordered_json::array()}};
+    std::printf("lfd bench voxels: %s (%s); median of %d frames after %d warm-up; peak memory: %s; PSNR/SSIM "
+                "against the per-view quilt of the same backend\n",
+                v2lf_.name().c_str(), v2lf_.device().c_str(), runs_, options_.warmup, v2lf_.memory_kind().c_str());
+    const render::Camera base = render::camera_from_spec(spec, options_.size, options_.size);
+    for (int views : options_.views)
+      out["tables"].push_back(
+          run_table(loaded.label, scene, render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
+                                                                     options_.view_cone_deg, views)));
+    return out;
+  }
+
+ private:
+  nlohmann::ordered_json run_table(const std::string& label, const voxel::VoxelScene& scene,
+                                   const render::QuiltGeometry& geometry) {
+    const int views = geometry.views;
     const display::QuiltGrid grid = display::quilt_grid_for_views(views, 1.0);
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     // V2LF's default D_shift: the reference camera at the base camera.
     const float d_forward = render::make_reference_camera(geometry, 0.0f, 1).d_forward;
     std::printf("\n#### %s: %zu voxels (ss %.2g, K %d), %d views of %dx%d (%dx%d quilt), view cone %.0f deg, "
                 "split levels %d, plane low-pass %s\n\n",
-                label.c_str(), scene.size(), scene.supersampling, scene.samples_per_voxel, views, options.size,
-                options.size, layout.width, layout.height, options.view_cone_deg, options.split_levels,
-                options.plane_lowpass ? "on" : "off");
+                label.c_str(), scene.size(), scene.supersampling, scene.samples_per_voxel, views, options_.size,
+                options_.size, layout.width, layout.height, options_.view_cone_deg, options_.split_levels,
+                options_.plane_lowpass ? "on" : "off");
     std::printf("| method | binning | median [s] | min-max [s] | FPS | speed-up | planes [GB] | peak [GB] | "
                 "PSNR [dB] | SSIM |\n|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     nlohmann::ordered_json table = {{"views", views},
                                     {"grid", {grid.cols, grid.rows}},
                                     {"quilt", {layout.width, layout.height}},
                                     {"rows", nlohmann::ordered_json::array()}};
-    const Measured truth = measure(
-        renderer,
-        [&]() -> std::optional<voxel::V2lfStats> {
-          renderer.render_per_view(geometry, layout);
-          return std::nullopt;
-        },
-        options.warmup, runs);
-    const auto print_row = [&](const std::string& method, const std::string& binning, const Measured& m,
-                               std::optional<std::pair<double, double>> quality) {
-      const double speedup = truth.seconds.median / m.seconds.median;
-      const size_t plane_bytes = m.v2lf ? m.v2lf->plane_bytes : 0;
-      std::printf("| %s | %s | %.3f | %.3f-%.3f | %.2f | %.1fx | %s | %.3f | %s | %s |\n", method.c_str(),
-                  binning.c_str(), m.seconds.median, m.seconds.min, m.seconds.max, 1.0 / m.seconds.median, speedup,
-                  plane_bytes ? fmt::format("{:.3f}", double(plane_bytes) / 1e9).c_str() : "-",
-                  double(m.peak_bytes) / 1e9, quality ? fmt::format("{:.2f}", quality->first).c_str() : "-",
-                  quality ? fmt::format("{:.4f}", quality->second).c_str() : "-");
-      std::fflush(stdout);
-      nlohmann::ordered_json r = {{"method", method},
-                                  {"binning", binning},
-                                  {"seconds", m.seconds.to_json()},
-                                  {"fps", 1.0 / m.seconds.median},
-                                  {"speedup", speedup},
-                                  {"peak_bytes", m.peak_bytes},
-                                  {"plane_bytes", plane_bytes},
-                                  {"psnr_db", quality ? nlohmann::ordered_json(quality->first) : nullptr},
-                                  {"ssim", quality ? nlohmann::ordered_json(quality->second) : nullptr}};
-      if (m.v2lf) {
-        r["planes"] = m.v2lf->planes;
-        r["voxels_binned"] = m.v2lf->voxels_binned;
-        r["voxels_split"] = m.v2lf->voxels_split;
-        r["stage_seconds_last"] = {{"binning", m.v2lf->seconds_binning},
-                                   {"planes", m.v2lf->seconds_planes},
-                                   {"swizzle", m.v2lf->seconds_swizzle}};
+    const Measured truth = measure(per_view_, geometry, layout, options_.warmup, runs_);
+    table["rows"].push_back(print_row("per-view SVR (ground truth)", "-", truth, truth, false, std::nullopt));
+    for (const std::string& binning : options_.binnings)
+      for (const G2lfConfig& c : g2lf_configs_in(options_.config_sets, "voxel benchmark: config_sets")) {
+        if (options_.only_chunks > 0 && c.chunks != options_.only_chunks) continue;
+        table["rows"].push_back(v2lf_row(geometry, layout, d_forward, binning, c, truth));
       }
-      return r;
-    };
-    table["rows"].push_back(print_row("per-view SVR (ground truth)", "-", truth, std::nullopt));
-    for (const std::string& binning : options.binnings)
-      for (const G2lfConfig& c : g2lf_configs_in(options.config_sets, "voxel benchmark: config_sets")) {
-        if (options.only_chunks > 0 && c.chunks != options.only_chunks) continue;
-        voxel::V2lfOptions o;
-        o.planes.binning = render::parse_chunk_binning(binning);
-        o.planes.chunks = c.chunks;
-        o.planes.plane_scale = c.plane_scale > 0 ? c.plane_scale : equal_density_plane_scale(geometry, d_forward);
-        o.planes.filter = c.filter;
-        o.planes.precision = c.precision;
-        o.planes.adaptive_filter = options.plane_lowpass;
-        o.split_levels = options.split_levels;
-        const Measured m = measure(
-            renderer, [&]() -> std::optional<voxel::V2lfStats> { return renderer.render_v2lf(geometry, layout, o); },
-            options.warmup, runs);
-        nlohmann::ordered_json r =
-            print_row(v2lf_label(c), binning, m,
-                      std::make_pair(render::psnr(m.quilt, truth.quilt), render::ssim(m.quilt, truth.quilt)));
-        r["config_set"] = c.set;
-        r["chunks"] = c.chunks;
-        r["plane_scale"] = o.planes.plane_scale;
-        r["filter"] = c.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
-        r["precision"] = c.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
-        table["rows"].push_back(std::move(r));
-      }
-    out["tables"].push_back(std::move(table));
+    return table;
   }
-  return out;
+
+  nlohmann::ordered_json v2lf_row(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+                                  float d_forward, const std::string& binning, const G2lfConfig& c,
+                                  const Measured& truth) {
+    lightfield::RendererOptions o = v2lf_.options();
+    o.planes = render::G2lfOptions{};
+    o.planes.binning = render::parse_chunk_binning(binning);
+    o.planes.chunks = c.chunks;
+    o.planes.plane_scale = c.plane_scale > 0 ? c.plane_scale : equal_density_plane_scale(geometry, d_forward);
+    o.planes.filter = c.filter;
+    o.planes.precision = c.precision;
+    o.planes.adaptive_filter = options_.plane_lowpass;
+    o.split_levels = options_.split_levels;
+    v2lf_.set_options(o);
+    const Measured m = measure(v2lf_, geometry, layout, options_.warmup, runs_);
+    nlohmann::ordered_json r =
+        print_row(v2lf_label(c), binning, m, truth, true,
+                  std::make_pair(render::psnr(m.quilt, truth.quilt), render::ssim(m.quilt, truth.quilt)));
+    r["config_set"] = c.set;
+    r["chunks"] = c.chunks;
+    r["plane_scale"] = o.planes.plane_scale;
+    r["filter"] = c.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
+    r["precision"] = c.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
+    return r;
+  }
+
+  lightfield::LightFieldRenderer& per_view_;
+  lightfield::LightFieldRenderer& v2lf_;
+  const VoxelBenchOptions& options_;
+  const int runs_;
+};
+
+}  // namespace
+
+nlohmann::ordered_json run_voxel_benchmark(lightfield::LightFieldRenderer& per_view, lightfield::LightFieldRenderer& v2lf,
+                                           const VoxelBenchOptions& options) {
+  options.check();
+  return VoxelRunner(per_view, v2lf, options).run();
 }
 
 }  // namespace lfd::bench

@@ -5,14 +5,14 @@
 // "V2LF"), both in one process on the same scene and quilt: per configuration the median frame
 // time of repeated runs after warm-up and its spread, FPS, the speed-up over the per-view quilt,
 // PSNR / SSIM against it, plane memory and peak memory. Prints Markdown tables as rows finish;
-// returns the figures as JSON. On the CPU or the GL voxel path (bench/voxel_quilt_renderer.hpp):
-// both sides of a table on the same backend.
+// returns the figures as JSON. On the CPU or the GL voxel path (the library's renderers,
+// bench/bench_renderers.hpp): both sides of a table on the same backend.
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "bench/voxel_quilt_renderer.hpp"
+#include "lightfield/light_field_renderer.hpp"
 
 namespace lfd::bench {
 
@@ -36,6 +36,9 @@ struct VoxelBenchOptions {
   void check() const;
 };
 
-nlohmann::ordered_json run_voxel_benchmark(VoxelQuiltRenderer& renderer, const VoxelBenchOptions& options);
+// `per_view` renders the ground truth, `v2lf` the configurations (its plane options set per row);
+// both voxel renderers of one backend.
+nlohmann::ordered_json run_voxel_benchmark(lightfield::LightFieldRenderer& per_view, lightfield::LightFieldRenderer& v2lf,
+                                           const VoxelBenchOptions& options);
 
 }  // namespace lfd::bench

@@ -17,9 +17,9 @@
 #include "sim/synthetic_unit.hpp"
 #include "display/view_count.hpp"
 #include "gpu/gl_context.hpp"
-#include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
+#include "lightfield/renderer_factory.hpp"
 #include "pipeline/numbered_quilt.hpp"
 #include "render/default_camera.hpp"
 #include "render/g2lf.hpp"
@@ -133,24 +133,24 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   {
     Step step(o.verbose, gl ? "rendering the scene with G2LF on the GPU (" + gl->info().renderer + ")"
                             : std::string("rendering the scene with G2LF on the CPU"));
-    const render::GaussianScene scene = render::load_scene(scene_path);
+    const lightfield::LightFieldScene light_field_scene(render::load_scene(scene_path));
+    const render::GaussianScene& scene = light_field_scene.gaussians();
     const render::CameraSpec spec = render::frame_scene(scene, 40.0f, 0.0f);
     const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
     const float focal = glm::length(spec.look_at - spec.position);
     const render::QuiltGeometry geometry =
         render::make_quilt_geometry(base, focal, float(display_quilt.view_cone_deg), display_quilt.views);
     layout = render::make_quilt_layout(geometry, display_quilt.grid.cols, display_quilt.grid.rows);
-    render::G2lfOptions g2lf;
-    g2lf.chunks = 64;
-    g2lf.plane_scale = 2;
-    g2lf.filter = render::PlaneFilter::kBilinear;
-    if (gl) {
-      gpu::GlG2lfOptions options;
-      options.g2lf = g2lf;
-      scene_quilt = gpu::render_quilt_g2lf_gl(scene, geometry, layout, options);
-    } else {
-      scene_quilt = render::render_quilt_g2lf(scene, geometry, layout, g2lf);
-    }
+    lightfield::RendererOptions options;
+    options.planes.chunks = 64;
+    options.planes.plane_scale = 2;
+    options.planes.filter = render::PlaneFilter::kBilinear;
+    const auto device = gl ? lightfield::GlDevice::on_current_context(gl->info()) : nullptr;
+    options.backend = lightfield::backend_for(device);
+    const auto renderer = lightfield::make_renderer(options, lightfield::SceneKind::kGaussians, device);
+    renderer->set_scene(light_field_scene);
+    renderer->render_quilt(geometry, layout);
+    scene_quilt = renderer->read_quilt();
     report.scene_gaussians = scene.size();
   }
   const std::string suffix = render::quilt_suffix(layout.cols, layout.rows, layout.aspect);

@@ -4,6 +4,8 @@
 #include <glm/glm.hpp>
 
 #include "display/display_quilt.hpp"
+#include "gpu/gl_voxel_scene.hpp"
+#include "lightfield/renderer_factory.hpp"
 #include "render/per_view_quilt.hpp"
 #include "util/error.hpp"
 
@@ -46,7 +48,8 @@ LightFieldFrame::LightFieldFrame(const display::Calibration& calibration, const 
     : calibration_(calibration),
       lens_(calibration.display, calibration.correction),
       info_(info),
-      options_(std::move(options)) {
+      options_(std::move(options)),
+      device_(lightfield::GlDevice::on_current_context(info)) {
   panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
 
@@ -70,12 +73,14 @@ LightFieldFrame::LightFieldFrame(const ViewerScene& scene, const display::Calibr
 
 LightFieldFrame::~LightFieldFrame() = default;
 
+int LightFieldFrame::scene_sh_degree() const {
+  return device_->gaussians() ? device_->gaussians()->sh_degree() : device_->voxels()->scene().sh_degree;
+}
+
 void LightFieldFrame::drop_renderers() {
-  // Renderers hold their scene by reference: they go first.
-  g2lf_.reset();
+  // Renderers hold their scene: they go first.
+  sweeping_.reset();
   per_view_.reset();
-  v2lf_.reset();
-  voxel_views_.reset();
 }
 
 void LightFieldFrame::replace_scene(const ViewerScene& scene) {
@@ -88,10 +93,8 @@ void LightFieldFrame::replace_scene(const ViewerScene& scene) {
 void LightFieldFrame::replace_scene(const voxel::VoxelScene& scene) {
   gpu::check_voxel_scene_fits(scene.size(), scene.sh_degree, info_);  // refuses: the old scene kept
   drop_renderers();
-  scene_.reset();
-  voxel_scene_.reset();  // the old buffers go before the new ones are allocated: a lower peak
   scene_fit_notice_.clear();
-  voxel_scene_ = std::make_unique<gpu::GlVoxelScene>(scene, info_);
+  device_->upload(scene);  // the old buffers go before the new ones are allocated: a lower peak
 }
 
 void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
@@ -106,52 +109,75 @@ void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
         "scene of {} Gaussians shown at SH degree {} (its own: {}): {:.0f} MiB on the GPU instead of {:.0f} MiB{}",
         scene.size(), o.max_sh_degree, scene.sh_degree, mib(scene_gpu_bytes(scene.size(), o.max_sh_degree)),
         mib(scene_gpu_bytes(scene.size(), scene.sh_degree)), limit_text(info_));
-  scene_.reset();  // the old buffers go before the new ones are allocated: a lower peak
-  voxel_scene_.reset();
-  scene_ = std::make_unique<gpu::GlScene>(scene, info_, o);
+  device_->upload(scene, o);  // the old buffers go before the new ones are allocated: a lower peak
 }
 
-void LightFieldFrame::render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster,
-                                  bool timed) {
-  if (!g2lf_) g2lf_ = std::make_unique<gpu::GlG2lfRenderer>(*scene_, info_);
-  gpu::GlG2lfOptions o;
-  o.g2lf = settings.g2lf;
-  o.gpu_timers = timed;
-  o.memory_budget_bytes = options_.g2lf_memory_budget_bytes;
-  o.accumulation_budget_bytes = options_.g2lf_accumulation_budget_bytes;
+lightfield::QuiltStats LightFieldFrame::render_g2lf(lightfield::GlLightFieldRenderer& renderer,
+                                                    lightfield::RendererOptions options) {
   plane_fit_notice_.clear();
   try {
-    g2lf_->render_quilt(plan_.geometry, plan_.layout, o, raster, quilt_);
+    return renderer.render_quilt_into(plan_.geometry, plan_.layout, quilt_);
   } catch (const InputError& refused) {
     // The memory check runs before anything is allocated or drawn: RGBA8 planes (a quarter of
     // the bytes, plus a bounded float accumulation array) may fit where RGBA32F ones do not.
-    if (o.g2lf.precision == render::PlanePrecision::kU8) throw;
-    o.g2lf.precision = render::PlanePrecision::kU8;
+    if (options.planes.precision == render::PlanePrecision::kU8) throw;
+    options.planes.precision = render::PlanePrecision::kU8;
+    renderer.set_options(options);
+    lightfield::QuiltStats stats;
     try {
-      g2lf_->render_quilt(plan_.geometry, plan_.layout, o, raster, quilt_);
+      stats = renderer.render_quilt_into(plan_.geometry, plan_.layout, quilt_);
     } catch (const InputError&) {
       throw refused;
     }
     plane_fit_notice_ = fmt::format("RGBA32F planes do not fit, so RGBA8 planes are shown ({})", refused.what());
+    return stats;
   }
 }
 
-void LightFieldFrame::render_voxels(const ViewerSettings& settings, FrameReport* report) {
-  if (report) {
-    report->binning_seconds = report->planes_seconds = report->swizzle_seconds = report->raster_seconds = 0.0;
-  }
-  if (settings.method == Method::kG2lf) {
-    if (!v2lf_) v2lf_ = std::make_unique<gpu::GlV2lfRenderer>(*voxel_scene_, info_);
-    gpu::GlV2lfOptions o;
-    o.v2lf.planes = settings.g2lf;
-    o.v2lf.split_levels = 0;  // a split re-uploads the scene every frame
-    v2lf_->render_quilt(plan_.geometry, plan_.layout, o, settings.background, quilt_);
+lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& settings, bool timed) {
+  lightfield::RendererOptions o;
+  o.backend = lightfield::Backend::kGl;
+  const bool sweeping = settings.method == Method::kG2lf;
+  o.method = sweeping ? lightfield::Method::kSweepingPlanes : lightfield::Method::kPerView;
+  o.planes = settings.g2lf;
+  o.split_levels = 0;  // V2LF: a split re-uploads the scene every frame
+  o.background = settings.background;
+  o.gl.gpu_timers = timed;
+  o.gl.memory_budget_bytes = options_.g2lf_memory_budget_bytes;
+  o.gl.accumulation_budget_bytes = options_.g2lf_accumulation_budget_bytes;
+  const lightfield::SceneKind kind = shows_voxels() ? lightfield::SceneKind::kVoxels : lightfield::SceneKind::kGaussians;
+  std::unique_ptr<lightfield::GlLightFieldRenderer>& renderer = sweeping ? sweeping_ : per_view_;
+  if (!renderer)
+    renderer = lightfield::make_gl_renderer(o, kind, device_);
+  else
+    renderer->set_options(o);
+  if (sweeping && kind == lightfield::SceneKind::kGaussians) return render_g2lf(*renderer, o);
+  return renderer->render_quilt_into(plan_.geometry, plan_.layout, quilt_);
+}
+
+void LightFieldFrame::fill_report(const ViewerSettings& settings, const lightfield::QuiltStats& stats,
+                                  FrameReport& report) const {
+  report.interlace_seconds = interlace_timer_.seconds();
+  if (shows_voxels()) {
+    // Stage times of the voxel path are not timed per stage; the frame time says it all.
+    report.binning_seconds = report.planes_seconds = report.swizzle_seconds = report.raster_seconds = 0.0;
+    report.plane_bytes = stats.plane_bytes;
+  } else if (settings.method == Method::kG2lf) {
+    report.binning_seconds = stats.seconds_binning;
+    report.planes_seconds = stats.seconds_planes;
+    report.swizzle_seconds = stats.seconds_swizzle;
+    report.plane_bytes = stats.plane_bytes;
   } else {
-    if (!voxel_views_) voxel_views_ = std::make_unique<gpu::GlVoxelViews>(*voxel_scene_);
-    voxel::VoxelRenderSettings s;
-    s.background = settings.background;
-    voxel_views_->render_quilt(plan_.geometry, plan_.layout, s, quilt_);
+    report.raster_seconds = stats.seconds_raster;
+    report.plane_bytes = 0;
   }
+  report.gpu_peak_bytes = gpu::gpu_bytes_peak();
+  report.views = plan_.layout.views;
+  report.cols = plan_.layout.cols;
+  report.rows = plan_.layout.rows;
+  report.view_width = plan_.geometry.base.width;
+  report.view_height = plan_.geometry.base.height;
+  report.view_cone_deg = glm::degrees(plan_.geometry.view_cone_rad);
 }
 
 void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSettings& settings,
@@ -167,48 +193,12 @@ void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSetti
     interlacer_ = std::make_unique<gpu::GlInterlacer>(lens_, layout);
     interlacer_layout_ = layout;
   }
-  render::RasterSettings raster;
-  raster.background = settings.background;
   const bool timed = report != nullptr;
-  if (voxel_scene_) {
-    render_voxels(settings, report);
-  } else if (settings.method == Method::kG2lf) {
-    render_g2lf(settings, raster, timed);
-  } else {
-    if (!per_view_) {
-      gpu::GlPerViewOptions o;
-      o.gpu_timers = timed;
-      per_view_ = std::make_unique<gpu::GlPerViewRenderer>(*scene_, o);
-    }
-    per_view_->render_quilt(plan_.geometry, layout, raster, quilt_);
-  }
+  const lightfield::QuiltStats stats = render_quilt(settings, timed);
   if (timed) interlace_timer_.begin();
   interlacer_->interlace(quilt_, panel_);
   if (timed) interlace_timer_.end();
-
-  if (!report) return;
-  report->interlace_seconds = interlace_timer_.seconds();
-  if (voxel_scene_) {
-    // Stage times of the voxel path are not timed per stage; the frame time says it all.
-    report->plane_bytes = v2lf_ && settings.method == Method::kG2lf ? v2lf_->stats().plane_bytes : 0;
-  } else if (settings.method == Method::kG2lf) {
-    const auto& st = g2lf_->stats();
-    report->binning_seconds = st.seconds_binning;
-    report->planes_seconds = st.seconds_planes;
-    report->swizzle_seconds = st.seconds_swizzle;
-    report->plane_bytes = st.plane_bytes;
-  } else {
-    const auto& st = per_view_->stats();
-    report->raster_seconds = st.preprocess_s + st.sort_s + st.raster_s;
-    report->plane_bytes = 0;
-  }
-  report->gpu_peak_bytes = gpu::gpu_bytes_peak();
-  report->views = layout.views;
-  report->cols = layout.cols;
-  report->rows = layout.rows;
-  report->view_width = plan_.geometry.base.width;
-  report->view_height = plan_.geometry.base.height;
-  report->view_cone_deg = glm::degrees(plan_.geometry.view_cone_rad);
+  if (report) fill_report(settings, stats, *report);
 }
 
 }  // namespace lfd::viewer

@@ -1,7 +1,7 @@
 #pragma once
 // One frame of the viewer, all on the GPU: scene -> quilt (G2LF or per view; for a voxel scene
-// V2LF or per view, gpu/gl_v2lf.hpp and gpu/gl_voxel_views.hpp) -> panel (interlacing shader),
-// with no CPU round trip of the images. The same class renders in the display window
+// V2LF or per view: the library's GL renderers, lightfield/renderer_factory.hpp, on the current
+// context) -> panel (interlacing shader), with no CPU round trip of the images. The same class renders in the display window
 // and in a headless context, which is how the viewer's test checks the window against the
 // headless render of the same camera and settings.
 #include <functional>
@@ -16,11 +16,8 @@
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/gl_objects.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_scene.hpp"
-#include "gpu/gl_v2lf.hpp"
-#include "gpu/gl_voxel_scene.hpp"
-#include "gpu/gl_voxel_views.hpp"
+#include "lightfield/gl_device.hpp"
+#include "lightfield/gl_renderer.hpp"
 #include "render/camera_json.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -73,10 +70,10 @@ class LightFieldFrame {
   void replace_scene(const render::GaussianScene& scene);
   void replace_scene(const voxel::VoxelScene& scene);
   void replace_scene(const ViewerScene& scene);
-  bool shows_voxels() const { return voxel_scene_ != nullptr; }
+  bool shows_voxels() const { return device_->voxels() != nullptr; }
 
   // The SH degree the scene was uploaded at, and what was lowered to fit (empty: nothing).
-  int scene_sh_degree() const { return scene_ ? scene_->sh_degree() : voxel_scene_->scene().sh_degree; }
+  int scene_sh_degree() const;
   const std::string& scene_fit_notice() const { return scene_fit_notice_; }
   const std::string& plane_fit_notice() const { return plane_fit_notice_; }
   const display::LensModel& lens() const { return lens_; }
@@ -90,8 +87,11 @@ class LightFieldFrame {
  private:
   // The members every scene kind shares (the lens, the panel); the public constructors add the scene.
   LightFieldFrame(const display::Calibration& calibration, const gpu::GlInfo& info, FrameOptions options);
-  void render_g2lf(const ViewerSettings& settings, const render::RasterSettings& raster, bool timed);
-  void render_voxels(const ViewerSettings& settings, FrameReport* report);
+  // The quilt of `settings`' method into quilt_; its figures.
+  lightfield::QuiltStats render_quilt(const ViewerSettings& settings, bool timed);
+  // G2LF, falling back from RGBA32F to RGBA8 planes when those do not fit.
+  lightfield::QuiltStats render_g2lf(lightfield::GlLightFieldRenderer& renderer, lightfield::RendererOptions options);
+  void fill_report(const ViewerSettings& settings, const lightfield::QuiltStats& stats, FrameReport& report) const;
   void drop_renderers();
 
   display::Calibration calibration_;
@@ -99,12 +99,8 @@ class LightFieldFrame {
   gpu::GlInfo info_;
   FrameOptions options_;
   std::string scene_fit_notice_, plane_fit_notice_;
-  std::unique_ptr<gpu::GlScene> scene_;
-  std::unique_ptr<gpu::GlPerViewRenderer> per_view_;
-  std::unique_ptr<gpu::GlG2lfRenderer> g2lf_;
-  std::unique_ptr<gpu::GlVoxelScene> voxel_scene_;
-  std::unique_ptr<gpu::GlVoxelViews> voxel_views_;
-  std::unique_ptr<gpu::GlV2lfRenderer> v2lf_;
+  std::shared_ptr<lightfield::GlDevice> device_;  // the current context and the uploaded scene
+  std::unique_ptr<lightfield::GlLightFieldRenderer> per_view_, sweeping_;  // made on first use
   std::unique_ptr<gpu::GlInterlacer> interlacer_;
   std::optional<render::QuiltLayout> interlacer_layout_;
   FramePlan plan_;

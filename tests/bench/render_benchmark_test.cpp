@@ -5,10 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include "bench/quilt_renderer.hpp"
 #include "bench/render_benchmark.hpp"
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
+#include "lightfield/light_field_renderer.hpp"
 #include "render/camera_json.hpp"
 #include "render/quilt_geometry.hpp"
 #include "util/error.hpp"
@@ -68,41 +68,55 @@ TEST(RenderConfigs, Table1IsThePapersSevenRowsAndUnknownSetsAreRefused) {
   EXPECT_THROW(g2lf_configs_in({"table2"}, "configs"), InputError);
 }
 
+// What the fake backend's two renderers count together.
+struct FakeCounts {
+  size_t scene_size = 0;
+  int per_view_frames = 0, g2lf_frames = 0, reads = 0, resets = 0, last_plane_scale = 0;
+};
+
 // A backend whose frames cost nothing: per-view quilts are 0.5 grey, G2LF ones 0.51 (PSNR
 // 40 dB against them); it counts its calls and whether quilts are read inside a frame.
-class FakeRenderer final : public QuiltRenderer {
+class FakeRenderer final : public lightfield::LightFieldRenderer {
  public:
+  FakeRenderer(lightfield::Method method, FakeCounts& counts) : counts_(counts) { options_.method = method; }
   std::string name() const override { return "fake"; }
   std::string device() const override { return "none"; }
   int default_runs() const override { return 4; }
-  void set_scene(const render::GaussianScene& scene) override { scene_size = scene.size(); }
-  void render_per_view(const render::QuiltGeometry&, const render::QuiltLayout& layout) override {
-    ++per_view_frames;
-    quilt_ = ImageF(layout.width, layout.height, 3, 0.5f);
-  }
-  render::G2lfStats render_g2lf(const render::QuiltGeometry&, const render::QuiltLayout& layout,
-                                const render::G2lfOptions& options) override {
-    ++g2lf_frames;
-    last_plane_scale = options.plane_scale;
+  const lightfield::RendererOptions& options() const override { return options_; }
+  void set_options(const lightfield::RendererOptions& options) override { options_ = options; }
+  void set_scene(const lightfield::LightFieldScene& scene) override { counts_.scene_size = scene.size(); }
+  lightfield::QuiltStats render_quilt(const render::QuiltGeometry&, const render::QuiltLayout& layout) override {
+    if (options_.method == lightfield::Method::kPerView) {
+      ++counts_.per_view_frames;
+      quilt_ = ImageF(layout.width, layout.height, 3, 0.5f);
+      return {};
+    }
+    ++counts_.g2lf_frames;
+    counts_.last_plane_scale = options_.planes.plane_scale;
     quilt_ = ImageF(layout.width, layout.height, 3, 0.51f);
-    render::G2lfStats stats;
-    stats.planes = options.chunks;
-    stats.plane_bytes = 1000;
-    return stats;
+    return {.planes = options_.planes.chunks, .plane_bytes = 1000};
   }
+  ImageF render_view(const render::QuiltGeometry&, int) override { return {}; }
   const ImageF& read_quilt() override {
-    ++reads;
+    ++counts_.reads;
     return quilt_;
   }
   std::string memory_kind() const override { return "nothing"; }
-  void reset_peak_memory() override { ++resets; }
+  void reset_peak_memory() override { ++counts_.resets; }
   size_t peak_memory_bytes() const override { return 123; }
 
-  size_t scene_size = 0;
-  int per_view_frames = 0, g2lf_frames = 0, reads = 0, resets = 0, last_plane_scale = 0;
-
  private:
+  FakeCounts& counts_;
+  lightfield::RendererOptions options_;
   ImageF quilt_;
+};
+
+// The fake backend: a per-view and a G2LF renderer.
+struct FakeBackend {
+  FakeCounts counts;
+  FakeRenderer per_view{lightfield::Method::kPerView, counts};
+  FakeRenderer g2lf{lightfield::Method::kSweepingPlanes, counts};
+  nlohmann::ordered_json run(const RenderBenchOptions& o) { return run_render_benchmark(per_view, g2lf, o); }
 };
 
 TEST(RenderBenchmark, TimesWarmUpPlusRunsPerRowAndComparesWithThePerViewQuilt) {
@@ -115,8 +129,9 @@ TEST(RenderBenchmark, TimesWarmUpPlusRunsPerRowAndComparesWithThePerViewQuilt) {
   o.warmup = 1;
   o.runs = 3;
   o.png_runs = 2;
-  FakeRenderer fake;
-  const nlohmann::ordered_json result = run_render_benchmark(fake, o);
+  FakeBackend backend;
+  const nlohmann::ordered_json result = backend.run(o);
+  const FakeCounts& fake = backend.counts;
 
   EXPECT_EQ(fake.scene_size, 500u);
   EXPECT_EQ(fake.per_view_frames, 1 + 3);
@@ -145,20 +160,21 @@ TEST(RenderBenchmark, TimesWarmUpPlusRunsPerRowAndComparesWithThePerViewQuilt) {
 TEST(RenderBenchmark, BadOptionsNameTheField) {
   RenderBenchOptions o;
   o.scenes = {{"", 100}};
-  FakeRenderer fake;
+  FakeBackend backend;
+  const FakeCounts& fake = backend.counts;
   o.views = {0};
   try {
-    run_render_benchmark(fake, o);
+    backend.run(o);
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("views"), std::string::npos) << e.what();
   }
   o.views = {45};
   o.scenes.clear();
-  EXPECT_THROW(run_render_benchmark(fake, o), InputError);
+  EXPECT_THROW(backend.run(o), InputError);
   o.scenes = {{"", 100}};
   o.binnings = {"median"};
-  EXPECT_THROW(run_render_benchmark(fake, o), InputError);
+  EXPECT_THROW(backend.run(o), InputError);
   EXPECT_EQ(fake.per_view_frames + fake.g2lf_frames, 0);
 }
 

@@ -2,6 +2,7 @@
 // of V2LF against the per-view quilt.
 #include <gtest/gtest.h>
 
+#include "bench/bench_renderers.hpp"
 #include "bench/voxel_benchmark.hpp"
 #include "util/error.hpp"
 
@@ -20,8 +21,8 @@ VoxelBenchOptions tiny() {
 }
 
 TEST(VoxelBenchmark, TimesPerViewAndTheTable1RowsOfOneChunkCount) {
-  const auto renderer = make_cpu_voxel_renderer();
-  const nlohmann::ordered_json r = run_voxel_benchmark(*renderer, tiny());
+  const BenchRenderers cpu = make_bench_renderers("cpu", lightfield::SceneKind::kVoxels);
+  const nlohmann::ordered_json r = run_voxel_benchmark(*cpu.per_view, *cpu.sweeping, tiny());
   ASSERT_EQ(r["tables"].size(), 1u);
   const auto& rows = r["tables"][0]["rows"];
   ASSERT_EQ(rows.size(), 3u);  // per view, V2LF (N=64), V2LF (N=64, Ps=2)
@@ -38,8 +39,8 @@ TEST(VoxelBenchmark, TimesPerViewAndTheTable1RowsOfOneChunkCount) {
 
 // The same table on the GL voxel path (llvmpipe here): both sides on the GPU, GPU memory.
 TEST(VoxelBenchmark, TheGlBackendTimesTheSameRows) {
-  const auto renderer = make_gl_voxel_renderer();
-  const nlohmann::ordered_json r = run_voxel_benchmark(*renderer, tiny());
+  const BenchRenderers gl = make_bench_renderers("gl", lightfield::SceneKind::kVoxels);
+  const nlohmann::ordered_json r = run_voxel_benchmark(*gl.per_view, *gl.sweeping, tiny());
   EXPECT_EQ(r["backend"], "gl");
   const auto& rows = r["tables"][0]["rows"];
   ASSERT_EQ(rows.size(), 3u);
@@ -52,7 +53,8 @@ TEST(VoxelBenchmark, TheGlBackendTimesTheSameRows) {
 TEST(VoxelBenchmark, RefusesAnUnknownConfigurationSet) {
   VoxelBenchOptions o = tiny();
   o.config_sets = {"table9"};
-  EXPECT_THROW(run_voxel_benchmark(*make_cpu_voxel_renderer(), o), InputError);
+  const BenchRenderers cpu = make_bench_renderers("cpu", lightfield::SceneKind::kVoxels);
+  EXPECT_THROW(run_voxel_benchmark(*cpu.per_view, *cpu.sweeping, o), InputError);
 }
 
 }  // namespace

@@ -1,11 +1,11 @@
-#include "bench/process_memory.hpp"
+#include "lightfield/process_memory.hpp"
 
 #include <sys/resource.h>
 
 #include <fstream>
 #include <string>
 
-namespace lfd::bench {
+namespace lfd::lightfield {
 
 void reset_peak_rss() {
   std::ofstream clear("/proc/self/clear_refs");
@@ -21,4 +21,4 @@ size_t peak_rss_bytes() {
   return size_t(usage.ru_maxrss) * 1024;  // KiB on Linux
 }
 
-}  // namespace lfd::bench
+}  // namespace lfd::lightfield

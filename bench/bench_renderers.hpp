@@ -1,0 +1,21 @@
+#pragma once
+// The two renderers a benchmark table compares on one backend, made by the library's factory
+// (lightfield/renderer_factory.hpp): every view alone (the ground truth) and the sweeping planes
+// (G2LF or V2LF; the benchmark sets each configuration's plane options). On the GL backend they
+// share one headless device: one scene upload, one RGBA8 quilt (the quilt as displayed), GPU
+// memory as the memory figure.
+#include <memory>
+#include <string>
+
+#include "lightfield/light_field_renderer.hpp"
+
+namespace lfd::bench {
+
+struct BenchRenderers {
+  std::unique_ptr<lightfield::LightFieldRenderer> per_view, sweeping;
+};
+
+// `backend`: "cpu" or "gl" (InputError for another; gpu::GlUnavailable, exit 2, without GL).
+BenchRenderers make_bench_renderers(const std::string& backend, lightfield::SceneKind kind);
+
+}  // namespace lfd::bench

@@ -1,0 +1,46 @@
+#pragma once
+// What the four GL renderers share (lightfield/gl_gaussian_renderers.cpp,
+// lightfield/gl_voxel_renderers.cpp): the device, its scene bound again whenever the device
+// uploads another, its quilt, GPU memory.
+#include <cstdint>
+#include <memory>
+
+#include "lightfield/gl_renderer.hpp"
+
+namespace lfd::lightfield {
+
+class GlRendererBase : public GlLightFieldRenderer {
+ public:
+  GlRendererBase(const RendererOptions& options, SceneKind kind, std::shared_ptr<GlDevice> device);
+
+  std::string name() const override { return "gl"; }
+  std::string device() const override { return device_->info().summary(); }
+  int default_runs() const override { return 10; }
+  const RendererOptions& options() const override { return options_; }
+  void set_options(const RendererOptions& options) override;
+  void set_scene(const LightFieldScene& scene) override;
+  QuiltStats render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout) override;
+  const ImageF& read_quilt() override { return device_->read_quilt(); }
+  std::string memory_kind() const override { return GlDevice::memory_kind(); }
+  void reset_peak_memory() override { GlDevice::reset_peak_memory(); }
+  size_t peak_memory_bytes() const override { return GlDevice::peak_memory_bytes(); }
+  GlDevice& gl_device() const override { return *device_; }
+
+ protected:
+  // Binds the device's scene unless bound to its current upload (std::logic_error: none).
+  void ensure_bound();
+  // Makes the gpu:: renderers on the device's scene of this kind (dropping the old ones first).
+  virtual void bind() = 0;
+  // Called by set_options after the options changed.
+  virtual void options_changed(const RendererOptions& old) {}
+  void forget_binding() { bound_generation_ = UINT64_MAX; }
+
+  std::shared_ptr<GlDevice> device_;  // first: the context outlives what derived classes hold
+  RendererOptions options_;
+
+ private:
+  SceneKind kind_;
+  uint64_t bound_generation_ = UINT64_MAX;
+};
+
+}  // namespace lfd::lightfield

@@ -1,0 +1,17 @@
+#pragma once
+// What every renderer checks of the calls made to it (std::logic_error: a caller's mistake).
+#include "lightfield/light_field_scene.hpp"
+#include "lightfield/renderer_options.hpp"
+#include "render/blend.hpp"
+#include "util/image.hpp"
+
+namespace lfd::lightfield {
+
+// set_options may change everything but the backend and the method.
+void check_same_renderer(const RendererOptions& mine, const RendererOptions& asked);
+// set_scene takes a scene of the renderer's kind.
+void check_scene_kind(SceneKind mine, const LightFieldScene& scene);
+// A raster image's RGB as an image (what render_view returns).
+ImageF rgb_image(const render::RasterImage& image);
+
+}  // namespace lfd::lightfield

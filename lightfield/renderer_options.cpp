@@ -1,0 +1,56 @@
+#include "lightfield/renderer_options.hpp"
+
+#include "util/error.hpp"
+
+namespace lfd::lightfield {
+
+const char* processor_name(Backend backend) { return backend == Backend::kGl ? "GPU" : "CPU"; }
+
+std::string method_name(Method method, SceneKind kind) {
+  if (method == Method::kPerView) return "per-view";
+  return kind == SceneKind::kVoxels ? "v2lf" : "g2lf";
+}
+
+void RendererOptions::check() const {
+  planes.check();
+  if (gl.plane_format == gpu::PlaneFormat::kRgba16f && backend == Backend::kCpu)
+    throw_input_error("renderer options: plane_format: RGBA16F planes need the GL backend; the CPU stores u8 or f32");
+}
+
+render::RasterSettings RendererOptions::raster_settings() const {
+  render::RasterSettings settings;
+  if (background) settings.background = *background;
+  return settings;
+}
+
+voxel::VoxelRenderSettings RendererOptions::voxel_settings() const {
+  voxel::VoxelRenderSettings settings;
+  settings.background = background;
+  return settings;
+}
+
+voxel::V2lfOptions RendererOptions::v2lf() const {
+  voxel::V2lfOptions o;
+  o.planes = planes;
+  o.split_levels = split_levels;
+  return o;
+}
+
+gpu::GlG2lfOptions RendererOptions::gl_g2lf() const {
+  gpu::GlG2lfOptions o;
+  o.g2lf = planes;
+  o.plane_format = gl.plane_format;
+  o.gpu_timers = gl.gpu_timers;
+  o.memory_budget_bytes = gl.memory_budget_bytes;
+  o.accumulation_budget_bytes = gl.accumulation_budget_bytes;
+  return o;
+}
+
+gpu::GlV2lfOptions RendererOptions::gl_v2lf() const {
+  gpu::GlV2lfOptions o;
+  o.v2lf = v2lf();
+  o.plane_format = gl.plane_format;
+  return o;
+}
+
+}  // namespace lfd::lightfield

@@ -1,0 +1,72 @@
+#pragma once
+// What a light-field renderer is asked for (lightfield/renderer_factory.hpp chooses the renderer
+// from it): the backend (the CPU reference or OpenGL), the method (every view rendered alone, or
+// the sweeping planes: G2LF for Gaussians, V2LF for voxels; docs/rendering.md, docs/voxels.md),
+// the planes' options, the background, and what only the GL renderers read.
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "gpu/gl_g2lf.hpp"
+#include "gpu/gl_planes.hpp"
+#include "gpu/gl_v2lf.hpp"
+#include "lightfield/light_field_scene.hpp"
+#include "render/g2lf.hpp"
+#include "render/preprocess.hpp"
+#include "voxel/v2lf.hpp"
+#include "voxel/voxel_rasterizer.hpp"
+
+namespace lfd::lightfield {
+
+enum class Backend { kCpu, kGl };
+enum class Method { kPerView, kSweepingPlanes };
+
+// What the backend runs on, for reports: "CPU" | "GPU".
+const char* processor_name(Backend backend);
+
+// The method's name as `lfd render --method` spells it: "per-view", "g2lf" (Gaussians' sweeping
+// planes) or "v2lf" (voxels').
+std::string method_name(Method method, SceneKind kind);
+
+// What only the GL renderers read.
+struct GlRenderOptions {
+  // Plane texel format; unset: the CPU precision's. RGBA16F exists only on the GPU.
+  std::optional<gpu::PlaneFormat> plane_format;
+  // The quilt the renderer renders into and read_quilt reads back: RGBA32F (the CPU's floats to
+  // rounding) or RGBA8 (the quilt as displayed, what the benchmarks time).
+  GLenum quilt_format = GL_RGBA32F;
+  // Per-stage GPU timers in the stats (waits for the GPU at the end of a frame: benchmarks and
+  // the viewer's frame report). The per-view renderer makes its gpu:: renderer again when it
+  // changes (its timer queries are made with it).
+  bool gpu_timers = false;
+  size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
+  size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
+};
+
+struct RendererOptions {
+  Backend backend = Backend::kCpu;
+  Method method = Method::kSweepingPlanes;
+  // The sweeping planes' options (G2LF's; V2LF uses all of them, adaptive_filter switching its
+  // planes' low-pass filter).
+  render::G2lfOptions planes;
+  int split_levels = 0;  // V2LF: voxel::V2lfOptions::split_levels
+  // Unset: black behind Gaussians, the scene's own background behind voxels.
+  std::optional<glm::vec3> background;
+  GlRenderOptions gl;
+
+  // planes.check() and InputError "renderer options: plane_format: ..." for RGBA16F planes on
+  // the CPU.
+  void check() const;
+
+  // The options of the calls each renderer wraps.
+  render::RasterSettings raster_settings() const;
+  voxel::VoxelRenderSettings voxel_settings() const;
+  voxel::V2lfOptions v2lf() const;
+  gpu::GlG2lfOptions gl_g2lf() const;
+  gpu::GlV2lfOptions gl_v2lf() const;
+};
+
+}  // namespace lfd::lightfield
