@@ -1,4 +1,4 @@
-// lfd bench: a table of benchmarks (speed lives here, never in tests: DESIGN section 9).
+// lfd bench: a table of benchmarks (speed lives here, never in tests: docs/performance.md).
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -22,9 +22,11 @@ const std::vector<Bench>& benches() {
   static const std::vector<Bench> table = {
       {"render", RunBenchRender, "per-view quilts vs G2LF: the paper's Table 1 (--backend cpu)"},
       {"voxels", RunBenchVoxels, "per-view voxel quilts vs V2LF: the paper's Table 1, V2LF half (CPU)"},
+      {"gl-vs-cpu", RunBenchGlVsCpu, "GL G2LF against the CPU reference on large scenes (PSNR, times)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
       {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},
+      {"camera-poses", RunBenchCameraPoses, "camera calibration: focal-length error against board poses"},
 #endif
   };
   return table;

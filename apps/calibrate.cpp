@@ -1,5 +1,5 @@
 // lfd calibrate: a display unit's calibration from photographs of `lfd patterns`
-// (DESIGN section 5). Thin: the pipeline is calib::calibrate_display.
+// (docs/calibration.md). Thin: the pipeline is calib::calibrate_display.
 #include <cstdio>
 #include <iostream>
 #include <optional>

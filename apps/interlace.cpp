@@ -51,7 +51,7 @@ int RunInterlace(int argc, char** argv) {
       double(cal.display.screen_w) / cal.display.screen_h);
   const display::LensModel lens(cal.display, cal.correction);
   interlace::InterlaceOptions options;
-  options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
+  options.blend = interlace::parse_view_blend(blend);
   options.overscan = overscan;
   options.invert_views = invert;
   const auto gl_context = open_backend(parse_backend(backend_name));

@@ -1,4 +1,4 @@
-// lfd patterns: the calibration patterns for a display (DESIGN section 5).
+// lfd patterns: the calibration patterns for a display (docs/calibration.md section 1).
 #include <cstdio>
 #include <optional>
 #include <string>

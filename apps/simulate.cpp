@@ -1,4 +1,5 @@
-// lfd simulate: a synthetic photograph of a display showing a panel image (DESIGN section 4).
+// lfd simulate: a synthetic photograph of a display showing a panel image (docs/validation.md "The
+// forward model").
 #include <iostream>
 
 #include "apps/cli.hpp"

@@ -1,4 +1,4 @@
-// lfd validate: crosstalk and view separation of a display (DESIGN section 1, job 3).
+// lfd validate: crosstalk and view separation of a display (docs/validation.md).
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -8,6 +8,7 @@
 #include "apps/commands.hpp"
 #include "display/calibration_file.hpp"
 #include "display/view_count.hpp"
+#include "interlace/interlacer.hpp"
 #include "util/progress.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -134,7 +135,7 @@ int RunValidate(int argc, char** argv) {
   app.add_flag("--json", json, "print the figures as JSON on stdout");
   app.add_option("--out", out_dir, "report directory")->required();
   if (auto code = parse(app, argc, argv)) return *code;
-  options.blend = blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
+  options.blend = interlace::parse_view_blend(blend);
   if (eye_height_option->count()) options.eye_height_m = eye_height;
   options.check();
 

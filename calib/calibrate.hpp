@@ -1,5 +1,5 @@
 #pragma once
-// Calibration of a display unit from photographs (DESIGN section 5): the whole offline
+// Calibration of a display unit from photographs (docs/calibration.md): the whole offline
 // pipeline behind `lfd calibrate DIR`. Captures are checked before anything is estimated
 // (missing or extra files, wrong pattern, camera motion, exposure, screen outside the photo,
 // no board), then: registration -> phase decoding -> coarse start -> one Ceres solve ->

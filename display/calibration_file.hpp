@@ -1,5 +1,5 @@
 #pragma once
-// The project's calibration.json: a versioned superset of visual.json (DESIGN section 3).
+// The project's calibration.json: a versioned superset of visual.json (docs/file-formats.md).
 //   {"format": "lfd-calibration", "version": 1,
 //    "display": {visual.json object},
 //    "correction": {"nx":..,"ny":..,"coefficients":[..]} (lens periods, may be absent),

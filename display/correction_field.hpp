@@ -1,7 +1,7 @@
 #pragma once
-// The per-device correction field w(u, v) of the lens phase (DESIGN section 4), in lens
-// periods: a uniform cubic B-spline over the screen (u, v in [0, 1], v up) with nx x ny
-// control points. Cubic B-splines are C2 and local, so a smoothness prior on the control
+// The per-device correction field w(u, v) of the lens phase (docs/display-model.md "Phase and
+// view"), in lens periods: a uniform cubic B-spline over the screen (u, v in [0, 1], v up) with nx
+// x ny control points. Cubic B-splines are C2 and local, so a smoothness prior on the control
 // points is a prior on the warp, and the solver touches 16 coefficients per observation.
 #include <array>
 #include <vector>

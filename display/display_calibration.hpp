@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "display/lens_relations.hpp"
+#include "util/default_display.hpp"
 
 namespace lfd::display {
 
@@ -23,7 +24,7 @@ struct DisplayCalibration {
   double pitch_lpi = 50.0;
   double slope = -7.0;
   double center_periods = 0.0;
-  double view_cone_deg = 40.0;
+  double view_cone_deg = kDefaultViewConeDeg;
   double fringe = 0.0;
   double vertical_angle = 0.0;
   bool inv_view = true;

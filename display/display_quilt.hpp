@@ -1,12 +1,14 @@
 #pragma once
-// What a quilt for one display looks like, chosen from its calibration (DESIGN sections 3 and 6):
-// the view cone (the measured one when the calibration has it), the number of views (the
-// calibration's recommendation unless the user asks for another), the tile grid and the aspect
-// of one view (the panel's). `lfd render`, `lfd interlace` and the viewer ask this one place.
+// What a quilt for one display looks like, chosen from its calibration (docs/display-model.md "The
+// quilt for a display"): the view cone (the measured one when the calibration has it), the number
+// of views (the calibration's recommendation unless the user asks for another), the tile grid and
+// the aspect of one view (the panel's). `lfd render`, `lfd interlace` and the viewer ask this one
+// place.
 #include <optional>
 #include <string>
 
 #include "display/calibration_file.hpp"
+#include "util/default_display.hpp"
 
 namespace lfd::display {
 
@@ -24,10 +26,10 @@ QuiltGrid quilt_grid_for_views(int views, double view_aspect);
 double effective_view_cone_deg(const Calibration& calibration);
 
 struct DisplayQuilt {
-  int views = 45;
+  int views = kDefaultViewCount;
   QuiltGrid grid;
   double view_aspect = 1.0;  // screenW / screenH
-  double view_cone_deg = 40.0;
+  double view_cone_deg = kDefaultViewConeDeg;
   bool cone_measured = false;
   std::string views_source;  // "--views", "recommended by the calibration", "view-count rule"
   // One line for the user: what was chosen and why.

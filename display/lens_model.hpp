@@ -1,5 +1,6 @@
 #pragma once
-// The one lens model everything uses (DESIGN section 4, reference/looking-glass.md section 3):
+// The one lens model everything uses (docs/display-model.md "Phase and view",
+// reference/looking-glass.md section 3):
 //   A(u, v) = (u + v * tilt) * pitch' - center + w(u, v)
 // with pitch' and tilt from shader_terms() (lens_relations.hpp),
 // per-channel subpixel positions (classic 1/3-pixel stride, BGR via flipSubp, or Gen3 cells),

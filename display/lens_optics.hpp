@@ -1,7 +1,8 @@
 #pragma once
-// The display half of the forward model (DESIGN section 4): which panel light a lens sends
-// from panel point P toward a viewing direction. Shared by DisplaySimulator::radiance() and
-// ::capture(), so a photograph and a validation profile see the same optics.
+// The display half of the forward model (docs/validation.md "The forward model"): which panel light
+// a lens sends from panel point P toward a viewing direction. Shared by
+// DisplaySimulator::radiance() and ::capture(), so a photograph and a validation profile see the
+// same optics.
 #include <array>
 
 #include "display/lens_model.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The physical relations of a slanted lenticular display, each defined once (DESIGN section 4,
+// The physical relations of a slanted lenticular display, each defined once (docs/display-model.md,
 // reference/looking-glass.md 3.1). The lens model, the interlacer, the optics simulator, the
 // calibration solver and its coarse start, validation and the demo all call these. They are
 // templates so the solver can differentiate through them with ceres::Jet; nothing here needs
@@ -78,10 +78,10 @@ T line_tilt(const ScreenGeometry& g, const T& tilt) {
 // viewer at C (display frame, metres, y up, z toward the viewer) with
 //   f_seen = 0.5 + ((Cx - Px) + (Cy - Py) line_tilt) / (Cz - Pz) / (2 tan(viewCone / 2)).
 // Only the offset across the lens lines counts (reference/display-optics.md 2.1 item 6): the
-// vertical offset is worth line_tilt times as much as a horizontal one, which over the height
-// of a screen seen from half a metre is several hundredths of a period (DESIGN section 4's
-// first formula, Cx - Px alone, left it out). f_seen < 0 or >= 1 lies outside the cone, where
-// the neighbouring lens repeats the views: wrap it with wrap_fraction(). seen_fraction_k()
+// vertical offset is worth line_tilt times as much as a horizontal one, which over the height of a
+// screen seen from half a metre is several hundredths of a period (a form with Cx - Px alone leaves
+// it out: docs/display-model.md "What a viewer sees"). f_seen < 0 or >= 1 lies outside the cone,
+// where the neighbouring lens repeats the views: wrap it with wrap_fraction(). seen_fraction_k()
 // takes k = fraction_per_tan(viewCone) instead of the cone (the coarse start fits k directly).
 template <typename T, typename L>
 T seen_fraction_k(const T& dx_m, const T& dy_m, const T& dz_m, const L& line_tilt,

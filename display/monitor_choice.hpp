@@ -1,8 +1,8 @@
 #pragma once
-// Which monitor shows the display (DESIGN section 5): Looking Glass units report EDID names
-// starting with "LKG", so the name prefix decides; when no monitor or several carry it, the
-// panel's resolution does. No GLFW here: the rule is plain data in, an index out. One rule for
-// the live calibration window (GLFW monitors) and `lfd device list` (EDID names from DRM).
+// Which monitor shows the display (docs/devices.md "Its monitor"): Looking Glass units report EDID
+// names starting with "LKG", so the name prefix decides; when no monitor or several carry it, the
+// panel's resolution does. No GLFW here: the rule is plain data in, an index out. One rule for the
+// live calibration window (GLFW monitors) and `lfd device list` (EDID names from DRM).
 #include <cstddef>
 #include <string>
 #include <vector>

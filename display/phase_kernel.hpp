@@ -1,7 +1,7 @@
 #pragma once
-// What one subpixel contributes to the light a lens sends toward a camera (DESIGN section 4):
-// the subpixel is a box one subpixel wide (1/(3W) in u) along its pixel row, and the lens
-// blurs it with its point spread, a Gaussian of sigma_A lens periods in phase, which is
+// What one subpixel contributes to the light a lens sends toward a camera (docs/validation.md "The
+// forward model"): the subpixel is a box one subpixel wide (1/(3W) in u) along its pixel row, and
+// the lens blurs it with its point spread, a Gaussian of sigma_A lens periods in phase, which is
 // sigma_A / pitch' in u. The weight of a box centred at distance d from the seen point Q is
 //   k(d) = Phi((d + w/2) / sigma_u) - Phi((d - w/2) / sigma_u),
 // tabulated once per sigma because the simulator evaluates it tens of millions of times.

@@ -1,15 +1,17 @@
 #pragma once
-// How many views a display can show (DESIGN section 6). The calibration drives it: views
-// narrower than what the lens can separate only add crosstalk and rendering cost.
+// How many views a display can show (docs/display-model.md "Recommended view count"). The
+// calibration drives it: views narrower than what the lens can separate only add crosstalk and
+// rendering cost.
 #include <string>
 
 #include "display/calibration_file.hpp"
 #include "display/lens_model.hpp"
+#include "util/default_display.hpp"
 
 namespace lfd::display {
 
 struct ViewCountAdvice {
-  int views = 45;
+  int views = kDefaultViewCount;
   int cols = 5;
   int rows = 9;
   double sampling_limit = 0;   // distinct subpixel phases per lens period

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "util/atomic_file.hpp"
+#include "util/default_display.hpp"
 #include "util/error.hpp"
 
 namespace lfd::display {
@@ -101,7 +102,7 @@ DisplayCalibration visual_json_from_object(const ojson& root, const std::string&
                 "must be a positive whole number of pixels");
   c.screen_w = int(w);
   c.screen_h = int(h);
-  c.view_cone_deg = read_number(root, "viewCone", name).value_or(40.0);
+  c.view_cone_deg = read_number(root, "viewCone", name).value_or(kDefaultViewConeDeg);
   c.fringe = read_number(root, "fringe", name).value_or(0.0);
   c.vertical_angle = read_number(root, "verticalAngle", name).value_or(0.0);
   c.inv_view = read_number(root, "invView", name).value_or(1.0) >= 0.5;

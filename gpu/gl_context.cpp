@@ -181,14 +181,4 @@ void HeadlessContext::make_current() const {
                  static_cast<EGLContext>(context_));
 }
 
-bool headless_gl_available(std::string* why) {
-  try {
-    HeadlessContext context;
-    return true;
-  } catch (const GlUnavailable& e) {
-    if (why) *why = e.what();
-    return false;
-  }
-}
-
 }  // namespace lfd::gpu

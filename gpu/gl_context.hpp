@@ -1,5 +1,5 @@
 #pragma once
-// Headless OpenGL 4.5 core contexts through EGL (DESIGN section 7): the EGL device platform
+// Headless OpenGL 4.5 core contexts through EGL (docs/gpu.md): the EGL device platform
 // (EGL_EXT_platform_device; NVIDIA's driver without an X server) or Mesa's surfaceless platform
 // (llvmpipe on machines without a GPU). Rendering goes to framebuffer objects only, so no
 // surface is needed. Windows (GLFW) make their own context and use the same renderer code.
@@ -50,9 +50,5 @@ class HeadlessContext {
   void* context_ = nullptr;  // EGLContext
   GlInfo info_;
 };
-
-// Whether a headless context can be made here; `why` gets the reason when not. Makes (and
-// drops) a context, so call it once, e.g. for `--backend auto`.
-bool headless_gl_available(std::string* why = nullptr);
 
 }  // namespace lfd::gpu

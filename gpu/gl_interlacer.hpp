@@ -1,5 +1,5 @@
 #pragma once
-// The interlacing shader (DESIGN section 6): the GLSL twin of the CPU reference
+// The interlacing shader (docs/gpu.md "The interlacing shader"): the GLSL twin of the CPU reference
 // interlace::Interlacer, reading a quilt texture and writing the panel, so a frame can go
 // scene -> quilt -> panel on the GPU with no CPU round trip. Its constants come from
 // display::LensModel, the one definition of the lens phase, view fraction and view index; the

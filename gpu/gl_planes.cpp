@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "util/error.hpp"
-
 namespace lfd::gpu {
 
 GLenum gl_internal_format(PlaneFormat format) {
@@ -20,13 +18,6 @@ size_t bytes_per_plane_texel(PlaneFormat format) { return bytes_per_texel(gl_int
 
 PlaneFormat plane_format_for(render::PlanePrecision precision) {
   return precision == render::PlanePrecision::kU8 ? PlaneFormat::kRgba8 : PlaneFormat::kRgba32f;
-}
-
-PlaneFormat parse_plane_format(const std::string& name) {
-  if (name == "u8") return PlaneFormat::kRgba8;
-  if (name == "f16") return PlaneFormat::kRgba16f;
-  if (name == "f32") return PlaneFormat::kRgba32f;
-  throw_input_error("G2LF options: precision: '{}' is not u8, f16 or f32", name);
 }
 
 const char* plane_format_name(PlaneFormat format) {

@@ -7,7 +7,6 @@
 // possible plane (N_chunk); which are used is known only on the GPU, so no frame waits for it.
 #include <cstddef>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 #include "gpu/gl_objects.hpp"
@@ -22,8 +21,6 @@ enum class PlaneFormat { kRgba8, kRgba16f, kRgba32f };
 GLenum gl_internal_format(PlaneFormat format);
 size_t bytes_per_plane_texel(PlaneFormat format);
 PlaneFormat plane_format_for(render::PlanePrecision precision);
-// "u8" | "f16" | "f32"; InputError "G2LF options: precision: ..." otherwise.
-PlaneFormat parse_plane_format(const std::string& name);
 const char* plane_format_name(PlaneFormat format);
 
 // Layout of the plane table buffer (std430): the header, then one entry per plane and one past

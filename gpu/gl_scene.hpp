@@ -1,5 +1,5 @@
 #pragma once
-// A Gaussian scene uploaded once into shader storage buffers (DESIGN section 7, GL renderer),
+// A Gaussian scene uploaded once into shader storage buffers (docs/gpu.md "Per-view renderer"),
 // read by every GL pass (the per-view preprocess, G2LF). Layouts are std430 and vec4-packed so
 // a Gaussian's data is whole 16-byte loads:
 //   binding kScenePositions  vec4 positions[]  (x, y, z, opacity)

@@ -7,6 +7,16 @@
 
 namespace lfd::interlace {
 
+ViewBlend parse_view_blend(const std::string& name) {
+  if (name == "nearest") return ViewBlend::kNearest;
+  if (name == "linear") return ViewBlend::kLinear;
+  throw_input_error("interlace options: blend: '{}' is not nearest or linear", name);
+}
+
+const char* view_blend_name(ViewBlend blend) {
+  return blend == ViewBlend::kLinear ? "linear" : "nearest";
+}
+
 Interlacer::Interlacer(const display::LensModel& lens, const render::QuiltLayout& layout,
                        InterlaceOptions options)
     : lens_(lens), layout_(layout), options_(options) {

@@ -1,9 +1,12 @@
 #pragma once
-// The CPU reference interlacer (DESIGN section 6, reference/looking-glass.md 3.12): for each
-// panel subpixel, its view fraction from the lens model (correction field and Gen3 cells
-// included), a view index (nearest, or a linear blend of the two nearest view centres), and a
-// bilinear lookup inside that view's quilt tile (aspect/overscan and viewPortion handled as
-// Looking Glass software does). The GLSL interlacer must match this function.
+// The CPU reference interlacer (docs/display-model.md "Phase and view";
+// reference/looking-glass.md 3.12): for each panel subpixel, its view fraction from the lens
+// model (correction field and Gen3 cells included), a view index (nearest, or a linear blend of
+// the two nearest view centres), and a bilinear lookup inside that view's quilt tile
+// (aspect/overscan and viewPortion handled as Looking Glass software does). The GLSL
+// interlacer must match this function.
+#include <string>
+
 #include "display/lens_model.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
@@ -11,6 +14,11 @@
 namespace lfd::interlace {
 
 enum class ViewBlend { kNearest, kLinear };
+
+// "nearest" | "linear" (the --blend of every command); InputError "interlace options: blend:
+// ..." otherwise.
+ViewBlend parse_view_blend(const std::string& name);
+const char* view_blend_name(ViewBlend blend);
 
 struct InterlaceOptions {
   ViewBlend blend = ViewBlend::kNearest;

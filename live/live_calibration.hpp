@@ -1,8 +1,8 @@
 #pragma once
-// Live calibration (`lfd calibrate --live`, DESIGN section 5): rounds of show patterns ->
-// photograph them -> calibrate, each round making its patterns for the previous round's
-// result, so the phase the camera decodes shrinks toward f_seen alone and the last round's
-// estimate is made with nearly matched patterns.
+// Live calibration (`lfd calibrate --live`, docs/calibration.md "Live mode"): rounds of show
+// patterns -> photograph them -> calibrate, each round making its patterns for the previous round's
+// result, so the phase the camera decodes shrinks toward f_seen alone and the last round's estimate
+// is made with nearly matched patterns.
 //
 // One loop, two sets of devices (live/live_devices.hpp):
 //   hardware   a full-screen GLFW window on the display's monitor and a cv::VideoCapture

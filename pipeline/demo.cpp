@@ -185,7 +185,7 @@ std::filesystem::path run_demo(const DemoOptions& o) {
       sim::CameraPose pose;
       pose.position_m = {distance * std::sin(theta), 0.0, distance * std::cos(theta)};
       const sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(fov, cw, ch), pose);
-      // Which view a viewer there should see (DESIGN section 4: f_seen at the panel centre).
+      // Which view a viewer there should see (docs/validation.md, "The forward model": f_seen at the panel centre).
       const double f_seen =
           display::seen_fraction_through_cover(pose.position_m.x(), pose.position_m.y(),
                                              pose.position_m.z(), d.cover,

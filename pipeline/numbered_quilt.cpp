@@ -8,17 +8,6 @@
 
 namespace lfd::pipeline {
 
-render::QuiltLayout layout_for_tiles(int cols, int rows, int tile_w, int tile_h, double aspect) {
-  render::QuiltLayout q;
-  q.cols = cols;
-  q.rows = rows;
-  q.views = cols * rows;
-  q.aspect = aspect;
-  q.width = cols * tile_w;
-  q.height = rows * tile_h;
-  return q;
-}
-
 ImageF make_numbered_quilt(const render::QuiltLayout& q) {
   cv::Mat image(q.height, q.width, CV_8UC3, cv::Scalar(0, 0, 0));
   const int tw = q.tile_width(), th = q.tile_height();

@@ -10,7 +10,4 @@ namespace lfd::pipeline {
 // `layout` must have width/height set. Values in [0, 1], row 0 = top.
 ImageF make_numbered_quilt(const render::QuiltLayout& layout);
 
-// A quilt layout of tile size `tile_w` x `tile_h` for `cols` x `rows` views.
-render::QuiltLayout layout_for_tiles(int cols, int rows, int tile_w, int tile_h, double aspect);
-
 }  // namespace lfd::pipeline

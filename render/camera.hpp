@@ -2,7 +2,7 @@
 // A pinhole camera in the conventions of the 3DGS reference rasterizer
 // (reference/gaussian-splatting.md section 2): camera space +x right, +y down, +z forward,
 // pixel centres at integer coordinates, centred frustum plus an optional principal-point
-// shift (an off-axis frustum, DESIGN section 7: per-view quilt cameras).
+// shift (an off-axis frustum: the quilt's view cameras, docs/rendering.md).
 #include <array>
 
 #include <glm/glm.hpp>

@@ -8,6 +8,7 @@
 #include "render/ply_header.hpp"
 #include "render/scene_checks.hpp"
 #include "render/scene_parsers.hpp"
+#include "render/spherical_harmonics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::render {
@@ -137,7 +138,7 @@ GaussianScene compressed_ply_to_scene(const PlyFile& ply, const std::string& nam
     for (int ch = 0; ch < 3; ++ch) {
       float v = unorm(rgba >> (24 - 8 * ch), 8);
       if (has_colour_range) v = lerp(c[12 + ch], c[15 + ch], v);
-      sh[ch] = (v - 0.5f) / kShC0;
+      sh[ch] = color_to_sh_dc(v);
     }
     // The stored alpha is the activated opacity (the file's logit is -ln(1/a - 1)).
     scene.opacities[i] = unorm(rgba, 8);

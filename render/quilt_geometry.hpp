@@ -1,17 +1,18 @@
 #pragma once
-// Quilt camera geometry (DESIGN section 7; paper section "Swizzle blending" and "Sweeping
-// planes rendering"). Views are spread horizontally (horizontal-parallax displays, phi_y = 0):
-// view j of V sits at s_j = (j + 0.5)/V - 0.5, the centre of the interlacer's view bin j
-// (the paper's (j-1)/(V-1) - 1/2 puts the outer views at the bin edges instead).
+// Quilt camera geometry (docs/rendering.md "Cameras and quilt geometry"; paper section "Swizzle
+// blending" and "Sweeping planes rendering"). Views are spread horizontally (horizontal-parallax
+// displays, phi_y = 0): view j of V sits at s_j = (j + 0.5)/V - 0.5, the centre of the interlacer's
+// view bin j (the paper's (j-1)/(V-1) - 1/2 puts the outer views at the bin edges instead).
 #include "render/camera.hpp"
+#include "util/default_display.hpp"
 
 namespace lfd::render {
 
 struct QuiltGeometry {
   Camera base;                 // the centre camera (paper: base camera, fov theta)
   float focal_distance = 1.0f; // D_focal: base camera to the focal (zero-parallax) plane
-  float view_cone_rad = 0.6981317f;  // phi_x, the display's horizontal view cone (40 deg)
-  int views = 45;              // V
+  float view_cone_rad = kDefaultViewConeRad;  // phi_x, the display's horizontal view cone
+  int views = kDefaultViewCount;              // V
 
   // s_j = (j + 0.5)/V - 0.5.
   float view_position(int view) const;

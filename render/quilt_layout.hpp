@@ -1,17 +1,19 @@
 #pragma once
-// Quilt conventions (reference/looking-glass.md section 5, DESIGN section 3): V views in a
-// C x R grid of tiles, view 0 (leftmost camera) in the bottom-left tile, views row-major
-// upward; integer tile size floor(W/C) x floor(H/R) anchored at the bottom-left corner
-// (the rest is the "viewPortion" margin); file names carry `_qs{C}x{R}a{aspect}`.
+// Quilt conventions (reference/looking-glass.md section 5, docs/file-formats.md "Quilts"): V views
+// in a C x R grid of tiles, view 0 (leftmost camera) in the bottom-left tile, views row-major
+// upward; integer tile size floor(W/C) x floor(H/R) anchored at the bottom-left corner (the rest is
+// the "viewPortion" margin); file names carry `_qs{C}x{R}a{aspect}`.
 #include <optional>
 #include <string>
+
+#include "util/default_display.hpp"
 
 namespace lfd::render {
 
 struct QuiltLayout {
   int cols = 5;
   int rows = 9;
-  int views = 45;        // <= cols * rows
+  int views = kDefaultViewCount;  // <= cols * rows
   double aspect = 1.0;   // width / height of the content of one tile
   int width = 0;         // texture size in pixels
   int height = 0;

@@ -9,9 +9,6 @@
 
 namespace lfd::render {
 
-// SH degree-0 basis constant (reference section 6): rgb = 0.5 + kShC0 * f_dc.
-inline constexpr float kShC0 = 0.28209479177387814f;
-
 float sigmoid(float logit);
 
 // Sizes every array of `scene` for `count` Gaussians at `sh_degree` (zero-filled).

@@ -18,6 +18,7 @@
 #include <random>
 
 #include "render/scene_checks.hpp"
+#include "render/spherical_harmonics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::render {
@@ -334,7 +335,7 @@ void fill_gaussian(GaussianScene& scene, size_t i, const Component& c, std::mt19
   float* sh = scene.sh.data() + i * size_t(scene.sh_coeffs()) * 3;
   for (int ch = 0; ch < 3; ++ch) {
     const float v = std::clamp(rgb[ch] + 0.03f * N(rng), 0.0f, 1.0f);
-    sh[ch] = (v - 0.5f) / kShC0;  // rgb = 0.5 + C0 * f_dc (reference section 6)
+    sh[ch] = color_to_sh_dc(v);
   }
   if (scene.sh_degree >= 1) {
     // Degree 1 adds -C1 y sh1 + C1 z sh2 - C1 x sh3, (x, y, z) the direction from the camera

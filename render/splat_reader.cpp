@@ -5,6 +5,7 @@
 
 #include "render/scene_checks.hpp"
 #include "render/scene_parsers.hpp"
+#include "render/spherical_harmonics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::render {
@@ -27,7 +28,7 @@ GaussianScene read_splat(std::string_view bytes, const std::string& name) {
     std::memcpy(scene.positions[i].data(), r, 12);
     std::memcpy(scene.scales[i].data(), r + 12, 12);
     float* sh = scene.sh.data() + i * 3;
-    for (int c = 0; c < 3; ++c) sh[c] = (float(r[24 + c]) / 255.0f - 0.5f) / kShC0;
+    for (int c = 0; c < 3; ++c) sh[c] = color_to_sh_dc(float(r[24 + c]) / 255.0f);
     scene.opacities[i] = float(r[27]) / 255.0f;
     for (int k = 0; k < 4; ++k) scene.rotations[i][k] = (float(r[28 + k]) - 128.0f) / 128.0f;
   }

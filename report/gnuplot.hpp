@@ -1,6 +1,7 @@
 #pragma once
-// Figures are drawn by the gnuplot program (DESIGN: no hand-written plotting): we write the
-// data and a script, gnuplot writes PNGs (pngcairo).
+// Figures are drawn by the gnuplot program, not by plotting code of our own: we write the
+// data and a script, gnuplot writes PNGs (pngcairo); without gnuplot a report is written
+// without figures (docs/calibration.md section 3.6).
 #include <filesystem>
 #include <string>
 #include <vector>

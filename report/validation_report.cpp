@@ -7,6 +7,7 @@
 #include "util/atomic_file.hpp"
 #include "report/gnuplot.hpp"
 #include "report/html.hpp"
+#include "interlace/interlacer.hpp"
 
 namespace lfd::report {
 
@@ -100,7 +101,7 @@ std::string html_page(const std::vector<ValidationCase>& cases, bool figures) {
         "<td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td></tr>\n",
         html_escape(c.name), html_escape(c.truth_source), html_escape(c.assumed_source),
         c.profiles.views,
-        c.profiles.blend == interlace::ViewBlend::kLinear ? "linear" : "nearest",
+        interlace::view_blend_name(c.profiles.blend),
         c.profiles.panel_points, c.profiles.psf_sigma_phase,
         c.summary.mean_separation, c.summary.min_separation, c.summary.mean_crosstalk,
         c.summary.mean_adjacent_crosstalk);
@@ -144,7 +145,7 @@ nlohmann::ordered_json to_json(const ValidationCase& c) {
           {"true_calibration", c.truth_source},
           {"assumed_calibration", c.assumed_source},
           {"views", p.views},
-          {"blend", p.blend == interlace::ViewBlend::kLinear ? "linear" : "nearest"},
+          {"blend", interlace::view_blend_name(p.blend)},
           {"distance_m", p.distance_m},
           {"eye_height_m",  // null: eyes level with each panel point
            p.eye_height_m ? nlohmann::ordered_json(*p.eye_height_m) : nlohmann::ordered_json()},

@@ -1,8 +1,9 @@
 #pragma once
-// The camera half of the forward model (DESIGN section 4): what a real photograph adds to the
-// light arriving at the sensor, in the order a camera applies it: exposure gain, defocus
-// blur, vignetting, glare, exposure drift and flicker banding, sensor noise, response curve
-// (gamma), clipping and 8-bit quantisation. Random effects draw from seeded generators, so a seed fixes the capture.
+// The camera half of the forward model (docs/validation.md "The forward model"): what a real
+// photograph adds to the light arriving at the sensor, in the order a camera applies it: exposure
+// gain, defocus blur, vignetting, glare, exposure drift and flicker banding, sensor noise, response
+// curve (gamma), clipping and 8-bit quantisation. Random effects draw from seeded generators, so a
+// seed fixes the capture.
 #include "sim/camera_model.hpp"
 #include "sim/simulator.hpp"
 #include "util/image.hpp"

@@ -1,9 +1,9 @@
 #pragma once
-// A physical camera in the display frame (DESIGN section 3: panel plane z = 0, x right, y up,
-// origin at the panel centre, metres, viewer at z > 0). Intrinsics and distortion follow
-// OpenCV (camera x right, y down, z forward; `camera_matrix`, `distortion_coefficients` in
-// OpenCV YAML); projection goes through cv::projectPoints' model so real calibration files
-// from OpenCV work unchanged.
+// A physical camera in the display frame (docs/validation.md "The forward model": panel plane z =
+// 0, x right, y up, origin at the panel centre, metres, viewer at z > 0). Intrinsics and distortion
+// follow OpenCV (camera x right, y down, z forward; `camera_matrix`, `distortion_coefficients` in
+// OpenCV YAML); projection goes through cv::projectPoints' model so real calibration files from
+// OpenCV work unchanged.
 #include <filesystem>
 #include <vector>
 

@@ -207,7 +207,7 @@ Image8 render_pattern(const PatternSet& set, const PatternInfo& pattern) {
     case PatternKind::kBlack:
       break;
     case PatternKind::kPhase: {
-      // DESIGN section 5 step 2: subpixel s shows 0.5 + 0.5 cos(2 pi (f_nom(s) - k/K)).
+      // docs/calibration.md section 1: subpixel s shows 0.5 + 0.5 cos(2 pi (f_nom(s) - k/K)).
       const display::LensModel lens(d, set.nominal.correction);
       const double shift = double(pattern.step) / set.phase_steps;
 #pragma omp parallel for schedule(static)

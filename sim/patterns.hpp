@@ -1,6 +1,6 @@
 #pragma once
-// Calibration patterns (DESIGN section 5): what `lfd patterns` writes and `lfd calibrate`
-// expects. Every pattern is a panel-resolution image for the NOMINAL display:
+// Calibration patterns (docs/calibration.md section 1): what `lfd patterns` writes and `lfd
+// calibrate` expects. Every pattern is a panel-resolution image for the NOMINAL display:
 //   board   a ChArUco board (the same 2D image in every view) for registration and pose;
 //   white / black   exposure normalisation and exposure checks;
 //   phase k K phase-shifted sinusoids in the nominal view fraction,

@@ -1,6 +1,6 @@
 #pragma once
 // The optics simulator: what a camera sees of a lenticular display showing a panel image
-// (DESIGN section 4, the forward model). The display follows its TRUE calibration (lens model
+// (docs/validation.md "The forward model"). The display follows its TRUE calibration (lens model
 // with correction field); the camera adds projection and lens distortion, defocus blur,
 // exposure, vignetting, gamma, sensor noise and 8-bit quantisation. Camera pixels are
 // supersampled over their footprint on the panel.

@@ -68,7 +68,7 @@ std::vector<PositionCaptures> simulate_captures(const PatternSet& set, const dis
                                                 const CaptureRig& rig);
 
 // Errors of a calibration against the truth, in the units of the figures
-// (DESIGN section 5; docs/calibration.md).
+// (docs/calibration.md section 4).
 struct CalibrationErrors {
   double slant_deg = 0;        // |slant_est - slant_true|
   double pitch_rel = 0;        // |pitch_est / pitch_true - 1|

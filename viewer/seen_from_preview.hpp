@@ -1,9 +1,9 @@
 #pragma once
-// The control window's "seen from" preview: what an eye (or a camera) at a chosen angle,
-// distance and height sees on the display, from the optics model `lfd simulate` uses
-// (display::LensOptics, DESIGN section 4). Each preview pixel is a point of the panel; the eye
-// sees there the light the lens covering it sends toward the eye. It is drawn undistorted, the
-// panel's own rectangle, so the views it shows line up with the panel and the quilt preview.
+// The control window's "seen from" preview: what an eye (or a camera) at a chosen angle, distance
+// and height sees on the display, from the optics model `lfd simulate` uses (display::LensOptics,
+// docs/validation.md "The forward model"). Each preview pixel is a point of the panel; the eye sees
+// there the light the lens covering it sends toward the eye. It is drawn undistorted, the panel's
+// own rectangle, so the views it shows line up with the panel and the quilt preview.
 #include "display/lens_model.hpp"
 #include "util/image.hpp"
 

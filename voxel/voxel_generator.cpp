@@ -9,6 +9,7 @@
 
 #include "render/default_camera.hpp"
 #include "render/gaussian_scene.hpp"
+#include "render/spherical_harmonics.hpp"
 #include "util/error.hpp"
 
 namespace lfd::voxel {
@@ -18,7 +19,6 @@ namespace {
 constexpr float kRootExtent = 16.0f;  // root cell [-8, 8]^3
 constexpr float kShellRadius = 7.0f;
 constexpr float kDetailRadius = 4.0f;  // L-inf distance within which leaves are at detail_level
-constexpr float kSh0 = 0.28209479177387814f;
 
 float sd_box(const glm::vec3& p, const glm::vec3& center, const glm::vec3& half) {
   const glm::vec3 q = glm::abs(p - center) - half;
@@ -129,7 +129,7 @@ struct Carver {
     }
     const glm::vec3 rgb = n.part->paint(center);
     float* sh = scene.voxel_sh(i);
-    for (int c = 0; c < 3; ++c) sh[c] = (rgb[c] - 0.5f) / kSh0;
+    for (int c = 0; c < 3; ++c) sh[c] = render::color_to_sh_dc(rgb[c]);
     // A view-dependent sheen for degree >= 1 (3DGS signs: -y and -x multiply these terms).
     if (scene.sh_degree >= 1)
       for (int c = 0; c < 3; ++c) {

@@ -1,6 +1,6 @@
 #pragma once
-// Phase decoding (DESIGN section 5 step 2). The K captures of the phase-shifted patterns give,
-// per camera pixel and channel, I_k = a + b cos(2 pi (psi - k/K)); so
+// Phase decoding (docs/calibration.md section 3.2). The K captures of the phase-shifted patterns
+// give, per camera pixel and channel, I_k = a + b cos(2 pi (psi - k/K)); so
 //   sum_k I_k exp(2 pi i k / K) = (K/2) b exp(2 pi i psi)
 // and psi, the nominal view fraction of the subpixels the camera sees, is its argument. The
 // phasors of the three channels and of a block of camera pixels are summed before the

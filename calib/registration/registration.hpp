@@ -1,9 +1,9 @@
 #pragma once
-// Registration (DESIGN section 5 step 1): where the panel is in a photograph. The ChArUco
-// board gives corner correspondences camera pixel <-> panel point; with the camera intrinsics
-// they give the homography (undistorted camera pixel -> panel (u, v)) and the camera pose in
-// the display frame (DESIGN section 3: metres, panel centre origin, y up, viewer at z > 0).
-// Without intrinsics, boards seen from >= 3 positions self-calibrate them.
+// Registration (docs/calibration.md section 3.1): where the panel is in a photograph. The ChArUco
+// board gives corner correspondences camera pixel <-> panel point; with the camera intrinsics they
+// give the homography (undistorted camera pixel -> panel (u, v)) and the camera pose in the display
+// frame (docs/validation.md "The forward model": metres, panel centre origin, y up, viewer at z >
+// 0). Without intrinsics, boards seen from >= 3 positions self-calibrate them.
 #include <array>
 #include <map>
 #include <string>

@@ -1,9 +1,9 @@
 #pragma once
-// Coarse start (DESIGN section 5 step 3). With the nominal model far off (1 % pitch, 0.5
+// Coarse start (docs/calibration.md section 3.3). With the nominal model far off (1 % pitch, 0.5
 // degree slant, any center) the decoded phase wraps many times across the screen (moire), so
 // a local solver started at the nominal values would lock onto a wrong wrap. But per position
 // the phase is a plane in (u, v) plus the small correction field:
-//   psi = alpha + beta_u u + beta_v v + s w,   with (from DESIGN section 5 step 2)
+//   psi = alpha + beta_u u + beta_v v + s w,   with (from the phase of section 3.2)
 //   beta_u = -W_m k / Cz + s (P'_true - P'_nom),
 //   beta_v = -W_m T k / Cz + s (T_true P'_true - T_nom P'_nom)   (vertical parallax: H_m L = W_m T),
 //   alpha  = 1/2 + ((Cx + W_m / 2) + (Cy + H_m / 2) L) k / Cz + s (center_nom - center_true),

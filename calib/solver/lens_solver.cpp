@@ -30,7 +30,7 @@ T wrap_half(const T& x) {  // to [-0.5, 0.5): the residual of a phase known modu
 struct DisplayConstants {
   display::ScreenGeometry geometry;
   double width_m, height_m;
-  double sign;  // s = +1 with invView, -1 without (DESIGN section 5 step 2)
+  double sign;  // s = +1 with invView, -1 without (docs/calibration.md section 3.2)
   bool vertical_parallax;  // false: the model of horizontal offsets only (for comparison)
   display::CoverLayer cover;        // held at the nominal's value (docs/calibration.md, "The cover layer")
   static DisplayConstants of(const display::DisplayCalibration& d, bool vertical_parallax) {

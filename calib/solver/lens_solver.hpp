@@ -1,7 +1,7 @@
 #pragma once
-// The lens solver (DESIGN section 5 step 4): ONE non-linear least-squares problem over all
+// The lens solver (docs/calibration.md section 3.4): ONE non-linear least-squares problem over all
 // camera positions. At a panel point P the camera looks at (from registration) the decoded
-// phase is (DESIGN section 5 step 2)
+// phase is (docs/calibration.md section 3.2)
 //   psi(P) = f_seen(P) + s (A_true(X) - A_nom(X))   (mod 1),  s = +1 with invView, -1 without
 //   f_seen(P) = 0.5 + ((Cx - Px) + (Cy - Py) tilt W / H) / Cz / (2 tan(viewCone / 2)),
 //   X = P + delta
@@ -21,6 +21,7 @@
 
 #include "display/calibration_file.hpp"
 #include "calib/decoding/phase_decoding.hpp"
+#include "util/default_display.hpp"
 
 namespace lfd::calib {
 
@@ -36,7 +37,7 @@ struct PositionData {
 };
 
 struct LensEstimate {
-  double pitch_lpi = 50, slope = -7, center_periods = 0, view_cone_deg = 40;
+  double pitch_lpi = 50, slope = -7, center_periods = 0, view_cone_deg = kDefaultViewConeDeg;
 };
 
 struct SolverOptions {

@@ -1,5 +1,5 @@
 #pragma once
-// The quality gates a calibration must pass before it is written (DESIGN section 5 step 5):
+// The quality gates a calibration must pass before it is written (docs/calibration.md section 3.5):
 // the fit (convergence, residual over all samples with a robust scale, inliers), whether the
 // positions agree (cameras near their registered poses, residuals alike), whether the view
 // cone was measured or known, and the uncertainty of every estimated quantity.

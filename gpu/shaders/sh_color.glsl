@@ -17,7 +17,7 @@ vec3 sh_coefficient(uint g, int k) {
 
 // Section 6 (forward.cu computeColorFromSH), as render/spherical_harmonics.cpp.
 vec3 sh_color(uint g, vec3 dir) {
-  const float C0 = 0.28209479177387814;
+  const float C0 = 0.28209479177387814;  // kShC0 in render/spherical_harmonics.hpp
   const float C1 = 0.4886025119029199;
   const float C2[5] = float[5](1.0925484305920792, -1.0925484305920792, 0.31539156525252005,
                                -1.0925484305920792, 0.5462742152960396);

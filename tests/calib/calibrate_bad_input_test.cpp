@@ -1,5 +1,5 @@
-// Bad input to `lfd calibrate` (DESIGN section 8): every case is an InputError that names the
-// file and says what to change, or a warning; nothing is estimated from bad captures.
+// Bad input to `lfd calibrate` (docs/calibration.md section 2): every case is an InputError that
+// names the file and says what to change, or a warning; nothing is estimated from bad captures.
 #include <unistd.h>
 #include <fstream>
 

@@ -1,5 +1,5 @@
-// Round trip (DESIGN section 9): simulate captures of a unit with known truth, calibrate,
-// compare with the truth. Reduced capture size so it runs in well under a minute.
+// Round trip (docs/calibration.md section 4): simulate captures of a unit with known truth,
+// calibrate, compare with the truth. Reduced capture size so it runs in well under a minute.
 #include <cstdlib>
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Self-calibration (DESIGN section 5 step 1): without camera intrinsics (`lfd calibrate`
+// Self-calibration (docs/calibration.md section 3.1): without camera intrinsics (`lfd calibrate`
 // without --camera) the boards of three positions calibrate the camera, and the display is
 // calibrated through it. Simulated captures as in the round trip, kept small.
 #include <cmath>

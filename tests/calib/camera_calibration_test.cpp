@@ -1,6 +1,5 @@
 // lfd camera calibrate: the intrinsics of a known camera come back from synthesized photos of
 // the printed board, and what cannot be calibrated is refused or flagged.
-#include <cstdio>
 #include <filesystem>
 #include <string>
 
@@ -9,24 +8,12 @@
 
 #include <opencv2/imgcodecs.hpp>
 
+#include "calib/camera/board_photographer.hpp"
 #include "calib/camera/camera_calibration.hpp"
-#include "charuco_photos.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
 namespace {
-
-using testing::BoardPose;
-using testing::KnownCamera;
-
-std::vector<CharucoCorners> detect_photos(const CameraBoardSpec& board, const KnownCamera& camera,
-                                          const std::vector<BoardPose>& poses) {
-  const testing::BoardPhotographer photographer(board, camera);
-  std::vector<CharucoCorners> out;
-  for (size_t i = 0; i < poses.size(); ++i)
-    out.push_back(detect_charuco_corners(photographer.photograph(poses[i], 17 + i), board.make()));
-  return out;
-}
 
 class CameraCalibrationTest : public ::testing::Test {
  protected:
@@ -47,7 +34,7 @@ class CameraCalibrationTest : public ::testing::Test {
 TEST(CameraCalibration, RecoversKnownIntrinsicsFromEightTiltedPoses) {
   const CameraBoardSpec board;
   const KnownCamera camera;
-  const CameraCalibration c = calibrate_camera(detect_photos(board, camera, testing::tilted_poses()),
+  const CameraCalibration c = calibrate_camera(detect_board_photos(board, camera, tilted_poses()),
                                                {}, camera.size, CameraCalibrationOptions{});
   const auto& K = c.intrinsics.camera_matrix;
   EXPECT_EQ(c.usable, 8);
@@ -72,9 +59,9 @@ TEST(CameraCalibration, RecoversKnownIntrinsicsFromEightTiltedPoses) {
 TEST(CameraCalibration, TooFewUsablePhotosAreRefused) {
   const CameraBoardSpec board;
   const KnownCamera camera;
-  auto poses = testing::tilted_poses();
+  auto poses = tilted_poses();
   poses.resize(3);
-  EXPECT_THROW(calibrate_camera(detect_photos(board, camera, poses), {}, camera.size,
+  EXPECT_THROW(calibrate_camera(detect_board_photos(board, camera, poses), {}, camera.size,
                                 CameraCalibrationOptions{}),
                InputError);
 }
@@ -87,7 +74,7 @@ TEST(CameraCalibration, HeadOnPosesAreFlaggedAsNotVariedEnough) {
     head_on.push_back({double(i % 3) - 1, double(i % 2) * 2 - 1, 4.0 * i,
                        {0.01 * (i % 3 - 1), 0.01 * (i % 2), 0.40 + 0.01 * i}});
   const CameraCalibration c =
-      calibrate_camera(detect_photos(board, camera, head_on), {}, camera.size, {});
+      calibrate_camera(detect_board_photos(board, camera, head_on), {}, camera.size, {});
   EXPECT_FALSE(c.pose_advice.empty());
   EXPECT_LT(c.tilt_range_x_deg, 10);
 }
@@ -95,8 +82,8 @@ TEST(CameraCalibration, HeadOnPosesAreFlaggedAsNotVariedEnough) {
 TEST_F(CameraCalibrationTest, PhotoWithoutTheBoardIsRefusedByName) {
   const CameraBoardSpec board;
   const KnownCamera camera;
-  const auto poses = testing::tilted_poses();
-  const testing::BoardPhotographer photographer(board, camera);
+  const auto poses = tilted_poses();
+  const BoardPhotographer photographer(board, camera);
   std::vector<std::filesystem::path> photos;
   for (size_t i = 0; i < poses.size(); ++i)
     photos.push_back(write("pose" + std::to_string(i) + ".png",
@@ -113,8 +100,8 @@ TEST_F(CameraCalibrationTest, PhotoWithoutTheBoardIsRefusedByName) {
 TEST_F(CameraCalibrationTest, MixedImageSizesAreRefusedByName) {
   const CameraBoardSpec board;
   const KnownCamera camera;
-  const testing::BoardPhotographer photographer(board, camera);
-  const auto poses = testing::tilted_poses();
+  const BoardPhotographer photographer(board, camera);
+  const auto poses = tilted_poses();
   std::vector<std::filesystem::path> photos;
   photos.push_back(write("a.png", photographer.photograph(poses[0], 1)));
   // The same camera turned to portrait.
@@ -132,8 +119,8 @@ TEST_F(CameraCalibrationTest, MixedImageSizesAreRefusedByName) {
 TEST_F(CameraCalibrationTest, CameraFileFromPhotosReadsBack) {
   const CameraBoardSpec board;
   const KnownCamera camera;
-  const auto poses = testing::tilted_poses();
-  const testing::BoardPhotographer photographer(board, camera);
+  const auto poses = tilted_poses();
+  const BoardPhotographer photographer(board, camera);
   std::vector<std::filesystem::path> photos;
   for (size_t i = 0; i < poses.size(); ++i)
     photos.push_back(write("p" + std::to_string(i) + ".png",
@@ -157,48 +144,6 @@ TEST(CameraBoard, BadSpecIsRefused) {
   board = {};
   board.marker_ratio = 0.95;
   EXPECT_THROW(board.check(), InputError);
-}
-
-// How many poses the calibration needs (docs/calibration.md): the focal-length error and
-// OpenCV's sigma for the first N of 12 tilted poses. A measurement, not a check: run with
-// --gtest_also_run_disabled_tests --gtest_filter='*PoseCountMeasurement*'.
-TEST(CameraCalibration, DISABLED_PoseCountMeasurement) {
-  const CameraBoardSpec board;
-  const KnownCamera camera;
-  auto poses = testing::tilted_poses();
-  // Four more, milder and off-centre, as a user adds them.
-  poses.push_back({15, -10, 20, {0.03, 0.02, 0.38}});
-  poses.push_back({-12, 18, -15, {-0.03, -0.02, 0.40}});
-  poses.push_back({20, 12, 30, {0.02, -0.03, 0.50}});
-  poses.push_back({-18, -15, -25, {-0.02, 0.03, 0.36}});
-  const auto all = detect_photos(board, camera, poses);
-  std::printf("poses  fx err %%  fx sigma %%  cx err px  cy err px  rms px  advice\n");
-  for (size_t n = 3; n <= all.size(); ++n) {
-    CameraCalibrationOptions options;
-    options.min_photos = 3;
-    const std::vector<CharucoCorners> first(all.begin(), all.begin() + long(n));
-    for (bool fix_k3 : {false, true}) {
-      options.fix_k3 = fix_k3;
-      const auto c = calibrate_camera(first, {}, camera.size, options);
-      const auto& K = c.intrinsics.camera_matrix;
-      std::printf("%2zu%s  %8.3f  %10.3f  %9.2f  %9.2f  %6.3f  %s\n", n, fix_k3 ? " k3=0" : "     ",
-                  100 * (K(0, 0) / camera.K(0, 0) - 1), 100 * c.focal_sigma_rel,
-                  K(0, 2) - camera.K(0, 2), K(1, 2) - camera.K(1, 2), c.rms_px,
-                  c.pose_advice.empty() ? "-" : "not varied");
-    }
-  }
-  // The same count of poses, all nearly head-on (tilts under 5 deg), as people first take them.
-  std::vector<BoardPose> head_on;
-  for (int i = 0; i < 8; ++i)
-    head_on.push_back({double(i % 3) * 2 - 2, double(i % 2) * 4 - 2, 4.0 * i,
-                       {0.01 * (i % 3 - 1), 0.01 * (i % 2), 0.38 + 0.015 * i}});
-  CameraCalibrationOptions options;
-  const auto c = calibrate_camera(detect_photos(board, camera, head_on), {}, camera.size, options);
-  const auto& K = c.intrinsics.camera_matrix;
-  std::printf(" 8 head-on  %8.3f  %10.3f  %9.2f  %9.2f  %6.3f  %s\n",
-              100 * (K(0, 0) / camera.K(0, 0) - 1), 100 * c.focal_sigma_rel,
-              K(0, 2) - camera.K(0, 2), K(1, 2) - camera.K(1, 2), c.rms_px,
-              c.pose_advice.empty() ? "-" : "not varied");
 }
 
 }  // namespace

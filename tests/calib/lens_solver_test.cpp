@@ -83,7 +83,7 @@ TEST(LensSolver, RecoversTheTruthFromThreePositionsWithHonestSigmas) {
   const Errors e = errors_of(r, truth);
   print("three positions", e, r);
 
-  // The truth, to the accuracy the calibration needs (DESIGN section 5).
+  // The truth, to about the accuracy the calibration needs (docs/calibration.md section 4).
   EXPECT_LT(std::abs(e.pitch_lpi) / truth.display.pitch_lpi, 2e-5);
   EXPECT_LT(std::abs(display::slant_deg_of_slope(r.lens.slope) - display::slant_deg_of_slope(truth.display.slope)), 0.002);
   EXPECT_LT(std::abs(e.center_periods), 0.01);

@@ -1,4 +1,5 @@
-// The calibration patterns (DESIGN section 5): layout, pixel values, manifest round trip.
+// The calibration patterns (docs/calibration.md section 1): layout, pixel values, manifest round
+// trip.
 #include <unistd.h>
 #include <cmath>
 #include <numbers>

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -25,8 +24,6 @@
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
 #include "render/scene_io.hpp"
-#include "render/camera_json.hpp"
-#include "render/default_camera.hpp"
 #include "../test_data.hpp"
 #include "../render/render_test_scenes.hpp"
 #include "util/error.hpp"
@@ -448,58 +445,6 @@ TEST(GlG2lfRenderer, RefusesOptionsTheCpuRefuses) {
   options.g2lf.d_shift = 100.0f;  // beyond D_forward
   const Texture quilt = make_quilt_texture(s.layout);
   EXPECT_THROW(renderer.render_quilt(s.geometry, s.layout, options, {}, quilt), InputError);
-}
-
-// Larger scenes than the suite can afford on llvmpipe (minutes): run with
-// --gtest_also_run_disabled_tests --gtest_filter='*LargeScenes*'. The figures are in docs/gpu.md.
-TEST(GlG2lfRenderer, DISABLED_LargeScenesMatchTheCpu) {
-  HeadlessContext& ctx = context();
-  struct Large {
-    std::string name;
-    render::GaussianScene scene;
-    render::Camera base;
-    float focal;
-  };
-  std::vector<Large> scenes;
-  const auto guitar = test::shared_data() / "scenes/guitar.compressed.ply";
-  if (std::filesystem::exists(guitar)) {
-    Large g{"guitar (152k)", render::load_scene(guitar), {}, 0.0f};
-    const render::CameraSpec spec = render::frame_scene(g.scene);
-    g.base = render::camera_from_spec(spec, 128, 128);
-    g.focal = glm::length(spec.look_at - spec.position);
-    scenes.push_back(std::move(g));
-  }
-  render::SceneGeneratorOptions generated;
-  generated.count = 1000000;
-  generated.seed = 5;
-  scenes.push_back({"generated tabletop (1M)", render::generate_scene(generated),
-                    render::make_look_at_camera({0, -1, -5}, {0, 0, 0}, {0, -1, 0}, 0.7f, 256, 256), 5.1f});
-  for (const Large& l : scenes) {
-    const auto geometry = render::make_quilt_geometry(l.base, l.focal, 40.0f, 5);
-    const auto layout = render::make_quilt_layout(geometry, 5, 1);
-    const GlScene scene(l.scene, ctx.info());
-    GlG2lfRenderer renderer(scene, ctx.info());
-    const Texture quilt = make_quilt_texture(layout, GL_RGBA32F);
-    for (const RendererCase& c :
-         {RendererCase{nullptr, 64, ChunkBinning::kMixed, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f},
-          RendererCase{nullptr, 64, ChunkBinning::kQuantile, PlaneFilter::kBilinear, 2, PlanePrecision::kU8, -1.0f},
-          RendererCase{nullptr, 512, ChunkBinning::kMixed, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f},
-          RendererCase{nullptr, 64, ChunkBinning::kMixed, PlaneFilter::kNearest, 1, PlanePrecision::kF32, -1.0f}}) {
-      GlG2lfOptions options;
-      options.g2lf = g2lf_options(c);
-      options.gpu_timers = true;
-      renderer.render_quilt(geometry, layout, options, {}, quilt);
-      const double p = render::psnr(read_image_top_down(quilt),
-                                    render::render_quilt_g2lf(l.scene, geometry, layout, options.g2lf));
-      const GlG2lfStats& st = renderer.stats();
-      std::printf("%s, N=%d %s %s P_s=%d %s: PSNR %.2f dB; GPU s: binning %.3f, planes %.3f, swizzle %.3f\n",
-                  l.name.c_str(), c.chunks, c.binning == ChunkBinning::kMixed ? "mixed" : "quantile",
-                  c.filter == PlaneFilter::kNearest ? "nearest" : "bilinear", c.plane_scale,
-                  c.precision == PlanePrecision::kU8 ? "u8" : "f32", p, st.seconds_binning, st.seconds_planes,
-                  st.seconds_swizzle);
-      EXPECT_GE(p, 40.0);
-    }
-  }
 }
 
 }  // namespace

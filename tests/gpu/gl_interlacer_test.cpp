@@ -1,6 +1,6 @@
-// The interlacing shader against the CPU reference interlacer (interlace::interlace): within
-// 1/255 on >= 99.9 % of subpixels (DESIGN section 6) on every calibration fixture, both
-// blends, overscan, invert, a correction field, BGR panels, Gen3 cell patterns and fringe.
+// The interlacing shader against the CPU reference interlacer (interlace::interlace): within 1/255
+// on >= 99.9 % of subpixels (docs/gpu.md "The interlacing shader") on every calibration fixture,
+// both blends, overscan, invert, a correction field, BGR panels, Gen3 cell patterns and fringe.
 #include "gpu/gl_interlacer.hpp"
 
 #include <cctype>

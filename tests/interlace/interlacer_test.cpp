@@ -85,6 +85,12 @@ TEST(Interlacer, LinearBlendInterpolatesBetweenViewCentres) {
       }
 }
 
+TEST(Interlacer, ViewBlendNamesParseBackAndOthersAreRefused) {
+  for (ViewBlend b : {ViewBlend::kNearest, ViewBlend::kLinear})
+    EXPECT_EQ(parse_view_blend(view_blend_name(b)), b);
+  EXPECT_THROW(parse_view_blend("bilinear"), InputError);
+}
+
 TEST(Interlacer, ViewZeroIsTheBottomLeftTile) {
   const DisplayCalibration c = small_display();
   const LensModel lens(c);

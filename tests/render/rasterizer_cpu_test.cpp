@@ -172,7 +172,7 @@ TEST(SphericalHarmonics, DegreeOneMatchesTheReferenceFormula) {
   float sh[12] = {0.1f, 0.2f, 0.3f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f};
   const glm::vec3 d = glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f));
   const glm::vec3 c = eval_sh_color(1, sh, d);
-  const float C0 = 0.28209479177387814f, C1 = 0.4886025119029199f;
+  const float C0 = kShC0, C1 = 0.4886025119029199f;
   EXPECT_NEAR(c.x, 0.5f + C0 * 0.1f - C1 * d.y, 1e-6f);
   EXPECT_NEAR(c.y, 0.5f + C0 * 0.2f + C1 * d.z, 1e-6f);
   EXPECT_NEAR(c.z, 0.5f + C0 * 0.3f - C1 * d.x, 1e-6f);
@@ -185,7 +185,7 @@ TEST(SphericalHarmonics, ClampsAtZeroOnlyAndIgnoresHigherBandsAtDegreeZero) {
   for (int i = 3; i < 48; ++i) sh[i] = 5.0f;
   const glm::vec3 c0 = eval_sh_color(0, sh, {0, 0, 1});
   EXPECT_FLOAT_EQ(c0.x, 0.0f);
-  EXPECT_NEAR(c0.y, 0.5f + 0.28209479177387814f * 10.0f, 1e-5f);
+  EXPECT_NEAR(c0.y, sh_dc_to_color(10.0f), 1e-5f);
   const glm::vec3 c3 = eval_sh_color(3, sh, glm::normalize(glm::vec3(1, 2, 3)));
   EXPECT_NE(c3.z, c0.z);
 }

@@ -4,12 +4,11 @@
 #include <random>
 
 #include "render/gaussian_scene.hpp"
+#include "render/spherical_harmonics.hpp"
 
 namespace lfd::render::testing {
 
-constexpr float kC0 = 0.28209479177387814f;
-
-// Appends one Gaussian with DC colour `rgb` (degree-0 SH so that 0.5 + C0 sh0 = rgb).
+// Appends one Gaussian with DC colour `rgb` (degree-0 SH: sh_dc_to_color(sh0) = rgb).
 inline void add_gaussian(GaussianScene& s, std::array<float, 3> pos, std::array<float, 3> scale,
                          float opacity, std::array<float, 3> rgb,
                          std::array<float, 4> q = {1.0f, 0.0f, 0.0f, 0.0f}) {
@@ -18,7 +17,7 @@ inline void add_gaussian(GaussianScene& s, std::array<float, 3> pos, std::array<
   s.rotations.push_back(q);
   s.opacities.push_back(opacity);
   const int coeffs = s.sh_coeffs();
-  for (int c = 0; c < 3; ++c) s.sh.push_back((rgb[size_t(c)] - 0.5f) / kC0);
+  for (int c = 0; c < 3; ++c) s.sh.push_back(color_to_sh_dc(rgb[size_t(c)]));
   for (int k = 1; k < coeffs; ++k)
     for (int c = 0; c < 3; ++c) s.sh.push_back(0.0f);
 }

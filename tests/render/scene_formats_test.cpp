@@ -6,8 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "render/scene_checks.hpp"
 #include "render/scene_io.hpp"
+#include "render/spherical_harmonics.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::render {
@@ -15,7 +15,7 @@ namespace {
 
 const std::filesystem::path kScenes = test::fixtures() / "scenes";
 
-float rgb_of(const GaussianScene& s, size_t i, int ch) { return 0.5f + kShC0 * s.sh_of(i)[ch]; }
+float rgb_of(const GaussianScene& s, size_t i, int ch) { return sh_dc_to_color(s.sh_of(i)[ch]); }
 
 // Quaternions q and -q are the same rotation.
 float quaternion_distance(const std::array<float, 4>& a, const std::array<float, 4>& b) {

@@ -1,4 +1,5 @@
-// The display half of the forward model (DESIGN section 4), through DisplaySimulator::radiance.
+// The display half of the forward model (docs/validation.md "The forward model"), through
+// DisplaySimulator::radiance.
 #include <cmath>
 #include <numbers>
 #include <random>

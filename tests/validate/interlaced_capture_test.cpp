@@ -1,7 +1,7 @@
-// End to end through the interlacer and a full capture: a quilt whose tile j is the grey level
-// j / (V - 1), interlaced for the display and photographed, shows at every camera pixel the
-// view the optics send toward the camera there (DESIGN section 4: f_seen varies across the
-// screen for a camera at a finite distance).
+// End to end through the interlacer and a full capture: a quilt whose tile j is the grey level j /
+// (V - 1), interlaced for the display and photographed, shows at every camera pixel the view the
+// optics send toward the camera there (docs/validation.md "The forward model": f_seen varies across
+// the screen for a camera at a finite distance).
 #include <cmath>
 #include <numbers>
 

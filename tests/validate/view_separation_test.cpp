@@ -64,7 +64,8 @@ TEST_F(ViewSeparation, EachViewPeaksInItsDesignDirection) {
   ASSERT_EQ(views, 24);
   const double t = std::tan(20.0 * std::numbers::pi / 180.0);  // viewCone 40
   for (const auto& m : truth_->per_view) {
-    // DESIGN 4: view fraction f = (i + 0.5) / V leaves at tan(theta) = (f - 0.5) 2 tan(cone/2).
+    // View fraction f = (i + 0.5) / V leaves at tan(theta) = (f - 0.5) 2 tan(cone/2)
+    // (docs/validation.md "The forward model").
     const double design_deg =
         std::atan(((m.view + 0.5) / views - 0.5) * 2 * t) * 180.0 / std::numbers::pi;
     EXPECT_NEAR(m.peak_theta_deg, design_deg, 0.6) << "view " << m.view;  // a view is ~1.7 deg

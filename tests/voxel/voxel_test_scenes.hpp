@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "render/camera.hpp"
+#include "render/spherical_harmonics.hpp"
 #include "voxel/voxel_scene.hpp"
 
 namespace lfd::voxel::testing {
-
-inline constexpr float kSh0 = 0.28209479177387814f;  // the 3DGS degree-0 constant
 
 // The raw density whose exp_linear_11 activation is `sigma` (sigma > 0).
 inline float raw_density_for(float sigma) {
@@ -22,7 +21,7 @@ inline void add_voxel(VoxelScene& s, glm::u32vec3 index, int level, float raw_de
   s.level[i] = uint8_t(level);
   s.corner_density[i].fill(raw_density);
   float* sh = s.voxel_sh(i);
-  for (int c = 0; c < 3; ++c) sh[c] = (rgb[c] - 0.5f) / kSh0;
+  for (int c = 0; c < 3; ++c) sh[c] = render::color_to_sh_dc(rgb[c]);
 }
 
 // A scene of root extent 1 centred at the origin, no supersampling, K = 1, black background.

@@ -6,14 +6,13 @@
 #include <map>
 #include <tuple>
 
+#include "render/spherical_harmonics.hpp"
 #include "voxel/gaussian_density_field.hpp"
 #include "voxel/voxel_rasterizer.hpp"
 #include "voxel/voxelize.hpp"
 
 namespace lfd::voxel {
 namespace {
-
-constexpr float kSh0 = 0.28209479177387814f;
 
 // Flat Gaussians (thin along z) of the given opacities and colours, at the given centres.
 render::GaussianScene disks(const std::vector<std::array<float, 3>>& centres, float opacity,
@@ -25,7 +24,7 @@ render::GaussianScene disks(const std::vector<std::array<float, 3>>& centres, fl
     s.scales.push_back({0.4f, 0.4f, 0.02f});
     s.rotations.push_back({1, 0, 0, 0});
     s.opacities.push_back(opacity);
-    for (int c = 0; c < 3; ++c) s.sh.push_back((colours[i][c] - 0.5f) / kSh0);
+    for (int c = 0; c < 3; ++c) s.sh.push_back(render::color_to_sh_dc(colours[i][c]));
   }
   return s;
 }
@@ -92,7 +91,8 @@ TEST(Voxelize, ColoursComeFromTheGaussiansNearby) {
   const VoxelScene v = voxelize(s, options);
   for (size_t i = 0; i < v.size(); ++i) {
     const glm::vec3 c = v.voxel_center(i);
-    const glm::vec3 rgb = kSh0 * glm::vec3(v.voxel_sh(i)[0], v.voxel_sh(i)[1], v.voxel_sh(i)[2]) + 0.5f;
+    const float* sh = v.voxel_sh(i);
+    const glm::vec3 rgb = render::sh_dc_to_color(glm::vec3(sh[0], sh[1], sh[2]));
     // Only one disk reaches each voxel: its colour exactly (the weighted mean of one), never
     // the grey of a voxel no Gaussian reaches.
     EXPECT_TRUE(c.x < 2.0f ? std::abs(rgb.r - 1.0f) < 1e-4f : std::abs(rgb.b - 1.0f) < 1e-4f) << i << " " << c.x;
