@@ -13,16 +13,20 @@
 
 namespace lfd::apps {
 
-int RunBenchCalibration(int argc, char** argv) {
-  CLI::App app{"Calibration accuracy on synthetic captures of the four display kinds of the\n"
-               "shared calibrations; prints errors against the truth and run times.\n"
-               "\nExample:\n  lfd bench calibration --json bench_calibration.json",
-               "calibration"};
+namespace {
+
+// The command line of `lfd bench calibration`, as parsed.
+struct BenchCalibrationArgs {
   pipeline::CalibrationBenchmarkOptions o;
   std::string json_path, data_dir = o.data_dir.string(), cache_dir;
-  bool show_poses = false;
-  app.add_option("--json", json_path, "write the figures as JSON to this file");
-  app.add_option("--data", data_dir, "folder with calibrations/*.visual.json")
+  bool show_poses = false, above_below = false;
+};
+
+// Options: every flag, mapped onto CalibrationBenchmarkOptions (which checks itself).
+void add_bench_calibration_options(CLI::App& app, BenchCalibrationArgs& a) {
+  pipeline::CalibrationBenchmarkOptions& o = a.o;
+  app.add_option("--json", a.json_path, "write the figures as JSON to this file");
+  app.add_option("--data", a.data_dir, "folder with calibrations/*.visual.json")
       ->capture_default_str();
   app.add_option("--width", o.width_px, "capture width in pixels")
       ->capture_default_str()
@@ -40,7 +44,7 @@ int RunBenchCalibration(int argc, char** argv) {
   app.add_option("--seeds", o.seeds, "synthetic units per display kind")
       ->capture_default_str()
       ->check(CLI::Range(1, 20));
-  app.add_option("--cache", cache_dir,
+  app.add_option("--cache", a.cache_dir,
                  "keep the simulated captures here (16-bit PNG) and reuse them on the next run "
                  "with the same settings");
   app.add_flag("--true-poses", o.true_poses,
@@ -62,8 +66,7 @@ int RunBenchCalibration(int argc, char** argv) {
       ->check(CLI::Range(0.1, 100.0));
   app.add_flag("--no-row-exposure-fix", o.no_row_exposure_fix,
                "diagnostic: one gain per photo, without fitting the banding along the rows");
-  bool above_below = false;
-  app.add_flag("--above-below", above_below,
+  app.add_flag("--above-below", a.above_below,
                "cameras above and below the screen centre: issue #12's (-0.06, +0.05, 0.45), "
                "(0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled to each display's size");
   app.add_flag("--solver-without-vertical-parallax", o.solver_without_vertical_parallax,
@@ -78,12 +81,86 @@ int RunBenchCalibration(int argc, char** argv) {
                "calibrate each unit twice from the same photos: with the camera given, then "
                "self-calibrated (no camera file); the camera column shows the focal length's "
                "error and sigma");
-  app.add_flag("--show-poses", show_poses,
+  app.add_flag("--show-poses", a.show_poses,
                "diagnostic: print each position's camera error (registration, refined)");
+}
+
+// The camera column: given, or self-calibrated with its focal length's error and sigma.
+std::string camera_column(const pipeline::CalibrationBenchmarkRow& r) {
+  return r.camera_self_calibrated
+             ? (r.errors ? fmt::format("self, f {:+.2f} % +- {:.2f} %", 100 * r.focal_error_rel,
+                                       100 * r.focal_sigma_rel)
+                         : std::string("self"))
+             : std::string("given");
+}
+
+// Diagnostic (--show-poses): where registration and refinement put each camera.
+void print_poses(const pipeline::CalibrationBenchmarkRow& r) {
+  for (const auto& p : r.poses)
+    std::fprintf(stderr,
+                 "  %s: camera at (%.4f, %.4f, %.4f) m; registration error (%+.2f, %+.2f, "
+                 "%+.2f) mm, refined (%+.2f, %+.2f, %+.2f) mm; residual rms %.4f\n",
+                 p.name.c_str(), p.truth_m.x(), p.truth_m.y(), p.truth_m.z(),
+                 1e3 * p.registration_error_m.x(), 1e3 * p.registration_error_m.y(),
+                 1e3 * p.registration_error_m.z(), 1e3 * p.refined_error_m.x(),
+                 1e3 * p.refined_error_m.y(), 1e3 * p.refined_error_m.z(),
+                 p.residual_rms_periods);
+}
+
+// Printing: one table row as soon as the unit is done (a run takes minutes); counts the rows
+// that failed or fell outside the bars.
+void print_row(const pipeline::CalibrationBenchmarkRow& r, bool show_poses, int& failures) {
+  const std::string camera = camera_column(r);
+  if (!r.errors) {
+    ++failures;
+    std::printf("| %s | %d | %d | %dx%d | %s | failed: %s |\n", r.display.c_str(), r.seed,
+                r.positions, r.capture_width, r.capture_height, camera.c_str(),
+                r.failure.c_str());
+    std::fflush(stdout);
+    return;
+  }
+  if (show_poses) print_poses(r);
+  failures += r.within_bars ? 0 : 1;
+  const auto& e = *r.errors;
+  std::string ratios;
+  for (const char* key : {"slant", "pitch", "center", "cone", "warp"}) {
+    const auto it = r.error_over_sigma.find(key);
+    ratios += it == r.error_over_sigma.end() ? std::string(" -") : fmt::format(" {:.2f}", it->second);
+  }
+  std::printf("| %s | %d | %d | %dx%d | %s | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | %s | "
+              "%.1f | %.1f | %.2f |\n",
+              r.display.c_str(), r.seed, r.positions, r.capture_width, r.capture_height,
+              camera.c_str(),
+              e.slant_deg, e.pitch_rel, e.center_periods, e.view_cone_deg,
+              e.correction_rms_periods, e.phase_rms_periods, ratios.c_str() + 1,
+              r.gate_failures.empty() ? "pass" : "REJECT", r.simulate_s, r.calibrate_s,
+              r.solve_s);
+  std::fflush(stdout);
+}
+
+void write_json(const std::string& path, const pipeline::AccuracyBars& bars,
+                const std::vector<pipeline::CalibrationBenchmarkRow>& rows) {
+  nlohmann::ordered_json j = {{"benchmark", "calibration"},
+                              {"bars", bars.to_json()},
+                              {"rows", nlohmann::ordered_json::array()}};
+  for (const auto& r : rows) j["rows"].push_back(r.to_json());
+  write_text_atomic(path, j.dump(2) + "\n");
+}
+
+}  // namespace
+
+int RunBenchCalibration(int argc, char** argv) {
+  CLI::App app{"Calibration accuracy on synthetic captures of the four display kinds of the\n"
+               "shared calibrations; prints errors against the truth and run times.\n"
+               "\nExample:\n  lfd bench calibration --json bench_calibration.json",
+               "calibration"};
+  BenchCalibrationArgs args;
+  add_bench_calibration_options(app, args);
   if (auto code = parse(app, argc, argv)) return *code;
-  o.data_dir = data_dir;
-  o.cache_dir = cache_dir;
-  if (above_below) o.layout = sim::RigLayout::kAboveBelow;
+  pipeline::CalibrationBenchmarkOptions& o = args.o;
+  o.data_dir = args.data_dir;
+  o.cache_dir = args.cache_dir;
+  if (args.above_below) o.layout = sim::RigLayout::kAboveBelow;
 
   const pipeline::AccuracyBars bars;
   std::printf("| display | seed | positions | capture | camera | slant err deg | pitch rel err | center err "
@@ -91,60 +168,13 @@ int RunBenchCalibration(int argc, char** argv) {
               "warp | gates | simulate s | calibrate s | solve s |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   int failures = 0;
-  auto print_row = [&](const pipeline::CalibrationBenchmarkRow& r) {
-    const std::string camera =
-        r.camera_self_calibrated
-            ? (r.errors ? fmt::format("self, f {:+.2f} % +- {:.2f} %", 100 * r.focal_error_rel,
-                                      100 * r.focal_sigma_rel)
-                        : std::string("self"))
-            : std::string("given");
-    if (!r.errors) {
-      ++failures;
-      std::printf("| %s | %d | %d | %dx%d | %s | failed: %s |\n", r.display.c_str(), r.seed,
-                  r.positions, r.capture_width, r.capture_height, camera.c_str(),
-                  r.failure.c_str());
-      std::fflush(stdout);
-      return;
-    }
-    if (show_poses)
-      for (const auto& p : r.poses)
-        std::fprintf(stderr,
-                     "  %s: camera at (%.4f, %.4f, %.4f) m; registration error (%+.2f, %+.2f, "
-                     "%+.2f) mm, refined (%+.2f, %+.2f, %+.2f) mm; residual rms %.4f\n",
-                     p.name.c_str(), p.truth_m.x(), p.truth_m.y(), p.truth_m.z(),
-                     1e3 * p.registration_error_m.x(), 1e3 * p.registration_error_m.y(),
-                     1e3 * p.registration_error_m.z(), 1e3 * p.refined_error_m.x(),
-                     1e3 * p.refined_error_m.y(), 1e3 * p.refined_error_m.z(),
-                     p.residual_rms_periods);
-    failures += r.within_bars ? 0 : 1;
-    const auto& e = *r.errors;
-    std::string ratios;
-    for (const char* key : {"slant", "pitch", "center", "cone", "warp"}) {
-      const auto it = r.error_over_sigma.find(key);
-      ratios += it == r.error_over_sigma.end() ? std::string(" -") : fmt::format(" {:.2f}", it->second);
-    }
-    std::printf("| %s | %d | %d | %dx%d | %s | %.5f | %.2e | %.4f | %.3f | %.4f | %.4f | %s | %s | "
-                "%.1f | %.1f | %.2f |\n",
-                r.display.c_str(), r.seed, r.positions, r.capture_width, r.capture_height,
-                camera.c_str(),
-                e.slant_deg, e.pitch_rel, e.center_periods, e.view_cone_deg,
-                e.correction_rms_periods, e.phase_rms_periods, ratios.c_str() + 1,
-                r.gate_failures.empty() ? "pass" : "REJECT", r.simulate_s, r.calibrate_s,
-                r.solve_s);
-    std::fflush(stdout);
-  };
-  const auto rows = pipeline::run_calibration_benchmark(o, bars, print_row);
+  const auto rows = pipeline::run_calibration_benchmark(
+      o, bars, [&](const pipeline::CalibrationBenchmarkRow& r) { print_row(r, args.show_poses, failures); });
   std::printf("\nbars: slant <= %.3f deg, pitch <= %.0e, center <= %.3f periods, cone <= %.1f "
               "deg, warp <= %.2f periods; %d row(s) outside; %d threads\n",
               bars.slant_deg, bars.pitch_rel, bars.center, bars.cone_deg, bars.warp, failures,
               omp_get_max_threads());
-  if (!json_path.empty()) {
-    nlohmann::ordered_json j = {{"benchmark", "calibration"},
-                                {"bars", bars.to_json()},
-                                {"rows", nlohmann::ordered_json::array()}};
-    for (const auto& r : rows) j["rows"].push_back(r.to_json());
-    write_text_atomic(json_path, j.dump(2) + "\n");
-  }
+  if (!args.json_path.empty()) write_json(args.json_path, bars, rows);
   return 0;
 }
 

@@ -13,30 +13,24 @@
 
 namespace lfd::apps {
 
-int RunInfo(int argc, char** argv) {
-  CLI::App app{"Print the figures derived from a calibration: lenses across the screen, "
-               "subpixels per lens, slant, view cone, recommended view count and its rule.\n"
-               "\nExamples:\n"
-               "  lfd info --calibration visual.json\n"
-               "  lfd info --calibration calibration.json --json\n"
-               "  lfd info --device auto",
-               "info"};
-  DisplaySource source;
-  bool json = false;
-  source.add(app, "--calibration", "calibration.json or visual.json");
-  app.add_flag("--json", json, "machine-readable output");
-  if (auto code = parse(app, argc, argv)) return *code;
+namespace {
 
-  const display::Calibration cal = source.load();
-  const std::string& path = source.name();
-  const auto& d = cal.display;
-  const display::LensModel lens(d, cal.correction);
+// What `lfd info` shows, derived once from the calibration for both outputs.
+struct DisplayFigures {
+  const display::Calibration& cal;
+  const std::string& path;
+  const display::DisplayCalibration& d = cal.display;
+  const display::LensModel lens{d, cal.correction};
   const display::ViewCountAdvice views = display::recommend_view_count(cal);
   const double width_mm = d.width_m() * 1000, height_mm = d.height_m() * 1000;
   const double diagonal_in = std::hypot(d.width_m(), d.height_m()) / 0.0254;
   const double lens_period_mm = 25.4 / d.pitch_lpi;
-  const auto range = cal.correction.range();
+  const std::array<double, 2> range = cal.correction.range();
+};
 
+// The figures as JSON (--json), also the source of the printed subpixel layout.
+nlohmann::ordered_json figures_json(const DisplayFigures& f) {
+  const auto& [cal, path, d, lens, views, width_mm, height_mm, diagonal_in, lens_period_mm, range] = f;
   nlohmann::ordered_json j;
   j["file"] = path;
   j["serial"] = d.serial;
@@ -64,10 +58,12 @@ int RunInfo(int argc, char** argv) {
                        {"min_periods", range[0]}, {"max_periods", range[1]}};
   j["recommended_views"] = {{"views", views.views}, {"cols", views.cols}, {"rows", views.rows},
                             {"rule", views.rule}};
-  if (json) {
-    std::cout << j.dump(2) << "\n";
-    return 0;
-  }
+  return j;
+}
+
+// The figures for a person, one per line.
+void print_figures(const DisplayFigures& f, const nlohmann::ordered_json& j) {
+  const auto& [cal, path, d, lens, views, width_mm, height_mm, diagonal_in, lens_period_mm, range] = f;
   fmt::print("{}{}\n", path, d.serial.empty() ? "" : "  (serial " + d.serial + ")");
   fmt::print("  panel            {} x {} px, {} DPI, {:.1f} x {:.1f} mm ({:.1f}\" diagonal)\n",
              d.screen_w, d.screen_h, d.dpi, width_mm, height_mm, diagonal_in);
@@ -93,6 +89,32 @@ int RunInfo(int argc, char** argv) {
                cal.correction.nx(), cal.correction.ny(), range[0], range[1]);
   fmt::print("  recommended      {} views ({} x {} quilt)\n", views.views, views.cols, views.rows);
   fmt::print("  rule             {}\n", views.rule);
+}
+
+}  // namespace
+
+int RunInfo(int argc, char** argv) {
+  CLI::App app{"Print the figures derived from a calibration: lenses across the screen, "
+               "subpixels per lens, slant, view cone, recommended view count and its rule.\n"
+               "\nExamples:\n"
+               "  lfd info --calibration visual.json\n"
+               "  lfd info --calibration calibration.json --json\n"
+               "  lfd info --device auto",
+               "info"};
+  DisplaySource source;
+  bool json = false;
+  source.add(app, "--calibration", "calibration.json or visual.json");
+  app.add_flag("--json", json, "machine-readable output");
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  const display::Calibration cal = source.load();
+  const DisplayFigures figures{.cal = cal, .path = source.name()};
+  const nlohmann::ordered_json j = figures_json(figures);
+  if (json) {
+    std::cout << j.dump(2) << "\n";
+    return 0;
+  }
+  print_figures(figures, j);
   return 0;
 }
 

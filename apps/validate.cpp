@@ -80,6 +80,115 @@ void ReportSeenDownTheScreen(const display::Calibration& truth, double height, d
               top_bottom, predicted, top_bottom * views, views);
 }
 
+// The command line of `lfd validate`, as parsed.
+struct ValidateArgs {
+  std::string assumed_path, out_dir;
+  validate::ProfileOptions options;
+  bool json = false;
+  DisplaySource truth_source;
+  validate::Miscalibration error;
+  double eye_height = 0;
+  CLI::Option* eye_height_option = nullptr;
+  std::string blend = "nearest";
+  std::string sweep;
+};
+
+// Options: every flag, mapped onto ProfileOptions (which checks itself) and a Miscalibration.
+void add_validate_options(CLI::App& app, ValidateArgs& a) {
+  validate::ProfileOptions& options = a.options;
+  a.truth_source.add(app, "--calibration", "TRUE calibration (calibration.json or visual.json)");
+  app.add_option("--assumed", a.assumed_path, "calibration the interlacer uses (default: the true one)");
+  app.add_option("--slant-error", a.error.slant_deg,
+                 "instead of --assumed: the truth with its slant off by this many degrees");
+  app.add_option("--pitch-error", a.error.pitch_relative,
+                 "... with its pitch off by this fraction (e.g. 2e-5)");
+  app.add_option("--center-error", a.error.center_periods, "... with its center off (lens periods)");
+  app.add_flag("--no-correction", a.error.drop_correction,
+               "... without its correction field (what a plain visual.json export shows)");
+  app.add_option("--views", options.views, "views in the quilt (default: recommended for the display)");
+  app.add_option("--points", options.panel_points, "panel points averaged over")
+      ->capture_default_str();
+  app.add_option("--angles-per-view", options.angles_per_view, "direction samples per view")
+      ->capture_default_str();
+  app.add_option("--psf", options.psf_sigma_phase,
+                 "lens point spread sigma_A, lens periods (default: the calibration's, else 0.008)");
+  app.add_option("--seed", options.seed, "seed of the panel point jitter")->capture_default_str();
+  app.add_option("--distance", options.distance_m, "eye distance from the panel, metres")
+      ->capture_default_str();
+  a.eye_height_option = app.add_option(
+      "--eye-height", a.eye_height,
+      "eyes at this height above the screen centre (metres; default: level with each panel "
+      "point); also prints what such an eye sees from the bottom to the top of the screen");
+  app.add_option("--blend", a.blend, "the interlacer's view selection: nearest or linear")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"nearest", "linear"}));
+  app.add_option("--sweep-views", a.sweep,
+                 "check the view-count rule instead: parallax blur and separation for each of these "
+                 "ascending view counts, e.g. 16,24,32,45,64,96");
+  app.add_flag("--json", a.json, "print the figures as JSON on stdout");
+  app.add_option("--out", a.out_dir, "report directory")->required();
+}
+
+// The calibrations the interlacer is run with: --assumed or the miscalibrated truth, then the
+// truth itself for comparison.
+struct ValidationRun {
+  std::string name, source;
+  display::Calibration assumed;
+};
+
+std::vector<ValidationRun> validation_runs(const ValidateArgs& a, const display::Calibration& truth,
+                                           const std::string& truth_path) {
+  if (!a.assumed_path.empty() && !a.error.empty())
+    throw InputError("--assumed and the --*-error options are alternatives: give one");
+  std::vector<ValidationRun> runs;
+  if (!a.assumed_path.empty()) runs.push_back({"assumed", a.assumed_path, display::read_calibration(a.assumed_path)});
+  if (!a.error.empty())
+    runs.push_back({"miscalibrated", truth_path + " with " + a.error.describe(), validate::apply(truth, a.error)});
+  runs.push_back({"true", truth_path, truth});
+  return runs;
+}
+
+// The call: each run's view profiles through the true optics, with a progress bar.
+std::vector<report::ValidationCase> measure_cases(const std::vector<ValidationRun>& runs,
+                                                  const display::Calibration& truth,
+                                                  const std::string& truth_path,
+                                                  const validate::ProfileOptions& options) {
+  std::vector<report::ValidationCase> cases;
+  for (const auto& [name, source, assumed] : runs) {
+    report::ValidationCase c;
+    c.name = name;
+    c.truth_source = truth_path;
+    c.assumed_source = source;
+    Progress progress("validate " + name, options.views + 1);
+    c.profiles = validate::measure_view_profiles(truth, assumed, options, &progress);
+    progress.finish();
+    c.summary = validate::summarise(c.profiles);
+    cases.push_back(std::move(c));
+  }
+  return cases;
+}
+
+// Printing: the cases as JSON (without the profiles, which are in validation.json) or a table.
+void print_cases(const std::vector<report::ValidationCase>& cases, const std::filesystem::path& index,
+                 bool json) {
+  if (json) {
+    nlohmann::ordered_json j = nlohmann::ordered_json::array();
+    for (const auto& c : cases) {
+      auto cj = report::to_json(c);
+      cj.erase("profiles");  // the profiles are in validation.json
+      j.push_back(cj);
+    }
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::printf("| case | views | mean V | min V | mean X | mean X adjacent |\n|---|---|---|---|---|---|\n");
+  for (const auto& c : cases)
+    std::printf("| %s | %d | %.3f | %.3f | %.3f | %.3f |\n", c.name.c_str(), c.profiles.views,
+                c.summary.mean_separation, c.summary.min_separation, c.summary.mean_crosstalk,
+                c.summary.mean_adjacent_crosstalk);
+  std::cout << "wrote " << index.string() << "\n";
+}
+
 }  // namespace
 
 int RunValidate(int argc, char** argv) {
@@ -95,101 +204,26 @@ int RunValidate(int argc, char** argv) {
       "  lfd validate --calibration LKG-APW92011.visual.json --slant-error 0.01 --out report/\n"
       "  lfd validate --device auto --slant-error 0.01 --out report/",
       "validate"};
-  std::string truth_path, assumed_path, out_dir;
-  validate::ProfileOptions options;
-  bool json = false;
-  DisplaySource truth_source;
-  truth_source.add(app, "--calibration", "TRUE calibration (calibration.json or visual.json)");
-  app.add_option("--assumed", assumed_path, "calibration the interlacer uses (default: the true one)");
-  validate::Miscalibration error;
-  app.add_option("--slant-error", error.slant_deg,
-                 "instead of --assumed: the truth with its slant off by this many degrees");
-  app.add_option("--pitch-error", error.pitch_relative,
-                 "... with its pitch off by this fraction (e.g. 2e-5)");
-  app.add_option("--center-error", error.center_periods, "... with its center off (lens periods)");
-  app.add_flag("--no-correction", error.drop_correction,
-               "... without its correction field (what a plain visual.json export shows)");
-  app.add_option("--views", options.views, "views in the quilt (default: recommended for the display)");
-  app.add_option("--points", options.panel_points, "panel points averaged over")
-      ->capture_default_str();
-  app.add_option("--angles-per-view", options.angles_per_view, "direction samples per view")
-      ->capture_default_str();
-  app.add_option("--psf", options.psf_sigma_phase,
-                 "lens point spread sigma_A, lens periods (default: the calibration's, else 0.008)");
-  app.add_option("--seed", options.seed, "seed of the panel point jitter")->capture_default_str();
-  app.add_option("--distance", options.distance_m, "eye distance from the panel, metres")
-      ->capture_default_str();
-  double eye_height = 0;
-  CLI::Option* eye_height_option = app.add_option(
-      "--eye-height", eye_height,
-      "eyes at this height above the screen centre (metres; default: level with each panel "
-      "point); also prints what such an eye sees from the bottom to the top of the screen");
-  std::string blend = "nearest";
-  app.add_option("--blend", blend, "the interlacer's view selection: nearest or linear")
-      ->capture_default_str()
-      ->check(CLI::IsMember({"nearest", "linear"}));
-  std::string sweep;
-  app.add_option("--sweep-views", sweep,
-                 "check the view-count rule instead: parallax blur and separation for each of these "
-                 "ascending view counts, e.g. 16,24,32,45,64,96");
-  app.add_flag("--json", json, "print the figures as JSON on stdout");
-  app.add_option("--out", out_dir, "report directory")->required();
+  ValidateArgs args;
+  add_validate_options(app, args);
   if (auto code = parse(app, argc, argv)) return *code;
-  options.blend = interlace::parse_view_blend(blend);
-  if (eye_height_option->count()) options.eye_height_m = eye_height;
+  validate::ProfileOptions& options = args.options;
+  options.blend = interlace::parse_view_blend(args.blend);
+  if (args.eye_height_option->count()) options.eye_height_m = args.eye_height;
   options.check();
 
-  const display::Calibration truth = truth_source.load();
-  truth_path = truth_source.name();
-  if (!sweep.empty()) return RunViewCountSweep(truth, sweep, options, out_dir, json);
+  const display::Calibration truth = args.truth_source.load();
+  const std::string truth_path = args.truth_source.name();
+  if (!args.sweep.empty()) return RunViewCountSweep(truth, args.sweep, options, args.out_dir, args.json);
   if (options.views == 0) options.views = display::recommend_view_count(truth).views;
   if (options.eye_height_m) {
-    std::filesystem::create_directories(out_dir);
+    std::filesystem::create_directories(args.out_dir);
     ReportSeenDownTheScreen(truth, *options.eye_height_m, options.distance_m, options.views,
-                            out_dir, json);
+                            args.out_dir, args.json);
   }
-  if (!assumed_path.empty() && !error.empty())
-    throw InputError("--assumed and the --*-error options are alternatives: give one");
-  struct Run {
-    std::string name, source;
-    display::Calibration assumed;
-  };
-  std::vector<Run> runs;
-  if (!assumed_path.empty()) runs.push_back({"assumed", assumed_path, display::read_calibration(assumed_path)});
-  if (!error.empty())
-    runs.push_back({"miscalibrated", truth_path + " with " + error.describe(), validate::apply(truth, error)});
-  runs.push_back({"true", truth_path, truth});
-
-  std::vector<report::ValidationCase> cases;
-  for (const auto& [name, source, assumed] : runs) {
-    report::ValidationCase c;
-    c.name = name;
-    c.truth_source = truth_path;
-    c.assumed_source = source;
-    Progress progress("validate " + name, options.views + 1);
-    c.profiles = validate::measure_view_profiles(truth, assumed, options, &progress);
-    progress.finish();
-    c.summary = validate::summarise(c.profiles);
-    cases.push_back(std::move(c));
-  }
-  const auto index = report::write_report(out_dir, cases);
-
-  if (json) {
-    nlohmann::ordered_json j = nlohmann::ordered_json::array();
-    for (const auto& c : cases) {
-      auto cj = report::to_json(c);
-      cj.erase("profiles");  // the profiles are in validation.json
-      j.push_back(cj);
-    }
-    std::cout << j.dump(2) << "\n";
-    return 0;
-  }
-  std::printf("| case | views | mean V | min V | mean X | mean X adjacent |\n|---|---|---|---|---|---|\n");
-  for (const auto& c : cases)
-    std::printf("| %s | %d | %.3f | %.3f | %.3f | %.3f |\n", c.name.c_str(), c.profiles.views,
-                c.summary.mean_separation, c.summary.min_separation, c.summary.mean_crosstalk,
-                c.summary.mean_adjacent_crosstalk);
-  std::cout << "wrote " << index.string() << "\n";
+  const auto cases = measure_cases(validation_runs(args, truth, truth_path), truth, truth_path, options);
+  const auto index = report::write_report(args.out_dir, cases);
+  print_cases(cases, index, args.json);
   return 0;
 }
 

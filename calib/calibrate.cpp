@@ -11,6 +11,26 @@ namespace {
 
 using ojson = nlohmann::ordered_json;
 
+// The positions the options speak of must be the photographed ones.
+void check_positions(const std::vector<sim::PositionCaptures>& positions, const CalibrateOptions& options) {
+  if (positions.empty()) throw_input_error("calibrate: no camera positions");
+  if (!options.known_camera_positions_m.empty() &&
+      options.known_camera_positions_m.size() != positions.size())
+    throw_input_error("calibrate options: known_camera_positions_m: {} given for {} positions",
+                      options.known_camera_positions_m.size(), positions.size());
+}
+
+// One distance cannot separate the view cone from the pitch: whether the known cone is kept or
+// the result will be refused.
+std::string one_position_warning(const sim::PatternSet& set) {
+  return set.nominal.view_cone_measured_deg
+             ? "one camera position: the view cone cannot be separated from the pitch; the known "
+               "view cone is kept"
+             : "one camera position: the view cone cannot be separated from the pitch and is not "
+               "known; refused unless it is given (--view-cone) or the photos come from 2-3 "
+               "positions at different distances";
+}
+
 }  // namespace
 
 void CalibrateOptions::check() const {
@@ -49,11 +69,7 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     rest.view_cone_deg.reset();
     return calibrate_display(known, positions, rest);
   }
-  if (positions.empty()) throw_input_error("calibrate: no camera positions");
-  if (!options.known_camera_positions_m.empty() &&
-      options.known_camera_positions_m.size() != positions.size())
-    throw_input_error("calibrate options: known_camera_positions_m: {} given for {} positions",
-                      options.known_camera_positions_m.size(), positions.size());
+  check_positions(positions, options);
   CalibrationOutcome out;
   const PatternRoles roles(set);
 
@@ -97,14 +113,7 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     phases.push_back(std::move(phase));
     out.positions.push_back(states[i].report);
   }
-  if (positions.size() < 2)
-    out.warnings.push_back(
-        set.nominal.view_cone_measured_deg
-            ? "one camera position: the view cone cannot be separated from the pitch; the known "
-              "view cone is kept"
-            : "one camera position: the view cone cannot be separated from the pitch and is not "
-              "known; refused unless it is given (--view-cone) or the photos come from 2-3 "
-              "positions at different distances");
+  if (positions.size() < 2) out.warnings.push_back(one_position_warning(set));
 
   const sim::PatternSet solved = check_colour_order(set, options, phases, data, out);
   phases.clear();

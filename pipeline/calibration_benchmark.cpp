@@ -104,6 +104,96 @@ nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
   return row;
 }
 
+namespace {
+
+// The photographer of one synthetic unit: the positions, and the effects the options switch
+// on or off.
+sim::CaptureRig benchmark_rig(const CalibrationBenchmarkOptions& o, const sim::SyntheticUnit& unit,
+                                int seed) {
+  sim::CaptureRig rig = sim::make_capture_rig(unit.truth.display, o.width_px,
+                                                  o.positions, false, uint64_t(seed), o.layout);
+  if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
+  rig.glare_moves = o.moving_glare;
+  rig.effects.exposure_drift = o.exposure_drift;
+  rig.effects.flicker_amplitude = o.flicker;
+  rig.effects.flicker_bands = o.flicker_bands;
+  rig.effects.supersample = o.supersample;
+  return rig;
+}
+
+// Every setting that changes the photos is in the cache key ("vp": the simulator with
+// vertical parallax; captures cached before it are not reused).
+std::string capture_cache_key(const CalibrationBenchmarkOptions& o, const BenchmarkDisplay& d,
+                              int seed, const sim::PatternSet& set,
+                              const sim::SyntheticUnit& unit) {
+  const bool above_below = o.layout == sim::RigLayout::kAboveBelow;
+  const std::string key = fmt::format(
+      "{}{}{}{}-vp-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
+      o.moving_glare ? "-moving-glare" : "", above_below ? "-above-below" : "", seed,
+      o.width_px, o.positions, o.supersample, set.patterns.size());
+  const std::string drift_key =
+      o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
+  const std::string flicker_key =
+      o.flicker > 0 ? fmt::format("-flicker{}x{}", o.flicker, o.flicker_bands) : "";
+  const display::CoverLayer& cover = unit.truth.display.cover;
+  const std::string cover_key =
+      cover.present() ? fmt::format("-cover{}n{}", cover.thickness_m, cover.refractive_index)
+                      : "";
+  return key + drift_key + flicker_key + cover_key;
+}
+
+// One row: the unit calibrated from its photographs (with the camera given or
+// self-calibrated) and compared with its truth; a refusal is a row too.
+CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, const AccuracyBars& bars,
+                                      const sim::PatternSet& set,
+                                      const std::vector<sim::PositionCaptures>& captures,
+                                      const sim::SyntheticUnit& unit, const sim::CaptureRig& rig,
+                                      CalibrationBenchmarkRow row, bool self_calibrate) {
+  row.camera_self_calibrated = self_calibrate;
+  calib::CalibrateOptions options;
+  if (!self_calibrate) options.camera = rig.intrinsics;
+  options.decode.correct_exposure_drift = !o.no_exposure_fix;
+  options.decode.exposure_row_gain = !o.no_row_exposure_fix;
+  options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
+  if (o.true_poses)
+    for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
+    row.calibrate_s = seconds_since(t0);
+    row.errors = sim::compare_with_truth(out.calibration, unit.truth);
+    row.within_bars = bars.met_by(*row.errors);
+    row.gate_failures = out.gate_failures;
+    row.gate_values = {{"termination", out.solve.termination},
+                       {"residual_rms_periods", out.solve.residuals.rms_periods},
+                       {"inlier_fraction", out.solve.residuals.inlier_fraction},
+                       {"camera_shift_sigmas", out.solve.camera_shift_sigmas},
+                       {"position_rms_periods", out.solve.position_rms},
+                       {"position_rms_ratios", out.solve.position_rms_ratio}};
+    row.uncertainty = out.calibration.uncertainty;
+    row.error_over_sigma = errors_over_sigmas(*row.errors, row.uncertainty,
+                                              out.calibration.display.pitch_lpi);
+    if (self_calibrate) {
+      row.focal_error_rel = out.camera.camera_matrix(0, 0) / rig.intrinsics.camera_matrix(0, 0) - 1;
+      row.focal_sigma_rel = out.camera_focal_sigma_rel;
+    }
+    row.solve_s = out.solve.solve_seconds;
+    for (size_t i = 0; i < out.positions.size(); ++i) {
+      const Eigen::Vector3d t = rig.poses[i].position_m;
+      row.poses.push_back({out.positions[i].name, t, out.positions[i].camera_m - t,
+                           out.positions[i].camera_refined_m - t,
+                           out.positions[i].residual_rms_periods});
+    }
+  } catch (const std::exception& ex) {
+    row.failure = ex.what();
+  }
+  return row;
+}
+
+}  // namespace
+
+// Per display kind and seed: a synthetic unit, its photographs (simulated or from the cache),
+// then one row per camera mode.
 std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
     const CalibrationBenchmarkOptions& o, const AccuracyBars& bars,
     const std::function<void(const CalibrationBenchmarkRow&)>& on_row) {
@@ -120,15 +210,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       sim::PatternOptions po;
       po.board_squares_short = o.board_squares;
       sim::PatternSet set = sim::plan_patterns(unit.nominal, po);
-      sim::CaptureRig rig = sim::make_capture_rig(unit.truth.display, o.width_px,
-                                                      o.positions, false, uint64_t(seed), o.layout);
-      const bool above_below = o.layout == sim::RigLayout::kAboveBelow;
-      if (o.no_noise) rig.effects.noise_sigma = rig.effects.glare_fraction = 0;
-      rig.glare_moves = o.moving_glare;
-      rig.effects.exposure_drift = o.exposure_drift;
-      rig.effects.flicker_amplitude = o.flicker;
-      rig.effects.flicker_bands = o.flicker_bands;
-      rig.effects.supersample = o.supersample;
+      const sim::CaptureRig rig = benchmark_rig(o, unit, seed);
 
       CalibrationBenchmarkRow measured;  // what both camera modes share
       measured.display = d.label;
@@ -137,69 +219,16 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       measured.positions = o.positions;
       measured.capture_width = rig.intrinsics.width;
       measured.capture_height = rig.intrinsics.height;
-      auto t0 = std::chrono::steady_clock::now();
-      // Every setting that changes the photos is in the cache key ("vp": the simulator with
-      // vertical parallax; captures cached before it are not reused).
-      const std::string key = fmt::format(
-          "{}{}{}{}-vp-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
-          o.moving_glare ? "-moving-glare" : "", above_below ? "-above-below" : "", seed,
-          o.width_px, o.positions, o.supersample, set.patterns.size());
-      const std::string drift_key =
-          o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
-      const std::string flicker_key =
-          o.flicker > 0 ? fmt::format("-flicker{}x{}", o.flicker, o.flicker_bands) : "";
-      const display::CoverLayer& cover = unit.truth.display.cover;
-      const std::string cover_key =
-          cover.present() ? fmt::format("-cover{}n{}", cover.thickness_m, cover.refractive_index)
-                          : "";
+      const auto t0 = std::chrono::steady_clock::now();
       const auto captures =
-          cached_captures(o.cache_dir, key + drift_key + flicker_key + cover_key, set,
-                          unit.truth, rig);
+          cached_captures(o.cache_dir, capture_cache_key(o, d, seed, set, unit), set, unit.truth, rig);
       measured.simulate_s = seconds_since(t0);
       // Registration and the solver read the cover from the nominal description.
       if (o.solver_without_cover) set.nominal.display.cover = display::CoverLayer{};
 
       for (const bool self_calibrate : {false, true}) {
         if (self_calibrate && !o.self_calibrated) break;
-        CalibrationBenchmarkRow row = measured;
-        row.camera_self_calibrated = self_calibrate;
-        calib::CalibrateOptions options;
-        if (!self_calibrate) options.camera = rig.intrinsics;
-        options.decode.correct_exposure_drift = !o.no_exposure_fix;
-        options.decode.exposure_row_gain = !o.no_row_exposure_fix;
-        options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
-        if (o.true_poses)
-          for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
-        t0 = std::chrono::steady_clock::now();
-        try {
-          const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
-          row.calibrate_s = seconds_since(t0);
-          row.errors = sim::compare_with_truth(out.calibration, unit.truth);
-          row.within_bars = bars.met_by(*row.errors);
-          row.gate_failures = out.gate_failures;
-          row.gate_values = {{"termination", out.solve.termination},
-                             {"residual_rms_periods", out.solve.residuals.rms_periods},
-                             {"inlier_fraction", out.solve.residuals.inlier_fraction},
-                             {"camera_shift_sigmas", out.solve.camera_shift_sigmas},
-                             {"position_rms_periods", out.solve.position_rms},
-                             {"position_rms_ratios", out.solve.position_rms_ratio}};
-          row.uncertainty = out.calibration.uncertainty;
-          row.error_over_sigma = errors_over_sigmas(*row.errors, row.uncertainty,
-                                                    out.calibration.display.pitch_lpi);
-          if (self_calibrate) {
-            row.focal_error_rel = out.camera.camera_matrix(0, 0) / rig.intrinsics.camera_matrix(0, 0) - 1;
-            row.focal_sigma_rel = out.camera_focal_sigma_rel;
-          }
-          row.solve_s = out.solve.solve_seconds;
-          for (size_t i = 0; i < out.positions.size(); ++i) {
-            const Eigen::Vector3d t = rig.poses[i].position_m;
-            row.poses.push_back({out.positions[i].name, t, out.positions[i].camera_m - t,
-                                 out.positions[i].camera_refined_m - t,
-                                 out.positions[i].residual_rms_periods});
-          }
-        } catch (const std::exception& ex) {
-          row.failure = ex.what();
-        }
+        CalibrationBenchmarkRow row = calibrate_row(o, bars, set, captures, unit, rig, measured, self_calibrate);
         if (on_row) on_row(row);
         rows.push_back(std::move(row));
       }

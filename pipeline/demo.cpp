@@ -55,85 +55,111 @@ class Step {
   Clock::time_point t0_;
 };
 
-}  // namespace
+// What passes from one stage of the demo to the next (docs/architecture.md, "Long pipelines
+// are named stages").
+struct DemoRun {
+  explicit DemoRun(const DemoOptions& options) : o(options) {}
 
-std::filesystem::path run_demo(const DemoOptions& o) {
-  namespace fs = std::filesystem;
-  const fs::path data = lfd::data_dir();  // installed share/lfd, or the source tree's data/
-  const fs::path unit_path =
-      o.unit_calibration.empty() ? data / "calibrations/LKG-2K-04409.visual.json" : o.unit_calibration;
-  const fs::path scene_path = o.scene.empty() ? data / "scenes/demo.ply" : o.scene;
-  const fs::path out = o.out_dir;
-  fs::create_directories(out);
+  const DemoOptions& o;
+  std::filesystem::path out;
+  std::filesystem::path unit_path, scene_path;
   report::DemoReport report;
-  report.unit_source = unit_path.string();
-  report.scene_source = scene_path.string();
+  display::Calibration factory;  // the unit's factory file
+  sim::SyntheticUnit unit;   // unit.truth: what the simulated unit really is
+  display::Calibration recovered;
+  display::ViewCountAdvice advice;
+  display::DisplayQuilt display_quilt;
+  std::unique_ptr<gpu::HeadlessContext> gl;  // null: the CPU renders and interlaces
+  double aspect = 1.0;                       // the panel's width / height
+  render::QuiltLayout layout;
+  ImageF scene_quilt, numbered;
+  ImageF scene_panel, numbered_panel;
+};
 
-  // 1. The simulated unit: its factory file plus a warp only its own calibration describes,
-  // a view cone 2 degrees wider than nominal, and a user who starts from nominal values off by
-  // 1 % in pitch and 0.5 degree in slant (sim/synthetic_unit.hpp).
-  const display::Calibration factory = display::read_calibration(unit_path);
+// The simulated unit: its factory file plus a warp only its own calibration describes,
+// a view cone 2 degrees wider than nominal, and a user who starts from nominal values off by
+// 1 % in pitch and 0.5 degree in slant (sim/synthetic_unit.hpp).
+void simulate_unit(DemoRun& run) {
+  const DemoOptions& o = run.o;
+  const auto& unit_path = run.unit_path;
+  const auto& out = run.out;
+  run.factory = display::read_calibration(unit_path);
+  const display::Calibration& factory = run.factory;
   sim::SyntheticUnitOptions unit_options;
   unit_options.warp_amplitude = o.warp_amplitude_periods;
-  sim::SyntheticUnit unit = sim::make_synthetic_unit(factory.display, unit_options);
-  display::Calibration& truth = unit.truth;
+  run.unit = sim::make_synthetic_unit(factory.display, unit_options);
+  display::Calibration& truth = run.unit.truth;
   truth.provenance = {{"tool", "lfd demo"},
                       {"method", fmt::format("factory calibration {} + smooth lens warp of {} periods",
                                              unit_path.filename().string(), o.warp_amplitude_periods)}};
   display::write_calibration(out / "unit_truth.calibration.json", truth, true);
+}
 
-  // 2. Calibrate it: patterns shown on the unit, photographed by the simulator from three
-  // positions (blur, 2 % noise, vignetting, lens distortion, 5 % glare), solved.
-  display::Calibration recovered;
-  {
-    Step step(o.verbose, "calibrating the unit from simulated photographs");
-    const sim::PatternSet set = sim::plan_patterns(unit.nominal);
-    const sim::CaptureRig rig =
-        sim::make_capture_rig(truth.display, o.capture_width, 3, false, 1);
-    const auto captures = sim::simulate_captures(set, truth, rig);
-    calib::CalibrateOptions options;
-    options.camera = rig.intrinsics;
-    const calib::CalibrationOutcome outcome = calib::calibrate_display(set, captures, options);
-    recovered = outcome.calibration;
-    const sim::CalibrationErrors e = sim::compare_with_truth(recovered, truth);
-    report.calibration_note = fmt::format(
-        "Calibrated from {} patterns photographed at 3 positions ({}x{} px), starting from "
-        "nominal values off by 1 % in pitch and 0.5 deg in slant. Errors against the truth: "
-        "slant {:.5f} deg, pitch {:.1e} relative, center {:.4f} periods, view cone {:.2f} deg, "
-        "correction field {:.4f} periods RMS, lens phase {:.4f} periods RMS. Quality gates: {}.",
-        set.patterns.size(), rig.intrinsics.width, rig.intrinsics.height, e.slant_deg, e.pitch_rel,
-        e.center_periods, e.view_cone_deg, e.correction_rms_periods, e.phase_rms_periods,
-        outcome.gate_failures.empty() ? "passed" : "failed (" + std::to_string(outcome.gate_failures.size()) + ")");
-    display::write_calibration(out / "recovered.calibration.json", recovered, true);
+// Calibrate it as a user would: patterns shown on the unit, photographed by the simulator from
+// three positions (blur, 2 % noise, vignetting, lens distortion, 5 % glare), solved.
+void calibrate_unit(DemoRun& run) {
+  const DemoOptions& o = run.o;
+  const sim::SyntheticUnit& unit = run.unit;
+  const display::Calibration& truth = unit.truth;
+  display::Calibration& recovered = run.recovered;
+  Step step(o.verbose, "calibrating the unit from simulated photographs");
+  const sim::PatternSet set = sim::plan_patterns(unit.nominal);
+  const sim::CaptureRig rig =
+      sim::make_capture_rig(truth.display, o.capture_width, 3, false, 1);
+  const auto captures = sim::simulate_captures(set, truth, rig);
+  calib::CalibrateOptions options;
+  options.camera = rig.intrinsics;
+  const calib::CalibrationOutcome outcome = calib::calibrate_display(set, captures, options);
+  recovered = outcome.calibration;
+  const sim::CalibrationErrors e = sim::compare_with_truth(recovered, truth);
+  run.report.calibration_note = fmt::format(
+      "Calibrated from {} patterns photographed at 3 positions ({}x{} px), starting from "
+      "nominal values off by 1 % in pitch and 0.5 deg in slant. Errors against the truth: "
+      "slant {:.5f} deg, pitch {:.1e} relative, center {:.4f} periods, view cone {:.2f} deg, "
+      "correction field {:.4f} periods RMS, lens phase {:.4f} periods RMS. Quality gates: {}.",
+      set.patterns.size(), rig.intrinsics.width, rig.intrinsics.height, e.slant_deg, e.pitch_rel,
+      e.center_periods, e.view_cone_deg, e.correction_rms_periods, e.phase_rms_periods,
+      outcome.gate_failures.empty() ? "passed" : "failed (" + std::to_string(outcome.gate_failures.size()) + ")");
+  display::write_calibration(run.out / "recovered.calibration.json", recovered, true);
+}
+
+// The display is driven with the calibration recovered from photographs: it chooses the
+// views, the tile grid and the (measured) view cone the quilt is rendered with.
+void choose_views(DemoRun& run) {
+  run.advice = display::recommend_view_count(run.recovered);
+  run.report.views = run.advice.views;
+  run.report.view_rule = run.advice.rule;
+  run.display_quilt = display::quilt_for_display(run.recovered);
+}
+
+// The GPU path when a context can be made; the CPU reference otherwise (same images to within
+// the GL tests' tolerances).
+void open_gpu(DemoRun& run) {
+  const DemoOptions& o = run.o;
+  if (!o.use_gpu) return;
+  try {
+    run.gl = std::make_unique<gpu::HeadlessContext>();
+  } catch (const gpu::GlUnavailable& e) {
+    if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", e.what());
   }
-  const auto& d = truth.display;
-  const display::ViewCountAdvice advice = display::recommend_view_count(recovered);
-  report.views = advice.views;
-  report.view_rule = advice.rule;
-  // The display is driven with the calibration recovered from photographs: it chooses the
-  // views, the tile grid and the (measured) view cone the quilt is rendered with.
-  const display::Calibration& assumed = recovered;
-  const display::DisplayQuilt display_quilt = display::quilt_for_display(recovered);
+}
 
-  // 3. Quilts: the bundled scene through G2LF, and the numbered test quilt.
-  const double aspect = double(d.screen_w) / d.screen_h;
+// The quilts the display shows: the bundled scene through G2LF, and the numbered test quilt
+// that tells which view an eye sees.
+void render_quilts(DemoRun& run) {
+  const DemoOptions& o = run.o;
+  const auto& gl = run.gl;
+  const display::DisplayQuilt& display_quilt = run.display_quilt;
+  const auto& out = run.out;
+  auto& layout = run.layout;
+  auto& scene_quilt = run.scene_quilt;
+  auto& report = run.report;
+  const double aspect = run.aspect;
   const int tile_h = int(std::lround(o.tile_width / aspect));
-  render::QuiltLayout layout;
-  ImageF scene_quilt;
-  // The GPU path when a context can be made; the CPU reference otherwise (same images to within
-  // the GL tests' tolerances).
-  std::unique_ptr<gpu::HeadlessContext> gl;
-  if (o.use_gpu) {
-    try {
-      gl = std::make_unique<gpu::HeadlessContext>();
-    } catch (const gpu::GlUnavailable& e) {
-      if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", e.what());
-    }
-  }
   {
     Step step(o.verbose, gl ? "rendering the scene with G2LF on the GPU (" + gl->info().renderer + ")"
                             : std::string("rendering the scene with G2LF on the CPU"));
-    const lightfield::LightFieldScene light_field_scene(render::load_scene(scene_path));
+    const lightfield::LightFieldScene light_field_scene(render::load_scene(run.scene_path));
     const render::GaussianScene& scene = light_field_scene.gaussians();
     const render::CameraSpec spec = render::frame_scene(scene, 40.0f, 0.0f);
     const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
@@ -155,78 +181,115 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   }
   const std::string suffix = render::quilt_suffix(layout.cols, layout.rows, layout.aspect);
   write_png(out / ("scene_quilt" + suffix + ".png"), to_uint8(scene_quilt));
-  const ImageF numbered = make_numbered_quilt(layout);
-  write_png(out / ("numbered_quilt" + suffix + ".png"), to_uint8(numbered));
+  run.numbered = make_numbered_quilt(layout);
+  write_png(out / ("numbered_quilt" + suffix + ".png"), to_uint8(run.numbered));
+}
 
-  // 4. Interlace with the calibration the display is driven with.
-  ImageF scene_panel, numbered_panel;
-  {
-    Step step(o.verbose, "interlacing");
-    const display::LensModel lens(assumed.display, assumed.correction);
-    scene_panel = gl ? gpu::interlace_on_gpu(scene_quilt, layout, lens) : interlace::interlace(scene_quilt, layout, lens);
-    numbered_panel = gl ? gpu::interlace_on_gpu(numbered, layout, lens) : interlace::interlace(numbered, layout, lens);
-    write_png(out / "scene_panel.png", to_uint8(scene_panel));
-    write_png(out / "numbered_panel.png", to_uint8(numbered_panel));
-  }
+// Interlace with the calibration the display is driven with (the recovered one).
+void interlace_quilts(DemoRun& run) {
+  Step step(run.o.verbose, "interlacing");
+  const auto& gl = run.gl;
+  const auto& layout = run.layout;
+  const display::Calibration& assumed = run.recovered;
+  const display::LensModel lens(assumed.display, assumed.correction);
+  run.scene_panel = gl ? gpu::interlace_on_gpu(run.scene_quilt, layout, lens) : interlace::interlace(run.scene_quilt, layout, lens);
+  run.numbered_panel = gl ? gpu::interlace_on_gpu(run.numbered, layout, lens) : interlace::interlace(run.numbered, layout, lens);
+  write_png(run.out / "scene_panel.png", to_uint8(run.scene_panel));
+  write_png(run.out / "numbered_panel.png", to_uint8(run.numbered_panel));
+}
 
-  // 5. Photographs from three positions across the view cone at 0.45 m.
-  {
-    Step step(o.verbose, "photographing the display from three positions");
-    const sim::DisplaySimulator display(display::LensModel(truth.display, truth.correction));
-    const double distance = 0.45;
-    const double fov = 2.0 * std::atan(0.65 * d.width_m() / distance) * 180.0 / std::numbers::pi;
-    const int cw = o.capture_width, ch = int(std::lround(cw / aspect));
-    sim::CaptureEffects fx;
-    fx.blur_px = 0.7;
-    fx.noise_sigma = 0.01;
-    fx.vignetting = 0.15;
-    for (auto [name, angle] : {std::pair{"left", -0.3}, {"centre", 0.0}, {"right", 0.3}}) {
-      const double theta = angle * d.view_cone_deg * std::numbers::pi / 180.0;
-      sim::CameraPose pose;
-      pose.position_m = {distance * std::sin(theta), 0.0, distance * std::cos(theta)};
-      const sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(fov, cw, ch), pose);
-      // Which view a viewer there should see (docs/validation.md, "The forward model": f_seen at the panel centre).
-      const double f_seen =
-          display::seen_fraction_through_cover(pose.position_m.x(), pose.position_m.y(),
-                                             pose.position_m.z(), d.cover,
-                                             display::LensModel(d).line_tilt(), d.view_cone_deg);
-      report::DemoCapture cap;
-      cap.name = name;
-      cap.angle_deg = theta * 180.0 / std::numbers::pi;
-      cap.expected_view = display::LensModel::view_index(f_seen, advice.views);
-      cap.scene_image = fmt::format("capture_scene_{}.png", name);
-      cap.numbered_image = fmt::format("capture_numbered_{}.png", name);
-      write_png(out / cap.scene_image, to_uint8(display.capture(scene_panel, camera, fx)));
-      write_png(out / cap.numbered_image, to_uint8(display.capture(numbered_panel, camera, fx)));
-      report.captures.push_back(cap);
-    }
+// What a person would see: photographs from three positions across the view cone at 0.45 m,
+// through the optics of the true unit, each with the view a viewer there should see.
+void photograph_display(DemoRun& run) {
+  const DemoOptions& o = run.o;
+  const display::Calibration& truth = run.unit.truth;
+  const auto& d = truth.display;
+  const auto& out = run.out;
+  Step step(o.verbose, "photographing the display from three positions");
+  const sim::DisplaySimulator display(display::LensModel(truth.display, truth.correction));
+  const double distance = 0.45;
+  const double fov = 2.0 * std::atan(0.65 * d.width_m() / distance) * 180.0 / std::numbers::pi;
+  const int cw = o.capture_width, ch = int(std::lround(cw / run.aspect));
+  sim::CaptureEffects fx;
+  fx.blur_px = 0.7;
+  fx.noise_sigma = 0.01;
+  fx.vignetting = 0.15;
+  for (auto [name, angle] : {std::pair{"left", -0.3}, {"centre", 0.0}, {"right", 0.3}}) {
+    const double theta = angle * d.view_cone_deg * std::numbers::pi / 180.0;
+    sim::CameraPose pose;
+    pose.position_m = {distance * std::sin(theta), 0.0, distance * std::cos(theta)};
+    const sim::PhysicalCamera camera(sim::CameraIntrinsics::from_fov(fov, cw, ch), pose);
+    // Which view a viewer there should see (docs/validation.md, "The forward model": f_seen at the panel centre).
+    const double f_seen =
+        display::seen_fraction_through_cover(pose.position_m.x(), pose.position_m.y(),
+                                           pose.position_m.z(), d.cover,
+                                           display::LensModel(d).line_tilt(), d.view_cone_deg);
+    report::DemoCapture cap;
+    cap.name = name;
+    cap.angle_deg = theta * 180.0 / std::numbers::pi;
+    cap.expected_view = display::LensModel::view_index(f_seen, run.advice.views);
+    cap.scene_image = fmt::format("capture_scene_{}.png", name);
+    cap.numbered_image = fmt::format("capture_numbered_{}.png", name);
+    write_png(out / cap.scene_image, to_uint8(display.capture(run.scene_panel, camera, fx)));
+    write_png(out / cap.numbered_image, to_uint8(display.capture(run.numbered_panel, camera, fx)));
+    run.report.captures.push_back(cap);
   }
+}
 
-  // 6. View separation: the unit's own calibration, its factory file, a 0.01-degree slant error.
-  {
-    Step step(o.verbose, "validating view separation (4 configurations)");
-    validate::ProfileOptions po;
-    po.views = advice.views;
-    po.panel_points = o.validation_points;
-    std::vector<report::ValidationCase> cases;
-    const std::vector<std::pair<std::string, display::Calibration>> configs = {
-        {"recovered calibration", assumed},
-        {"true calibration", truth},
-        {"factory visual.json (no warp correction)", factory},
-        {"recovered, slant off by 0.01 deg", validate::apply(assumed, validate::Miscalibration{.slant_deg = 0.01})}};
-    for (const auto& [name, cal] : configs) {
-      report::ValidationCase c;
-      c.name = name;
-      c.truth_source = "simulated unit";
-      c.assumed_source = name;
-      c.profiles = validate::measure_view_profiles(truth, cal, po);
-      c.summary = validate::summarise(c.profiles);
-      report.validation.push_back({name, c.summary.mean_separation, c.summary.mean_crosstalk});
-      cases.push_back(std::move(c));
-    }
-    report::write_report(out / "validation", cases);
+// How well the views separate when the unit is driven with its recovered calibration, its
+// true one, its factory file and a 0.01-degree slant error: what calibrating it bought.
+void validate_views(DemoRun& run) {
+  const DemoOptions& o = run.o;
+  const display::Calibration& truth = run.unit.truth;
+  const display::Calibration& assumed = run.recovered;
+  Step step(o.verbose, "validating view separation (4 configurations)");
+  validate::ProfileOptions po;
+  po.views = run.advice.views;
+  po.panel_points = o.validation_points;
+  std::vector<report::ValidationCase> cases;
+  const std::vector<std::pair<std::string, display::Calibration>> configs = {
+      {"recovered calibration", assumed},
+      {"true calibration", truth},
+      {"factory visual.json (no warp correction)", run.factory},
+      {"recovered, slant off by 0.01 deg", validate::apply(assumed, validate::Miscalibration{.slant_deg = 0.01})}};
+  for (const auto& [name, cal] : configs) {
+    report::ValidationCase c;
+    c.name = name;
+    c.truth_source = "simulated unit";
+    c.assumed_source = name;
+    c.profiles = validate::measure_view_profiles(truth, cal, po);
+    c.summary = validate::summarise(c.profiles);
+    run.report.validation.push_back({name, c.summary.mean_separation, c.summary.mean_crosstalk});
+    cases.push_back(std::move(c));
   }
-  return report::write_demo_report(out, report);
+  report::write_report(run.out / "validation", cases);
+}
+
+}  // namespace
+
+std::filesystem::path run_demo(const DemoOptions& o) {
+  namespace fs = std::filesystem;
+  const fs::path data = lfd::data_dir();  // installed share/lfd, or the source tree's data/
+  DemoRun run(o);
+  run.unit_path =
+      o.unit_calibration.empty() ? data / "calibrations/LKG-2K-04409.visual.json" : o.unit_calibration;
+  run.scene_path = o.scene.empty() ? data / "scenes/demo.ply" : o.scene;
+  run.out = o.out_dir;
+  fs::create_directories(run.out);
+  run.report.unit_source = run.unit_path.string();
+  run.report.scene_source = run.scene_path.string();
+
+  simulate_unit(run);
+  calibrate_unit(run);
+  choose_views(run);
+  const auto& d = run.unit.truth.display;
+  run.aspect = double(d.screen_w) / d.screen_h;
+  open_gpu(run);
+  render_quilts(run);
+  interlace_quilts(run);
+  photograph_display(run);
+  validate_views(run);
+  return report::write_demo_report(run.out, run.report);
 }
 
 }  // namespace lfd::pipeline

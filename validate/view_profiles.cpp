@@ -101,6 +101,43 @@ std::vector<Eigen::Vector3d> panel_points(const display::DisplayCalibration& d, 
   return points;
 }
 
+// The subpixels of each view, so a pass switches on only its own (a panel is 25M values).
+std::vector<std::vector<uint32_t>> subpixels_of_views(const std::vector<uint8_t>& index, int views) {
+  std::vector<std::vector<uint32_t>> subpixels_of(views);
+  for (auto& list : subpixels_of) list.reserve(index.size() / views + 1024);
+  for (size_t i = 0; i < index.size(); ++i)
+    if (index[i] >= 1 && index[i] <= views) subpixels_of[index[i] - 1].push_back(uint32_t(i));
+  return subpixels_of;
+}
+
+// One pass's profile: the luminance an eye in each direction sees, averaged over the panel
+// points.
+std::vector<double> mean_luminance_profile(const sim::DisplaySimulator& simulator, const ImageF& panel,
+                                           const std::vector<Eigen::Vector3d>& points,
+                                           const std::vector<Eigen::Vector3d>& offsets,
+                                           const std::optional<double>& eye_height_m,
+                                           double psf_sigma_phase) {
+  const int angles = int(offsets.size());
+  std::vector<double> profile(angles, 0.0);
+#pragma omp parallel
+  {
+    std::vector<double> local(angles, 0.0);
+#pragma omp for schedule(dynamic, 8)
+    for (long p = 0; p < long(points.size()); ++p)
+      for (int k = 0; k < angles; ++k) {
+        Eigen::Vector3d eye = points[p] + offsets[k];
+        if (eye_height_m) eye.y() = *eye_height_m;
+        const auto r = simulator.radiance(panel, points[p], eye, psf_sigma_phase);
+        // Luminance (Rec. 709 luma of linear RGB): a white panel reads 1.
+        local[k] += 0.2126 * r[0] + 0.7152 * r[1] + 0.0722 * r[2];
+      }
+#pragma omp critical
+    for (int k = 0; k < angles; ++k) profile[k] += local[k];
+  }
+  for (double& l : profile) l /= double(points.size());
+  return profile;
+}
+
 }  // namespace
 
 void ProfileOptions::check() const {
@@ -160,11 +197,7 @@ ViewProfiles measure_view_profiles(const display::Calibration& truth,
     offsets.emplace_back(options.distance_m * std::sin(t * kDegToRad), 0.0,
                          options.distance_m * std::cos(t * kDegToRad));
 
-  // The subpixels of each view, so a pass switches on only its own (a panel is 25M values).
-  std::vector<std::vector<uint32_t>> subpixels_of(out.views);
-  for (auto& list : subpixels_of) list.reserve(index.size() / out.views + 1024);
-  for (size_t i = 0; i < index.size(); ++i)
-    if (index[i] >= 1 && index[i] <= out.views) subpixels_of[index[i] - 1].push_back(uint32_t(i));
+  const std::vector<std::vector<uint32_t>> subpixels_of = subpixels_of_views(index, out.views);
 
   ImageF panel(d.screen_w, d.screen_h, 3, 0.0f);
   out.view.assign(out.views, std::vector<double>(angles, 0.0));
@@ -182,23 +215,8 @@ ViewProfiles measure_view_profiles(const display::Calibration& truth,
       if (pass < out.views)
         for (uint32_t i : subpixels_of[pass]) panel.pixels[i] = 1.0f;
     }
-    std::vector<double> profile(angles, 0.0);
-#pragma omp parallel
-    {
-      std::vector<double> local(angles, 0.0);
-#pragma omp for schedule(dynamic, 8)
-      for (long p = 0; p < long(points.size()); ++p)
-        for (int k = 0; k < angles; ++k) {
-          Eigen::Vector3d eye = points[p] + offsets[k];
-          if (options.eye_height_m) eye.y() = *options.eye_height_m;
-          const auto r = simulator.radiance(panel, points[p], eye, out.psf_sigma_phase);
-          // Luminance (Rec. 709 luma of linear RGB): a white panel reads 1.
-          local[k] += 0.2126 * r[0] + 0.7152 * r[1] + 0.0722 * r[2];
-        }
-#pragma omp critical
-      for (int k = 0; k < angles; ++k) profile[k] += local[k];
-    }
-    for (double& l : profile) l /= double(points.size());
+    std::vector<double> profile =
+        mean_luminance_profile(simulator, panel, points, offsets, options.eye_height_m, out.psf_sigma_phase);
     if (pass < out.views)
       out.view[pass] = std::move(profile);
     else

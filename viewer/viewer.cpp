@@ -139,6 +139,160 @@ void report_fit(const std::string& notice) {
   if (!notice.empty()) std::cerr << fmt::format("notice: {}\n", notice);
 }
 
+// The display's monitor, or none: a simulated display in a window (a desk without the unit).
+GLFWmonitor* find_monitor(const gpu::GlfwSession& session, const ViewerOptions& options) {
+  if (options.simulated_display) return nullptr;
+  const auto& d = options.calibration.display;
+  try {
+    return session.find_display_monitor(options.monitor_prefix, d.screen_w, d.screen_h);
+  } catch (const InputError& e) {
+    std::cerr << fmt::format("notice: no monitor for the display ({}); showing a simulated display in a window\n",
+                             e.what());
+  }
+  return nullptr;
+}
+
+// Both windows feed one collector, so the camera moves from either; a scene dropped on the
+// control window loads too.
+void connect_input(InputCollector& input, const DisplayWindow& display, std::optional<ControlWindow>& controls) {
+  install_callbacks(display.handle(), &input, false);
+  if (!controls) return;
+  input.controls = &*controls;
+  input.control_window = controls->handle();
+  glfwSetWindowUserPointer(controls->handle(), &input);
+  glfwSetDropCallback(controls->handle(), [](GLFWwindow* win, int count, const char** paths) {
+    if (count > 0) collector(win)->dropped = paths[0];
+  });
+}
+
+// What the stages of the frame loop share: the windows, the frame, the camera and what one
+// frame leaves to the next (docs/architecture.md, "Long pipelines are named stages").
+struct FrameLoop {
+  const ViewerOptions& options;
+  const std::filesystem::path& settings_path;
+  ViewerSettings& settings;
+  ViewerScene& scene;
+  OrbitCamera& camera;
+  DisplayWindow& display;
+  std::optional<ControlWindow>& controls;
+  LightFieldFrame& frame;
+  InputCollector& input;
+  SeenFromPreviewer previewer;
+  SeenFromControls seen_from{};
+  std::string plane_notice{};
+  FrameReport report{};
+  std::deque<double> frame_times{};
+  std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+};
+
+// Seconds since the last frame; the control window shows the median of the last 30, which a
+// single slow frame does not move.
+double time_frame(FrameLoop& loop, int frame_index) {
+  const auto now = std::chrono::steady_clock::now();
+  const double dt = std::chrono::duration<double>(now - loop.last).count();
+  loop.last = now;
+  if (frame_index > 0) {
+    auto& frame_times = loop.frame_times;
+    frame_times.push_back(dt);
+    if (frame_times.size() > 30) frame_times.pop_front();
+    std::vector<double> sorted(frame_times.begin(), frame_times.end());
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    loop.report.frame_seconds = sorted[sorted.size() / 2];
+  }
+  return dt;
+}
+
+// Input: the mouse and keys of both windows move the camera (a step capped at 0.1 s, so a
+// stalled frame does not fling it).
+void apply_frame_input(FrameLoop& loop, double dt) {
+  InputCollector& input = loop.input;
+  poll_keys(loop.display.handle(), input.events);
+  if (loop.controls && !loop.controls->wants_keyboard()) poll_keys(loop.controls->handle(), input.events);
+  int fb_w = 0, fb_h = 0;
+  glfwGetFramebufferSize(loop.display.handle(), &fb_w, &fb_h);
+  apply_input(input.events, fb_h, std::min(dt, 0.1), loop.camera);
+  input.events = InputEvents{};
+}
+
+// Reload: a scene dropped on a window replaces the shown one; a bad file keeps the old scene.
+void reload_dropped_scene(FrameLoop& loop) {
+  InputCollector& input = loop.input;
+  if (!input.dropped) return;
+  try {
+    loop.scene = load_viewer_scene(*input.dropped);
+    loop.display.make_current();
+    loop.frame.replace_scene(loop.scene);
+    report_fit(loop.frame.scene_fit_notice());
+    loop.camera = OrbitCamera(loop.scene.framing());
+    std::cout << fmt::format("loaded {} ({})\n", *input.dropped, loop.scene.describe());
+  } catch (const InputError& e) {
+    std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
+  }
+  input.dropped.reset();
+}
+
+// Render: the light field for the camera, interlaced onto the display; settings the controls
+// made invalid keep the last frame (the first frame has none, so it fails).
+void render_frame(FrameLoop& loop, int frame_index) {
+  const ViewerOptions& options = loop.options;
+  LightFieldFrame& frame = loop.frame;
+  DisplayWindow& display = loop.display;
+  display.make_current();
+  try {
+    loop.settings.check("settings");
+    frame.render(loop.camera.spec(), loop.settings, &loop.report);
+  } catch (const InputError& e) {
+    if (frame_index == 0) throw;
+    std::cerr << fmt::format("notice: {}\n", e.what());  // e.g. planes too large: keep the last frame
+  }
+  if (frame.plane_fit_notice() != loop.plane_notice) {
+    loop.plane_notice = frame.plane_fit_notice();
+    report_fit(loop.plane_notice);
+  }
+  loop.report.fit_notices.clear();
+  for (const std::string& notice : {frame.scene_fit_notice(), loop.plane_notice})
+    if (!notice.empty()) loop.report.fit_notices.push_back(notice);
+  if (loop.controls) loop.previewer.update(loop.seen_from, frame, loop.camera.spec(), loop.settings);
+  display.draw(frame.panel());
+  const bool last_frame = options.frames > 0 && frame_index + 1 == options.frames;
+  if (last_frame && !options.screenshot_path.empty()) write_screenshot(display, frame, options.screenshot_path);
+  display.swap();
+}
+
+// Actions: the control window edits the settings and asks for screenshots, quilts, cam.json
+// and saved settings, done here between frames.
+void run_control_actions(FrameLoop& loop) {
+  if (!loop.controls) return;
+  const LightFieldFrame& frame = loop.frame;
+  ControlImages images;
+  images.quilt = &frame.quilt();
+  images.seen_from = loop.previewer.texture();
+  images.seen_from_age_s = loop.previewer.age_seconds();
+  images.seen_from_cost_s = loop.previewer.last_compute_seconds();
+  const ControlActions a =
+      loop.controls->draw(loop.settings, loop.seen_from, loop.report, images, loop.display.handle());
+  if (a.reset_camera) loop.camera.reset();
+  if (a.screenshot) write_screenshot(loop.display, frame, "lfd-view-" + timestamp() + ".png");
+  if (a.save_quilt) write_quilt(frame, "lfd-view-" + timestamp() + ".png");
+  if (a.save_camera) {
+    write_text_atomic("cam.json", render::camera_json_text(loop.camera.spec()));
+    std::cout << "wrote cam.json\n";
+  }
+  if (a.save_settings) {
+    save_settings(loop.settings_path, loop.settings);
+    std::cout << fmt::format("wrote {}\n", loop.settings_path.string());
+  }
+}
+
+// What a scripted run asked for after its last frame: the quilt and the camera.
+void write_final_outputs(const ViewerOptions& options, const LightFieldFrame& frame, const OrbitCamera& camera) {
+  if (!options.quilt_path.empty()) write_quilt(frame, options.quilt_path);
+  if (!options.camera_out_path.empty()) {
+    write_text_atomic(options.camera_out_path, render::camera_json_text(camera.spec()));
+    std::cout << fmt::format("wrote {}\n", options.camera_out_path.string());
+  }
+}
+
 }  // namespace
 
 int run_viewer(const ViewerOptions& options) {
@@ -153,16 +307,7 @@ int run_viewer(const ViewerOptions& options) {
   OrbitCamera camera(start);
 
   const gpu::GlfwSession session("lfd view needs a desktop session (X11 or Wayland) to open its windows");
-  GLFWmonitor* monitor = nullptr;
-  if (!options.simulated_display) {
-    try {
-      monitor = session.find_display_monitor(options.monitor_prefix, d.screen_w, d.screen_h);
-    } catch (const InputError& e) {
-      std::cerr << fmt::format("notice: no monitor for the display ({}); showing a simulated display in a window\n",
-                               e.what());
-    }
-  }
-  DisplayWindow display(session, monitor, d.screen_w, d.screen_h);
+  DisplayWindow display(session, find_monitor(session, options), d.screen_w, d.screen_h);
   const gpu::GlInfo info = gpu::query_gl_info("GLFW window");
   std::cout << fmt::format("display {} on {}; rendering with {}\n", options.display_name,
                            display.on_display() ? "its monitor" : "a simulated display window", info.summary());
@@ -177,104 +322,23 @@ int run_viewer(const ViewerOptions& options) {
   report_fit(frame.scene_fit_notice());
 
   InputCollector input;
-  install_callbacks(display.handle(), &input, false);
-  if (controls) {
-    input.controls = &*controls;
-    input.control_window = controls->handle();
-    glfwSetWindowUserPointer(controls->handle(), &input);
-    glfwSetDropCallback(controls->handle(), [](GLFWwindow* win, int count, const char** paths) {
-      if (count > 0) collector(win)->dropped = paths[0];
-    });
-  }
-
-  SeenFromControls seen_from;
-  SeenFromPreviewer previewer(frame.calibration());
-  std::string plane_notice;
-  FrameReport report;
-  report.renderer = info.summary();
-  report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
-  std::deque<double> frame_times;
-  auto last = std::chrono::steady_clock::now();
+  connect_input(input, display, controls);
+  FrameLoop loop{.options = options, .settings_path = settings_path, .settings = settings,
+                 .scene = scene, .camera = camera, .display = display, .controls = controls,
+                 .frame = frame, .input = input, .previewer = SeenFromPreviewer(frame.calibration())};
+  loop.report.renderer = info.summary();
+  loop.report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
   for (int frame_index = 0; options.frames == 0 || frame_index < options.frames; ++frame_index) {
     glfwPollEvents();
     if (display.should_close() || (controls && controls->should_close())) break;
-    const auto now = std::chrono::steady_clock::now();
-    const double dt = std::chrono::duration<double>(now - last).count();
-    last = now;
-    if (frame_index > 0) {
-      frame_times.push_back(dt);
-      if (frame_times.size() > 30) frame_times.pop_front();
-      std::vector<double> sorted(frame_times.begin(), frame_times.end());
-      std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-      report.frame_seconds = sorted[sorted.size() / 2];
-    }
-    poll_keys(display.handle(), input.events);
-    if (controls && !controls->wants_keyboard()) poll_keys(controls->handle(), input.events);
-    int fb_w = 0, fb_h = 0;
-    glfwGetFramebufferSize(display.handle(), &fb_w, &fb_h);
-    apply_input(input.events, fb_h, std::min(dt, 0.1), camera);
-    input.events = InputEvents{};
-    if (input.dropped) {
-      try {
-        scene = load_viewer_scene(*input.dropped);
-        display.make_current();
-        frame.replace_scene(scene);
-        report_fit(frame.scene_fit_notice());
-        camera = OrbitCamera(scene.framing());
-        std::cout << fmt::format("loaded {} ({})\n", *input.dropped, scene.describe());
-      } catch (const InputError& e) {
-        std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
-      }
-      input.dropped.reset();
-    }
-
-    display.make_current();
-    try {
-      settings.check("settings");
-      frame.render(camera.spec(), settings, &report);
-    } catch (const InputError& e) {
-      if (frame_index == 0) throw;
-      std::cerr << fmt::format("notice: {}\n", e.what());  // e.g. planes too large: keep the last frame
-    }
-    if (frame.plane_fit_notice() != plane_notice) {
-      plane_notice = frame.plane_fit_notice();
-      report_fit(plane_notice);
-    }
-    report.fit_notices.clear();
-    for (const std::string& notice : {frame.scene_fit_notice(), plane_notice})
-      if (!notice.empty()) report.fit_notices.push_back(notice);
-    if (controls) previewer.update(seen_from, frame, camera.spec(), settings);
-    display.draw(frame.panel());
-    const bool last_frame = options.frames > 0 && frame_index + 1 == options.frames;
-    if (last_frame && !options.screenshot_path.empty()) write_screenshot(display, frame, options.screenshot_path);
-    display.swap();
-
-    if (controls) {
-      ControlImages images;
-      images.quilt = &frame.quilt();
-      images.seen_from = previewer.texture();
-      images.seen_from_age_s = previewer.age_seconds();
-      images.seen_from_cost_s = previewer.last_compute_seconds();
-      const ControlActions a = controls->draw(settings, seen_from, report, images, display.handle());
-      if (a.reset_camera) camera.reset();
-      if (a.screenshot) write_screenshot(display, frame, "lfd-view-" + timestamp() + ".png");
-      if (a.save_quilt) write_quilt(frame, "lfd-view-" + timestamp() + ".png");
-      if (a.save_camera) {
-        write_text_atomic("cam.json", render::camera_json_text(camera.spec()));
-        std::cout << "wrote cam.json\n";
-      }
-      if (a.save_settings) {
-        save_settings(settings_path, settings);
-        std::cout << fmt::format("wrote {}\n", settings_path.string());
-      }
-    }
+    const double dt = time_frame(loop, frame_index);
+    apply_frame_input(loop, dt);
+    reload_dropped_scene(loop);
+    render_frame(loop, frame_index);
+    run_control_actions(loop);
   }
   display.make_current();
-  if (!options.quilt_path.empty()) write_quilt(frame, options.quilt_path);
-  if (!options.camera_out_path.empty()) {
-    write_text_atomic(options.camera_out_path, render::camera_json_text(camera.spec()));
-    std::cout << fmt::format("wrote {}\n", options.camera_out_path.string());
-  }
+  write_final_outputs(options, frame, camera);
   return 0;
 }
 

@@ -92,14 +92,13 @@ std::array<double, 3> predicted_channel_offsets(const display::DisplayCalibratio
   return out;
 }
 
-ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pattern,
-                                          const SubpixelLayout& given,
-                                          const std::vector<const DecodedPhase*>& positions,
-                                          const ColourOrderOptions& options) {
-  ColourOrderCheck out;
-  out.drawn = pattern;
-  out.pattern = SubpixelLayout::of(pattern);
-  out.given = out.best = out.adopted = given;
+namespace {
+
+using Candidate = ColourOrderCheck::Candidate;
+
+// Measure: the medians of every position's R - G and B - G offsets and their standard errors;
+// false when the photos hold too few samples to tell.
+bool measure_channel_offsets(const std::vector<const DecodedPhase*>& positions, ColourOrderCheck& out) {
   std::array<std::vector<double>, 2> diff;
   std::array<std::vector<double>, 3> channel;
   for (const DecodedPhase* p : positions)
@@ -112,7 +111,7 @@ ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pat
   out.samples = long(diff[0].size());
   if (out.samples < 100) {
     out.finding = "too few phase samples to check the colour order";
-    return out;
+    return false;
   }
   for (int i = 0; i < 2; ++i) {
     out.measured_periods[size_t(i)] = median(diff[size_t(i)]);
@@ -122,38 +121,37 @@ ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pat
         1.2533 * out.spread_periods[size_t(i)] / std::sqrt(double(out.samples));
   }
   for (int c = 0; c < 3; ++c) out.channel_offsets_periods[size_t(c)] = median(channel[size_t(c)]);
+  return true;
+}
 
-  // The pattern's own layout predicts no offsets; every other one its displacements.
+// Rank: the pattern's own layout predicts no offsets; every other one its displacements. Each
+// candidate's miss is its distance from the measured offsets.
+void rank_layouts(const display::DisplayCalibration& pattern, const SubpixelLayout& given, ColourOrderCheck& out) {
   std::vector<SubpixelLayout> layouts = candidate_layouts(pattern);
   if (std::find(layouts.begin(), layouts.end(), given) == layouts.end()) layouts.push_back(given);
-  const ColourOrderCheck::Candidate* given_c = nullptr;
-  const ColourOrderCheck::Candidate* best_c = nullptr;
   for (const SubpixelLayout& l : layouts) {
-    ColourOrderCheck::Candidate c;
+    Candidate c;
     c.layout = l;
     c.predicted_periods = differences(predicted_channel_offsets(pattern, l));
     c.miss_periods = distance(out.measured_periods, c.predicted_periods);
     out.candidates.push_back(c);
   }
-  for (const auto& c : out.candidates) {
-    if (c.layout == given) given_c = &c;
-    if (!best_c || c.miss_periods < best_c->miss_periods) best_c = &c;
-  }
-  out.best = best_c->layout;
-  const double sigma = std::hypot(out.sigma_periods[0], out.sigma_periods[1]);
-  const double separation = distance(given_c->predicted_periods, best_c->predicted_periods);
-  out.photos_disagree =
-      !(out.best == given) && given_c->miss_periods > options.min_sigmas * sigma &&
-      given_c->miss_periods - best_c->miss_periods > options.min_margin_fraction * separation;
+}
+
+// The finding in words: agreement, a lean too weak to refuse, or a disagreement that refuses
+// the calibration unless the best layout is adopted (options.estimate).
+void word_finding(const display::DisplayCalibration& pattern, const SubpixelLayout& given,
+                  const ColourOrderOptions& options, const Candidate& given_c,
+                  const Candidate& best_c, ColourOrderCheck& out) {
   const std::string measured = fmt::format("R - G {:+.3f}, B - G {:+.3f} lens periods",
                                            out.measured_periods[0], out.measured_periods[1]);
-  auto predicted = [](const ColourOrderCheck::Candidate& c) {
+  auto predicted = [](const Candidate& c) {
     return fmt::format("{:+.3f}, {:+.3f}", c.predicted_periods[0], c.predicted_periods[1]);
   };
   if (!out.photos_disagree && out.best == given) {
     out.finding = fmt::format("colour order: the photos agree with {} ({} measured, {} predicted)",
-                              given.describe(pattern), measured, predicted(*given_c));
-    return out;
+                              given.describe(pattern), measured, predicted(given_c));
+    return;
   }
   if (!out.photos_disagree) {
     // Nearer, but not clearly (strong camera colour crosstalk dilutes the offsets): said, not
@@ -161,9 +159,9 @@ ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pat
     out.finding = fmt::format(
         "colour order: the photos lean toward {} over the given {} ({} measured; predicted {} "
         "and {}), too little to refuse: check the panel's subpixel order",
-        out.best.describe(pattern), given.describe(pattern), measured, predicted(*best_c),
-        predicted(*given_c));
-    return out;
+        out.best.describe(pattern), given.describe(pattern), measured, predicted(best_c),
+        predicted(given_c));
+    return;
   }
   const bool both_classic = !given.cells && !out.best.cells;
   const std::string what =
@@ -172,8 +170,8 @@ ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pat
                    : fmt::format("the subpixel layout is {}, the photos say {}",
                                  given.describe(pattern), out.best.describe(pattern));
   const std::string evidence = fmt::format("{} measured; {} predicts {}, {} predicts {}", measured,
-                                           given.describe(pattern), predicted(*given_c),
-                                           out.best.describe(pattern), predicted(*best_c));
+                                           given.describe(pattern), predicted(given_c),
+                                           out.best.describe(pattern), predicted(best_c));
   if (options.estimate) {
     out.adopted = out.best;
     out.finding = fmt::format("colour order: {}; adopted ({})", what, evidence);
@@ -181,6 +179,35 @@ ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pat
     out.finding = fmt::format("{}: rerun with {}, or with --estimate-colour-order ({})", what,
                               out.best.option(), evidence);
   }
+}
+
+}  // namespace
+
+ColourOrderCheck compare_subpixel_layouts(const display::DisplayCalibration& pattern,
+                                          const SubpixelLayout& given,
+                                          const std::vector<const DecodedPhase*>& positions,
+                                          const ColourOrderOptions& options) {
+  ColourOrderCheck out;
+  out.drawn = pattern;
+  out.pattern = SubpixelLayout::of(pattern);
+  out.given = out.best = out.adopted = given;
+  if (!measure_channel_offsets(positions, out)) return out;
+  rank_layouts(pattern, given, out);
+  const Candidate* given_c = nullptr;
+  const Candidate* best_c = nullptr;
+  for (const auto& c : out.candidates) {
+    if (c.layout == given) given_c = &c;
+    if (!best_c || c.miss_periods < best_c->miss_periods) best_c = &c;
+  }
+  out.best = best_c->layout;
+  // Decide: the photos disagree only when the given layout misses by many standard errors and
+  // clearly more than the best one (ColourOrderOptions).
+  const double sigma = std::hypot(out.sigma_periods[0], out.sigma_periods[1]);
+  const double separation = distance(given_c->predicted_periods, best_c->predicted_periods);
+  out.photos_disagree =
+      !(out.best == given) && given_c->miss_periods > options.min_sigmas * sigma &&
+      given_c->miss_periods - best_c->miss_periods > options.min_margin_fraction * separation;
+  word_finding(pattern, given, options, *given_c, *best_c, out);
   return out;
 }
 

@@ -96,17 +96,14 @@ PhasePlane fit_phase_plane(const std::vector<PhaseSample>& samples) {
   return plane;
 }
 
-LensEstimate coarse_start(const display::Calibration& nominal, const std::vector<PositionData>& positions,
-                          bool fit_view_cone, std::vector<PhasePlane>* planes_out) {
-  const display::DisplayCalibration& d = nominal.display;
-  const display::LensModel nom(d);
-  const double s = d.inv_view ? 1.0 : -1.0;
-  const double width_m = d.width_m(), height_m = d.height_m();
+namespace {
 
+// Each position's phase plane, with the nominal correction field (if the patterns were made
+// with one) removed first, so what is left is a plane; s: coarse_start's sign of psi.
+std::vector<PhasePlane> position_planes(const display::Calibration& nominal,
+                                        const std::vector<PositionData>& positions, double s) {
   std::vector<PhasePlane> planes;
   for (const auto& p : positions) {
-    // Remove the nominal correction field (if the patterns were made with one), so what is
-    // left is a plane.
     std::vector<PhaseSample> flat = p.samples;
     if (!nominal.correction.empty())
       for (auto& q : flat) {
@@ -115,6 +112,37 @@ LensEstimate coarse_start(const display::Calibration& nominal, const std::vector
       }
     planes.push_back(fit_phase_plane(flat));
   }
+  return planes;
+}
+
+// center: circular mean over positions of c_nom + s (f_seen(u = v = 0) - alpha), with the
+// lens lines' tilt `lines` and k the view fraction per unit tangent.
+double center_from_planes(const display::DisplayCalibration& d, const std::vector<PositionData>& positions,
+                          const std::vector<PhasePlane>& planes, double s, double lines, double k) {
+  const double width_m = d.width_m(), height_m = d.height_m();
+  std::complex<double> sum = 0;
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const auto& c = positions[i].camera_m;
+    const double f_corner =
+        display::seen_fraction_k(c.x() + 0.5 * width_m, c.y() + 0.5 * height_m, c.z(), lines, k);
+    const double center = d.center_periods + s * (f_corner - planes[i].alpha);
+    sum += std::polar(1.0, kTwoPi * center);
+  }
+  double center_periods = std::arg(sum) / kTwoPi;
+  center_periods -= std::floor(center_periods);
+  return center_periods;
+}
+
+}  // namespace
+
+LensEstimate coarse_start(const display::Calibration& nominal, const std::vector<PositionData>& positions,
+                          bool fit_view_cone, std::vector<PhasePlane>* planes_out) {
+  const display::DisplayCalibration& d = nominal.display;
+  const display::LensModel nom(d);
+  const double s = d.inv_view ? 1.0 : -1.0;
+  const double width_m = d.width_m();
+
+  const std::vector<PhasePlane> planes = position_planes(nominal, positions, s);
   if (planes_out) *planes_out = planes;
 
   // beta_u_i = a - W_m k / Cz_i with a = s (P'_true - P'_nom): linear least squares in (a, k)
@@ -164,18 +192,7 @@ LensEstimate coarse_start(const display::Calibration& nominal, const std::vector
   e.slope = lens.slope;
   e.pitch_lpi = lens.pitch_lpi;
   e.view_cone_deg = display::view_cone_from_fraction_per_tan(k);
-  // center: circular mean over positions of c_nom + s (f_seen(u = v = 0) - alpha).
-  const double lines = display::line_tilt(d.geometry(), tilt);
-  std::complex<double> sum = 0;
-  for (size_t i = 0; i < positions.size(); ++i) {
-    const auto& c = positions[i].camera_m;
-    const double f_corner =
-        display::seen_fraction_k(c.x() + 0.5 * width_m, c.y() + 0.5 * height_m, c.z(), lines, k);
-    const double center = d.center_periods + s * (f_corner - planes[i].alpha);
-    sum += std::polar(1.0, kTwoPi * center);
-  }
-  e.center_periods = std::arg(sum) / kTwoPi;
-  e.center_periods -= std::floor(e.center_periods);
+  e.center_periods = center_from_planes(d, positions, planes, s, display::line_tilt(d.geometry(), tilt), k);
   return e;
 }
 
