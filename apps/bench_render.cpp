@@ -3,6 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/default_display.hpp"
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/bench_renderers.hpp"
@@ -65,7 +66,7 @@ int RunBenchRender(int argc, char** argv) {
 
   if (quick) {
     if (app.count("--generated") == 0) generated = scene_files.empty() ? std::vector<size_t>{100000} : std::vector<size_t>{};
-    if (app.count("--views") == 0) o.views = {45};
+    if (app.count("--views") == 0) o.views = {kDefaultViewCount};
     if (app.count("--chunks") == 0) o.only_chunks = 64;
     if (app.count("--configs") == 0) o.config_sets = {"table1", "density"};
   }

@@ -29,6 +29,7 @@
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/quilt_layout.hpp"
+#include "util/default_display.hpp"
 #include "util/error.hpp"
 
 namespace lfd::apps {
@@ -74,7 +75,8 @@ void add_scene_and_plane_options(CLI::App& app, RenderFlags& f) {
                  "per-view (baseline) or g2lf (sweeping planes); v2lf for voxel scenes (the default there)")
       ->check(CLI::IsMember({"per-view", "g2lf", "v2lf"}))->capture_default_str();
   app.add_option("--views", f.views_opt,
-                 "number of views (default: the calibration's recommendation, else 45)");
+                 fmt::format("number of views (default: the calibration's recommendation, else {})",
+                             kDefaultViewCount));
   auto* cols_o = app.add_option("--cols", f.cols_opt, "quilt columns (default: chosen for the views)");
   auto* rows_o = app.add_option("--rows", f.rows_opt, "quilt rows (default: chosen for the views)");
   cols_o->needs(rows_o);
@@ -111,7 +113,8 @@ void add_camera_display_and_output_options(CLI::App& app, RenderFlags& f) {
   app.add_option("--focal-distance", f.focal_distance,
                  "distance to the focal (zero-parallax) plane (default |look_at - position|)");
   auto* cone_opt = app.add_option("--view-cone", f.view_cone_opt,
-                                  "display view cone in degrees (default 40, or the calibration's)");
+                                  fmt::format("display view cone in degrees (default {}, or the calibration's)",
+                                              kDefaultViewConeDeg));
   f.display_source.add(app, "--calibration",
                      "the display: visual.json or calibration.json (cone, views, grid, aspect)",
                      false);
@@ -159,8 +162,8 @@ struct DisplayChoice {
   std::optional<display::Calibration> calibration;
   std::optional<display::DisplayQuilt> quilt;
   std::string path;
-  int views = 45;
-  float view_cone_deg = 40.0f;
+  int views = kDefaultViewCount;
+  float view_cone_deg = float(kDefaultViewConeDeg);
 };
 
 DisplayChoice choose_display(RenderFlags& f) {
@@ -170,9 +173,9 @@ DisplayChoice choose_display(RenderFlags& f) {
     d.path = f.display_source.name();
     d.quilt = display::quilt_for_display(*d.calibration, f.views_opt);
   }
-  d.views = d.quilt ? d.quilt->views : f.views_opt.value_or(45);
+  d.views = d.quilt ? d.quilt->views : f.views_opt.value_or(kDefaultViewCount);
   if (d.views < 1 || d.views > 256) throw_input_error("--views: {} is outside 1..256", d.views);
-  d.view_cone_deg = d.quilt ? float(d.quilt->view_cone_deg) : f.view_cone_opt.value_or(40.0f);
+  d.view_cone_deg = d.quilt ? float(d.quilt->view_cone_deg) : f.view_cone_opt.value_or(float(kDefaultViewConeDeg));
   return d;
 }
 
@@ -241,7 +244,7 @@ void write_panel(const RenderFlags& f, const DisplayChoice& display, const Image
   if (const auto named = render::parse_quilt_name(written)) as_written.aspect = named->aspect;
   const display::LensModel lens(display.calibration->display, display.calibration->correction);
   interlace::InterlaceOptions options;
-  options.blend = f.blend == "linear" ? interlace::ViewBlend::kLinear : interlace::ViewBlend::kNearest;
+  options.blend = interlace::parse_view_blend(f.blend);
   options.overscan = f.overscan;
   ImageF panel;
   if (backend == lightfield::Backend::kGl)

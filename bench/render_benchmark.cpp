@@ -187,11 +187,7 @@ class Runner {
     }
     nlohmann::ordered_json r = row(config_label(c, o.planes.plane_scale), binning, m, per_view,
                                    m.stats.empty() ? 0 : m.stats.back().plane_bytes, true, quality);
-    r["config_set"] = c.set;
-    r["chunks"] = c.chunks;
-    r["plane_scale"] = o.planes.plane_scale;
-    r["filter"] = c.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
-    r["precision"] = c.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
+    add_config_fields(r, c, o.planes.plane_scale);
     return r;
   }
 

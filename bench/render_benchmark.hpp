@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/default_display.hpp"
 #include "lightfield/light_field_renderer.hpp"
 
 namespace lfd::bench {
@@ -26,9 +27,9 @@ struct SceneSource {
 
 struct RenderBenchOptions {
   std::vector<SceneSource> scenes;
-  std::vector<int> views = {45, 90};
+  std::vector<int> views = {kDefaultViewCount, 2 * kDefaultViewCount};
   int size = 512;               // views of size x size pixels
-  float view_cone_deg = 40.0f;
+  float view_cone_deg = float(kDefaultViewConeDeg);
   float shift_fraction = 1.0f;  // D_shift / D_forward (1: reference camera at the base camera)
   std::vector<std::string> binnings = {"quantile"};  // the paper's
   // Configuration sets (bench/render_configs.hpp); `only_chunks` > 0 keeps those with that N_chunk.

@@ -59,4 +59,12 @@ std::string config_label(const G2lfConfig& config, int plane_scale) {
   return name;
 }
 
+void add_config_fields(nlohmann::ordered_json& row, const G2lfConfig& config, int plane_scale) {
+  row["config_set"] = config.set;
+  row["chunks"] = config.chunks;
+  row["plane_scale"] = plane_scale;
+  row["filter"] = config.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
+  row["precision"] = config.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
+}
+
 }  // namespace lfd::bench

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "render/g2lf.hpp"
 #include "render/quilt_geometry.hpp"
 
@@ -35,5 +37,9 @@ int equal_density_plane_scale(const render::QuiltGeometry& geometry, float d_shi
 // The name of a configuration with its binning, and the P_s it resolved to for density ones:
 // "G2LF (N=64, Ps=2 = view density)".
 std::string config_label(const G2lfConfig& config, int plane_scale);
+
+// Adds a configuration's fields to its JSON row (config_set, chunks, plane_scale as resolved,
+// filter, precision): the same fields in `lfd bench render` and `lfd bench voxels`.
+void add_config_fields(nlohmann::ordered_json& row, const G2lfConfig& config, int plane_scale);
 
 }  // namespace lfd::bench

@@ -223,11 +223,7 @@ class VoxelRunner {
     nlohmann::ordered_json r =
         print_row(v2lf_label(c), binning, m, truth, true,
                   std::make_pair(render::psnr(m.quilt, truth.quilt), render::ssim(m.quilt, truth.quilt)));
-    r["config_set"] = c.set;
-    r["chunks"] = c.chunks;
-    r["plane_scale"] = o.planes.plane_scale;
-    r["filter"] = c.filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest";
-    r["precision"] = c.precision == render::PlanePrecision::kF32 ? "f32" : "u8";
+    add_config_fields(r, c, o.planes.plane_scale);
     return r;
   }
 

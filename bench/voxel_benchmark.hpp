@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "util/default_display.hpp"
 #include "lightfield/light_field_renderer.hpp"
 
 namespace lfd::bench {
@@ -23,7 +24,7 @@ struct VoxelBenchOptions {
                             // generated scene, else voxel::frame_voxel_scene
   std::vector<int> views = {9};
   int size = 256;           // views of size x size pixels
-  float view_cone_deg = 40.0f;
+  float view_cone_deg = float(kDefaultViewConeDeg);
   std::vector<std::string> binnings = {"quantile"};  // the paper's
   std::vector<std::string> config_sets = {"table1"};
   int only_chunks = 0;      // > 0: only the configurations with this N_chunk
