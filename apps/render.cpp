@@ -196,7 +196,7 @@ lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, l
 render::QuiltGeometry quilt_geometry(const RenderFlags& f, const DisplayChoice& display,
                                      const lightfield::LightFieldScene& scene) {
   const render::CameraSpec spec =
-      !f.camera_path.empty() ? render::read_camera_json(f.camera_path) : scene.framing(40.0f, f.orbit_deg);
+      !f.camera_path.empty() ? render::read_camera_json(f.camera_path) : scene.framing(render::kDefaultFovYDeg, f.orbit_deg);
   std::optional<int> width, height;
   if (!f.size_text.empty()) {
     const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");

@@ -12,6 +12,7 @@
 #include "bench/timing_stats.hpp"
 #include "display/display_quilt.hpp"
 #include "render/camera_json.hpp"
+#include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
 #include "util/error.hpp"
@@ -149,7 +150,7 @@ class VoxelRunner {
     v2lf_.set_scene(loaded.scene);
     const render::CameraSpec spec = !options_.camera_path.empty() ? render::read_camera_json(options_.camera_path)
                                     : options_.scene_path.empty() ? tabletop_voxel_camera()
-                                                                  : voxel::frame_voxel_scene(scene, 40.0f);
+                                                                  : voxel::frame_voxel_scene(scene, render::kDefaultFovYDeg);
     nlohmann::ordered_json out = {{"benchmark", "voxels"},
                                   {"backend", v2lf_.name()},
                                   {"device", v2lf_.device()},

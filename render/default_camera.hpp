@@ -10,6 +10,9 @@
 
 namespace lfd::render {
 
-CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg = 40.0f, float orbit_deg = 0.0f);
+// The default camera's vertical field of view (not the display's view cone, also 40 degrees).
+inline constexpr float kDefaultFovYDeg = 40.0f;
+
+CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg = kDefaultFovYDeg, float orbit_deg = 0.0f);
 
 }  // namespace lfd::render

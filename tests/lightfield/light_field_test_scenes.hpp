@@ -2,6 +2,7 @@
 // Tiny scenes and quilts for the light-field renderer tests: a generated tabletop of Gaussians
 // and a generated voxel tabletop, 4 views of 32x24 in a 2x2 quilt (seconds on llvmpipe).
 #include "lightfield/light_field_scene.hpp"
+#include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -29,7 +30,7 @@ inline const LightFieldScene& test_voxels() {
 }
 
 inline render::QuiltGeometry test_geometry(const LightFieldScene& scene) {
-  const render::CameraSpec spec = scene.framing(40.0f);
+  const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
   return render::make_quilt_geometry(render::camera_from_spec(spec, 32, 24), glm::length(spec.look_at - spec.position),
                                      40.0f, 4);
 }
