@@ -156,7 +156,7 @@ class Runner {
     ImageF truth;
     if (options_.per_view) {
       per_view = measure(per_view_, t.geometry, t.layout);
-      truth = per_view_.read_quilt();
+      truth = per_view_.take_quilt();
       table["rows"].push_back(row("per-view 3DGS (ground truth)", "-", *per_view, per_view, 0, false, std::nullopt));
     }
     for (const std::string& binning : options_.binnings)

@@ -46,7 +46,7 @@ Measured measure(lightfield::LightFieldRenderer& renderer, const render::QuiltGe
                  const render::QuiltLayout& layout, int warmup, int runs) {
   Measured m;
   m.timings = time_frames(renderer, geometry, layout, {.warmup = warmup, .runs = runs, .png_runs = 0, .png_path = {}});
-  m.quilt = renderer.read_quilt();
+  m.quilt = renderer.take_quilt();
   return m;
 }
 

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -34,6 +35,7 @@ class CpuRenderer : public LightFieldRenderer {
     scene_ = &scene;
   }
   const ImageF& read_quilt() override { return quilt_; }
+  ImageF take_quilt() override { return std::move(quilt_); }
   std::string memory_kind() const override { return "process RSS"; }
   void reset_peak_memory() override { reset_peak_rss(); }
   size_t peak_memory_bytes() const override { return peak_rss_bytes(); }

@@ -55,6 +55,10 @@ class LightFieldRenderer {
   virtual ImageF render_view(const render::QuiltGeometry& geometry, int view) = 0;
   // The last quilt (RGB floats, top row first), read back if it lives elsewhere.
   virtual const ImageF& read_quilt() = 0;
+  // The last quilt handed over to the caller, which keeps it (a benchmark's ground truth): a CPU
+  // renderer moves it out rather than holding a second copy beside the caller's, which would
+  // show in the process's peak memory; elsewhere a copy of read_quilt().
+  virtual ImageF take_quilt() { return read_quilt(); }
 
   // Peak memory since the last reset: what it measures is `memory_kind()` ("process RSS",
   // "GPU memory (...)").
