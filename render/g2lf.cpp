@@ -66,12 +66,8 @@ ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geomet
   ImageF quilt =
       render_sweeping_plane_quilt(stages, geometry, layout, options, settings.background, stats ? &frame : nullptr);
   if (stats) {
+    copy_plane_stats(frame, *stats);
     stats->gaussians_in_frustum = frame.binned;
-    stats->planes = frame.planes;
-    stats->plane_bytes = frame.plane_bytes;
-    stats->seconds_binning = frame.seconds_binning;
-    stats->seconds_planes = frame.seconds_planes;
-    stats->seconds_swizzle = frame.seconds_swizzle;
   }
   return quilt;
 }

@@ -41,6 +41,17 @@ struct SweepingPlaneStats {
   double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;
 };
 
+// The skeleton's figures into a method's own stats (G2lfStats, V2lfStats: the same fields;
+// each names what `binned` counts itself).
+template <typename MethodStats>
+void copy_plane_stats(const SweepingPlaneStats& frame, MethodStats& stats) {
+  stats.planes = frame.planes;
+  stats.plane_bytes = frame.plane_bytes;
+  stats.seconds_binning = frame.seconds_binning;
+  stats.seconds_planes = frame.seconds_planes;
+  stats.seconds_swizzle = frame.seconds_swizzle;
+}
+
 // Alg. 1 end to end with `stages`: the quilt (layout size, RGB, rows top-down, 0 outside the
 // tiles) for options.d_shift, plane_scale, filter over `background`. The caller has checked
 // `options` against `geometry`.

@@ -154,13 +154,9 @@ ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& g
   render::SweepingPlaneStats frame;
   ImageF quilt = render::render_sweeping_plane_quilt(stages, geometry, layout, o, background, stats ? &frame : nullptr);
   if (stats) {
+    render::copy_plane_stats(frame, *stats);
     stats->voxels_binned = frame.binned;
     stats->voxels_split = binned.voxels_split;
-    stats->planes = frame.planes;
-    stats->plane_bytes = frame.plane_bytes;
-    stats->seconds_binning = frame.seconds_binning;
-    stats->seconds_planes = frame.seconds_planes;
-    stats->seconds_swizzle = frame.seconds_swizzle;
   }
   return quilt;
 }
