@@ -119,7 +119,7 @@ class Runner {
                                              options_.view_cone_deg, views);
     t.grid = display::quilt_grid_for_views(views, 1.0);
     t.layout = render::make_quilt_layout(t.geometry, t.grid.cols, t.grid.rows);
-    t.d_forward = render::make_reference_camera(t.geometry, 0.0f, 1).d_forward;
+    t.d_forward = render::forward_distance(t.geometry);
     t.d_shift = options_.shift_fraction * t.d_forward;
     t.label = source.label() + (tabletop ? ", tabletop camera" : "");
     return t;

@@ -185,7 +185,7 @@ class VoxelRunner {
     const display::QuiltGrid grid = display::quilt_grid_for_views(views, 1.0);
     const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
     // V2LF's default D_shift: the reference camera at the base camera.
-    const float d_forward = render::make_reference_camera(geometry, 0.0f, 1).d_forward;
+    const float d_forward = render::forward_distance(geometry);
     std::printf("\n#### %s: %zu voxels (ss %.2g, K %d), %d views of %dx%d (%dx%d quilt), view cone %.0f deg, "
                 "split levels %d, plane low-pass %s\n\n",
                 label.c_str(), scene.size(), scene.supersampling, scene.samples_per_voxel, views, options_.size,

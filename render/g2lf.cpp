@@ -19,7 +19,7 @@ void G2lfOptions::check(const QuiltGeometry& geometry) const {
   // Moved back further than D_forward, the reference camera sits behind the base camera
   // (D_forward_eff < 0): Gaussians behind the view cameras get planes at d_k <= 0, which
   // Eq. (u_prime) draws mirrored into every view.
-  const float d_forward = make_reference_camera(geometry, 0.0f, 1).d_forward;
+  const float d_forward = forward_distance(geometry);
   if (d_shift > d_forward)
     throw_input_error("G2LF options: d_shift: {:.4g} is larger than D_forward {:.4g} of this quilt "
                       "geometry (the reference camera would sit behind the base camera and planes "

@@ -62,6 +62,8 @@ ReferenceCamera make_reference_camera(const QuiltGeometry& g, float d_shift, int
   return ref;
 }
 
+float forward_distance(const QuiltGeometry& geometry) { return make_reference_camera(geometry, 0.0f, 1).d_forward; }
+
 float plane_coordinate_x(const QuiltGeometry& g, const ReferenceCamera& ref, int view, float u_ndc,
                          float d_k) {
   const float dx = g.view_offset(view);

@@ -42,6 +42,9 @@ struct ReferenceCamera {
 // contains the unshifted one (the paper's near-field workaround). Resolution
 // plane_scale * (W, H).
 ReferenceCamera make_reference_camera(const QuiltGeometry& geometry, float d_shift, int plane_scale);
+// D_forward of the unshifted reference camera: the default D_shift (back to the base camera)
+// and the largest one allowed.
+float forward_distance(const QuiltGeometry& geometry);
 
 // Paper Eq. (u_prime): the reference-camera NDC coordinate where the ray of view `view`
 // through its NDC coordinate u meets the plane at base-camera depth d_k. The vertical

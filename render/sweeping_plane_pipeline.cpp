@@ -9,7 +9,7 @@ namespace lfd::render {
 
 ReferenceCamera reference_camera(const G2lfOptions& options, const QuiltGeometry& geometry) {
   const float d_shift =
-      options.d_shift >= 0.0f ? options.d_shift : make_reference_camera(geometry, 0.0f, 1).d_forward;
+      options.d_shift >= 0.0f ? options.d_shift : forward_distance(geometry);
   return make_reference_camera(geometry, d_shift, options.plane_scale);
 }
 
