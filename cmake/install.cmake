@@ -167,11 +167,13 @@ set(_lfd_dependency_table
   "^TBB::|find_dependency(TBB)|libtbb-dev"
   "^glm::|find_dependency(glm)|libglm-dev"
   "^opencv_|find_dependency(OpenCV 4 COMPONENTS @OPENCV_COMPONENTS@)|libopencv-dev, libopencv-contrib-dev"
+  "^TinyGLTF::|find_dependency(TinyGLTF)|libtinygltf-dev"
 )
 set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev" "imgui|libimgui-dev"
   "hidapi-hidraw|libhidapi-dev" "libusb-1.0|libusb-1.0-0-dev" "zlib|zlib1g-dev" "glm|libglm-dev"
-  "egl|libegl-dev" "libpng16|libpng-dev")
+  "egl|libegl-dev" "libpng16|libpng-dev"
+  "libzip|libzip-dev" "libwebp|libwebp-dev")
 
 set(_lfd_links)
 foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)

@@ -46,9 +46,18 @@ GaussianScene read_scene_bytes(std::string_view bytes, const std::string& name) 
   if ((bytes.size() >= 2 && b0 == 0x1f && uint8_t(bytes[1]) == 0x8b) ||
       (bytes.size() >= 4 && bytes.substr(0, 4) == "NGSP"))
     return read_spz(bytes, name);
-  if (lower_extension(name) == ".splat") return read_splat(bytes, name);
-  throw_input_error("{}: unrecognised scene format (expected PLY, compressed PLY, .splat or SPZ)",
-                    name);
+  if (bytes.size() >= 4 && bytes.substr(0, 4) == std::string_view("PK\x03\x04", 4))
+    return read_sog(bytes, name);
+  if (bytes.size() >= 4 && bytes.substr(0, 4) == "glTF") return read_gltf(bytes, name);
+  const std::string ext = lower_extension(name);
+  if (ext == ".splat") return read_splat(bytes, name);
+  if (ext == ".ksplat") return read_ksplat(bytes, name);
+  if (ext == ".gltf") return read_gltf(bytes, name);
+  if (ext == ".json") return read_sog_meta(bytes, name);
+  throw_input_error(
+      "{}: unrecognised scene format (expected PLY, compressed PLY, .splat, SPZ, SOG (.sog or "
+      "meta.json), glTF/GLB with KHR_gaussian_splatting or .ksplat)",
+      name);
 }
 
 GaussianScene load_scene(const std::filesystem::path& path) {

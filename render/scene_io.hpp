@@ -1,7 +1,8 @@
 #pragma once
 // Loading and saving Gaussian scenes. Formats are recognised by content and extension:
 // standard 3DGS PLY (binary little-endian or ASCII, SH degree 0-3), PlayCanvas compressed PLY,
-// antimatter15 .splat, Niantic SPZ v1-v4 (gzip or zstd). Properties are found by name.
+// antimatter15 .splat, Niantic SPZ v1-v4 (gzip or zstd), PlayCanvas SOG v1-v2 (.sog or
+// meta.json), glTF/GLB with KHR_gaussian_splatting, .ksplat. Properties are found by name.
 // Bad files throw lfd::InputError("<file>: <problem>"), never crash or exhaust memory.
 #include <filesystem>
 

@@ -19,13 +19,22 @@ GaussianScene read_compressed_ply(std::string_view bytes, const std::string& nam
 GaussianScene read_splat(std::string_view bytes, const std::string& name);
 // Niantic SPZ: v1-v3 gzip container, v4 zstd multi-stream container (reference 7.3).
 GaussianScene read_spz(std::string_view bytes, const std::string& name);
+// PlayCanvas SOG, versions 1 and 2 (reference 7.5): a `.sog` ZIP archive, or the meta.json of
+// the unpacked layout with its WebP images in the same folder as `name`.
+GaussianScene read_sog(std::string_view bytes, const std::string& name);
+GaussianScene read_sog_meta(std::string_view meta_bytes, const std::string& name);
+// glTF 2.0 (.glb, or .gltf with embedded or neighbouring buffers) with KHR_gaussian_splatting.
+GaussianScene read_gltf(std::string_view bytes, const std::string& name);
+// mkkellogg/GaussianSplats3D .ksplat, compression levels 0-2.
+GaussianScene read_ksplat(std::string_view bytes, const std::string& name);
 
 // The same two readers on an already parsed PLY container (parse_ply), so dispatch parses once.
 GaussianScene standard_ply_to_scene(const PlyFile& ply, const std::string& name);
 GaussianScene compressed_ply_to_scene(const PlyFile& ply, const std::string& name);
 
-// Recognises the format by content (PLY header, gzip/NGSP magic); `.splat` by the name's
-// extension and a size that is a multiple of 32, since that format has no header.
+// Recognises the format by content (PLY header, gzip/NGSP magic, ZIP magic for SOG, glTF
+// magic); by the name's extension where the format has no magic: `.splat` (a size that is a
+// multiple of 32), `.ksplat`, `.gltf`, and a SOG `meta.json` (any `.json`).
 GaussianScene read_scene_bytes(std::string_view bytes, const std::string& name);
 
 }  // namespace lfd::render

@@ -22,6 +22,8 @@ PACKAGES=(
   gnuplot-nox
   # Debian packages (scripts/package.sh: cpack computes the Depends with dpkg-shlibdeps)
   dpkg-dev file
+  # scene formats: SOG (ZIP archive of WebP images), glTF/GLB with KHR_gaussian_splatting
+  libzip-dev libwebp-dev libtinygltf-dev
 )
 
 missing=()
