@@ -71,21 +71,22 @@ SogFileSource sog_zip_source(std::string_view bytes, const std::string& name) {
   return [archive](const std::string& file) { return read_zip_entry(*archive, file); };
 }
 
-SogFileSource sog_folder_source(const std::filesystem::path& folder) {
-  return [folder](const std::string& file) {
+SogFileSource sog_folder_source(const std::filesystem::path& folder, const std::string& name) {
+  return [folder, name](const std::string& file) {
     const std::filesystem::path path = folder / file;
     std::error_code ec;
     if (file.find('/') != std::string::npos || file.find('\\') != std::string::npos ||
         !std::filesystem::is_regular_file(path, ec))
-      throw_input_error("{}: SOG file named in meta.json is missing", path.string());
+      throw_input_error("{}: SOG file '{}' named in meta.json is missing (it must lie beside it)",
+                        name, file);
     const auto size = std::filesystem::file_size(path, ec);
     if (ec || size > kMaxEntryBytes)
-      throw_input_error("{}: SOG file is unreadable or larger than {} bytes", path.string(),
+      throw_input_error("{}: SOG file '{}' is unreadable or larger than {} bytes", name, file,
                         kMaxEntryBytes);
     std::ifstream in(path, std::ios::binary);
     std::string bytes(size_t(size), '\0');
     if (!in.read(bytes.data(), std::streamsize(size)))
-      throw_input_error("{}: read error", path.string());
+      throw_input_error("{}: SOG file '{}': read error", name, file);
     return bytes;
   };
 }

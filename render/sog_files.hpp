@@ -21,8 +21,8 @@ using SogFileSource = std::function<std::string(const std::string& file)>;
 // A source over the entries of a `.sog` ZIP archive held in memory (libzip).
 SogFileSource sog_zip_source(std::string_view archive, const std::string& name);
 
-// A source over the files in `folder` (the unpacked layout beside meta.json).
-SogFileSource sog_folder_source(const std::filesystem::path& folder);
+// A source over the files in `folder` (the unpacked layout beside meta.json `name`).
+SogFileSource sog_folder_source(const std::filesystem::path& folder, const std::string& name);
 
 struct RgbaImage {
   int width = 0;

@@ -248,8 +248,8 @@ GaussianScene read_sog_files(const SogFileSource& files, std::string_view meta_b
 }
 
 GaussianScene read_sog_meta(std::string_view meta_bytes, const std::string& name) {
-  return read_sog_files(sog_folder_source(std::filesystem::path(name).parent_path()), meta_bytes,
-                        name);
+  return read_sog_files(sog_folder_source(std::filesystem::path(name).parent_path(), name),
+                        meta_bytes, name);
 }
 
 GaussianScene read_sog(std::string_view bytes, const std::string& name) {
