@@ -195,8 +195,7 @@ lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, l
 // The views' cameras: cam.json or the scene's framing, the size asked for or the display's.
 render::QuiltGeometry quilt_geometry(const RenderFlags& f, const DisplayChoice& display,
                                      const lightfield::LightFieldScene& scene) {
-  const render::CameraSpec spec =
-      !f.camera_path.empty() ? render::read_camera_json(f.camera_path) : scene.framing(render::kDefaultFovYDeg, f.orbit_deg);
+  render::CameraSpec spec = !f.camera_path.empty() ? render::read_camera_json(f.camera_path) : render::CameraSpec{};
   std::optional<int> width, height;
   if (!f.size_text.empty()) {
     const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
@@ -209,6 +208,9 @@ render::QuiltGeometry quilt_geometry(const RenderFlags& f, const DisplayChoice& 
     width = size.width;
     height = size.height;
   }
+  // The default camera frames the content for the views' aspect (square unless a size is known).
+  if (f.camera_path.empty())
+    spec = scene.framing(render::kDefaultFovYDeg, f.orbit_deg, width && height ? float(*width) / float(*height) : 1.0f);
   const render::Camera base = render::camera_from_spec(spec, width, height);
   const float focal_distance = f.focal_distance > 0.0f ? f.focal_distance : glm::length(spec.look_at - spec.position);
   return render::make_quilt_geometry(base, focal_distance, display.view_cone_deg, display.views);

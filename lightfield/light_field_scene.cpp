@@ -42,9 +42,9 @@ size_t LightFieldScene::size() const {
 
 const char* LightFieldScene::primitives() const { return kind() == SceneKind::kVoxels ? "voxels" : "Gaussians"; }
 
-render::CameraSpec LightFieldScene::framing(float fov_y_deg, float orbit_deg) const {
+render::CameraSpec LightFieldScene::framing(float fov_y_deg, float orbit_deg, float aspect) const {
   return kind() == SceneKind::kVoxels ? voxel::frame_voxel_scene(voxels(), fov_y_deg, orbit_deg)
-                                      : render::frame_scene(gaussians(), fov_y_deg, orbit_deg);
+                                      : render::frame_scene(gaussians(), fov_y_deg, orbit_deg, aspect);
 }
 
 SceneKind scene_kind_of_file(const std::filesystem::path& path) {

@@ -31,7 +31,8 @@ class LightFieldScene {
   size_t size() const;             // Gaussians or voxels
   const char* primitives() const;  // "Gaussians" | "voxels"
   // The default camera: render::frame_scene or voxel::frame_voxel_scene.
-  render::CameraSpec framing(float fov_y_deg, float orbit_deg = 0.0f) const;
+  // `aspect` (view width / height) is used by the Gaussian framing.
+  render::CameraSpec framing(float fov_y_deg, float orbit_deg = 0.0f, float aspect = 1.0f) const;
   // Distinct for every scene made (copies share it: the content is the same).
   uint64_t id() const { return id_; }
 

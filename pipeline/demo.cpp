@@ -161,7 +161,7 @@ void render_quilts(DemoRun& run) {
                             : std::string("rendering the scene with G2LF on the CPU"));
     const lightfield::LightFieldScene light_field_scene(render::load_scene(run.scene_path));
     const render::GaussianScene& scene = light_field_scene.gaussians();
-    const render::CameraSpec spec = render::frame_scene(scene, render::kDefaultFovYDeg, 0.0f);
+    const render::CameraSpec spec = render::frame_scene(scene, render::kDefaultFovYDeg, 0.0f, float(aspect));
     const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
     const float focal = glm::length(spec.look_at - spec.position);
     const render::QuiltGeometry geometry =

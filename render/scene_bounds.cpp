@@ -45,6 +45,34 @@ SceneBounds robust_bounds(const GaussianScene& scene, double lower_quantile,
   return b;
 }
 
+SceneBounds content_bounds(const GaussianScene& scene, double lower_quantile,
+                           double upper_quantile, float min_opacity) {
+  SceneBounds b;
+  constexpr size_t kMaxSamples = 1 << 20;
+  const size_t stride = (scene.size() + kMaxSamples - 1) / kMaxSamples;
+  std::vector<std::pair<float, float>> values;  // (coordinate, opacity)
+  for (int axis = 0; axis < 3; ++axis) {
+    values.clear();
+    double total = 0;
+    for (size_t i = 0; i < scene.size(); i += stride)
+      if (scene.opacities[i] >= min_opacity) {
+        values.emplace_back(scene.positions[i][axis], scene.opacities[i]);
+        total += scene.opacities[i];
+      }
+    if (values.empty()) return SceneBounds{};
+    std::sort(values.begin(), values.end());
+    const auto at = [&](double q) {
+      double sum = 0;
+      for (const auto& [x, w] : values)
+        if ((sum += w) >= q * total) return x;
+      return values.back().first;
+    };
+    b.min[axis] = at(std::clamp(lower_quantile, 0.0, 1.0));
+    b.max[axis] = at(std::clamp(upper_quantile, lower_quantile, 1.0));
+  }
+  return b;
+}
+
 SceneBounds exact_bounds(const GaussianScene& scene) {
   SceneBounds b;
   if (scene.size() == 0) return b;

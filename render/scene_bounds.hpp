@@ -23,6 +23,13 @@ struct SceneBounds {
 SceneBounds robust_bounds(const GaussianScene& scene, double lower_quantile = 0.01,
                           double upper_quantile = 0.99);
 
+// The box of the content a viewer looks at: per-axis opacity-weighted quantiles (default
+// 5-95% of the opacity) of the centres of the Gaussians with opacity at least `min_opacity`.
+// Faint haze, floaters and a backdrop that holds a small share of the opacity fall outside it.
+// Subsampled like robust_bounds; an empty scene (or one without such Gaussians) gives a zero box.
+SceneBounds content_bounds(const GaussianScene& scene, double lower_quantile = 0.05,
+                           double upper_quantile = 0.95, float min_opacity = 0.1f);
+
 // The exact min/max of all centres (not subsampled).
 SceneBounds exact_bounds(const GaussianScene& scene);
 

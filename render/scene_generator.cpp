@@ -239,7 +239,9 @@ void add_objects(std::vector<Component>& out, std::mt19937_64& rng,
 std::vector<Component> tabletop(std::mt19937_64& rng) {
   std::vector<Component> c;
   Paint ground{{0.55f, 0.5f, 0.45f}, {0.35f, 0.32f, 0.3f}, 0.5f, {0.05f, 0.05f, 0.05f}, 0.9f};
-  c.push_back(plane({0, -1, 0}, {1, 0, 0}, {0, 0, 1}, 4.5f, 4.5f, {0, 1, 0}, ground, 0));
+  // The table top just holds the three rows of objects (x within 2.5 of 0, z from -3.25 to
+  // 2.25), so a framing of the content (render/default_camera.hpp) is filled by the objects.
+  c.push_back(plane({0, -1, -0.5f}, {1, 0, 0}, {0, 0, 1}, 3.0f, 2.75f, {0, 1, 0}, ground, 0));
   add_objects(c, rng, {-2.5f, -0.5f, 1.5f}, 2.2f, 3);
   Paint sky{{0.55f, 0.7f, 0.9f}, {0.85f, 0.85f, 0.9f}, 3.0f, {0, 0, 0}, 0.95f};
   Component dome;
