@@ -1,0 +1,17 @@
+// libFuzzer target: the SOG reader on a `.sog` ZIP archive (libzip, then meta.json and WebP).
+// Any input must either parse or throw lfd::InputError; anything else is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "render/scene_parsers.hpp"
+#include "util/error.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  try {
+    lfd::render::read_sog(bytes, "fuzz.sog");
+  } catch (const lfd::InputError&) {
+  }
+  return 0;
+}
