@@ -16,7 +16,7 @@ int RunDemo(int argc, char** argv) {
   std::string out = options.out_dir.string(), unit, scene;
   app.add_option("--out", out, "report folder")->capture_default_str();
   app.add_option("--unit", unit, "calibration of the simulated unit (default: bundled real unit)");
-  app.add_option("--scene", scene, "Gaussian scene (default: data/scenes/demo.ply)");
+  app.add_option("--scene", scene, "Gaussian scene (default: data/scenes/playbot.sog, \"PLAYBOT\" by Stephane Agullo, CC-BY-4.0)");
   app.add_option("--warp", options.warp_amplitude_periods,
                  "lens-array warp of the simulated unit, lens periods")->capture_default_str();
   app.add_option("--capture-width", options.capture_width,

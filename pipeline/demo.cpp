@@ -273,11 +273,13 @@ std::filesystem::path run_demo(const DemoOptions& o) {
   DemoRun run(o);
   run.unit_path =
       o.unit_calibration.empty() ? data / "calibrations/LKG-2K-04409.visual.json" : o.unit_calibration;
-  run.scene_path = o.scene.empty() ? data / "scenes/demo.ply" : o.scene;
+  run.scene_path = o.scene.empty() ? data / "scenes/playbot.sog" : o.scene;  // data/scenes/playbot.md
   run.out = o.out_dir;
   fs::create_directories(run.out);
   run.report.unit_source = run.unit_path.string();
   run.report.scene_source = run.scene_path.string();
+  // CC-BY-4.0 asks that the author be credited wherever the scene is shown (data/scenes/playbot.md).
+  if (o.scene.empty()) run.report.scene_source += " (\"PLAYBOT\" by Stephane Agullo, CC-BY-4.0)";
 
   simulate_unit(run);
   calibrate_unit(run);

@@ -14,7 +14,7 @@ namespace lfd::pipeline {
 struct DemoOptions {
   std::filesystem::path out_dir = "out/demo";
   std::filesystem::path unit_calibration;  // default: data/calibrations/LKG-2K-04409.visual.json
-  std::filesystem::path scene;             // default: data/scenes/demo.ply
+  std::filesystem::path scene;             // default: data/scenes/playbot.sog (a real scene, CC-BY-4.0)
   double warp_amplitude_periods = 0.3;     // the simulated unit's lens-array warp (max |w|)
   int tile_width = 384;                    // quilt tile width in pixels (height from the aspect)
   int validation_points = 600;             // panel points per validation profile
