@@ -2,6 +2,7 @@
 //   lfd scene generate --kind tabletop --count 30000 --seed 1 --sh-degree 1 --out demo.ply
 //   lfd scene info scene.ply [--json]
 //   lfd scene voxelize scene.ply --out scene.voxels [--level 8 | --max-voxels N] [--sh-degree D]
+//   lfd scene convert scene.sog scene.spz      (reads every format load_scene knows; writes .ply, .spz)
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,14 @@ int voxelize(const std::string& in, const voxel::VoxelizeOptions& options, const
   return 0;
 }
 
+int convert(const std::string& in, const std::string& out) {
+  const render::GaussianScene scene = render::load_scene(in);
+  render::save_scene(out, scene);  // nothing is written when the input is bad (atomic)
+  std::cout << fmt::format("wrote {} ({} Gaussians, SH degree {}) from {}\n", out, scene.size(),
+                           scene.sh_degree, in);
+  return 0;
+}
+
 int info(const std::string& path, bool json) {
   const render::GaussianScene scene = render::load_scene(path);
   const render::SceneBounds robust = render::robust_bounds(scene);
@@ -85,7 +94,8 @@ int RunScene(int argc, char** argv) {
                "  lfd scene generate --kind tabletop --count 30000 --seed 1 --out demo.ply\n"
                "  lfd scene generate --kind voxels --level 8 --out demo.voxels\n"
                "  lfd scene voxelize demo.ply --level 8 --out demo.voxels\n"
-               "  lfd scene info data/scenes/demo.ply --json",
+               "  lfd scene info data/scenes/demo.ply --json\n"
+               "  lfd scene convert data/scenes/playbot.sog playbot.spz",
                "scene"};
   app.require_subcommand(1);
 
@@ -129,7 +139,15 @@ int RunScene(int argc, char** argv) {
       ->capture_default_str();
   vox->add_option("--out", out, "output .voxels file")->required();
 
+  std::string convert_in, convert_out;
+  CLI::App* conv = app.add_subcommand(
+      "convert", "convert a Gaussian scene: reads .ply, compressed .ply, .splat, .spz, .sog / meta.json, "
+                 ".glb / .gltf, .ksplat; writes .ply or .spz (by the output's extension)");
+  conv->add_option("in", convert_in, "input scene")->required()->check(CLI::ExistingFile);
+  conv->add_option("out", convert_out, "output scene (.ply or .spz)")->required();
+
   if (auto code = parse(app, argc, argv)) return *code;
+  if (conv->parsed()) return convert(convert_in, convert_out);
   if (vox->parsed()) return voxelize(voxelize_in, voxelize_options, out);
   if (gen->parsed() && options.kind == "voxels") {
     voxel_options.seed = options.seed;

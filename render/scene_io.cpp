@@ -6,6 +6,7 @@
 #include "render/ply_header.hpp"
 #include "render/ply_writer.hpp"
 #include "render/scene_parsers.hpp"
+#include "render/spz_writer.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
@@ -65,14 +66,36 @@ GaussianScene load_scene(const std::filesystem::path& path) {
   return read_scene_bytes(bytes, path.string());
 }
 
-void save_ply(const std::filesystem::path& path, const GaussianScene& scene) {
-  const std::string bytes = encode_ply(scene, PlyEncoding::BinaryLittleEndian);
+namespace {
+
+void write_bytes(const std::filesystem::path& path, const std::string& bytes) {
   write_file_atomic(path, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary);
     out.write(bytes.data(), std::streamsize(bytes.size()));
     out.close();
     if (!out) throw_input_error("{}: cannot write", path.string());
   });
+}
+
+}  // namespace
+
+void save_ply(const std::filesystem::path& path, const GaussianScene& scene) {
+  write_bytes(path, encode_ply(scene, PlyEncoding::BinaryLittleEndian));
+}
+
+void save_scene(const std::filesystem::path& path, const GaussianScene& scene) {
+  const std::string ext = lower_extension(path.string());
+  if (ext == ".ply") return save_ply(path, scene);
+  if (ext == ".spz") {
+    std::string bytes;
+    try {
+      bytes = encode_spz(scene);
+    } catch (const InputError& e) {
+      throw_input_error("{}: {}", path.string(), e.what());
+    }
+    return write_bytes(path, bytes);
+  }
+  throw_input_error("{}: lfd writes scenes as .ply or .spz, not '{}'", path.string(), ext);
 }
 
 }  // namespace lfd::render

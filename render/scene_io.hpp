@@ -15,4 +15,9 @@ GaussianScene load_scene(const std::filesystem::path& path);
 // Writes a standard 3DGS binary little-endian PLY (stored, pre-activation values), atomically.
 void save_ply(const std::filesystem::path& path, const GaussianScene& scene);
 
+// Writes the scene in the format its extension names: `.ply` (save_ply) or `.spz` (SPZ v3,
+// render/spz_writer.hpp), atomically; InputError for another extension. What `lfd scene
+// convert` calls.
+void save_scene(const std::filesystem::path& path, const GaussianScene& scene);
+
 }  // namespace lfd::render
