@@ -64,4 +64,25 @@ TEST(SceneCli, UnknownKindAndMissingOutputAreExitTwo) {
   EXPECT_EQ(run("scene --help").exit_code, 0);
 }
 
+TEST(SceneCli, ConvertWritesSpzAndRefusesBadInputWritingNothing) {
+  const auto spz = temp_dir() / "playbot.spz";
+  std::filesystem::remove(spz);
+  const Result ok = run(std::string("scene convert ") + LFD_SOURCE_DIR "/data/scenes/playbot.sog " + spz.string());
+  ASSERT_EQ(ok.exit_code, 0) << ok.output;
+  const auto j = nlohmann::json::parse(run("scene info --json " + spz.string()).output);
+  EXPECT_EQ(j["gaussians"], 31000);
+  EXPECT_EQ(j["sh_degree"], 2);
+  // A truncated SOG: one line naming it, exit 2, no output file.
+  const auto bad = temp_dir() / "truncated.sog";
+  std::ifstream in(LFD_SOURCE_DIR "/data/scenes/playbot.sog", std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  std::ofstream(bad, std::ios::binary) << bytes.substr(0, bytes.size() / 3);
+  const auto out = temp_dir() / "never.ply";
+  std::filesystem::remove(out);
+  const Result r = run("scene convert " + bad.string() + " " + out.string());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 }  // namespace
