@@ -35,14 +35,15 @@ float fitting_distance(const GaussianScene& scene, const glm::vec3& center,
   std::vector<std::pair<float, float>> needs;  // (distance, opacity)
   double total = 0;
   for (size_t i = 0; i < scene.size(); i += step) {
-    if (scene.opacities[i] < kContentMinOpacity) continue;
+    const float opacity = i < scene.opacities.size() ? scene.opacities[i] : 1.0f;  // as content_bounds
+    if (opacity < kContentMinOpacity) continue;
     const auto& p = scene.positions[i];
     const glm::vec3 d = glm::vec3(p[0], p[1], p[2]) - center;
     const float depth = glm::dot(d, forward);
     const float need = std::max({std::fabs(glm::dot(d, right)) / tan_x - depth,
                                  std::fabs(glm::dot(d, up)) / tan_y - depth, 0.2f - depth});
-    needs.emplace_back(need, scene.opacities[i]);
-    total += scene.opacities[i];
+    needs.emplace_back(need, opacity);
+    total += opacity;
   }
   if (needs.empty()) return 1.0f;
   std::sort(needs.begin(), needs.end());

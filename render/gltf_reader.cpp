@@ -191,6 +191,7 @@ tinygltf::Model parse_model(std::string_view bytes, const std::string& name) {
   }
   if (!ok) {
     for (char& c : err) if (c == '\n') c = ' ';
+    while (!err.empty() && err.back() == ' ') err.pop_back();
     throw_input_error("{}: malformed glTF: {}", name, err.empty() ? "unreadable" : err);
   }
   return model;

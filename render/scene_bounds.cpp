@@ -54,11 +54,14 @@ SceneBounds content_bounds(const GaussianScene& scene, double lower_quantile,
   for (int axis = 0; axis < 3; ++axis) {
     values.clear();
     double total = 0;
-    for (size_t i = 0; i < scene.size(); i += stride)
-      if (scene.opacities[i] >= min_opacity) {
-        values.emplace_back(scene.positions[i][axis], scene.opacities[i]);
-        total += scene.opacities[i];
+    for (size_t i = 0; i < scene.size(); i += stride) {
+      // A scene of centres only (positions without opacities) counts every centre as opaque.
+      const float opacity = i < scene.opacities.size() ? scene.opacities[i] : 1.0f;
+      if (opacity >= min_opacity) {
+        values.emplace_back(scene.positions[i][axis], opacity);
+        total += opacity;
       }
+    }
     if (values.empty()) return SceneBounds{};
     std::sort(values.begin(), values.end());
     const auto at = [&](double q) {

@@ -171,6 +171,7 @@ render::CameraSpec frame_voxel_scene(const VoxelScene& scene, float fov_y_deg, f
     if (scene.level[i] + 2 >= finest) {
       const glm::vec3 c = scene.voxel_center(i);
       content.positions.push_back({c.x, c.y, c.z});
+      content.opacities.push_back(1.0f);  // every content voxel counts (render::content_bounds)
     }
   render::CameraSpec spec = render::frame_scene(content, fov_y_deg, orbit_deg);
   std::vector<float> distance(scene.size());
