@@ -19,7 +19,7 @@ namespace lfd::rgbd {
 
 // The relief's depth (front to back, at depthiness 1) as a fraction of the focal distance: at
 // bridge.js's default depthiness 1.5, 40-degree cone and the default 40-degree camera, the
-// outermost views move the nearest and farthest pixels by about +-3.6 % of the tile width.
+// outermost views move the nearest and farthest pixels by about +-3.7 % of the tile width.
 inline constexpr double kReliefRatio = 0.1;
 
 // The quilt geometry of RGB-D views: a camera at the origin looking along +z with the default
