@@ -17,7 +17,8 @@ namespace lfd::rgbd {
 
 // A frame texture the caller owns (a decoder's upload, say): a sampleable GL_TEXTURE_2D of
 // width x height texels, rows bottom-up (GL's orientation: gpu::texture_from_image of the
-// top-down image), RGB in [0, 1] as read by texelFetch.
+// top-down image), RGB in [0, 1] as read by texelFetch: the stored values, so not an sRGB
+// internal format (GL would linearise the colour and the depth before the passes read them).
 struct RgbdFrameTexture {
   GLuint id = 0;
   int width = 0;

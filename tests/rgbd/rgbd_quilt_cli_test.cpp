@@ -61,6 +61,12 @@ TEST_F(RgbdQuiltCli, WritesTheLibrarysQuiltUnderItsTilingName) {
   o.focus = 0.01;
   const Image8 quilt = read_image(written, 3);
   EXPECT_EQ(quilt.pixels, library_quilt(o).pixels);
+  // lfd interlace takes it as it takes any quilt: the tiling from the name.
+  const auto panel = lfd::test::run_lfd(
+      "interlace --calibration " + q(lfd::test::fixture_calibration("LKG-2K-04409.visual.json")) +
+      " --quilt " + q(written) + " --out " + q(dir_ / "panel.png"));
+  ASSERT_EQ(panel.exit_code, 0) << panel.output;
+  EXPECT_NE(panel.output.find("9 views in 3x3 tiles"), std::string::npos) << panel.output;
 }
 
 TEST_F(RgbdQuiltCli, TheGlBackendWritesTheSameQuiltAndSettingsFilesWork) {
