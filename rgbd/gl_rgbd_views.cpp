@@ -124,6 +124,7 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   set_rect(resample_.uniform("colour_rect"), split.colour);
   set_rect(resample_.uniform("depth_rect"), split.depth);
   glUniform1i(resample_.uniform("frame_height"), frame.height);
+  glUniform1i(resample_.uniform("frame_top_down"), frame.top_down ? 1 : 0);
   glUniform2i(resample_.uniform("tile_size"), tw, th);
   glUniform2f(resample_.uniform("crop"), float(options.crop_pos_x), float(-options.crop_pos_y));
   glUniform1f(resample_.uniform("zoom"), float(options.zoom));

@@ -17,12 +17,15 @@ namespace lfd::rgbd {
 
 // A frame texture the caller owns (a decoder's upload, say): a sampleable GL_TEXTURE_2D of
 // width x height texels, rows bottom-up (GL's orientation: gpu::texture_from_image of the
-// top-down image), RGB in [0, 1] as read by texelFetch: the stored values, so not an sRGB
+// top-down image) unless top_down says otherwise, RGB in [0, 1] as read by texelFetch: the stored values, so not an sRGB
 // internal format (GL would linearise the colour and the depth before the passes read them).
 struct RgbdFrameTexture {
   GLuint id = 0;
   int width = 0;
   int height = 0;
+  // True when texel row 0 is the picture's top row (a decoder's planes uploaded as they come),
+  // so the caller need not flip the frame.
+  bool top_down = false;
 };
 
 class GlRgbdViews {

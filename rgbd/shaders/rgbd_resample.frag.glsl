@@ -1,11 +1,13 @@
 // Stage 1 of RGB-D to quilt (twin of rgbd::resample_rgbd, rgbd/rgbd_quilt.cpp): the colour
 // (bilinear) and depth (nearest) halves at tile resolution through zoom and crop, read in place
 // from the frame through their rectangles. Target: tile-size RGBA32F, rgb = colour, a = depth.
-// Rectangles and rows are top-down like the CPU's; the frame texture is bottom-up.
+// Rectangles and rows are top-down like the CPU's; the frame texture is bottom-up unless
+// frame_top_down.
 layout(binding = 0) uniform sampler2D frame;
 uniform ivec4 colour_rect;  // x, y (top-down), width, height
 uniform ivec4 depth_rect;
 uniform int frame_height;
+uniform bool frame_top_down;  // texel row 0 is the picture's top row
 uniform ivec2 tile_size;
 uniform vec2 crop;          // crop_pos_x, -crop_pos_y (top-down)
 uniform float zoom;
@@ -15,7 +17,8 @@ uniform bool depth_inversion;
 out vec4 result;
 
 vec3 texel(ivec4 rect, int x, int y) {
-  return texelFetch(frame, ivec2(rect.x + x, frame_height - 1 - (rect.y + y)), 0).rgb;
+  const int row = rect.y + y;
+  return texelFetch(frame, ivec2(rect.x + x, frame_top_down ? row : frame_height - 1 - row), 0).rgb;
 }
 
 void main() {

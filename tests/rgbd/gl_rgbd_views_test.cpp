@@ -115,6 +115,28 @@ TEST(GlRgbdViews, KeepsTheCallersFramebufferAndReusesItsIntermediates) {
   EXPECT_LT(agreeing_fraction(render_rgbd_quilt(frame, RgbdOptions{}, q), gl), 0.99);
 }
 
+TEST(GlRgbdViews, ReadsATopDownFrameTextureWithoutAFlip) {
+  gpu::HeadlessContext context;
+  const auto q = layout(9, 3, 3);
+  RgbdOptions o;
+  o.depthiness = 3.0;
+  o.crop_pos_y = 0.4;  // not symmetric top to bottom
+  const ImageF frame = test::layered_rgbd_frame(kW, kH, DepthLocation::bottom);
+  o.depth_loc = DepthLocation::bottom;
+  // The frame's rows stored top row first: texture_from_image flips, so give it the rows
+  // reversed.
+  ImageF reversed(frame.width, frame.height, frame.channels);
+  for (int y = 0; y < frame.height; ++y)
+    std::copy_n(frame.row(frame.height - 1 - y), size_t(frame.width) * frame.channels,
+                reversed.row(y));
+  const gpu::Texture top_down = gpu::texture_from_image(reversed);
+  gpu::Texture quilt(GL_RGBA32F, q.width, q.height);
+  GlRgbdViews views;
+  views.render(RgbdFrameTexture{top_down.id(), frame.width, frame.height, true}, o, q, quilt);
+  EXPECT_GE(agreeing_fraction(render_rgbd_quilt(frame, o, q), gpu::image_from_texture(quilt)),
+            0.999);
+}
+
 TEST(GlRgbdViews, AWrongQuiltTextureOrFrameIsAnInputError) {
   gpu::HeadlessContext context;
   const auto q = layout(9, 3, 3);
