@@ -149,6 +149,7 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   o.check(geometry);
   check_quilt_target("G2LF on the GPU", geometry, layout, quilt);
   ensure_planes(options, geometry);
+  sweeping_.set_swizzle_views(options.swizzle_views);
   GlSweepingPlaneStages stages;
   stages.prepare = [&](const render::ReferenceCamera& ref) { preprocess(ref, geometry, o, settings); };
   stages.bin = [&](const render::ReferenceCamera& ref, GlPlanes& planes) { bin(ref, o, planes); };

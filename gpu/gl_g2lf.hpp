@@ -52,6 +52,8 @@ struct GlG2lfOptions {
   // (kLate: the viewer; the stats then hold the newest finished timed frame's figures).
   bool gpu_timers = false;
   TimerReads timer_reads = TimerReads::kWait;
+  // Views one swizzle invocation composites (gpu/gl_swizzle.hpp; `lfd bench gpu-frame` compares).
+  int swizzle_views = kSwizzleViewsPerInvocation;
 
   PlaneFormat format() const { return plane_format.value_or(plane_format_for(g2lf.precision)); }
 };

@@ -16,6 +16,10 @@ void GlSweepingPlanes::allocate_planes(PlaneFormat format, int max_planes, int w
   planes_ = GlPlanes(format, max_planes, width, height);
 }
 
+void GlSweepingPlanes::set_swizzle_views(int views_per_invocation) {
+  if (swizzle_.views_per_invocation() != views_per_invocation) swizzle_ = GlSwizzle(views_per_invocation);
+}
+
 size_t GlSweepingPlanes::bytes() const { return planes_.texels.bytes() + planes_.table.buffer.bytes(); }
 
 void GlSweepingPlanes::stamp(Stamp at) {

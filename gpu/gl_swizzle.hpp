@@ -27,6 +27,7 @@ inline constexpr int kSwizzleViewsPerInvocation = 4;
 class GlSwizzle {
  public:
   explicit GlSwizzle(int views_per_invocation = kSwizzleViewsPerInvocation);
+  int views_per_invocation() const { return views_per_invocation_; }
 
   // Writes every view of `geometry` into `quilt` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F; the
   // layout's size). Enqueues GPU work only.
