@@ -104,6 +104,7 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
                               fmt::format("timers waited for, swizzle {} view{}/invocation", views, views > 1 ? "s" : "")));
     }
     options.timer_reads = gpu::TimerReads::kLate;
+    options.swizzle_views = gpu::kSwizzleViewsPerInvocation;  // the default, against its waited-for row
     rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
                             fmt::format("timers read late, {} frames a batch, swizzle {}", o.batch, options.swizzle_views)));
   }

@@ -23,7 +23,7 @@ struct GpuFrameOptions {
   int chunks = 64;
   int runs = 5, warmup = 1;
   int batch = 4;                          // frames per pipelined batch
-  std::vector<int> swizzle_views{1, 4};   // G2LF swizzle variants
+  std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
 };
 
 struct GpuFrameRow {

@@ -22,7 +22,7 @@ namespace lfd::gpu {
 
 // Views one invocation composites (they share the per-plane factors and the plane rows they
 // read; docs/gpu.md "Swizzle"). 1 is one invocation per view pixel, as before.
-inline constexpr int kSwizzleViewsPerInvocation = 4;
+inline constexpr int kSwizzleViewsPerInvocation = 8;
 
 class GlSwizzle {
  public:
