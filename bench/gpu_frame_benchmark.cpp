@@ -65,10 +65,11 @@ GpuFrameRow g2lf_row(gpu::GlG2lfRenderer& renderer, const render::QuiltGeometry&
 
 GpuFrameRow per_view_row(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, gpu::Texture& quilt, gpu::TimerReads reads,
-                         const GpuFrameOptions& o, const std::string& variant) {
+                         GLenum accumulation, const GpuFrameOptions& o, const std::string& variant) {
   gpu::GlPerViewOptions options;
   options.gpu_timers = true;
   options.timer_reads = reads;
+  options.accumulation_format = accumulation;
   gpu::GlPerViewRenderer renderer(scene, options);
   GpuFrameRow row;
   row.method = "per view";
@@ -108,9 +109,12 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
     rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
                             fmt::format("timers read late, {} frames a batch, swizzle {}", o.batch, options.swizzle_views)));
   }
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, o, "timers waited for"));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kLate, o,
-                              fmt::format("timers read late, {} frames a batch", o.batch)));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, o,
+                              "timers waited for, RGBA32F blending"));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kLate, GL_RGBA32F, o,
+                              fmt::format("timers read late, {} frames a batch, RGBA32F blending", o.batch)));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA16F, o,
+                              "timers waited for, RGBA16F blending"));
   return rows;
 }
 

@@ -5,7 +5,8 @@
 //   - timers waited for (each frame reads its stage times at once, the CPU waiting for the
 //     GPU: the old frame) against timers read late (gpu/gl_frame_ring.hpp), frames issued back
 //     to back and finished once per batch: the wall time per frame of a pipelined loop;
-//   - the G2LF swizzle with 1 view per invocation (the old mapping) against several.
+//   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
+//   - per view: RGBA32F blending targets against RGBA16F (half the bytes a blend).
 // Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
 #include <string>
