@@ -65,8 +65,9 @@ GpuFrameRow g2lf_row(gpu::GlG2lfRenderer& renderer, const render::QuiltGeometry&
 
 GpuFrameRow per_view_row(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, gpu::Texture& quilt, gpu::TimerReads reads,
-                         GLenum accumulation, const GpuFrameOptions& o, const std::string& variant) {
+                         GLenum accumulation, int key_bits, const GpuFrameOptions& o, const std::string& variant) {
   gpu::GlPerViewOptions options;
+  options.depth_key_bits = key_bits;
   options.gpu_timers = true;
   options.timer_reads = reads;
   options.accumulation_format = accumulation;
@@ -109,12 +110,15 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
     rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
                             fmt::format("timers read late, {} frames a batch, swizzle {}", o.batch, options.swizzle_views)));
   }
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, o,
-                              "timers waited for, RGBA32F blending"));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kLate, GL_RGBA32F, o,
-                              fmt::format("timers read late, {} frames a batch, RGBA32F blending", o.batch)));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA16F, o,
-                              "timers waited for, RGBA16F blending"));
+  const int bits = 24;  // the viewer's
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, 32, o,
+                              "timers waited for, RGBA32F blending, 32-bit depth keys"));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, bits, o,
+                              fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits)));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kLate, GL_RGBA32F, bits, o,
+                              fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA16F, bits, o,
+                              fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
   return rows;
 }
 

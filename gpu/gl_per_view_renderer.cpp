@@ -17,6 +17,8 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
     : scene_(scene), options_(options) {
   if (!is_float_format(options_.accumulation_format))
     throw std::invalid_argument("per-view renderer: the accumulation target must be GL_RGBA16F or GL_RGBA32F");
+  if (options_.depth_key_bits % 8 != 0 || options_.depth_key_bits < 8 || options_.depth_key_bits > 32)
+    throw std::invalid_argument("per-view renderer: depth_key_bits must be 8, 16, 24 or 32");
 }
 
 void GlPerViewRenderer::begin_timing(int views) {
@@ -41,7 +43,7 @@ void GlPerViewRenderer::prepare(const render::Camera& camera, const render::Rast
   stamp(4 * size_t(view));
   preprocess_.run(scene_, camera, settings, buffers_);
   stamp(4 * size_t(view) + 1);
-  sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()));
+  sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()), 32, 32 - options_.depth_key_bits);
   stamp(4 * size_t(view) + 2);
 }
 

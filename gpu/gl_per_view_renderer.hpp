@@ -45,6 +45,11 @@ struct GlPerViewOptions {
   // llvmpipe's elapsed-time queries read 0 around compute dispatches.
   bool gpu_timers = false;
   TimerReads timer_reads = TimerReads::kWait;
+  // The high bits of a depth key (its float's bits) the sort orders by: 32 is exact (4 radix
+  // passes, the default); 24 (3 passes, the viewer's) keeps the sign, exponent and 15 mantissa
+  // bits, so depths within a relative 2^-15 (3e-5) of each other keep the Gaussian order instead
+  // of the depth order (docs/gpu.md, "Per-view renderer"). 8, 16, 24 or 32.
+  int depth_key_bits = 32;
 };
 
 class GlPerViewRenderer {
