@@ -43,12 +43,17 @@ int RunView(int argc, char** argv) {
   app.add_option("--camera-out", camera_out, "after the last frame: the camera as cam.json");
   bool no_controls = false;
   app.add_flag("--no-controls", no_controls, "only the display window");
+  bool no_vsync = false;
+  app.add_flag("--no-vsync", no_vsync,
+               "swap without waiting for vsync (swap interval 0): to measure the frame; a scripted run "
+               "prints the frame pacing (median, p99)");
   if (auto code = parse(app, argc, argv)) return *code;
 
   options.scene_path = scene;
   options.calibration = display_source.load();
   options.display_name = display_source.name();
   options.controls = !no_controls;
+  options.vsync = !no_vsync;
   if (!method.empty()) options.method = viewer::parse_method(method);
   if (!camera.empty()) options.camera_path = camera;
   if (!settings.empty()) options.settings_path = settings;

@@ -113,22 +113,33 @@ void GlG2lfRenderer::draw_planes(GlPlanes& planes) {
                     planes);
 }
 
-void GlG2lfRenderer::record_stats(bool timed) {
+void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   const GlPlanes& planes = sweeping_.planes();
+  const GlG2lfStats last = stats_;
   stats_ = {};
   stats_.plane_bytes = planes.texels.bytes();
   stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
                      sort_.scratch_bytes() + plane_raster_.bytes();
   stats_.gpu_bytes_peak = gpu_bytes_peak();
   if (!timed) return;
-  const PlaneTableHeader header = planes.table.read_header();
-  stats_.gaussians_in_frustum = header.splats_binned;
-  stats_.planes = int(header.plane_count);
+  const std::optional<GlSweepingPlaneReadout> r = sweeping_.readout(reads);
+  if (!r) {  // kLate, no timed frame finished yet (or none since): the last figures stay
+    stats_.gaussians_in_frustum = last.gaussians_in_frustum;
+    stats_.planes = last.planes;
+    stats_.plane_bytes_used = last.plane_bytes_used;
+    stats_.seconds_planes = last.seconds_planes;
+    stats_.seconds_binning = last.seconds_binning;
+    stats_.seconds_swizzle = last.seconds_swizzle;
+    stats_.frames_late = last.frames_late;
+    return;
+  }
+  stats_.gaussians_in_frustum = r->header.splats_binned;
+  stats_.planes = int(r->header.plane_count);
   stats_.plane_bytes_used = plane_texture_bytes(planes.format, stats_.planes, planes.width, planes.height);
-  const GlSweepingPlaneSeconds seconds = sweeping_.seconds();
-  stats_.seconds_planes = seconds.planes;
-  stats_.seconds_binning = seconds.binning;
-  stats_.seconds_swizzle = seconds.swizzle;
+  stats_.seconds_planes = r->seconds.planes;
+  stats_.seconds_binning = r->seconds.binning;
+  stats_.seconds_swizzle = r->seconds.swizzle;
+  stats_.frames_late = r->frames_late;
 }
 
 void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
@@ -138,13 +149,14 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   o.check(geometry);
   check_quilt_target("G2LF on the GPU", geometry, layout, quilt);
   ensure_planes(options, geometry);
+  sweeping_.set_swizzle_views(options.swizzle_views);
   GlSweepingPlaneStages stages;
   stages.prepare = [&](const render::ReferenceCamera& ref) { preprocess(ref, geometry, o, settings); };
   stages.bin = [&](const render::ReferenceCamera& ref, GlPlanes& planes) { bin(ref, o, planes); };
   stages.draw_planes = [&](const render::ReferenceCamera&, GlPlanes& planes) { draw_planes(planes); };
   sweeping_.render_quilt(stages, geometry, layout, o, settings.background, quilt, options.gpu_timers,
                          "a G2LF frame");
-  record_stats(options.gpu_timers);
+  record_stats(options.gpu_timers, options.timer_reads);
 }
 
 ImageF render_quilt_g2lf_gl(const render::GaussianScene& scene, const render::QuiltGeometry& geometry,

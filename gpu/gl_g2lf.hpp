@@ -48,8 +48,12 @@ struct GlG2lfOptions {
   // this (at least one); more layers, fewer batches (draws) per frame.
   size_t accumulation_budget_bytes = size_t(64) << 20;
   // Per-stage GPU timers, the plane and binned counts in the stats: read at the end of a frame,
-  // which waits for the GPU (benchmarks, tests; not interactive frames).
+  // which waits for the GPU (kWait: benchmarks, tests), or a few frames late without waiting
+  // (kLate: the viewer; the stats then hold the newest finished timed frame's figures).
   bool gpu_timers = false;
+  TimerReads timer_reads = TimerReads::kWait;
+  // Views one swizzle invocation composites (gpu/gl_swizzle.hpp; `lfd bench gpu-frame` compares).
+  int swizzle_views = kSwizzleViewsPerInvocation;
 
   PlaneFormat format() const { return plane_format.value_or(plane_format_for(g2lf.precision)); }
 };
@@ -60,6 +64,7 @@ struct GlG2lfStats {
   size_t plane_bytes = 0;           // the plane array: N_chunk layers (what is allocated)
   size_t plane_bytes_used = 0;      // the layers in use (gpu_timers only; the CPU's plane_bytes)
   double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;  // GPU time (gpu_timers)
+  uint64_t frames_late = 0;  // how many frames ago the timed figures were rendered (kLate)
   size_t gpu_bytes = 0;       // held by the scene and this renderer now
   size_t gpu_bytes_peak = 0;  // the process's peak of GPU allocations (gpu_bytes_peak())
 };
@@ -100,7 +105,7 @@ class GlG2lfRenderer {
                   const render::G2lfOptions& o, const render::RasterSettings& settings);
   void bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes);
   void draw_planes(GlPlanes& planes);
-  void record_stats(bool timed);
+  void record_stats(bool timed, TimerReads reads);
 
   const GlScene& scene_;
   GlInfo info_;

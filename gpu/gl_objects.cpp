@@ -240,11 +240,33 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
     glGetProgramInfoLog(program, length, nullptr, log.data());
     throw std::runtime_error(fmt::format("program '{}' does not link: {}", label, log.c_str()));
   }
+  list_uniforms();
+}
+
+void Program::list_uniforms() {
+  GLint count = 0, longest = 0;
+  glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
+  glGetProgramiv(id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
+  std::string name(size_t(std::max(longest, 1)), '\0');
+  for (GLint i = 0; i < count; ++i) {
+    GLsizei length = 0;
+    glGetActiveUniformName(id(), GLuint(i), GLsizei(name.size()), &length, name.data());
+    std::string n(name.data(), size_t(length));
+    const GLint location = glGetUniformLocation(id(), n.c_str());
+    if (location < 0) continue;  // in a uniform block: no location
+    // An array is listed as "name[0]"; GLSL also accepts "name".
+    if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) uniforms_.emplace_back(n.substr(0, n.size() - 3), location);
+    uniforms_.emplace_back(std::move(n), location);
+  }
 }
 
 void Program::use() const { glUseProgram(id()); }
 
-GLint Program::uniform(const char* name) const { return glGetUniformLocation(id(), name); }
+GLint Program::uniform(const char* name) const {
+  for (const auto& [n, location] : uniforms_)
+    if (n == name) return location;
+  return -1;
+}
 
 void Program::dispatch_1d(size_t items, int local_size) const {
   const size_t groups = (items + size_t(local_size) - 1) / size_t(local_size);

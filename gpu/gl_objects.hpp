@@ -144,13 +144,18 @@ class Program {
           const std::vector<std::string>& defines = {});
   GLuint id() const { return name_.id(); }
   void use() const;
-  GLint uniform(const char* name) const;  // -1 when optimised away
+  // -1 when optimised away. Looked up in a table made at link time (no glGetUniformLocation,
+  // a driver round trip, per frame; docs/gpu.md "A frame that never waits").
+  GLint uniform(const char* name) const;
   // Dispatches ceil(n / local_size) groups of the compute program (1D).
   void dispatch_1d(size_t items, int local_size) const;
 
  private:
+  void list_uniforms();  // fills uniforms_ after the link
+
   GlName<delete_program> name_;
   std::string label_;
+  std::vector<std::pair<std::string, GLint>> uniforms_;  // active uniforms and their locations
 };
 
 // GPU time of a span of commands, read back after the frame. Two GL_TIMESTAMP queries rather

@@ -17,23 +17,33 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
     : scene_(scene), options_(options) {
   if (!is_float_format(options_.accumulation_format))
     throw std::invalid_argument("per-view renderer: the accumulation target must be GL_RGBA16F or GL_RGBA32F");
+  if (options_.depth_key_bits % 8 != 0 || options_.depth_key_bits < 8 || options_.depth_key_bits > 32)
+    throw std::invalid_argument("per-view renderer: depth_key_bits must be 8, 16, 24 or 32");
+}
+
+void GlPerViewRenderer::begin_timing(int views) {
+  if (!options_.gpu_timers) return;
+  const size_t stamps = 4 * size_t(views);
+  if (!timers_ || timers_->stamps() != stamps) timers_.emplace(stamps, 0);
+  timers_->begin_frame();
 }
 
 void GlPerViewRenderer::stamp(size_t index) {
-  if (!options_.gpu_timers) return;
-  while (timestamps_.size() <= index) {
-    GLuint id = 0;
-    glGenQueries(1, &id);
-    timestamps_.emplace_back(id);
-  }
-  glQueryCounter(timestamps_[index].id(), GL_TIMESTAMP);
+  if (options_.gpu_timers) timers_->stamp(index);
+}
+
+GLuint GlPerViewRenderer::quilt_framebuffer(const Texture& quilt) {
+  // Attached every frame (a deleted texture's name may come back as another texture), made once.
+  quilt_framebuffer_.attach(0, quilt);
+  quilt_framebuffer_.finish(1);
+  return quilt_framebuffer_.id();
 }
 
 void GlPerViewRenderer::prepare(const render::Camera& camera, const render::RasterSettings& settings, int view) {
   stamp(4 * size_t(view));
   preprocess_.run(scene_, camera, settings, buffers_);
   stamp(4 * size_t(view) + 1);
-  sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()));
+  sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()), 32, 32 - options_.depth_key_bits);
   stamp(4 * size_t(view) + 2);
 }
 
@@ -45,19 +55,23 @@ void GlPerViewRenderer::ensure_view_target(int width, int height) {
 }
 
 void GlPerViewRenderer::finish_stats(int views) {
+  const GlPerViewStats last = stats_;
   stats_ = {};
   stats_.views = views;
   if (options_.gpu_timers) {
-    const auto at = [&](size_t index) {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(timestamps_[index].id(), GL_QUERY_RESULT, &ns);
-      return double(ns) * 1e-9;
-    };
-    for (size_t v = 0; v < size_t(views); ++v) {
-      const double t0 = at(4 * v), t1 = at(4 * v + 1), t2 = at(4 * v + 2), t3 = at(4 * v + 3);
-      stats_.preprocess_s += t1 - t0;
-      stats_.sort_s += t2 - t1;
-      stats_.raster_s += t3 - t2;
+    timers_->end_frame();
+    const std::optional<GlFrameReadout> frame =
+        options_.timer_reads == TimerReads::kWait ? timers_->wait_newest() : timers_->newest_ready();
+    if (frame) {
+      for (size_t v = 0; v < size_t(views); ++v) {
+        stats_.preprocess_s += frame->seconds(4 * v, 4 * v + 1);
+        stats_.sort_s += frame->seconds(4 * v + 1, 4 * v + 2);
+        stats_.raster_s += frame->seconds(4 * v + 2, 4 * v + 3);
+      }
+    } else {  // kLate and no frame finished yet: the last figures stay
+      stats_.preprocess_s = last.preprocess_s;
+      stats_.sort_s = last.sort_s;
+      stats_.raster_s = last.raster_s;
     }
   }
   stats_.memory_bytes = scene_.bytes() + buffers_.bytes() + sort_.scratch_bytes() + view_target_.bytes();
@@ -67,6 +81,7 @@ const Texture& GlPerViewRenderer::render_view(const render::Camera& camera, cons
   if (camera.width <= 0 || camera.height <= 0)
     throw_input_error("per-view renderer: image size {}x{} is not positive", camera.width, camera.height);
   ensure_view_target(camera.width, camera.height);
+  begin_timing(1);
   prepare(camera, settings, 0);
   SplatRasterTarget target;
   target.framebuffer = view_framebuffer_.id();
@@ -101,11 +116,10 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
   const int W = geometry.base.width, H = geometry.base.height;
   if (!direct) ensure_view_target(W, H);
 
-  Framebuffer quilt_framebuffer;
-  quilt_framebuffer.attach(0, quilt);
-  quilt_framebuffer.finish(1);
+  const GLuint framebuffer = quilt_framebuffer(quilt);
   const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-  glClearNamedFramebufferfv(quilt_framebuffer.id(), GL_COLOR, 0, empty);
+  glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, empty);
+  begin_timing(geometry.views);
 
   const int tile_w = layout.tile_width(), tile_h = layout.tile_height();
   for (int view = 0; view < geometry.views; ++view) {
@@ -115,7 +129,7 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
     // right and bottom, as render::place_view copies it.
     const int x0 = layout.tile_x(view), y0 = (view / layout.cols) * tile_h;
     SplatRasterTarget tile;
-    tile.framebuffer = quilt_framebuffer.id();
+    tile.framebuffer = framebuffer;
     tile.image_size = {W, H};
     tile.viewport_origin = {x0, y0 + tile_h - H};
     tile.scissor = {x0, y0 + tile_h - std::min(tile_h, H), std::min(tile_w, W), std::min(tile_h, H)};

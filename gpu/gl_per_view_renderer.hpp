@@ -9,10 +9,12 @@
 // with no CPU round trip inside a view or a quilt. The scene (GlScene) is uploaded once and
 // shared with other renderers.
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <epoxy/gl.h>
 
+#include "gpu/gl_frame_ring.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_radix_sort.hpp"
 #include "gpu/gl_scene.hpp"
@@ -37,10 +39,17 @@ struct GlPerViewOptions {
   // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
   // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
   GLenum accumulation_format = GL_RGBA32F;
-  // Time each pass with GL_TIMESTAMP queries (read at the end of a render call, which waits
-  // for the GPU: for benchmarks, not for interactive frames). Timestamps, not GL_TIME_ELAPSED:
+  // Time each pass with GL_TIMESTAMP queries, read at the end of a render call, which waits
+  // for the GPU (kWait: benchmarks), or a few frames late without waiting (kLate: the viewer;
+  // the stats then hold the newest finished frame's times). Timestamps, not GL_TIME_ELAPSED:
   // llvmpipe's elapsed-time queries read 0 around compute dispatches.
   bool gpu_timers = false;
+  TimerReads timer_reads = TimerReads::kWait;
+  // The high bits of a depth key (its float's bits) the sort orders by: 32 is exact (4 radix
+  // passes, the default); 24 (3 passes, the viewer's) keeps the sign, exponent and 15 mantissa
+  // bits, so depths within a relative 2^-15 (3e-5) of each other keep the Gaussian order instead
+  // of the depth order (docs/gpu.md, "Per-view renderer"). 8, 16, 24 or 32.
+  int depth_key_bits = 32;
 };
 
 class GlPerViewRenderer {
@@ -70,9 +79,13 @@ class GlPerViewRenderer {
   // Preprocess and sort the view of `camera` into buffers_ (timestamps 4 view .. 4 view + 2).
   void prepare(const render::Camera& camera, const render::RasterSettings& settings, int view);
   void ensure_view_target(int width, int height);
-  // Records timestamp `index` when timing (4 per view: start, preprocessed, sorted, drawn).
+  // Starts a timed frame of `views` views (a ring of 4 stamps per view: start, preprocessed,
+  // sorted, drawn); records timestamp `index`; ends the frame and reads its stats.
+  void begin_timing(int views);
   void stamp(size_t index);
   void finish_stats(int views);
+  // The framebuffer of `quilt` (made once per renderer, not per frame).
+  GLuint quilt_framebuffer(const Texture& quilt);
 
   const GlScene& scene_;
   GlPerViewOptions options_;
@@ -82,7 +95,8 @@ class GlPerViewRenderer {
   SplatBuffers buffers_;
   Texture view_target_;
   Framebuffer view_framebuffer_;
-  std::vector<GlName<delete_query>> timestamps_;
+  Framebuffer quilt_framebuffer_;
+  std::optional<GlFrameRing> timers_;
   GlPerViewStats stats_;
 };
 

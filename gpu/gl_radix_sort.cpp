@@ -33,8 +33,9 @@ size_t GlRadixSort::scratch_bytes() const {
   return keys_tmp_.bytes() + values_tmp_.bytes() + block_offsets_.bytes() + digit_totals_.bytes();
 }
 
-void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, int key_bits) {
+void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, int key_bits, int low_bit) {
   if (key_bits < 1 || key_bits > 32) throw std::invalid_argument("GlRadixSort: key_bits must be in 1..32");
+  if (low_bit < 0 || low_bit >= key_bits) throw std::invalid_argument("GlRadixSort: low_bit must be in 0..key_bits - 1");
   if (size_t(count) * 4 > keys.bytes() || size_t(count) * 4 > values.bytes())
     throw std::invalid_argument("GlRadixSort: count exceeds the buffers");
   if (count <= 1) return;
@@ -53,10 +54,10 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, int key_bit
   // Ping-pong: pass p reads copy p % 2 and writes the other.
   Buffer* key_copies[2] = {&keys, &keys_tmp_};
   Buffer* value_copies[2] = {&values, &values_tmp_};
-  const int passes = (key_bits + 7) / 8;
+  const int passes = (key_bits - low_bit + 7) / 8;
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   for (int pass = 0; pass < passes; ++pass) {
-    const uint32_t shift = uint32_t(8 * pass);
+    const uint32_t shift = uint32_t(low_bit + 8 * pass);
     set_pass_uniforms(histogram_, count, shift, blocks, block_items);
     set_pass_uniforms(scatter_, count, shift, blocks, block_items);
     glProgramUniform1ui(scan_.id(), scan_.uniform("block_count"), blocks);

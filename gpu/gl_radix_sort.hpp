@@ -21,10 +21,11 @@ class GlRadixSort {
   GlRadixSort();  // needs a current context; compiles the three passes
 
   // Sorts the first `count` keys (and the values with them) ascending, in place, on the GPU,
-  // by the low ceil(key_bits / 8) bytes (key_bits in 1..32; one pass per byte; bits above are
-  // ignored).
+  // by bits low_bit .. key_bits - 1 (key_bits in 1..32, low_bit in 0..key_bits - 1; one pass per
+  // 8 bits from low_bit; bits above are ignored, and keys equal in the sorted bits keep their
+  // order: sorting by key >> low_bit).
   // Issues the barriers its consumers need (storage, indirect command, downloads).
-  void sort(Buffer& keys, Buffer& values, uint32_t count, int key_bits = 32);
+  void sort(Buffer& keys, Buffer& values, uint32_t count, int key_bits = 32, int low_bit = 0);
 
   size_t scratch_bytes() const;
 

@@ -1,5 +1,7 @@
 #include "gpu/gl_sweeping_planes.hpp"
 
+#include <cstring>
+
 #include "render/sweeping_plane_pipeline.hpp"
 
 namespace lfd::gpu {
@@ -14,31 +16,27 @@ void GlSweepingPlanes::allocate_planes(PlaneFormat format, int max_planes, int w
   planes_ = GlPlanes(format, max_planes, width, height);
 }
 
+void GlSweepingPlanes::set_swizzle_views(int views_per_invocation) {
+  if (swizzle_.views_per_invocation() != views_per_invocation) swizzle_ = GlSwizzle(views_per_invocation);
+}
+
 size_t GlSweepingPlanes::bytes() const { return planes_.texels.bytes() + planes_.table.buffer.bytes(); }
 
 void GlSweepingPlanes::stamp(Stamp at) {
-  if (!timed_) return;
-  while (stamps_.size() < kStamps) {
-    GLuint id = 0;
-    glGenQueries(1, &id);
-    stamps_.emplace_back(id);
-  }
-  glQueryCounter(stamps_[at].id(), GL_TIMESTAMP);
+  if (timed_) ring_->stamp(at);
 }
 
-double GlSweepingPlanes::seconds_between(Stamp a, Stamp b) const {
-  GLuint64 ns_a = 0, ns_b = 0;
-  glGetQueryObjectui64v(stamps_[a].id(), GL_QUERY_RESULT, &ns_a);
-  glGetQueryObjectui64v(stamps_[b].id(), GL_QUERY_RESULT, &ns_b);
-  return double(ns_b - ns_a) * 1e-9;
-}
-
-GlSweepingPlaneSeconds GlSweepingPlanes::seconds() const {
-  GlSweepingPlaneSeconds s;
-  s.planes = seconds_between(kStart, kPrepared) + seconds_between(kBinned, kDrawn);
-  s.binning = seconds_between(kPrepared, kBinned);
-  s.swizzle = seconds_between(kDrawn, kSwizzled);
-  return s;
+std::optional<GlSweepingPlaneReadout> GlSweepingPlanes::readout(TimerReads reads) {
+  if (!ring_) return std::nullopt;
+  const std::optional<GlFrameReadout> frame = reads == TimerReads::kWait ? ring_->wait_newest() : ring_->newest_ready();
+  if (!frame) return std::nullopt;
+  GlSweepingPlaneReadout r;
+  r.seconds.planes = frame->seconds(kStart, kPrepared) + frame->seconds(kBinned, kDrawn);
+  r.seconds.binning = frame->seconds(kPrepared, kBinned);
+  r.seconds.swizzle = frame->seconds(kDrawn, kSwizzled);
+  std::memcpy(&r.header, frame->bytes.data(), sizeof(PlaneTableHeader));
+  r.frames_late = frame->frames_late;
+  return r;
 }
 
 void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
@@ -47,6 +45,10 @@ void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const r
                                     const char* frame) {
   const render::ReferenceCamera ref = render::reference_camera(options, geometry);
   timed_ = timed;
+  if (timed_) {
+    if (!ring_) ring_.emplace(kStamps, sizeof(PlaneTableHeader));
+    ring_->begin_frame();
+  }
   stamp(kStart);
   if (stages.prepare) stages.prepare(ref);
   stamp(kPrepared);
@@ -58,6 +60,13 @@ void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const r
   glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
   swizzle_.run(planes_, geometry, ref, layout, options.filter, background, quilt);
   stamp(kSwizzled);
+  if (timed_) {
+    // The header (plane and binned counts) goes to the CPU through a GPU copy read frames
+    // later, never through a read-back that waits (docs/gpu.md, "A frame that never waits").
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    ring_->copy_back(planes_.table.buffer.id(), 0, sizeof(PlaneTableHeader), 0);
+    ring_->end_frame();
+  }
   check_gl(frame);
 }
 

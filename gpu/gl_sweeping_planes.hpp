@@ -7,11 +7,12 @@
 // when the frame is timed (llvmpipe's GL_TIME_ELAPSED reads 0 around compute).
 #include <cstddef>
 #include <functional>
-#include <vector>
+#include <optional>
 
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include "gpu/gl_frame_ring.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_swizzle.hpp"
@@ -32,9 +33,17 @@ struct GlSweepingPlaneStages {
   std::function<void(const render::ReferenceCamera&, GlPlanes& planes)> draw_planes;
 };
 
-// GPU seconds of the last timed frame's stages; planes = prepare + draw_planes.
+// GPU seconds of a timed frame's stages; planes = prepare + draw_planes.
 struct GlSweepingPlaneSeconds {
   double binning = 0, planes = 0, swizzle = 0;
+};
+
+// What a timed frame leaves: its stage times and its plane table's header (plane and binned
+// counts), copied on the GPU into a mapped buffer (gpu/gl_frame_ring.hpp).
+struct GlSweepingPlaneReadout {
+  GlSweepingPlaneSeconds seconds;
+  PlaneTableHeader header;
+  uint64_t frames_late = 0;  // 0: the frame just rendered
 };
 
 class GlSweepingPlanes {
@@ -43,6 +52,8 @@ class GlSweepingPlanes {
   bool has_planes(PlaneFormat format, int max_planes, int width, int height) const;
   // A new plane array (the old one freed first: a lower peak).
   void allocate_planes(PlaneFormat format, int max_planes, int width, int height);
+  // Views per invocation of the swizzle (gpu/gl_swizzle.hpp; the benchmark compares them).
+  void set_swizzle_views(int views_per_invocation);
 
   // One frame into `quilt` (checked by the caller: check_quilt_target): the reference camera of
   // `options`, the stages, the quilt cleared to 0 outside the tiles as the CPU's, the swizzle
@@ -51,18 +62,19 @@ class GlSweepingPlanes {
                     const render::QuiltLayout& layout, const render::G2lfOptions& options,
                     const glm::vec3& background, const Texture& quilt, bool timed, const char* frame);
 
-  GlSweepingPlaneSeconds seconds() const;  // of the last frame, which was timed; waits for the GPU
+  // The figures of the frame just rendered (kWait: waits for it) or of the newest timed frame
+  // the GPU has finished (kLate: never waits; nullopt while none has). Only timed frames count.
+  std::optional<GlSweepingPlaneReadout> readout(TimerReads reads);
   const GlPlanes& planes() const { return planes_; }
   size_t bytes() const;  // the plane array and its table
 
  private:
   enum Stamp { kStart, kPrepared, kBinned, kDrawn, kSwizzled, kStamps };
   void stamp(Stamp at);
-  double seconds_between(Stamp a, Stamp b) const;  // waits for the GPU
 
   GlPlanes planes_;
   GlSwizzle swizzle_;
-  std::vector<GlName<delete_query>> stamps_;
+  std::optional<GlFrameRing> ring_;  // made by the first timed frame
   bool timed_ = false;
 };
 

@@ -20,6 +20,11 @@ const char* image_format_qualifier(GLenum format) {
 
 }  // namespace
 
+GlSwizzle::GlSwizzle(int views_per_invocation) : views_per_invocation_(views_per_invocation) {
+  if (views_per_invocation_ < 1 || views_per_invocation_ > 64)
+    throw std::invalid_argument("GlSwizzle: views per invocation must be 1..64");
+}
+
 const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_format) {
   const auto key = std::make_pair(int(filter), quilt_format);
   auto it = programs_.find(key);
@@ -28,7 +33,8 @@ const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_forma
     Program p(std::string("g2lf swizzle (") + (bilinear ? "bilinear" : "nearest") + ")",
               {{GL_COMPUTE_SHADER, swizzle_comp_glsl}},
               {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
-               std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format)});
+               std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format),
+               "VIEWS " + std::to_string(views_per_invocation_)});
     it = programs_.emplace(key, std::move(p)).first;
   }
   return it->second;
@@ -64,7 +70,9 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
   glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
   glUniform3f(p.uniform("background"), background.x, background.y, background.z);
-  glDispatchCompute(GLuint((W + 15) / 16), GLuint((H + 7) / 8), GLuint(V));
+  glUniform1i(p.uniform("view_count"), V);
+  const int view_groups = (V + views_per_invocation_ - 1) / views_per_invocation_;
+  glDispatchCompute(GLuint((W + 15) / 16), GLuint((H + 7) / 8), GLuint(view_groups));
   // The quilt is read next by texture fetches (interlacing) or a read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

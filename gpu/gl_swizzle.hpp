@@ -20,9 +20,14 @@
 
 namespace lfd::gpu {
 
+// Views one invocation composites (they share the per-plane factors and the plane rows they
+// read; docs/gpu.md "Swizzle"). 1 is one invocation per view pixel, as before.
+inline constexpr int kSwizzleViewsPerInvocation = 8;
+
 class GlSwizzle {
  public:
-  GlSwizzle() = default;
+  explicit GlSwizzle(int views_per_invocation = kSwizzleViewsPerInvocation);
+  int views_per_invocation() const { return views_per_invocation_; }
 
   // Writes every view of `geometry` into `quilt` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F; the
   // layout's size). Enqueues GPU work only.
@@ -32,6 +37,7 @@ class GlSwizzle {
 
  private:
   const Program& program(render::PlaneFilter filter, GLenum quilt_format);
+  int views_per_invocation_;
   std::map<std::pair<int, GLenum>, Program> programs_;
   Buffer view_offsets_;
 };

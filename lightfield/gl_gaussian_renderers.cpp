@@ -32,10 +32,14 @@ class GlGaussianViews final : public GlRendererBase {
     scene_ = device_->gaussians();
     gpu::GlPerViewOptions o;
     o.gpu_timers = options_.gl.gpu_timers;
+    o.timer_reads = options_.gl.timer_reads;
+    o.depth_key_bits = options_.gl.depth_key_bits;
     views_ = std::make_unique<gpu::GlPerViewRenderer>(*scene_, o);
   }
   void options_changed(const RendererOptions& old) override {
-    if (old.gl.gpu_timers != options_.gl.gpu_timers) forget_binding();  // the timers are made with it
+    if (old.gl.gpu_timers != options_.gl.gpu_timers || old.gl.timer_reads != options_.gl.timer_reads ||
+        old.gl.depth_key_bits != options_.gl.depth_key_bits)
+      forget_binding();  // the timers and the sort's key bits are made with it
   }
 
   std::shared_ptr<const gpu::GlScene> scene_;

@@ -41,6 +41,7 @@ gpu::GlG2lfOptions RendererOptions::gl_g2lf() const {
   o.g2lf = planes;
   o.plane_format = gl.plane_format;
   o.gpu_timers = gl.gpu_timers;
+  o.timer_reads = gl.timer_reads;
   o.memory_budget_bytes = gl.memory_budget_bytes;
   o.accumulation_budget_bytes = gl.accumulation_budget_bytes;
   return o;

@@ -42,6 +42,12 @@ struct GlRenderOptions {
   // the viewer's frame report). The per-view renderer makes its gpu:: renderer again when it
   // changes (its timer queries are made with it).
   bool gpu_timers = false;
+  // kLate: the timers (and G2LF's counts) are read a few frames late without waiting: the viewer
+  // (docs/gpu.md "A frame that never waits").
+  gpu::TimerReads timer_reads = gpu::TimerReads::kWait;
+  // Per view: the depth key bits sorted (gpu::GlPerViewOptions::depth_key_bits; 32 exact, the
+  // viewer 24: 3 radix passes instead of 4).
+  int depth_key_bits = 32;
   size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
   size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
 };

@@ -13,6 +13,8 @@ PACKAGES=(
   # graphics: GL loading, headless EGL on Mesa, windows, UI; Xvfb and Xlib for the window tests
   libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev libimgui-dev
   xvfb xauth libx11-dev
+  # GL call recorder: the test that no frame of lfd view waits for the GPU (docs/gpu.md)
+  apitrace
   # formats and utilities
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libpng-dev libzstd-dev zlib1g-dev
   libtbb-dev

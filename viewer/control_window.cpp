@@ -118,7 +118,8 @@ ControlActions ControlWindow::draw(ViewerSettings& s, SeenFromControls& seen, co
 
   ImGui::TextUnformatted(r.display.c_str());
   ImGui::TextUnformatted(r.renderer.c_str());
-  ImGui::Text("%.1f FPS  (%.2f ms a frame)", r.frame_seconds > 0 ? 1.0 / r.frame_seconds : 0.0, ms(r.frame_seconds));
+  ImGui::Text("%.1f FPS  (%.2f ms a frame, p99 %.2f ms)", r.frame_seconds > 0 ? 1.0 / r.frame_seconds : 0.0,
+              ms(r.frame_seconds), ms(r.frame_p99_seconds));
   if (s.method == Method::kG2lf)
     ImGui::Text("GPU: binning+sort %.2f  planes %.2f  swizzle %.2f  interlace %.2f ms", ms(r.binning_seconds),
                 ms(r.planes_seconds), ms(r.swizzle_seconds), ms(r.interlace_seconds));

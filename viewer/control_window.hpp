@@ -17,7 +17,8 @@ namespace lfd::viewer {
 
 // What the last frame cost and what it showed (read by the control window).
 struct FrameReport {
-  double frame_seconds = 0;  // wall clock between frames (median of the last 30)
+  double frame_seconds = 0;      // wall clock between frames: median of the recent ones
+  double frame_p99_seconds = 0;  // and their 99th percentile (viewer/frame_pacing.hpp)
   double binning_seconds = 0, planes_seconds = 0, swizzle_seconds = 0;  // G2LF stages (GPU)
   double raster_seconds = 0;      // per view: preprocess + sort + draw of every view (GPU)
   double interlace_seconds = 0;   // GPU

@@ -109,4 +109,9 @@ Image8 DisplayWindow::read_back_buffer() const {
 
 void DisplayWindow::swap() { glfwSwapBuffers(window_); }
 
+void DisplayWindow::set_swap_interval(int interval) const {
+  make_current();
+  glfwSwapInterval(interval);
+}
+
 }  // namespace lfd::viewer

@@ -37,6 +37,8 @@ class DisplayWindow {
   // What draw() put in the back buffer, rows top-down (the screenshot of the window).
   Image8 read_back_buffer() const;
   void swap();
+  // 1 (the default): one frame per vsync; 0: swaps do not wait for it (lfd view --no-vsync).
+  void set_swap_interval(int interval) const;
 
  private:
   GLFWwindow* window_ = nullptr;

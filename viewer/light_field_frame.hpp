@@ -13,6 +13,7 @@
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "gpu/gl_context.hpp"
+#include "gpu/gl_frame_ring.hpp"
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/gl_objects.hpp"
@@ -64,7 +65,8 @@ class LightFieldFrame {
   ~LightFieldFrame();
 
   // Renders the quilt and the panel for `camera` with `settings`; fills `report`'s GPU stage
-  // times when `timers` (which waits for the GPU: fine once a frame in the viewer).
+  // times when given: those of the newest frame the GPU has finished, read without waiting
+  // (gpu/gl_frame_ring.hpp; a few frames late).
   // RGBA32F planes that do not fit fall back to RGBA8 when those fit (fit_notice() says so).
   void render(const render::CameraSpec& camera, const ViewerSettings& settings, FrameReport* report = nullptr);
   void replace_scene(const render::GaussianScene& scene);
@@ -91,7 +93,7 @@ class LightFieldFrame {
   lightfield::QuiltStats render_quilt(const ViewerSettings& settings, bool timed);
   // G2LF, falling back from RGBA32F to RGBA8 planes when those do not fit.
   lightfield::QuiltStats render_g2lf(lightfield::GlLightFieldRenderer& renderer, lightfield::RendererOptions options);
-  void fill_report(const ViewerSettings& settings, const lightfield::QuiltStats& stats, FrameReport& report) const;
+  void fill_report(const ViewerSettings& settings, const lightfield::QuiltStats& stats, FrameReport& report);
   void drop_renderers();
 
   display::Calibration calibration_;
@@ -105,7 +107,7 @@ class LightFieldFrame {
   std::optional<render::QuiltLayout> interlacer_layout_;
   FramePlan plan_;
   gpu::Texture quilt_, panel_;
-  gpu::GpuTimer interlace_timer_;
+  gpu::GlFrameRing interlace_timer_{2, 0};  // the interlacing pass's start and end
 };
 
 }  // namespace lfd::viewer

@@ -1,13 +1,16 @@
 #pragma once
 // The GL side of the "seen from" preview: reads the panel back from the GPU when
-// seen_from_refresh_due says so, computes seen_from_preview on a worker thread (the frame loop
-// never waits for the optics) and keeps the result as a texture for the control window.
+// seen_from_refresh_due says so, through a pixel buffer and a fence polled on later frames
+// (gpu/gl_async_readback.hpp: the frame loop never waits for the GPU), computes
+// seen_from_preview on a worker thread (nor for the optics) and keeps the result as a texture
+// for the control window.
 #include <chrono>
 #include <future>
 #include <optional>
 #include <string>
 
 #include "display/calibration_file.hpp"
+#include "gpu/gl_async_readback.hpp"
 #include "gpu/gl_objects.hpp"
 #include "render/camera_json.hpp"
 #include "viewer/control_window.hpp"
@@ -32,10 +35,15 @@ class SeenFromPreviewer {
   double last_compute_seconds() const { return compute_seconds_; }  // read-back + optics
 
  private:
+  // The panel arrived: the optics start on a worker thread.
+  void start_optics(Image8 panel, const display::LensModel& lens);
+
   SeenFromOptions options_;
   std::string shown_key_;  // what the texture shows: the frame and the eye
   std::optional<std::chrono::steady_clock::time_point> computed_at_;
   std::chrono::steady_clock::time_point started_at_;
+  gpu::AsyncTextureReadback readback_;  // the panel on its way to the CPU
+  SeenFromEye readback_eye_;            // the eye the panel under way is for
   std::future<ImageF> job_;  // its destructor waits: declare the previewer after the frame
   double compute_seconds_ = 0;
   gpu::Texture texture_;

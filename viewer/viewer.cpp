@@ -19,6 +19,7 @@
 #include "util/progress.hpp"
 #include "viewer/control_window.hpp"
 #include "viewer/display_window.hpp"
+#include "viewer/frame_pacing.hpp"
 #include "viewer/input.hpp"
 #include "viewer/light_field_frame.hpp"
 #include "viewer/orbit_camera.hpp"
@@ -181,23 +182,21 @@ struct FrameLoop {
   SeenFromControls seen_from{};
   std::string plane_notice{};
   FrameReport report{};
-  std::deque<double> frame_times{};
+  FramePacing pacing{};
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
 };
 
-// Seconds since the last frame; the control window shows the median of the last 30, which a
-// single slow frame does not move.
+// Seconds since the last frame; the control window shows the median and p99 of the recent
+// ones (viewer/frame_pacing.hpp), which a single slow frame does not move.
 double time_frame(FrameLoop& loop, int frame_index) {
   const auto now = std::chrono::steady_clock::now();
   const double dt = std::chrono::duration<double>(now - loop.last).count();
   loop.last = now;
   if (frame_index > 0) {
-    auto& frame_times = loop.frame_times;
-    frame_times.push_back(dt);
-    if (frame_times.size() > 30) frame_times.pop_front();
-    std::vector<double> sorted(frame_times.begin(), frame_times.end());
-    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    loop.report.frame_seconds = sorted[sorted.size() / 2];
+    loop.pacing.add(dt);
+    const PacingFigures f = loop.pacing.figures();
+    loop.report.frame_seconds = f.median_s;
+    loop.report.frame_p99_seconds = f.p99_s;
   }
   return dt;
 }
@@ -308,6 +307,7 @@ int run_viewer(const ViewerOptions& options) {
 
   const gpu::GlfwSession session("lfd view needs a desktop session (X11 or Wayland) to open its windows");
   DisplayWindow display(session, find_monitor(session, options), d.screen_w, d.screen_h);
+  if (!options.vsync) display.set_swap_interval(0);  // --no-vsync: frames as fast as they render
   const gpu::GlInfo info = gpu::query_gl_info("GLFW window");
   std::cout << fmt::format("display {} on {}; rendering with {}\n", options.display_name,
                            display.on_display() ? "its monitor" : "a simulated display window", info.summary());
@@ -339,6 +339,12 @@ int run_viewer(const ViewerOptions& options) {
   }
   display.make_current();
   write_final_outputs(options, frame, camera);
+  // A scripted run says how its frames were paced (the intervals after the first frame).
+  if (options.frames > 0 && loop.pacing.figures().frames > 0) {
+    const PacingFigures f = loop.pacing.figures();
+    std::cout << fmt::format("frame pacing: median {:.2f} ms, p99 {:.2f} ms over {} frame intervals ({})\n",
+                             f.median_s * 1e3, f.p99_s * 1e3, f.frames, options.vsync ? "vsync" : "no vsync");
+  }
   return 0;
 }
 

@@ -23,6 +23,7 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> camera_path;  // cam.json to start from
   std::optional<std::filesystem::path> settings_path;  // default: per display (viewer_settings.hpp)
   int frames = 0;                    // 0: until the window is closed
+  bool vsync = true;                 // false: swap interval 0 (measuring the frame, --no-vsync)
   std::filesystem::path screenshot_path, quilt_path, camera_out_path;  // written after the last frame
 };
 

@@ -1,13 +1,17 @@
 // G2LF swizzle blending (paper Alg. 1 lines 6-12), the twin of render/swizzle_blend.cpp: one
-// invocation per pixel (x, y) of view j. The ray of that pixel meets plane k at the reference
-// coordinate of Eq. (u_prime), split per plane as u' = dx_j parallax_k + scale_k u; C_k and T_k
-// are sampled there (nearest, or bilinear by hand from four texelFetches with the CPU's weights,
-// texels outside the plane reading as empty (0, 0, 0, 1)) and composited front to back with
-// Eq. (alpha_blend). Rows are the CPU's (row 0 = top); plane and quilt textures store them
-// bottom-up (GL). The pixel stops once T < 0.5/255, as the CPU. Arithmetic follows the CPU's
-// order of operations and is `precise` (no fused multiply-add), so sample positions, and with
-// them the nearest texel, agree with the CPU's.
-// Defines: BILINEAR 0|1, QUILT_FORMAT (rgba8 | rgba16f | rgba32f).
+// invocation per pixel (x, y) of VIEWS consecutive views j (gl_GlobalInvocationID.z * VIEWS + i).
+// The ray of that pixel meets plane k at the reference coordinate of Eq. (u_prime), split per
+// plane as u' = dx_j parallax_k + scale_k u; C_k and T_k are sampled there (nearest, or bilinear
+// by hand from four texelFetches with the CPU's weights, texels outside the plane reading as
+// empty (0, 0, 0, 1)) and composited front to back with Eq. (alpha_blend). The planes are the
+// outer loop: a plane's factors and sample row (they do not depend on the view) are computed
+// once for the invocation's views, whose samples lie on one row of the plane, so the planes are
+// read once per VIEWS views rather than once per view (docs/gpu.md "Swizzle"). Rows are the CPU's
+// (row 0 = top); plane and quilt textures store them bottom-up (GL). A view's pixel stops once
+// T < 0.5/255, as the CPU, and the invocation once all of its views have. Arithmetic follows the
+// CPU's order of operations and is `precise` (no fused multiply-add), so sample positions, and
+// with them the nearest texel, agree with the CPU's.
+// Defines: BILINEAR 0|1, QUILT_FORMAT (rgba8 | rgba16f | rgba32f), VIEWS (views per invocation).
 layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 
 layout(binding = 0) uniform sampler2DArray planes;
@@ -34,6 +38,7 @@ uniform float tan_x, tan_y;    // base camera tan(theta/2)
 uniform float tan_rx, tan_ry;  // reference camera tan(theta'/2)
 uniform float d_forward_eff;
 uniform vec3 background;
+uniform int view_count;  // V
 
 const float kMinTransmittance = 0.5 / 255.0;
 
@@ -42,19 +47,39 @@ vec4 fetch(int x, int row, int layer) {
   return texelFetch(planes, ivec3(x, plane_size.y - 1 - row, layer), 0);  // rows bottom-up
 }
 
+vec4 sample_plane(float px, float py, int layer) {
+#if BILINEAR
+  const int row0 = int(floor(py)), col0 = int(floor(px));
+  precise const float fy = py - float(row0), fx = px - float(col0);
+  const vec4 a = fetch(col0, row0, layer), b = fetch(col0 + 1, row0, layer);
+  const vec4 c = fetch(col0, row0 + 1, layer), e = fetch(col0 + 1, row0 + 1, layer);
+  precise vec4 top = (1.0 - fx) * a + fx * b;
+  precise vec4 bottom = (1.0 - fx) * c + fx * e;
+  precise vec4 mixed = (1.0 - fy) * top + fy * bottom;
+  return mixed;
+#else
+  return fetch(int(floor(px + 0.5)), int(floor(py + 0.5)), layer);
+#endif
+}
+
 void main() {
   const int x = int(gl_GlobalInvocationID.x), y = int(gl_GlobalInvocationID.y);
-  const int j = int(gl_GlobalInvocationID.z);
+  const int j0 = int(gl_GlobalInvocationID.z) * VIEWS;
   if (x >= min(view_size.x, tiles.y) || y >= min(view_size.y, tiles.z)) return;
+  const int views = min(VIEWS, view_count - j0);
   const float W = float(view_size.x), H = float(view_size.y);
   const float Wp = float(plane_size.x), Hp = float(plane_size.y);
   precise const float v_ndc = (2.0 * float(y) + 1.0) / H - 1.0;
-  const float dx = view_offset[j];
 
-  vec3 C = vec3(0.0);
-  float t = 1.0;
+  vec3 C[VIEWS];
+  float t[VIEWS];
+  for (int i = 0; i < VIEWS; ++i) {
+    C[i] = vec3(0.0);
+    t[i] = i < views ? 1.0 : 0.0;  // views past the last are done from the start
+  }
   const uint count = plane_count;
-  for (uint k = 0u; k < count && t >= kMinTransmittance; ++k) {
+  bool open = true;  // some view's pixel still lets light through
+  for (uint k = 0u; k < count && open; ++k) {
     const float d = plane[k].depth;
     precise const float depth_ref = d - d_forward_eff;
     precise const float parallax = (focal_distance - d) / focal_distance / (depth_ref * tan_rx);
@@ -63,29 +88,25 @@ void main() {
     precise const float py = ((scale_y * v_ndc + 1.0) * Hp - 1.0) * 0.5;
     precise const float step = 2.0 * scale_x / W;
     precise const float beta = step * Wp * 0.5;
-    precise const float u_left = dx * parallax - scale_x;
-    precise const float alpha = ((u_left + 0.5 * step + 1.0) * Wp - 1.0) * 0.5;
-    precise const float px = alpha + beta * float(x);
     const int layer = int(k);
-    vec4 s;
-#if BILINEAR
-    const int row0 = int(floor(py)), col0 = int(floor(px));
-    precise const float fy = py - float(row0), fx = px - float(col0);
-    const vec4 a = fetch(col0, row0, layer), b = fetch(col0 + 1, row0, layer);
-    const vec4 c = fetch(col0, row0 + 1, layer), e = fetch(col0 + 1, row0 + 1, layer);
-    precise vec4 top = (1.0 - fx) * a + fx * b;
-    precise vec4 bottom = (1.0 - fx) * c + fx * e;
-    precise vec4 mixed = (1.0 - fy) * top + fy * bottom;
-    s = mixed;
-#else
-    s = fetch(int(floor(px + 0.5)), int(floor(py + 0.5)), layer);
-#endif
-    C += t * s.rgb;
-    t *= s.a;
+    open = false;
+    for (int i = 0; i < VIEWS; ++i) {
+      if (t[i] < kMinTransmittance) continue;
+      precise const float u_left = view_offset[j0 + i] * parallax - scale_x;
+      precise const float alpha = ((u_left + 0.5 * step + 1.0) * Wp - 1.0) * 0.5;
+      precise const float px = alpha + beta * float(x);
+      const vec4 s = sample_plane(px, py, layer);
+      C[i] += t[i] * s.rgb;
+      t[i] *= s.a;
+      open = open || t[i] >= kMinTransmittance;
+    }
   }
   // Quilt texture rows bottom-up (GL): view j's tile starts at row (j / columns) * tile height,
   // and the view's top row y = 0 is the tile's highest.
-  const int tile_x = (j % tiles.x) * tiles.y;
-  const int row = (j / tiles.x) * tiles.z + (tiles.z - 1 - y);
-  imageStore(quilt, ivec2(tile_x + x, row), vec4(C + t * background, 1.0));
+  for (int i = 0; i < views; ++i) {
+    const int j = j0 + i;
+    const int tile_x = (j % tiles.x) * tiles.y;
+    const int row = (j / tiles.x) * tiles.z + (tiles.z - 1 - y);
+    imageStore(quilt, ivec2(tile_x + x, row), vec4(C[i] + t[i] * background, 1.0));
+  }
 }

@@ -110,7 +110,7 @@ struct SwizzleCase {
   PlaneFilter filter;
 };
 
-double swizzle_psnr(const SwizzleCase& c, double* max_error) {
+double swizzle_psnr(const SwizzleCase& c, double* max_error, int views_per_invocation = kSwizzleViewsPerInvocation) {
   context();
   const TestScene& s = c.setup();
   render::G2lfOptions o;
@@ -128,7 +128,7 @@ double swizzle_psnr(const SwizzleCase& c, double* max_error) {
 
   const GlPlanes gl_planes = upload_planes(planes);
   const Texture quilt = make_quilt_texture(s.layout, GL_RGBA32F);
-  GlSwizzle swizzle;
+  GlSwizzle swizzle(views_per_invocation);
   swizzle.run(gl_planes, s.geometry, ref, s.layout, c.filter, s.background, quilt);
   const ImageF gl = read_image_top_down(quilt);
   EXPECT_GT(scene_pixel_fraction(cpu, s), 0.2) << "the planes must show the scene";
@@ -160,6 +160,19 @@ INSTANTIATE_TEST_SUITE_P(
                       SwizzleCase{tabletop, 2, 0.0f, PlanePrecision::kU8, PlaneFilter::kBilinear},
                       SwizzleCase{tabletop, 1, -1.0f, PlanePrecision::kF32, PlaneFilter::kNearest},
                       SwizzleCase{tabletop, 1, -1.0f, PlanePrecision::kF32, PlaneFilter::kBilinear}));
+
+// Several views per invocation share the per-plane factors: the quilt stays the CPU's bit for
+// bit on f32 planes whatever the grouping, a view count that is not a multiple included (the
+// cloud has 9 views).
+TEST(GlG2lfSwizzleViews, EveryGroupingOfViewsGivesTheCpuQuilt) {
+  for (const PlaneFilter filter : {PlaneFilter::kNearest, PlaneFilter::kBilinear})
+    for (const int views : {1, 2, 4, 8, 16}) {
+      double max_error = 1.0;
+      swizzle_psnr(SwizzleCase{cloud, 2, 1.0f, PlanePrecision::kF32, filter}, &max_error, views);
+      EXPECT_EQ(max_error, 0.0) << views << " views per invocation, "
+                                << (filter == PlaneFilter::kNearest ? "nearest" : "bilinear");
+    }
+}
 
 // ---- Stage 1: depth binning ----
 

@@ -35,7 +35,8 @@ Sorted expected_sort(const std::vector<uint32_t>& keys, int key_bits = 32) {
 
 // Sorts `keys` with values 0..n-1 on the GPU; the buffers hold `slack` more elements, which must
 // stay untouched.
-Sorted gpu_sort(GlRadixSort& sorter, const std::vector<uint32_t>& keys, int key_bits = 32, size_t slack = 3) {
+Sorted gpu_sort(GlRadixSort& sorter, const std::vector<uint32_t>& keys, int key_bits = 32, size_t slack = 3,
+                int low_bit = 0) {
   const size_t n = keys.size();
   std::vector<uint32_t> k = keys, v(n);
   std::iota(v.begin(), v.end(), 0u);
@@ -44,7 +45,7 @@ Sorted gpu_sort(GlRadixSort& sorter, const std::vector<uint32_t>& keys, int key_
     v.push_back(0xABCD0000u + uint32_t(i));
   }
   Buffer key_buffer(k.size() * 4, k.data()), value_buffer(v.size() * 4, v.data());
-  sorter.sort(key_buffer, value_buffer, uint32_t(n), key_bits);
+  sorter.sort(key_buffer, value_buffer, uint32_t(n), key_bits, low_bit);
   Sorted s;
   s.keys = key_buffer.download_as<uint32_t>(k.size());
   s.values = value_buffer.download_as<uint32_t>(v.size());
@@ -121,6 +122,29 @@ TEST(GlRadixSort, SortsByTheLowBytesOnlyWithAnOddNumberOfPasses) {
   expect_same(got, want, "24-bit keys");
   const Sorted got8 = gpu_sort(sorter, keys, 8);
   expect_same(got8, expected_sort(keys, 8), "8-bit keys");
+}
+
+// The per-view renderer's 24-bit depth keys: the high 24 bits of each key sorted (3 passes),
+// keys equal there keeping their input order: std::stable_sort by key >> 8.
+TEST(GlRadixSort, SortsByTheHighBitsOnlyStableBelow) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  for (const size_t n : {size_t(1000), size_t(70000)}) {
+    auto keys = random_keys(n, 17, 1u << 20);  // many equal high parts, differing low bytes
+    for (auto& k : keys) k = (k << 4) | (k & 0xFu);
+    const Sorted got = gpu_sort(sorter, keys, 32, 3, 8);
+    std::vector<uint32_t> order(n);
+    std::iota(order.begin(), order.end(), 0u);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return (keys[a] >> 8) < (keys[b] >> 8); });
+    Sorted want;
+    for (uint32_t i : order) {
+      want.keys.push_back(keys[i]);
+      want.values.push_back(i);
+    }
+    expect_same(got, want, "bits 8..31");
+  }
+  const Sorted float_bits = gpu_sort(sorter, {0x3F800000u, 0x3F8000FFu, 0x3F800001u, 0x3F7FFFFFu}, 32, 0, 8);
+  EXPECT_EQ(float_bits.values, (std::vector<uint32_t>{3, 0, 1, 2}));  // 1.0 and its two neighbours tie
 }
 
 TEST(GlRadixSort, SortsBlocksOfSeveralTiles) {

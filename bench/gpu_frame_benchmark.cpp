@@ -1,0 +1,144 @@
+#include "bench/gpu_frame_benchmark.hpp"
+
+#include <chrono>
+#include <functional>
+
+#include <fmt/format.h>
+
+#include "bench/timing_stats.hpp"
+#include "gpu/gl_g2lf.hpp"
+#include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl_scene.hpp"
+#include "gpu/gl_swizzle.hpp"
+#include "render/quilt_geometry.hpp"
+#include "render/per_view_quilt.hpp"
+#include "util/default_display.hpp"
+
+namespace lfd::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Median wall time of `frame` (which must leave the GPU idle or not: glFinish follows each
+// batch) over options.runs batches after options.warmup, per frame.
+double median_frame_seconds(const GpuFrameOptions& o, int batch, const std::function<void()>& frame) {
+  std::vector<double> per_frame;
+  for (int run = 0; run < o.warmup + o.runs; ++run) {
+    const auto t0 = Clock::now();
+    for (int i = 0; i < batch; ++i) frame();
+    glFinish();
+    if (run >= o.warmup) per_frame.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / batch);
+  }
+  return summarize(per_frame).median;
+}
+
+struct Stages {
+  std::vector<double> binning, planes, swizzle, raster;
+};
+
+void fill_stages(GpuFrameRow& row, const Stages& s) {
+  row.binning_s = summarize(s.binning).median;
+  row.planes_s = summarize(s.planes).median;
+  row.swizzle_s = summarize(s.swizzle).median;
+  row.raster_s = summarize(s.raster).median;
+}
+
+GpuFrameRow g2lf_row(gpu::GlG2lfRenderer& renderer, const render::QuiltGeometry& geometry,
+                     const render::QuiltLayout& layout, const gpu::Texture& quilt, gpu::GlG2lfOptions options,
+                     const GpuFrameOptions& o, const std::string& variant) {
+  GpuFrameRow row;
+  row.method = fmt::format("G2LF N={}", options.g2lf.chunks);
+  row.variant = variant;
+  row.runs = o.runs;
+  Stages stages;
+  const bool late = options.timer_reads == gpu::TimerReads::kLate;
+  row.frame_s = median_frame_seconds(o, late ? o.batch : 1, [&] {
+    renderer.render_quilt(geometry, layout, options, {}, quilt);
+    const gpu::GlG2lfStats& st = renderer.stats();
+    stages.binning.push_back(st.seconds_binning);
+    stages.planes.push_back(st.seconds_planes);
+    stages.swizzle.push_back(st.seconds_swizzle);
+  });
+  fill_stages(row, stages);
+  return row;
+}
+
+GpuFrameRow per_view_row(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
+                         const render::QuiltLayout& layout, gpu::Texture& quilt, gpu::TimerReads reads,
+                         GLenum accumulation, int key_bits, const GpuFrameOptions& o, const std::string& variant) {
+  gpu::GlPerViewOptions options;
+  options.depth_key_bits = key_bits;
+  options.gpu_timers = true;
+  options.timer_reads = reads;
+  options.accumulation_format = accumulation;
+  gpu::GlPerViewRenderer renderer(scene, options);
+  GpuFrameRow row;
+  row.method = "per view";
+  row.variant = variant;
+  row.runs = o.runs;
+  Stages stages;
+  row.frame_s = median_frame_seconds(o, reads == gpu::TimerReads::kLate ? o.batch : 1, [&] {
+    renderer.render_quilt(geometry, layout, {}, quilt);
+    const gpu::GlPerViewStats& st = renderer.stats();
+    stages.raster.push_back(st.preprocess_s + st.sort_s + st.raster_s);
+  });
+  fill_stages(row, stages);
+  return row;
+}
+
+}  // namespace
+
+std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOptions& o, const gpu::GlInfo& info) {
+  const auto geometry = render::make_quilt_geometry(s.base, s.focal_distance, float(kDefaultViewConeDeg), o.views);
+  const auto layout = render::make_quilt_layout(geometry, o.views, 1);
+  const gpu::GlScene scene(s.scene, info);
+  gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA8);  // the quilt as displayed
+  std::vector<GpuFrameRow> rows;
+  {
+    gpu::GlG2lfRenderer renderer(scene, info);
+    gpu::GlG2lfOptions options;
+    options.g2lf.chunks = o.chunks;
+    options.g2lf.d_shift = -1.0f;  // D_shift = D_forward, as gl-vs-cpu
+    options.gpu_timers = true;
+    for (const int views : o.swizzle_views) {
+      options.swizzle_views = views;
+      rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
+                              fmt::format("timers waited for, swizzle {} view{}/invocation", views, views > 1 ? "s" : "")));
+    }
+    options.timer_reads = gpu::TimerReads::kLate;
+    options.swizzle_views = gpu::kSwizzleViewsPerInvocation;  // the default, against its waited-for row
+    rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
+                            fmt::format("timers read late, {} frames a batch, swizzle {}", o.batch, options.swizzle_views)));
+  }
+  const int bits = 24;  // the viewer's
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, 32, o,
+                              "timers waited for, RGBA32F blending, 32-bit depth keys"));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, bits, o,
+                              fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits)));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kLate, GL_RGBA32F, bits, o,
+                              fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA16F, bits, o,
+                              fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
+  return rows;
+}
+
+std::string gpu_frame_table(const std::vector<GpuFrameRow>& rows) {
+  std::string out =
+      "| method | variant | frame ms | GPU binning ms | GPU planes ms | GPU swizzle ms | GPU per-view raster ms |\n"
+      "|---|---|---|---|---|---|---|\n";
+  for (const GpuFrameRow& r : rows)
+    out += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} |\n", r.method, r.variant, r.frame_s * 1e3,
+                       r.binning_s * 1e3, r.planes_s * 1e3, r.swizzle_s * 1e3, r.raster_s * 1e3);
+  return out;
+}
+
+nlohmann::ordered_json gpu_frame_json(const std::vector<GpuFrameRow>& rows) {
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const GpuFrameRow& r : rows)
+    out.push_back({{"method", r.method}, {"variant", r.variant}, {"runs", r.runs}, {"frame_seconds_median", r.frame_s},
+                   {"gpu_seconds_median", {{"binning", r.binning_s}, {"planes", r.planes_s}, {"swizzle", r.swizzle_s},
+                                           {"per_view_raster", r.raster_s}}}});
+  return out;
+}
+
+}  // namespace lfd::bench

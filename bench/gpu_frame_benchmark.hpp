@@ -1,0 +1,44 @@
+#pragma once
+// `lfd bench gpu-frame`: the GL frame itself, both sides of each GPU-side change in one run
+// (docs/gpu.md "A frame that never waits", docs/performance.md): G2LF and per view on one
+// headless context, each variant timed the same way.
+//   - timers waited for (each frame reads its stage times at once, the CPU waiting for the
+//     GPU: the old frame) against timers read late (gpu/gl_frame_ring.hpp), frames issued back
+//     to back and finished once per batch: the wall time per frame of a pipelined loop;
+//   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
+//   - per view: RGBA32F blending targets against RGBA16F (half the bytes a blend), and the
+//     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3).
+// Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
+// not what a GPU would.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "bench/gl_vs_cpu_benchmark.hpp"
+#include "gpu/gl_context.hpp"
+
+namespace lfd::bench {
+
+struct GpuFrameOptions {
+  int views = 45;
+  int chunks = 64;
+  int runs = 5, warmup = 1;
+  int batch = 4;                          // frames per pipelined batch
+  std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
+};
+
+struct GpuFrameRow {
+  std::string method;   // "G2LF N=64" or "per view"
+  std::string variant;  // what differs between rows of one method
+  double frame_s = 0;   // median wall time per frame
+  double binning_s = 0, planes_s = 0, swizzle_s = 0, raster_s = 0;  // median GPU stage times (0: not timed)
+  int runs = 0;
+};
+
+std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& scene, const GpuFrameOptions& options,
+                                       const gpu::GlInfo& info);
+std::string gpu_frame_table(const std::vector<GpuFrameRow>& rows);
+nlohmann::ordered_json gpu_frame_json(const std::vector<GpuFrameRow>& rows);
+
+}  // namespace lfd::bench

@@ -1,0 +1,41 @@
+// lfd bench gpu-frame's loop (bench/gpu_frame_benchmark.hpp) on llvmpipe: one row per variant,
+// each timed and with the stage times of its method.
+#include <gtest/gtest.h>
+
+#include "bench/gpu_frame_benchmark.hpp"
+#include "gpu/gl_context.hpp"
+
+namespace lfd::bench {
+namespace {
+
+TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
+  gpu::HeadlessContext context;
+  const GlVsCpuScene scene = gl_vs_cpu_tabletop(2000, 32);
+  GpuFrameOptions o;
+  o.views = 5;
+  o.chunks = 8;
+  o.runs = 2;
+  o.warmup = 1;
+  o.batch = 2;
+  o.swizzle_views = {1, 3};
+  const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
+  ASSERT_EQ(rows.size(), 7u);  // G2LF: 2 swizzle variants + timers read late; per view: 4
+  for (const GpuFrameRow& r : rows) {
+    EXPECT_GT(r.frame_s, 0.0) << r.method << ", " << r.variant;
+    EXPECT_EQ(r.runs, 2);
+  }
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(rows[size_t(i)].method, "G2LF N=8");
+    EXPECT_GT(rows[size_t(i)].swizzle_s, 0.0);
+    EXPECT_EQ(rows[size_t(i)].raster_s, 0.0);
+  }
+  for (int i = 3; i < 7; ++i) {
+    EXPECT_EQ(rows[size_t(i)].method, "per view");
+    EXPECT_GT(rows[size_t(i)].raster_s, 0.0);
+  }
+  EXPECT_NE(gpu_frame_table(rows).find("swizzle 3 views/invocation"), std::string::npos);
+  EXPECT_EQ(gpu_frame_json(rows).size(), 7u);
+}
+
+}  // namespace
+}  // namespace lfd::bench
