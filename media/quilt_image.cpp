@@ -95,3 +95,13 @@ QuiltImage read_quilt_image(const std::filesystem::path& path, const interlace::
 }
 
 }  // namespace lfd::media
+
+namespace lfd::media {
+bool is_image_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in || !std::filesystem::is_regular_file(path)) throw_input_error("{}: file not found", path.string());
+  uint8_t head[16] = {};
+  in.read(reinterpret_cast<char*>(head), sizeof head);
+  return sniff_image_format(std::span<const uint8_t>(head, size_t(in.gcount()))) != ImageFormat::kUnknown;
+}
+}  // namespace lfd::media

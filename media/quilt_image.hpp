@@ -46,3 +46,9 @@ QuiltImage read_quilt_image(const std::filesystem::path& path, const interlace::
                             double display_aspect);
 
 }  // namespace lfd::media
+
+namespace lfd::media {
+// Whether a file is a picture (PNG, JPEG or WebP by its first bytes) rather than a video.
+// InputError naming it when it cannot be opened.
+bool is_image_file(const std::filesystem::path& path);
+}  // namespace lfd::media
