@@ -119,6 +119,8 @@ struct VideoDecoder::Impl {
 };
 
 void VideoDecoder::Impl::open(const char* url) {
+  // FFmpeg's own log would add lines to the one-line errors; its reasons are in them already.
+  av_log_set_level(AV_LOG_FATAL);
   if (memory) {
     constexpr int kBuffer = 1 << 16;
     auto* buffer = static_cast<uint8_t*>(av_malloc(kBuffer));
