@@ -11,5 +11,6 @@ int RunBenchGlVsCpu(int argc, char** argv);  // apps/bench_gl_vs_cpu.cpp (also r
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
 int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp
+int RunBenchPlay(int argc, char** argv);  // apps/bench_play.cpp (also renderer-only)
 
 }  // namespace lfd::apps

@@ -172,6 +172,9 @@ set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev" "imgui|libimgui-dev"
   "hidapi-hidraw|libhidapi-dev" "libusb-1.0|libusb-1.0-0-dev" "zlib|zlib1g-dev" "glm|libglm-dev"
   "egl|libegl-dev" "libpng16|libpng-dev")
+list(APPEND _lfd_pkgconfig_packages  # media/ (lfd play)
+  "libavformat|libavformat-dev" "libavcodec|libavcodec-dev" "libavutil|libavutil-dev" "libswscale|libswscale-dev"
+  "libwebp|libwebp-dev")
 
 set(_lfd_links)
 foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)

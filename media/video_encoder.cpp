@@ -48,6 +48,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, const EncoderOptio
   e.options = o;
   if (o.width < 2 || o.height < 2 || o.width % 2 || o.height % 2)
     throw_input_error("{}: video size {}x{} must be even and at least 2x2", e.name, o.width, o.height);
+  av_log_set_level(AV_LOG_ERROR);  // x264 prints its statistics at info level
   if (avformat_alloc_output_context2(&e.format, nullptr, nullptr, e.name.c_str()) < 0 || !e.format)
     throw_input_error("{}: no container for this extension", e.name);
   const AVCodec* encoder = avcodec_find_encoder_by_name(o.codec.c_str());

@@ -22,6 +22,8 @@ PACKAGES=(
   gnuplot-nox
   # Debian packages (scripts/package.sh: cpack computes the Depends with dpkg-shlibdeps)
   dpkg-dev file
+  # lfd play (docs/play.md): FFmpeg's libraries for quilt videos, libwebp for WebP quilts
+  libavformat-dev libavcodec-dev libavutil-dev libswscale-dev libwebp-dev
 )
 
 missing=()
