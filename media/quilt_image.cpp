@@ -21,8 +21,18 @@ void check_size(const std::string& name, int width, int height) {
                       height, kMaxImageSide, kMaxImagePixels >> 20);
 }
 
+// A PNG's size from its IHDR (the first chunk), so a huge claim is refused with the bounds
+// rather than stb's "too large" lost among its format probes.
+void check_png_header(std::span<const uint8_t> b, const std::string& name) {
+  if (b.size() < 24 || std::memcmp(b.data() + 12, "IHDR", 4) != 0) return;  // stb says what is wrong
+  auto be32 = [&](size_t at) { return uint32_t(b[at]) << 24 | uint32_t(b[at + 1]) << 16 | uint32_t(b[at + 2]) << 8 | b[at + 3]; };
+  const uint32_t w = be32(16), h = be32(20);
+  if (w > uint32_t(kMaxImageSide) || h > uint32_t(kMaxImageSide)) check_size(name, int(std::min<uint32_t>(w, INT32_MAX)), int(std::min<uint32_t>(h, INT32_MAX)));
+}
+
 Image8 decode_with_stb(std::span<const uint8_t> bytes, const std::string& name) {
   if (bytes.size() > size_t(INT32_MAX)) throw_input_error("{}: file too large", name);
+  if (sniff_image_format(bytes) == ImageFormat::kPng) check_png_header(bytes, name);
   int w = 0, h = 0, n = 0;
   if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &w, &h, &n))
     throw_input_error("{}: not a readable image ({})", name, stbi_failure_reason());
