@@ -69,6 +69,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, const EncoderOptio
   if (e.format->oformat->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
   av_opt_set(c->priv_data, "preset", o.preset.c_str(), 0);
   av_opt_set_int(c->priv_data, "crf", o.crf, 0);
+  av_opt_set(c->priv_data, "x265-params", "log-level=error", 0);  // x265 logs on its own otherwise
   if (avcodec_open2(c, encoder, nullptr) < 0) throw_input_error("{}: cannot open the {} encoder", e.name, o.codec);
   avcodec_parameters_from_context(e.stream->codecpar, c);
   e.stream->time_base = c->time_base;
