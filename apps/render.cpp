@@ -18,6 +18,7 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "apps/quilt_file_name.hpp"
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
@@ -34,21 +35,6 @@
 
 namespace lfd::apps {
 namespace {
-
-// Adds `_qs{C}x{R}a{aspect}` before the extension unless the name already carries a tiling,
-// which must then agree with the quilt.
-std::string quilt_file_name(const std::string& out, const render::QuiltLayout& q) {
-  if (const auto named = render::parse_quilt_name(out)) {
-    if (named->cols != q.cols || named->rows != q.rows)
-      throw_input_error("--out: '{}' names a {}x{} quilt but the quilt is {}x{}", out, named->cols,
-                        named->rows, q.cols, q.rows);
-    return out;
-  }
-  const std::filesystem::path p(out);
-  const std::string name = p.stem().string() + render::quilt_suffix(q.cols, q.rows, q.aspect) +
-                           (p.has_extension() ? p.extension().string() : std::string(".png"));
-  return (p.parent_path() / name).string();
-}
 
 // `lfd render`'s command line, as given.
 struct RenderFlags {

@@ -1,0 +1,105 @@
+// lfd rgbd-quilt: an RGB-D image (colour and depth side by side) to a quilt file that other
+// tools (lfd interlace, Looking Glass software) read (docs/rgbd.md).
+#include <iostream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "apps/backend.hpp"
+#include "apps/cli.hpp"
+#include "apps/commands.hpp"
+#include "apps/quilt_file_name.hpp"
+#include "display/display_quilt.hpp"
+#include "render/quilt_layout.hpp"
+#include "rgbd/gl_rgbd_views.hpp"
+#include "rgbd/rgbd_quilt.hpp"
+#include "rgbd/rgbd_view_model.hpp"
+#include "util/atomic_file.hpp"
+#include "util/default_display.hpp"
+#include "util/error.hpp"
+#include "util/image.hpp"
+
+namespace lfd::apps {
+namespace {
+
+// The RGB-D options: a bridge.js settings file first, then each flag given, by its bridge.js key.
+rgbd::RgbdOptions rgbd_options(const std::string& settings_path,
+                               const std::vector<std::pair<std::string, std::string>>& flags) {
+  rgbd::RgbdOptions options;
+  if (!settings_path.empty()) {
+    try {
+      options = rgbd::parse_rgbd_options_json(read_text_file(settings_path));
+    } catch (const InputError& e) {
+      throw_input_error("{}: {}", settings_path, e.what());
+    }
+  }
+  for (const auto& [key, value] : flags)
+    if (!value.empty()) rgbd::set_rgbd_option(options, key, value);
+  return options;
+}
+
+}  // namespace
+
+int RunRgbdQuilt(int argc, char** argv) {
+  CLI::App app{"Turn an RGB-D image (colour and depth side by side, Looking Glass / bridge.js "
+               "conventions) into a quilt by depth-image-based rendering; the file gets a "
+               "_qsCxRaA name.\n"
+               "\nExamples:\n"
+               "  lfd rgbd-quilt photo_rgbd.png photo.png            (depth on the right, 45 views)\n"
+               "  lfd rgbd-quilt photo.png out.png --depth-loc left --depthiness 2 --focus 0.01\n"
+               "  lfd rgbd-quilt frame.png q.png --calibration visual.json --backend gl\n"
+               "  lfd rgbd-quilt frame.png q.png --settings rgbd.json  (bridge.js RGBDHologram settings)",
+               "rgbd-quilt"};
+  std::string in_path, out_path, settings_path, backend_name = "cpu";
+  std::string depth_loc, depthiness, focus, zoom, crop_x, crop_y;
+  bool inversion = false, chroma = false;
+  std::optional<int> views;
+  double view_cone_deg = kDefaultViewConeDeg;
+  int tile_height = 0;
+  app.add_option("rgbd", in_path, "RGB-D image (PNG, JPEG, ...)")->required();
+  app.add_option("out", out_path, "quilt file to write (PNG; _qsCxRaA is added)")->required();
+  app.add_option("--settings", settings_path, "bridge.js RGBDHologram settings (JSON); flags override");
+  app.add_option("--depth-loc", depth_loc, "where the depth half is: right (default), left, top, "
+                 "bottom, or bridge.js's 2, 3, 0, 1");
+  app.add_option("--depthiness", depthiness, "relief scale, 0.1 to 4 (bridge.js default 1.5)");
+  app.add_option("--focus", focus, "zero-parallax offset, -0.05 to 0.05 (0: mid depth)");
+  app.add_option("--zoom", zoom, "magnification about the crop centre, 0.1 to 4 (default 1)");
+  app.add_option("--crop-pos-x", crop_x, "crop centre, half widths, + right, -2 to 2");
+  app.add_option("--crop-pos-y", crop_y, "crop centre, half heights, + up, -2 to 2");
+  app.add_flag("--depth-inversion", inversion, "the depth map has black near (white far)");
+  app.add_flag("--chroma-depth", chroma, "depth as hue: red near, blue far");
+  DisplaySource display;
+  display.add(app, "--calibration", "display whose view count and view cone to use", false);
+  app.add_option("--views", views, "number of views (default: the display's, else 45)");
+  app.add_option("--view-cone", view_cone_deg, "view cone in degrees without a display (default 40)");
+  app.add_option("--tile-height", tile_height, "view height in pixels (default: the colour half's)");
+  add_backend_option(app, backend_name, "cpu (the reference) or gl (the GL twin, same quilt), auto");
+  if (auto code = parse(app, argc, argv)) return *code;
+
+  const rgbd::RgbdOptions options = rgbd_options(
+      settings_path, {{"depth_loc", depth_loc}, {"depthiness", depthiness}, {"focus", focus},
+                      {"zoom", zoom}, {"crop_pos_x", crop_x}, {"crop_pos_y", crop_y},
+                      {"depth_inversion", inversion ? "1" : ""}, {"chroma_depth", chroma ? "1" : ""}});
+  int view_count = views.value_or(kDefaultViewCount);
+  if (display.given()) {
+    const display::DisplayQuilt quilt = display::quilt_for_display(display.load(), views);
+    view_count = quilt.views;
+    view_cone_deg = quilt.view_cone_deg;
+    std::cout << quilt.describe() << "\n";
+  }
+  const ImageF frame = to_float(read_image(in_path, 3));
+  const render::QuiltLayout layout =
+      rgbd::rgbd_quilt_layout(frame.width, frame.height, options.depth_loc, view_count, tile_height);
+  const std::string written = quilt_file_name(out_path, layout, "out");
+  const auto gl_context = open_backend(parse_backend(backend_name));
+  const ImageF quilt = gl_context ? rgbd::render_rgbd_quilt_on_gpu(frame, options, layout, view_cone_deg)
+                                  : rgbd::render_rgbd_quilt(frame, options, layout, view_cone_deg);
+  write_png(written, to_uint8(quilt));
+  std::cout << "wrote " << written << " (" << layout.width << "x" << layout.height << ", "
+            << layout.views << " views in " << layout.cols << "x" << layout.rows
+            << " tiles, depth at the " << rgbd::depth_location_name(options.depth_loc) << ")\n";
+  return 0;
+}
+
+}  // namespace lfd::apps
