@@ -8,6 +8,8 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "media/quilt_image.hpp"
+#include "rgbd/rgbd_options.hpp"
 #include "play/entry_content.hpp"
 #include "play/player.hpp"
 #include "play/player_keys.hpp"
@@ -20,6 +22,7 @@ namespace {
 // The entries: the files of the command line (a .json file is a playlist, expanded in place).
 std::vector<play::PlaylistEntry> collect_entries(const std::vector<std::string>& files,
                                                  const interlace::QuiltOverrides& quilt,
+                                                 const std::optional<rgbd::RgbdOptions>& rgbd,
                                                  std::optional<double> duration, std::optional<bool>& loop) {
   std::vector<play::PlaylistEntry> entries;
   for (const std::string& file : files) {
@@ -32,10 +35,32 @@ std::vector<play::PlaylistEntry> collect_entries(const std::vector<std::string>&
     play::PlaylistEntry e;
     e.path = file;
     e.quilt = quilt;
+    e.rgbd = rgbd;
     e.duration_s = duration;
     entries.push_back(std::move(e));
   }
   return entries;
+}
+
+// The RGB-D options of the command line's files: a bridge.js settings file, then each flag by its
+// bridge.js key (as `lfd rgbd-quilt` reads them); nullopt when no RGB-D option was given.
+std::optional<rgbd::RgbdOptions> rgbd_options(bool rgbd, const std::string& settings_path,
+                                              const std::vector<std::pair<std::string, std::string>>& flags) {
+  bool any = rgbd || !settings_path.empty();
+  for (const auto& [key, value] : flags) any = any || !value.empty();
+  if (!any) return std::nullopt;
+  rgbd::RgbdOptions options;
+  if (!settings_path.empty()) {
+    const auto bytes = media::read_file_bytes(settings_path, 1 << 20);
+    try {
+      options = rgbd::parse_rgbd_options_json(std::string(bytes.begin(), bytes.end()));
+    } catch (const InputError& e) {
+      throw_input_error("{}: {}", settings_path, e.what());
+    }
+  }
+  for (const auto& [key, value] : flags)
+    if (!value.empty()) rgbd::set_rgbd_option(options, key, value);
+  return options;
 }
 
 }  // namespace
@@ -45,14 +70,16 @@ int RunPlay(int argc, char** argv) {
                "on the display: full screen on its monitor (a simulated display in a window when it is not\n"
                "connected), interlaced on the GPU with the unit's calibration. The tiling comes from the\n"
                "_qsCxRaA in the file name (or --cols/--rows/--aspect). Several files, or a playlist .json,\n"
-               "play in turn (--duration seconds each image), looping.\n"
+               "play in turn (--duration seconds each image), looping. RGB-D images and videos (colour and\n"
+               "depth side by side, bridge.js conventions) play with --rgbd and its options.\n"
                "Keys: space pause, Left/Right seek 5 s (images: previous/next), Up/Down previous/next,\n"
                "L looping, H help and progress bar (nothing covers the panel otherwise), Esc/Q quit.\n"
                "Examples:\n"
                "  lfd play scene_qs5x9a1.6.png --device auto\n"
                "  lfd play a_qs8x6a0.75.png clip_qs8x6a0.75.mp4 --calibration visual.json --duration 8\n"
                "  lfd play playlist.json --calibration visual.json --monitor LKG\n"
-               "  lfd play clip_qs5x9a1.6.mp4 --calibration visual.json --pause-at 2 --frames 5 --screenshot panel.png",
+               "  lfd play clip_qs5x9a1.6.mp4 --calibration visual.json --pause-at 2 --frames 5 --screenshot panel.png\n"
+               "  lfd play photo_rgbd.jpg --rgbd --depthiness 2 --device auto   (colour left, depth right)",
                "play"};
   std::vector<std::string> files;
   app.add_option("files", files, "quilt images, quilt videos or playlist .json files")->required();
@@ -69,6 +96,19 @@ int RunPlay(int argc, char** argv) {
   app.add_option("--rows", quilt.rows, "quilt rows (overrides the name)")->check(CLI::Range(1, 256));
   app.add_option("--views", quilt.views, "number of views (default cols*rows)")->check(CLI::Range(1, 256));
   app.add_option("--aspect", quilt.aspect, "aspect of one tile's content")->check(CLI::PositiveNumber);
+  bool is_rgbd = false, inversion = false, chroma = false;
+  std::string rgbd_settings, depth_loc, depthiness, focus, zoom, crop_x, crop_y;
+  app.add_flag("--rgbd", is_rgbd, "the files are RGB-D (colour and depth side by side; any RGB-D option implies it)");
+  app.add_option("--rgbd-settings", rgbd_settings, "bridge.js RGBDHologram settings (JSON); flags override");
+  app.add_option("--depth-loc", depth_loc, "RGB-D: where the depth half is: right (default), left, top, bottom, "
+                 "or bridge.js's 2, 3, 0, 1");
+  app.add_option("--depthiness", depthiness, "RGB-D: relief scale, 0.1 to 4 (bridge.js default 1.5)");
+  app.add_option("--focus", focus, "RGB-D: zero-parallax offset, -0.05 to 0.05");
+  app.add_option("--zoom", zoom, "RGB-D: magnification about the crop centre, 0.1 to 4");
+  app.add_option("--crop-pos-x", crop_x, "RGB-D: crop centre, half widths, + right, -2 to 2");
+  app.add_option("--crop-pos-y", crop_y, "RGB-D: crop centre, half heights, + up, -2 to 2");
+  app.add_flag("--depth-inversion", inversion, "RGB-D: the depth map has black near");
+  app.add_flag("--chroma-depth", chroma, "RGB-D: depth as hue (red near, blue far)");
   bool no_loop = false, software = false, overscan = false, invert = false;
   app.add_flag("--no-loop", no_loop, "stop after the last entry");
   std::string blend = "nearest";
@@ -92,12 +132,14 @@ int RunPlay(int argc, char** argv) {
   options.interlace.invert_views = invert;
   options.hardware_decode = !software;
   std::optional<bool> loop;
-  std::vector<play::PlaylistEntry> entries = collect_entries(files, quilt, duration, loop);
+  const auto rgbd = rgbd_options(is_rgbd, rgbd_settings,
+                                 {{"depth_loc", depth_loc}, {"depthiness", depthiness}, {"focus", focus},
+                                  {"zoom", zoom}, {"crop_pos_x", crop_x}, {"crop_pos_y", crop_y},
+                                  {"depth_inversion", inversion ? "1" : ""}, {"chroma_depth", chroma ? "1" : ""}});
+  std::vector<play::PlaylistEntry> entries = collect_entries(files, quilt, rgbd, duration, loop);
   options.loop = loop.value_or(!no_loop) && !no_loop;
-  const auto& d = options.calibration.display;
   // One file: a bad one is an error (exit 2), not a skipped entry.
-  if (entries.size() == 1)
-    play::open_entry(entries[0], double(d.screen_w) / d.screen_h, options.image_duration_s, {!software, 1});
+  if (entries.size() == 1) play::open_entry(entries[0], options.calibration, options.image_duration_s, {!software, 1});
 
   play::Player player(options);
   int started = 0;

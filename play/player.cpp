@@ -16,6 +16,8 @@
 #include "play/entry_content.hpp"
 #include "play/player_keys.hpp"
 #include "play/quilt_texture.hpp"
+#include "display/display_quilt.hpp"
+#include "rgbd/gl_rgbd_views.hpp"
 #include "util/error.hpp"
 #include "viewer/display_window.hpp"
 
@@ -69,6 +71,8 @@ struct Player::Impl {
   std::unique_ptr<gpu::GlInterlacer> interlacer;
   render::QuiltLayout interlacer_layout;
   std::unique_ptr<gpu::Texture> panel;
+  std::unique_ptr<rgbd::GlRgbdViews> rgbd_views;  // an RGB-D entry's frame -> its views
+  std::unique_ptr<gpu::Texture> rgbd_quilt;
   std::unique_ptr<PlayerKeys> keys;
 
   std::mutex command_mutex;
@@ -84,6 +88,7 @@ struct Player::Impl {
   int index = -1;
   std::optional<EntryContent> content;
   bool has_picture = false;     // the quilt texture holds the entry's picture
+  bool panel_dirty = true;      // a new picture (or layout) since the panel was interlaced
   bool announced = false;       // kEntryStarted sent for the current entry
   double position = 0;
   bool playing = true, looping = true, overlay = false, quit = false;
@@ -108,6 +113,8 @@ struct Player::Impl {
     window->make_current();  // GL objects go while their context is current
     content.reset();
     interlacer.reset();
+    rgbd_views.reset();
+    rgbd_quilt.reset();
     panel.reset();
     quilt.reset();
   }
@@ -149,6 +156,7 @@ struct Player::Impl {
     if (content && content->video) decoded_closed += content->video->frames_decoded();
     content.reset();
     has_picture = false;
+    panel_dirty = true;
     announced = false;
     video_index = -1;
     video_pts = 0;
@@ -163,9 +171,8 @@ struct Player::Impl {
     for (int tried = 0, i = first; tried < n; ++tried, i = (i + 1) % n) {
       if (i < first && !looping && tried > 0) break;
       try {
-        content = open_entry(playlist[size_t(i)], double(options.calibration.display.screen_w) /
-                                                      options.calibration.display.screen_h,
-                             options.image_duration_s, {options.hardware_decode, options.decoder_threads});
+        content = open_entry(playlist[size_t(i)], options.calibration, options.image_duration_s,
+                             {options.hardware_decode, options.decoder_threads});
         index = i;
         if (content->video && options.print_notices)
           std::cerr << fmt::format("{}: {}x{} {} at {:.3g} fps, decoder {}\n", content->name, content->video->info().width,
@@ -241,7 +248,10 @@ struct Player::Impl {
   void update_picture() {
     if (!content) return;
     if (content->still) {
-      if (!has_picture) quilt->upload(*content->still);
+      if (!has_picture) {
+        quilt->upload(*content->still);
+        panel_dirty = true;
+      }
       has_picture = true;
       if (content->duration_s > 0 && position >= content->duration_s) advance();
       return;
@@ -251,6 +261,7 @@ struct Player::Impl {
       if (auto frame = video.frame_due(position, dropped)) {
         quilt->upload(*frame);
         has_picture = true;
+        panel_dirty = true;
         video_index = frame->index;
         video_pts = frame->pts_s;
         if (!announced) position = frame->pts_s;  // the clock starts at the first frame shown
@@ -264,17 +275,33 @@ struct Player::Impl {
     if (video.finished() || cut) advance();
   }
 
+  // The quilt the interlacer reads: the picture itself, or the views an RGB-D frame makes.
+  const gpu::Texture& shown_quilt() {
+    if (!content->rgbd) return quilt->quilt();
+    const render::QuiltLayout& q = content->layout;
+    if (!rgbd_views) rgbd_views = std::make_unique<rgbd::GlRgbdViews>();
+    if (!rgbd_quilt || rgbd_quilt->width() != q.width || rgbd_quilt->height() != q.height)
+      rgbd_quilt = std::make_unique<gpu::Texture>(GL_RGBA8, q.width, q.height);
+    rgbd_views->render(quilt->quilt(), *content->rgbd, q, *rgbd_quilt,
+                       display::effective_view_cone_deg(options.calibration));
+    return *rgbd_quilt;
+  }
+
+  // Interlaces only when the picture changed: a still quilt costs one interlace, then swaps.
   void draw() {
     window->make_current();
-    if (content && has_picture) {
-      if (!interlacer || !same_layout(interlacer_layout, content->layout)) {
-        interlacer = std::make_unique<gpu::GlInterlacer>(lens, content->layout, options.interlace);
-        interlacer_layout = content->layout;
+    if (panel_dirty) {
+      if (content && has_picture) {
+        if (!interlacer || !same_layout(interlacer_layout, content->layout)) {
+          interlacer = std::make_unique<gpu::GlInterlacer>(lens, content->layout, options.interlace);
+          interlacer_layout = content->layout;
+        }
+        interlacer->interlace(shown_quilt(), *panel);
+      } else {
+        const float black[4] = {0, 0, 0, 1};
+        glClearTexImage(panel->id(), 0, GL_RGBA, GL_FLOAT, black);
       }
-      interlacer->interlace(quilt->quilt(), *panel);
-    } else {
-      const float black[4] = {0, 0, 0, 1};
-      glClearTexImage(panel->id(), 0, GL_RGBA, GL_FLOAT, black);
+      panel_dirty = false;
     }
     window->draw(*panel);
     if (overlay) draw_overlay();
@@ -380,6 +407,7 @@ void Player::show_quilt(QuiltPicture picture) {
     content.layout = shared->layout;
     content.still = std::move(shared->pixels);
     p.content = std::move(content);
+    p.panel_dirty = true;
     p.playing = true;
   });
 }

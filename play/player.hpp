@@ -25,6 +25,7 @@
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file.hpp"
 #include "render/quilt_layout.hpp"
+#include "rgbd/rgbd_options.hpp"
 #include "util/image.hpp"
 
 namespace lfd::play {
@@ -38,8 +39,10 @@ struct PlaylistEntry {
   // How long an image stays (seconds; default PlayerOptions::image_duration_s). For a video:
   // nullopt plays it to its end; a value cuts it there (or repeats it until then).
   std::optional<double> duration_s;
-  // RGB-D entries (colour + depth side by side, `--depth-loc` ...) are not wired in yet: the
-  // seam is here (a future `std::optional<rgbd::RgbdOptions> rgbd;`), see docs/play.md.
+  // Set: the file is an RGB-D image or video (colour and depth side by side, bridge.js
+  // conventions, rgbd/rgbd_options.hpp) turned into the display's views on the GPU
+  // (rgbd::GlRgbdViews) every new frame; `quilt` is then ignored.
+  std::optional<rgbd::RgbdOptions> rgbd;
 };
 
 // A quilt decoded in memory (a caller that received the bytes over the network and decoded

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "media/quilt_name.hpp"
+#include "rgbd/rgbd_options.hpp"
 #include "util/error.hpp"
 
 namespace lfd::play {
@@ -25,6 +26,19 @@ double read_positive(const json& v, const std::string& where, double max) {
   const double x = v.get<double>();
   if (!std::isfinite(x) || x <= 0 || x > max) throw_input_error("{}: must be in (0, {}]", where, max);
   return x;
+}
+
+// `true` (bridge.js's defaults) or an object of bridge.js RGB-D keys (rgbd/rgbd_options.hpp).
+rgbd::RgbdOptions read_rgbd(const json& v, const std::string& where) {
+  if (v.is_boolean() && v.get<bool>()) return {};
+  if (!v.is_object()) throw_input_error("{}: must be true or an object of bridge.js RGB-D settings", where);
+  try {
+    const rgbd::RgbdOptions options = rgbd::rgbd_options_from_json(v);
+    options.check(where);
+    return options;
+  } catch (const InputError& e) {
+    throw_input_error("{}: {}", where, e.what());
+  }
 }
 
 PlaylistEntry parse_entry(const json& e, const std::string& where, const std::filesystem::path& base) {
@@ -46,8 +60,10 @@ PlaylistEntry parse_entry(const json& e, const std::string& where, const std::fi
       entry.quilt.views = read_count(value, field, media::kMaxQuiltViews);
     } else if (key == "aspect") {
       entry.quilt.aspect = read_positive(value, field, media::kMaxQuiltAspect);
+    } else if (key == "rgbd") {
+      entry.rgbd = read_rgbd(value, field);
     } else {
-      throw_input_error("{}: unknown field (file, duration, cols, rows, views, aspect)", field);
+      throw_input_error("{}: unknown field (file, duration, cols, rows, views, aspect, rgbd)", field);
     }
   }
   if (entry.path.empty()) throw_input_error("{}.file: missing", where);

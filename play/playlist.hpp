@@ -3,10 +3,13 @@
 // the same --duration, or a small JSON file:
 //   {"loop": true,
 //    "entries": [{"file": "scene_qs5x9a1.6.png", "duration": 8},
-//                {"file": "clip.mp4", "cols": 8, "rows": 6, "aspect": 0.75}]}
+//                {"file": "clip.mp4", "cols": 8, "rows": 6, "aspect": 0.75},
+//                {"file": "photo_rgbd.jpg", "rgbd": {"depth_loc": 2, "depthiness": 1.5}}]}
 // (a bare array of entries is accepted too). Relative files are relative to the JSON file.
 // Entry fields: file (required), duration (seconds, > 0), cols, rows, views, aspect (the tiling
-// when the name has none); unknown fields are errors, so a typo does not pass silently.
+// when the name has none), rgbd (true, or bridge.js's RGBDHologram settings: depth_loc,
+// depthiness, focus, depth_inversion, chroma_depth, zoom, crop_pos_x, crop_pos_y); unknown
+// fields are errors, so a typo does not pass silently.
 #include <filesystem>
 #include <optional>
 #include <string>

@@ -29,6 +29,21 @@ TEST(Playlist, ReadsEntriesAndFields) {
   EXPECT_FALSE(bare.loop);
 }
 
+TEST(Playlist, RgbdEntriesTakeBridgeJsSettings) {
+  const Playlist p = parse_playlist_json(
+      R"([{"file": "a.jpg", "rgbd": {"depth_loc": 3, "depthiness": 2, "depth_inversion": 1}},
+          {"file": "b.jpg", "rgbd": true}, {"file": "c_qs5x9a1.6.png"}])",
+      "list.json", "/");
+  ASSERT_EQ(p.entries.size(), 3u);
+  ASSERT_TRUE(p.entries[0].rgbd);
+  EXPECT_EQ(p.entries[0].rgbd->depth_loc, rgbd::DepthLocation::left);
+  EXPECT_EQ(p.entries[0].rgbd->depthiness, 2.0);
+  EXPECT_TRUE(p.entries[0].rgbd->depth_inversion);
+  ASSERT_TRUE(p.entries[1].rgbd);
+  EXPECT_EQ(p.entries[1].rgbd->depthiness, rgbd::kDefaultDepthiness);
+  EXPECT_FALSE(p.entries[2].rgbd);
+}
+
 TEST(Playlist, MalformedFieldsAreNamed) {
   const std::vector<std::pair<const char*, const char*>> cases = {
       {"not json", "not valid JSON"},
@@ -45,6 +60,8 @@ TEST(Playlist, MalformedFieldsAreNamed) {
       {R"([{"file": "a", "colz": 5}])", "entries[0].colz: unknown field"},
       {R"([{"file": ""}])", "entries[0].file: must be a file name"},
       {R"([3])", "entries[0]: must be an object"},
+      {R"([{"file": "a", "rgbd": false}])", "entries[0].rgbd: must be true or an object"},
+      {R"([{"file": "a", "rgbd": {"depthiness": 9}}])", "entries[0].rgbd: "},
   };
   for (const auto& [text, expected] : cases) {
     try {
