@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <mutex>
 #include <thread>
 
 extern "C" {
@@ -166,8 +168,26 @@ bool VideoDecoder::Impl::try_hardware(const AVCodec* decoder) {
     decode_path = fmt::format("; VA-API: no VA-API decoder for {}", info.codec);
     return false;
   }
-  if (const int e = av_hwdevice_ctx_create(&hw_device, AV_HWDEVICE_TYPE_VAAPI, nullptr, nullptr, 0); e < 0) {
-    decode_path = fmt::format("; VA-API: no device ({})", av_error_text(e));
+  // The DRM render node, never the X display: libva's X11 path, tried and failed, left this
+  // process unable to open its own X windows afterwards (seen with Xvfb). A failure is
+  // remembered, so a playlist does not retry it for every video.
+  static std::mutex mutex;
+  static std::optional<std::string> failed;
+  std::lock_guard lock(mutex);
+  if (!failed) {
+    std::string node;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", ec))
+      if (entry.path().filename().string().rfind("renderD", 0) == 0 && (node.empty() || entry.path().string() < node))
+        node = entry.path().string();
+    if (node.empty()) {
+      failed = "no device (no /dev/dri render node)";
+    } else if (const int e = av_hwdevice_ctx_create(&hw_device, AV_HWDEVICE_TYPE_VAAPI, node.c_str(), nullptr, 0); e < 0) {
+      failed = fmt::format("no device on {} ({})", node, av_error_text(e));
+    }
+  }
+  if (failed) {
+    decode_path = "; VA-API: " + *failed;
     return false;
   }
   codec->hw_device_ctx = av_buffer_ref(hw_device);

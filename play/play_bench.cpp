@@ -66,8 +66,7 @@ struct PlayRun {
   int64_t shown = 0, decoded = 0;
 };
 
-// One playback of the video, start to end, in the player's window.
-PlayRun play_once(const std::filesystem::path& video, const PlayBenchOptions& o) {
+PlayerOptions player_options(const PlayBenchOptions& o) {
   PlayerOptions po;
   po.calibration = o.calibration;
   po.display_name = o.display_name;
@@ -76,12 +75,16 @@ PlayRun play_once(const std::filesystem::path& video, const PlayBenchOptions& o)
   po.hardware_decode = o.hardware_decode;
   po.decoder_threads = o.decoder_threads;
   po.print_notices = false;
-  Player player(po);
-  player.run(2);  // the window is up and has swapped: the clock starts at the command
+  return po;
+}
+
+// One playback of the video, start to end, in the player's window (one Player, and so one
+// window and GL context, for every run: opening them is not what is measured).
+PlayRun play_once(Player& player, const std::filesystem::path& video) {
   bool ended = false;
   std::optional<double> first;
   const auto start = Clock::now();
-  player.subscribe([&](const PlaybackEvent& e) {
+  const int id = player.subscribe([&](const PlaybackEvent& e) {
     if (e.kind == PlaybackEventKind::kEntryStarted && !first) first = seconds_since(start);
     if (e.kind == PlaybackEventKind::kPlaylistEnded || e.kind == PlaybackEventKind::kEntrySkipped) ended = true;
   });
@@ -91,14 +94,15 @@ PlayRun play_once(const std::filesystem::path& video, const PlayBenchOptions& o)
   player.set_playlist({entry});
   while (!ended && player.run_frame()) {
   }
+  player.unsubscribe(id);
   const double wall = seconds_since(start);
   const PlayerState s = player.state();
   PlayRun run;
   run.wall_s = wall;
   run.first_frame_s = first.value_or(0);
   run.shown = s.frames_shown - before.frames_shown;
-  run.decoded = s.frames_decoded;
-  run.dropped = double(s.frames_dropped);
+  run.decoded = s.frames_decoded - before.frames_decoded;
+  run.dropped = double(s.frames_dropped - before.frames_dropped);
   const double playing = std::max(1e-9, wall - run.first_frame_s);
   run.shown_per_s = run.shown / playing;
   run.decoded_per_s = run.decoded / playing;
@@ -109,6 +113,8 @@ PlayRun play_once(const std::filesystem::path& video, const PlayBenchOptions& o)
 
 std::vector<PlayBenchRow> run_play_benchmark(const PlayBenchOptions& o, std::ostream& log) {
   std::vector<PlayBenchRow> rows;
+  Player player(player_options(o));
+  player.run(2);  // the window is up and has swapped
   for (const int fps : o.frame_rates) {
     PlayBenchRow row;
     const auto video = ensure_video(o, fps, log);
@@ -122,9 +128,9 @@ std::vector<PlayBenchRow> run_play_benchmark(const PlayBenchOptions& o, std::ost
       row.decoder = d.path;
     }
     lightfield::reset_peak_rss();
-    play_once(video, o);  // warm-up
+    play_once(player, video);  // warm-up
     for (int r = 0; r < o.runs; ++r) {
-      const PlayRun p = play_once(video, o);
+      const PlayRun p = play_once(player, video);
       row.play_decoded_per_s.push_back(p.decoded_per_s);
       row.play_shown_per_s.push_back(p.shown_per_s);
       row.play_dropped.push_back(p.dropped);
