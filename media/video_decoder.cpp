@@ -168,9 +168,9 @@ bool VideoDecoder::Impl::try_hardware(const AVCodec* decoder) {
     decode_path = fmt::format("; VA-API: no VA-API decoder for {}", info.codec);
     return false;
   }
-  // The DRM render node, never the X display: libva's X11 path, tried and failed, left this
-  // process unable to open its own X windows afterwards (seen with Xvfb). A failure is
-  // remembered, so a playlist does not retry it for every video.
+  // The DRM render node (decoding needs no display server, and without a render node there is
+  // no VA-API device to try). A failure is remembered, so a playlist does not retry it for
+  // every video.
   static std::mutex mutex;
   static std::optional<std::string> failed;
   std::lock_guard lock(mutex);
