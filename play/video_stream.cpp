@@ -39,6 +39,11 @@ void VideoStream::decode_loop() {
       if (generation == generation_) ended_ = false;
       continue;
     }
+    // Behind the clock: the front frame would be passed over anyway (the next one is due too).
+    if (queue_.size() >= kDecodeAhead && !waiting_first_ && queue_[1].pts_s <= clock_s_ + 1e-6) {
+      queue_.pop_front();
+      ++late_dropped_;
+    }
     if (ended_ || queue_.size() >= kDecodeAhead || !error_.empty()) {
       changed_.wait(lock);
       continue;
@@ -69,6 +74,9 @@ std::optional<media::YuvFrame> VideoStream::frame_due(double clock_s, int64_t& d
                       [&] { return !queue_.empty() || ended_ || !error_.empty(); });
   }
   if (!error_.empty()) throw InputError(error_);
+  clock_s_ = clock_s;
+  dropped += late_dropped_;
+  late_dropped_ = 0;
   std::optional<media::YuvFrame> due;
   // The first frame after an open or seek is shown whatever its time (the clock starts there).
   while (!queue_.empty() && (waiting_first_ || queue_.front().pts_s <= clock_s + 1e-6)) {
@@ -77,7 +85,7 @@ std::optional<media::YuvFrame> VideoStream::frame_due(double clock_s, int64_t& d
     queue_.pop_front();
     waiting_first_ = false;
   }
-  if (due) changed_.notify_all();
+  changed_.notify_all();  // room in the queue, or a new clock to catch up with
   return due;
 }
 
@@ -94,6 +102,8 @@ void VideoStream::seek(double seconds) {
     ++generation_;
     ended_ = false;
     waiting_first_ = true;
+    clock_s_ = -1;
+    late_dropped_ = 0;
     error_.clear();
   }
   changed_.notify_all();

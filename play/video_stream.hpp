@@ -4,6 +4,9 @@
 // vsync, the newest frame due at the playback clock. Frames that were decoded but passed over
 // because a later one was already due are the dropped frames. After open and after a seek the
 // GL thread waits for the first frame (bounded), so the frame on screen is the one asked for.
+// When the display falls behind the clock (a slow GPU), the decoder thread passes over the
+// frames that are already late instead of waiting for room in the queue, so a video still ends
+// on time and the dropped count says how many frames were never shown.
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -54,6 +57,8 @@ class VideoStream {
   std::deque<media::YuvFrame> queue_;
   std::optional<double> seek_to_;      // asked for, not yet done by the decoder thread
   bool waiting_first_ = true;          // after open/seek: frame_due waits for a frame
+  double clock_s_ = -1;                // the playback clock at the last frame_due
+  int64_t late_dropped_ = 0;           // passed over by the decoder thread, not yet reported
   bool ended_ = false, stop_ = false;
   int64_t generation_ = 0;             // bumped by seek: frames of an older one are discarded
   int64_t decoded_ = 0;
