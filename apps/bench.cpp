@@ -24,6 +24,7 @@ const std::vector<Bench>& benches() {
       {"voxels", RunBenchVoxels, "per-view voxel quilts vs V2LF: the paper's Table 1, V2LF half (CPU)"},
       {"gl-vs-cpu", RunBenchGlVsCpu, "GL G2LF against the CPU reference on large scenes (PSNR, times)"},
       {"gpu-frame", RunBenchGpuFrame, "the GL frame: timers waited for vs read late, swizzle variants"},
+      {"play", RunBenchPlay, "quilt video playback: decoded, shown and dropped frames per second (4K)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
       {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},

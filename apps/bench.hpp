@@ -12,5 +12,6 @@ int RunBenchGpuFrame(int argc, char** argv);  // apps/bench_gpu_frame.cpp (also 
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
 int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp
+int RunBenchPlay(int argc, char** argv);  // apps/bench_play.cpp (also renderer-only)
 
 }  // namespace lfd::apps

@@ -18,6 +18,7 @@ int RunPatterns(int argc, char** argv);
 int RunCalibrate(int argc, char** argv);
 int RunDevice(int argc, char** argv);
 int RunCamera(int argc, char** argv);
+int RunPlay(int argc, char** argv);
 int RunRgbdQuilt(int argc, char** argv);
 
 }  // namespace lfd::apps

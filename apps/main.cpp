@@ -43,6 +43,7 @@ const std::vector<Command>& commands() {
       {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
       {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
       {"view", RunView, "show a Gaussian scene on the display in real time (GL, with controls)"},
+      {"play", RunPlay, "play quilt images and quilt videos on the display (playlists, keys)"},
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},

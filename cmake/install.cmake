@@ -174,6 +174,8 @@ set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "hidapi-hidraw|libhidapi-dev" "libusb-1.0|libusb-1.0-0-dev" "zlib|zlib1g-dev" "glm|libglm-dev"
   "egl|libegl-dev" "libpng16|libpng-dev"
   "libzip|libzip-dev" "libwebp|libwebp-dev")
+list(APPEND _lfd_pkgconfig_packages  # media/ (lfd play)
+  "libavformat|libavformat-dev" "libavcodec|libavcodec-dev" "libavutil|libavutil-dev" "libswscale|libswscale-dev")
 
 set(_lfd_links)
 foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)

@@ -26,6 +26,8 @@ PACKAGES=(
   dpkg-dev file
   # scene formats: SOG (ZIP archive of WebP images), glTF/GLB with KHR_gaussian_splatting
   libzip-dev libwebp-dev libtinygltf-dev
+  # lfd play (docs/play.md): FFmpeg's libraries for quilt videos, libwebp for WebP quilts
+  libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
 )
 
 missing=()

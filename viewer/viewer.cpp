@@ -37,6 +37,7 @@ struct InputCollector {
   const ControlWindow* controls = nullptr;  // its ImGui may own the mouse
   GLFWwindow* control_window = nullptr;
   std::optional<std::string> dropped;
+  bool toggle_controls = false;  // C pressed on the display window
 
   bool ignore(GLFWwindow* w) const { return controls && w == control_window && controls->wants_mouse(); }
 };
@@ -71,6 +72,7 @@ void install_callbacks(GLFWwindow* w, InputCollector* in, bool chain_imgui) {
   glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
     if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(win, GLFW_TRUE);
     if (action == GLFW_PRESS && key == GLFW_KEY_R) collector(win)->events.reset = true;
+    if (action == GLFW_PRESS && key == GLFW_KEY_C) collector(win)->toggle_controls = true;
   });
   glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
     if (count > 0) collector(win)->dropped = paths[0];
@@ -153,6 +155,14 @@ GLFWmonitor* find_monitor(const gpu::GlfwSession& session, const ViewerOptions& 
   return nullptr;
 }
 
+// The display's monitor is the only one (a small computer driving only the display): the control
+// window would land on the panel, so it opens on request (C) and closing it hides it (docs/viewer.md).
+bool controls_on_request(const gpu::GlfwSession& session, const DisplayWindow& display, const ViewerOptions& options) {
+  const bool lone = options.controls && display.on_display() && session.monitors().size() <= 1;
+  if (lone) std::cout << "the display is the only monitor: press C on it for the control window\n";
+  return lone;
+}
+
 // Both windows feed one collector, so the camera moves from either; a scene dropped on the
 // control window loads too.
 void connect_input(InputCollector& input, const DisplayWindow& display, std::optional<ControlWindow>& controls) {
@@ -164,6 +174,23 @@ void connect_input(InputCollector& input, const DisplayWindow& display, std::opt
   glfwSetDropCallback(controls->handle(), [](GLFWwindow* win, int count, const char** paths) {
     if (count > 0) collector(win)->dropped = paths[0];
   });
+}
+
+// C opens or closes the control window (and closing it only hides it) when it opens on request.
+void toggle_controls_on_request(const gpu::GlfwSession& session, InputCollector& input, const DisplayWindow& display,
+                                std::optional<ControlWindow>& controls) {
+  const bool close = controls && controls->should_close();
+  if (!input.toggle_controls && !close) return;
+  input.toggle_controls = false;
+  if (controls) {
+    input.controls = nullptr;
+    input.control_window = nullptr;
+    controls.reset();
+  } else {
+    controls.emplace(session, display.handle());
+    connect_input(input, display, controls);
+  }
+  display.make_current();
 }
 
 // What the stages of the frame loop share: the windows, the frame, the camera and what one
@@ -313,7 +340,8 @@ int run_viewer(const ViewerOptions& options) {
                            display.on_display() ? "its monitor" : "a simulated display window", info.summary());
   // Before the scene, so a long upload shows its progress there.
   std::optional<ControlWindow> controls;
-  if (options.controls) controls.emplace(session, display.handle());
+  const bool on_request = controls_on_request(session, display, options);
+  if (options.controls && !on_request) controls.emplace(session, display.handle());
   if (controls && !display.on_display()) controls->place_beside(display.handle());
   display.make_current();
   FrameOptions frame_options;
@@ -330,7 +358,8 @@ int run_viewer(const ViewerOptions& options) {
   loop.report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
   for (int frame_index = 0; options.frames == 0 || frame_index < options.frames; ++frame_index) {
     glfwPollEvents();
-    if (display.should_close() || (controls && controls->should_close())) break;
+    if (display.should_close() || (controls && controls->should_close() && !on_request)) break;
+    if (on_request) toggle_controls_on_request(session, input, display, controls);
     const double dt = time_frame(loop, frame_index);
     apply_frame_input(loop, dt);
     reload_dropped_scene(loop);
