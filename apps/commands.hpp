@@ -18,5 +18,6 @@ int RunPatterns(int argc, char** argv);
 int RunCalibrate(int argc, char** argv);
 int RunDevice(int argc, char** argv);
 int RunCamera(int argc, char** argv);
+int RunServe(int argc, char** argv);
 
 }  // namespace lfd::apps

@@ -46,6 +46,7 @@ const std::vector<Command>& commands() {
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
+      {"serve", RunServe, "serve the display to existing Looking Glass apps (HoloPlay, Bridge)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},

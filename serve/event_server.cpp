@@ -95,7 +95,7 @@ EventServer::EventServer(EventHub& hub, const OriginPolicy& origins, const Serve
 EventServer::~EventServer() { stop(); }
 
 void EventServer::start(const ListenAddress& address) {
-  const std::string url = fmt::format("ws://{}:{}/event_source", address.url_host(), address.events_port);
+  const std::string url = fmt::format("ws://{}:{}/event_source", address.ws_host(), address.events_port);
   const auto check = [&](int rv) {
     if (rv != 0) throw std::runtime_error(fmt::format("{}: {}", url, nng_strerror(rv)));
   };

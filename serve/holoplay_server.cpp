@@ -56,13 +56,13 @@ void HoloPlayServer::on_pipe(nng_pipe pipe, nng_pipe_ev event, void* arg) {
 }
 
 void HoloPlayServer::start(const ListenAddress& address) {
-  const std::string url = fmt::format("ws://{}:{}/driver", address.url_host(), address.holoplay_port);
   check(nng_rep0_open(&socket_), "holoplay: REP socket");
   open_ = true;
-  check(nng_socket_set_size(socket_, NNG_OPT_RECVMAXSZ, limits_.max_message_bytes), url);
-  check(nng_socket_set_ms(socket_, NNG_OPT_SENDTIMEO, limits_.io_timeout_s * 1000), url);
+  check(nng_socket_set_size(socket_, NNG_OPT_RECVMAXSZ, limits_.max_message_bytes), "holoplay: REP socket");
+  check(nng_socket_set_ms(socket_, NNG_OPT_SENDTIMEO, limits_.io_timeout_s * 1000), "holoplay: REP socket");
   nng_pipe_notify(socket_, NNG_PIPE_EV_ADD_PRE, &HoloPlayServer::on_pipe, this);
   nng_pipe_notify(socket_, NNG_PIPE_EV_REM_POST, &HoloPlayServer::on_pipe, this);
+  const std::string url = fmt::format("ws://{}:{}/driver", address.ws_host(), address.holoplay_port);
   nng_listener listener;
   check(nng_listener_create(&listener, socket_, url.c_str()), url);
   check(nng_listener_set_size(listener, NNG_OPT_RECVMAXSZ, limits_.max_message_bytes), url);

@@ -33,3 +33,30 @@ ServedDisplay served_display_from_file(int index, const std::filesystem::path& f
 }
 
 }  // namespace lfd::serve
+
+namespace lfd::serve {
+
+std::vector<ServedDisplay> served_displays(const std::vector<std::filesystem::path>& files,
+                                           const std::vector<display::Calibration>& devices) {
+  std::vector<ServedDisplay> from_files;
+  for (const auto& f : files) from_files.push_back(served_display_from_file(0, f));
+  std::vector<bool> used(from_files.size(), false);
+  std::vector<ServedDisplay> out;
+  for (const display::Calibration& device : devices) {
+    bool replaced = false;
+    for (std::size_t i = 0; i < from_files.size() && !replaced; ++i) {
+      if (used[i] || device.display.serial.empty() ||
+          from_files[i].calibration.display.serial != device.display.serial)
+        continue;
+      used[i] = replaced = true;
+      out.push_back(from_files[i]);
+    }
+    if (!replaced) out.push_back(served_display_from(0, device, "device " + device.display.serial, false));
+  }
+  for (std::size_t i = 0; i < from_files.size(); ++i)
+    if (!used[i]) out.push_back(from_files[i]);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i].index = static_cast<int>(i);
+  return out;
+}
+
+}  // namespace lfd::serve

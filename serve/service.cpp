@@ -33,9 +33,12 @@ Service::Service(DisplayService& displays, ServeOptions options)
 Service::~Service() { stop(); }
 
 void Service::start() {
+  // bridge.js's "New Item Playing" handler reads payload.value.playlist_name and .index.
   displays_.set_event_listener([this](const PlaybackEvent& e) {
-    nlohmann::json fields = {{"head_index", wrapped("head_index", "UNSIGNED_INT", std::max(e.head_index, 0))}};
-    if (!e.playlist.empty()) fields["name"] = wstring("name", e.playlist);
+    const int index = std::max(e.head_index, 0);
+    nlohmann::json fields = {{"head_index", wrapped("head_index", "UNSIGNED_INT", index)},
+                             {"index", wrapped("index", "UNSIGNED_INT", index)},
+                             {"playlist_name", wstring("playlist_name", e.playlist)}};
     hub_.publish(bridge_event(e.name, "", std::move(fields)).dump());
   });
   holoplay_server_.start(options_.listen);
@@ -53,9 +56,9 @@ void Service::stop() {
 std::vector<std::string> Service::describe() const {
   const ListenAddress& a = options_.listen;
   std::vector<std::string> lines = {
-      fmt::format("HoloPlay Service protocol  ws://{}:{}/driver", a.url_host(), a.holoplay_port),
+      fmt::format("HoloPlay Service protocol  ws://{}:{}/driver", a.ws_host(), a.holoplay_port),
       fmt::format("Bridge HTTP API            http://{}:{}/", a.url_host(), a.bridge_port),
-      fmt::format("Bridge events              ws://{}:{}/event_source", a.url_host(), a.events_port),
+      fmt::format("Bridge events              ws://{}:{}/event_source", a.ws_host(), a.events_port),
       a.is_loopback() ? std::string("listening on loopback only: other machines cannot reach it")
                       : fmt::format("listening on {}: OTHER MACHINES CAN REACH IT (--listen)", a.host)};
   std::string origins = "web pages allowed: loopback (localhost, 127.0.0.1, [::1]) and file://";

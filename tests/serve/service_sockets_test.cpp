@@ -50,7 +50,7 @@ struct ServiceSocketsTest : ::testing::Test {
     nng_socket_set_ms(s, NNG_OPT_RECVTIMEO, 1500);
     nng_socket_set_ms(s, NNG_OPT_SENDTIMEO, 1500);
     nng_dialer d;
-    const std::string url = "ws://127.0.0.1:" + std::to_string(options.listen.holoplay_port) + "/driver";
+    const std::string url = "ws://localhost:" + std::to_string(options.listen.holoplay_port) + "/driver";
     EXPECT_EQ(nng_dialer_create(&d, s, url.c_str()), 0);
     if (!origin.empty()) nng_dialer_set_string(d, NNG_OPT_WS_REQUEST_HEADERS, ("Origin: " + origin + "\r\n").c_str());
     std::optional<json> reply;
@@ -114,7 +114,7 @@ TEST_F(ServiceSocketsTest, BridgeRefusesAnOversizedBody) {
 
 TEST_F(ServiceSocketsTest, EventsReachAWebSocketClient) {
   nng_stream_dialer* d = nullptr;
-  const std::string url = "ws://127.0.0.1:" + std::to_string(options.listen.events_port) + "/event_source";
+  const std::string url = "ws://localhost:" + std::to_string(options.listen.events_port) + "/event_source";
   ASSERT_EQ(nng_stream_dialer_alloc(&d, url.c_str()), 0);
   nng_stream_dialer_set_bool(d, NNG_OPT_WS_RECV_TEXT, true);
   nng_stream_dialer_set_bool(d, NNG_OPT_WS_SEND_TEXT, true);

@@ -1,0 +1,444 @@
+#include "play/player.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <mutex>
+
+#include <epoxy/gl.h>  // before GLFW, which would include GL/gl.h
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include "display/lens_model.hpp"
+#include "gpu/gl_interlacer.hpp"
+#include "gpu/glfw_session.hpp"
+#include "play/entry_content.hpp"
+#include "play/player_keys.hpp"
+#include "play/quilt_texture.hpp"
+#include "util/error.hpp"
+#include "viewer/display_window.hpp"
+
+namespace lfd::play {
+
+const char* playback_event_name(PlaybackEventKind kind) {
+  switch (kind) {
+    case PlaybackEventKind::kEntryStarted: return "entry_started";
+    case PlaybackEventKind::kEntryEnded: return "entry_ended";
+    case PlaybackEventKind::kEntrySkipped: return "entry_skipped";
+    case PlaybackEventKind::kPaused: return "paused";
+    case PlaybackEventKind::kResumed: return "resumed";
+    case PlaybackEventKind::kSeeked: return "seeked";
+    case PlaybackEventKind::kLoopRestarted: return "loop_restarted";
+    case PlaybackEventKind::kPlaylistEnded: return "playlist_ended";
+    case PlaybackEventKind::kQuit: return "quit";
+  }
+  return "?";
+}
+
+namespace {
+
+bool same_layout(const render::QuiltLayout& a, const render::QuiltLayout& b) {
+  return a.cols == b.cols && a.rows == b.rows && a.views == b.views && a.aspect == b.aspect && a.width == b.width &&
+         a.height == b.height;
+}
+
+// The display's monitor, or none: the simulated-display window (as `lfd view` chooses).
+GLFWmonitor* find_monitor(const gpu::GlfwSession& session, const PlayerOptions& options) {
+  if (options.simulated_display) return nullptr;
+  const auto& d = options.calibration.display;
+  try {
+    return session.find_display_monitor(options.monitor_prefix, d.screen_w, d.screen_h);
+  } catch (const InputError& e) {
+    std::cerr << fmt::format("notice: no monitor for the display ({}); showing a simulated display in a window\n",
+                             e.what());
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+// Everything below runs on the GL thread except enqueue, publish's readers and the subscriber
+// table (each under its own mutex).
+struct Player::Impl {
+  PlayerOptions options;
+  display::LensModel lens;
+  gpu::GlfwSession session{"lfd play needs a desktop session (X11 or Wayland) to open its window"};
+  std::unique_ptr<viewer::DisplayWindow> window;
+  std::unique_ptr<QuiltTexture> quilt;
+  std::unique_ptr<gpu::GlInterlacer> interlacer;
+  render::QuiltLayout interlacer_layout;
+  std::unique_ptr<gpu::Texture> panel;
+  std::unique_ptr<PlayerKeys> keys;
+
+  std::mutex command_mutex;
+  std::vector<std::function<void(Impl&)>> commands;
+  mutable std::mutex state_mutex;
+  PlayerState published;
+  std::mutex subscriber_mutex;
+  std::map<int, std::function<void(const PlaybackEvent&)>> subscribers;
+  int next_subscriber = 1;
+
+  // Playback (GL thread).
+  std::vector<PlaylistEntry> playlist;
+  int index = -1;
+  std::optional<EntryContent> content;
+  bool has_picture = false;     // the quilt texture holds the entry's picture
+  bool announced = false;       // kEntryStarted sent for the current entry
+  double position = 0;
+  bool playing = true, looping = true, overlay = false, quit = false;
+  int64_t shown = 0, dropped = 0, decoded_closed = 0;
+  int64_t video_index = -1;
+  double video_pts = 0;
+  std::chrono::steady_clock::time_point last_tick{};
+  bool ticking = false;
+
+  explicit Impl(PlayerOptions o)
+      : options(std::move(o)), lens(options.calibration.display, options.calibration.correction) {
+    const auto& d = options.calibration.display;
+    window = std::make_unique<viewer::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h);
+    glfwSetWindowTitle(window->handle(), window->on_display() ? "lfd play" : "lfd play (simulated display)");
+    window->make_current();
+    quilt = std::make_unique<QuiltTexture>();
+    panel = std::make_unique<gpu::Texture>(GL_RGBA8, d.screen_w, d.screen_h);
+    looping = options.loop;
+  }
+
+  ~Impl() {
+    window->make_current();  // GL objects go while their context is current
+    content.reset();
+    interlacer.reset();
+    panel.reset();
+    quilt.reset();
+  }
+
+  void enqueue(std::function<void(Impl&)> command) {
+    std::lock_guard lock(command_mutex);
+    commands.push_back(std::move(command));
+  }
+
+  void drain_commands() {
+    std::vector<std::function<void(Impl&)>> now;
+    {
+      std::lock_guard lock(command_mutex);
+      now.swap(commands);
+    }
+    for (auto& command : now) {
+      try {
+        command(*this);
+      } catch (const InputError& e) {  // a bad quilt handed over: the notice, the old picture stays
+        if (options.print_notices) std::cerr << fmt::format("notice: {}\n", e.what());
+        emit(PlaybackEventKind::kEntrySkipped, e.what());
+      }
+    }
+  }
+
+  std::string entry_name() const { return content ? content->name : std::string(); }
+
+  void emit(PlaybackEventKind kind, const std::string& message = {}, std::string name = {}) {
+    const PlaybackEvent event{kind, index, name.empty() ? entry_name() : std::move(name), position, message};
+    std::vector<std::function<void(const PlaybackEvent&)>> callbacks;
+    {
+      std::lock_guard lock(subscriber_mutex);
+      for (const auto& [id, callback] : subscribers) callbacks.push_back(callback);
+    }
+    for (const auto& callback : callbacks) callback(event);
+  }
+
+  void close_content() {
+    if (content && content->video) decoded_closed += content->video->frames_decoded();
+    content.reset();
+    has_picture = false;
+    announced = false;
+    video_index = -1;
+    video_pts = 0;
+    position = 0;
+  }
+
+  // Starts entry `first`, skipping bad entries (a notice each); the playlist ends when none
+  // opens.
+  void start_entry(int first) {
+    close_content();
+    const int n = int(playlist.size());
+    for (int tried = 0, i = first; tried < n; ++tried, i = (i + 1) % n) {
+      if (i < first && !looping && tried > 0) break;
+      try {
+        content = open_entry(playlist[size_t(i)], double(options.calibration.display.screen_w) /
+                                                      options.calibration.display.screen_h,
+                             options.image_duration_s, {options.hardware_decode, options.decoder_threads});
+        index = i;
+        if (content->video && options.print_notices)
+          std::cerr << fmt::format("{}: {}x{} {} at {:.3g} fps, decoder {}\n", content->name, content->video->info().width,
+                                   content->video->info().height, content->video->info().codec,
+                                   content->video->info().frame_rate, content->video->decode_path());
+        return;
+      } catch (const InputError& e) {
+        index = i;
+        if (options.print_notices) std::cerr << fmt::format("notice: skipped: {}\n", e.what());
+        emit(PlaybackEventKind::kEntrySkipped, e.what(), playlist[size_t(i)].path.filename().string());
+      }
+    }
+    end_playlist();
+  }
+
+  void end_playlist() {
+    close_content();
+    playing = false;
+    emit(PlaybackEventKind::kPlaylistEnded);
+  }
+
+  // The current entry ran its course: the next one, the first again when looping, or the end.
+  void advance() {
+    emit(PlaybackEventKind::kEntryEnded);
+    if (index < 0) {  // a quilt from show_quilt has no successor
+      close_content();
+      return;
+    }
+    const bool last = index + 1 >= int(playlist.size());
+    if (last && !looping) return end_playlist();
+    if (last) emit(PlaybackEventKind::kLoopRestarted);
+    if (last && playlist.size() == 1 && content && content->video) {  // one looping video: rewind it
+      content->video->seek(0);
+      position = 0;
+      return;
+    }
+    start_entry(last ? 0 : index + 1);
+  }
+
+  void go_to(int i) {
+    if (playlist.empty()) return;
+    const int n = int(playlist.size());
+    start_entry(((i % n) + n) % n);
+    playing = true;
+  }
+
+  void seek(double seconds) {
+    if (!content) return;
+    double end = content->duration_s;
+    if (content->video && content->video->info().duration_s > 0)
+      end = end > 0 ? std::min(end, content->video->info().duration_s) : content->video->info().duration_s;
+    position = std::clamp(seconds, 0.0, end > 0 ? end : seconds);
+    if (content->video) content->video->seek(position);
+    emit(PlaybackEventKind::kSeeked);
+  }
+
+  void set_playing(bool on) {
+    if (on == playing) return;
+    playing = on;
+    emit(on ? PlaybackEventKind::kResumed : PlaybackEventKind::kPaused);
+  }
+
+  // The clock: wall time between frames while playing (a stalled frame counts as it took).
+  void tick() {
+    const auto now = std::chrono::steady_clock::now();
+    const double dt = ticking ? std::chrono::duration<double>(now - last_tick).count() : 0.0;
+    last_tick = now;
+    ticking = true;
+    if (playing && content && announced) position += dt;
+  }
+
+  // What is due now goes to the quilt texture; an entry past its end advances.
+  void update_picture() {
+    if (!content) return;
+    if (content->still) {
+      if (!has_picture) quilt->upload(*content->still);
+      has_picture = true;
+      if (content->duration_s > 0 && position >= content->duration_s) advance();
+      return;
+    }
+    VideoStream& video = *content->video;
+    try {
+      if (auto frame = video.frame_due(position, dropped)) {
+        quilt->upload(*frame);
+        has_picture = true;
+        video_index = frame->index;
+        video_pts = frame->pts_s;
+        if (!announced) position = frame->pts_s;  // the clock starts at the first frame shown
+      }
+    } catch (const InputError& e) {
+      if (options.print_notices) std::cerr << fmt::format("notice: skipped the rest: {}\n", e.what());
+      emit(PlaybackEventKind::kEntrySkipped, e.what());
+      return advance();
+    }
+    const bool cut = content->duration_s > 0 && position >= content->duration_s;
+    if (video.finished() || cut) advance();
+  }
+
+  void draw() {
+    window->make_current();
+    if (content && has_picture) {
+      if (!interlacer || !same_layout(interlacer_layout, content->layout)) {
+        interlacer = std::make_unique<gpu::GlInterlacer>(lens, content->layout, options.interlace);
+        interlacer_layout = content->layout;
+      }
+      interlacer->interlace(quilt->quilt(), *panel);
+    } else {
+      const float black[4] = {0, 0, 0, 1};
+      glClearTexImage(panel->id(), 0, GL_RGBA, GL_FLOAT, black);
+    }
+    window->draw(*panel);
+    if (overlay) draw_overlay();
+  }
+
+  // On request only (H): a progress bar along the bottom edge of the window.
+  void draw_overlay() {
+    int fb_w = 0, fb_h = 0;
+    glfwGetFramebufferSize(window->handle(), &fb_w, &fb_h);
+    const double end = content ? (content->duration_s > 0 ? content->duration_s
+                                  : content->video ? content->video->info().duration_s : 0)
+                               : 0;
+    const double fraction = end > 0 ? std::clamp(position / end, 0.0, 1.0) : 0.0;
+    const int bar_h = std::max(4, fb_h / 100);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, fb_w, bar_h);
+    glClearColor(0.15f, 0.15f, 0.15f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glScissor(0, 0, int(fb_w * fraction), bar_h);
+    glClearColor(playing ? 0.9f : 0.9f, playing ? 0.9f : 0.6f, playing ? 0.9f : 0.1f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+  }
+
+  Image8 read_back() const {
+    if (window->on_display()) return window->read_back_buffer();
+    return to_uint8(gpu::image_from_texture(*panel));
+  }
+
+  void publish() {
+    PlayerState s;
+    s.entry_index = index;
+    s.entry_count = int(playlist.size());
+    s.entry_name = entry_name();
+    s.is_video = content && content->video;
+    s.position_s = position;
+    s.duration_s = content ? content->duration_s : 0;
+    if (s.is_video) {
+      const media::VideoInfo& info = content->video->info();
+      if (s.duration_s <= 0) s.duration_s = info.duration_s;
+      s.frame_rate = info.frame_rate;
+      s.decode_path = content->video->decode_path();
+    }
+    s.playing = playing;
+    s.looping = looping;
+    s.frames_shown = shown;
+    s.frames_decoded = decoded_closed + (s.is_video ? content->video->frames_decoded() : 0);
+    s.frames_dropped = dropped;
+    s.video_frame_index = video_index;
+    s.video_frame_pts_s = video_pts;
+    s.on_display = window->on_display();
+    s.quit = quit;
+    std::lock_guard lock(state_mutex);
+    published = std::move(s);
+  }
+
+  bool frame(Image8* capture) {
+    glfwPollEvents();
+    if (window->should_close() && !quit) {
+      quit = true;
+      emit(PlaybackEventKind::kQuit);
+    }
+    drain_commands();
+    if (quit) {
+      publish();
+      return false;
+    }
+    tick();
+    update_picture();
+    draw();
+    if (capture) *capture = read_back();
+    window->swap();
+    ++shown;
+    if (content && has_picture && !announced) {
+      announced = true;
+      emit(PlaybackEventKind::kEntryStarted);
+    }
+    publish();
+    return true;
+  }
+};
+
+Player::Player(PlayerOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {
+  impl_->keys = install_player_keys(*this, impl_->window->handle());
+  impl_->publish();
+}
+
+Player::~Player() = default;
+
+void Player::show_quilt(QuiltPicture picture) {
+  auto shared = std::make_shared<QuiltPicture>(std::move(picture));
+  impl_->enqueue([shared](Impl& p) {
+    shared->layout.check(shared->name);
+    if (shared->layout.width != shared->pixels.width || shared->layout.height != shared->pixels.height ||
+        shared->pixels.channels != 3)
+      throw_input_error("{}: the layout says {}x{} but the picture is {}x{}x{}", shared->name, shared->layout.width,
+                        shared->layout.height, shared->pixels.width, shared->pixels.height, shared->pixels.channels);
+    p.close_content();
+    p.playlist.clear();
+    p.index = -1;
+    EntryContent content;
+    content.name = shared->name;
+    content.layout = shared->layout;
+    content.still = std::move(shared->pixels);
+    p.content = std::move(content);
+    p.playing = true;
+  });
+}
+
+void Player::set_playlist(std::vector<PlaylistEntry> entries, int start) {
+  auto shared = std::make_shared<std::vector<PlaylistEntry>>(std::move(entries));
+  impl_->enqueue([shared, start](Impl& p) {
+    p.close_content();
+    p.playlist = std::move(*shared);
+    p.index = -1;
+    if (!p.playlist.empty()) p.go_to(start);
+  });
+}
+
+void Player::play() { impl_->enqueue([](Impl& p) { p.set_playing(true); }); }
+void Player::pause() { impl_->enqueue([](Impl& p) { p.set_playing(false); }); }
+void Player::toggle_pause() { impl_->enqueue([](Impl& p) { p.set_playing(!p.playing); }); }
+void Player::next() { impl_->enqueue([](Impl& p) { p.go_to(p.index + 1); }); }
+void Player::previous() { impl_->enqueue([](Impl& p) { p.go_to(p.index - 1); }); }
+void Player::go_to(int entry_index) { impl_->enqueue([entry_index](Impl& p) { p.go_to(entry_index); }); }
+void Player::seek(double seconds) { impl_->enqueue([seconds](Impl& p) { p.seek(seconds); }); }
+void Player::seek_by(double seconds) { impl_->enqueue([seconds](Impl& p) { p.seek(p.position + seconds); }); }
+void Player::set_loop(bool loop) { impl_->enqueue([loop](Impl& p) { p.looping = loop; }); }
+void Player::set_overlay(bool visible) { impl_->enqueue([visible](Impl& p) { p.overlay = visible; }); }
+void Player::quit() {
+  impl_->enqueue([](Impl& p) {
+    if (p.quit) return;
+    p.quit = true;
+    p.emit(PlaybackEventKind::kQuit);
+  });
+}
+
+PlayerState Player::state() const {
+  std::lock_guard lock(impl_->state_mutex);
+  return impl_->published;
+}
+
+int Player::subscribe(std::function<void(const PlaybackEvent&)> callback) {
+  std::lock_guard lock(impl_->subscriber_mutex);
+  const int id = impl_->next_subscriber++;
+  impl_->subscribers[id] = std::move(callback);
+  return id;
+}
+
+void Player::unsubscribe(int id) {
+  std::lock_guard lock(impl_->subscriber_mutex);
+  impl_->subscribers.erase(id);
+}
+
+bool Player::run_frame() { return impl_->frame(nullptr); }
+
+int64_t Player::run(int64_t max_frames, Image8* last_frame) {
+  int64_t frames = 0;
+  while (max_frames <= 0 || frames < max_frames) {
+    const bool last = max_frames > 0 && frames + 1 == max_frames;
+    if (!impl_->frame(last ? last_frame : nullptr)) break;
+    ++frames;
+  }
+  return frames;
+}
+
+}  // namespace lfd::play

@@ -1,0 +1,164 @@
+#pragma once
+// `lfd play`'s engine (docs/play.md): a Player bound to one display (its calibration, the lens
+// model, and one window: full screen on the display's monitor, or the simulated-display window
+// of `lfd view` when the monitor is absent) that shows quilts decoded in memory and plays
+// playlists of quilt images and quilt videos, interlaced on the GPU by gpu::GlInterlacer.
+//
+// Threads. GLFW and GL live on the thread that built the Player (the program's main thread):
+// construct it there and call run() / run_frame() / read_back_panel() there only. Every other
+// public member function is THREAD-SAFE: the transport and content commands (show_quilt,
+// set_playlist, play, pause, next, seek, ...) only append to a command queue under a mutex; the
+// GL thread drains that queue at the start of each frame, in the order the commands came, so a
+// network thread (`lfd serve`) may call them at any time; state() returns a copy taken under the
+// same mutex, updated once per frame. Event callbacks (subscribe) run on the GL thread, between
+// frames: they must not block, and must not call run_frame(); calling the thread-safe commands
+// from them is allowed (they take effect the next frame).
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "display/calibration_file.hpp"
+#include "interlace/interlacer.hpp"
+#include "interlace/quilt_file.hpp"
+#include "render/quilt_layout.hpp"
+#include "util/image.hpp"
+
+namespace lfd::play {
+
+// One playlist entry: a quilt image or a quilt video on disk.
+struct PlaylistEntry {
+  std::filesystem::path path;
+  // The tiling when the file's `_qsCxRaA` name lacks it or is wrong (any field given overrides
+  // the name; without name or override the entry is skipped with a notice).
+  interlace::QuiltOverrides quilt;
+  // How long an image stays (seconds; default PlayerOptions::image_duration_s). For a video:
+  // nullopt plays it to its end; a value cuts it there (or repeats it until then).
+  std::optional<double> duration_s;
+  // RGB-D entries (colour + depth side by side, `--depth-loc` ...) are not wired in yet: the
+  // seam is here (a future `std::optional<rgbd::RgbdOptions> rgbd;`), see docs/play.md.
+};
+
+// A quilt decoded in memory (a caller that received the bytes over the network and decoded
+// them with media::decode_quilt_image, say): 8-bit RGB pixels, rows top-down, and its tiling.
+struct QuiltPicture {
+  Image8 pixels;              // 3 channels, row 0 = top (as on disk)
+  render::QuiltLayout layout;  // width/height must equal pixels' size
+  std::string name;           // for state and messages
+};
+
+enum class PlaybackEventKind {
+  kEntryStarted,   // a playlist entry (or a shown quilt) is on screen: its first frame was shown
+  kEntryEnded,     // an entry ran its duration / its video ended
+  kEntrySkipped,   // a bad entry (message says why), skipped
+  kPaused,
+  kResumed,
+  kSeeked,
+  kLoopRestarted,  // the playlist (or a looping video) started again
+  kPlaylistEnded,  // the last entry ended and looping is off: the player shows black
+  kQuit,           // the window closed, Esc/Q, or quit() was called
+};
+const char* playback_event_name(PlaybackEventKind kind);
+
+struct PlaybackEvent {
+  PlaybackEventKind kind = PlaybackEventKind::kEntryStarted;
+  int entry_index = -1;     // into the playlist; -1 for a quilt shown with show_quilt
+  std::string entry_name;   // the file name (or QuiltPicture::name)
+  double position_s = 0;    // within the entry
+  std::string message;      // kEntrySkipped: the one-line reason
+};
+
+// A snapshot of the player, taken once per frame on the GL thread.
+struct PlayerState {
+  int entry_index = -1;       // -1: nothing, or a quilt from show_quilt
+  int entry_count = 0;
+  std::string entry_name;
+  bool is_video = false;
+  double position_s = 0;      // within the current entry
+  double duration_s = 0;      // of the current entry (0 unknown)
+  double frame_rate = 0;      // of the current video (0 for images)
+  bool playing = false;       // false while paused or after the playlist ended
+  bool looping = true;
+  int64_t frames_shown = 0;    // swaps of the window since the start
+  int64_t frames_decoded = 0;  // video frames decoded since the start
+  int64_t frames_dropped = 0;  // video frames decoded but never shown (late)
+  int64_t video_frame_index = -1;  // the video frame on screen (decode order from the start or
+                                   // the last seek's keyframe is not used: index = round(pts * fps))
+  double video_frame_pts_s = 0;      // its presentation time
+  std::string decode_path;    // the current video's decoder: "software (N threads)", "VA-API"
+  bool on_display = false;    // full screen on the display's monitor (else a simulated window)
+  bool quit = false;
+};
+
+struct PlayerOptions {
+  display::Calibration calibration;
+  std::string display_name;         // for messages
+  std::string monitor_prefix = "LKG";
+  bool simulated_display = false;   // the window even when the display's monitor is there
+  interlace::InterlaceOptions interlace;
+  bool loop = true;                 // the playlist starts again after its last entry
+  double image_duration_s = 10;     // an image entry's default duration
+  bool hardware_decode = true;      // try VA-API first (software when it is absent or fails)
+  int decoder_threads = 0;          // 0: FFmpeg's choice (one per core)
+  bool print_notices = true;        // skipped entries etc. on stderr
+};
+
+class Player {
+ public:
+  // Opens GLFW and the display window on the calling thread (which must stay the GL thread).
+  // Throws InputError without a desktop session or a usable GL 4.5 context, or for a
+  // calibration that cannot be interlaced.
+  explicit Player(PlayerOptions options);
+  ~Player();
+  Player(const Player&) = delete;
+  Player& operator=(const Player&) = delete;
+
+  // --- thread-safe: queued, applied at the start of the next frame -------------------------
+  // Replaces what is shown by one quilt held in memory (stays until the next command).
+  void show_quilt(QuiltPicture quilt);
+  // Replaces the playlist and starts its entry `start` (bad entries are skipped then).
+  void set_playlist(std::vector<PlaylistEntry> entries, int start = 0);
+  void play();
+  void pause();
+  void toggle_pause();
+  void next();
+  void previous();
+  void go_to(int entry_index);
+  // Within the current entry (clamped to [0, duration]); a video seeks to the frame shown at
+  // that time.
+  void seek(double seconds);
+  // Relative to the current position.
+  void seek_by(double seconds);
+  void set_loop(bool loop);
+  // Shows or hides the notice/help overlay (what the H key does). Off by default: nothing
+  // covers the panel unless asked.
+  void set_overlay(bool visible);
+  void quit();
+
+  // A copy of the state as of the last frame.
+  PlayerState state() const;
+
+  // Callbacks run on the GL thread (see the top of this file). Returns an id for unsubscribe.
+  int subscribe(std::function<void(const PlaybackEvent&)> callback);
+  void unsubscribe(int id);
+
+  // --- GL thread only ----------------------------------------------------------------------
+  // One frame: drains the command queue, handles keys, advances the clock, decodes/uploads
+  // what is due, interlaces, swaps (waits for vsync). Returns false once the player quits.
+  bool run_frame();
+  // Frames until quit (the window closed, Esc/Q, quit()); `max_frames` > 0 stops after that
+  // many (scripted runs, `lfd play --frames N --screenshot F`, tests). Returns the number of
+  // frames run. With `last_frame`, the last frame is read back before its swap into it: the
+  // window's framebuffer (screenW x screenH RGB, rows top-down) when full screen on the
+  // display, else the interlaced panel texture (the simulated window is scaled).
+  int64_t run(int64_t max_frames = 0, Image8* last_frame = nullptr);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lfd::play

@@ -1,0 +1,73 @@
+#include "play/quilt_texture.hpp"
+
+#include "play/shaders/quilt_convert.frag.glsl.hpp"
+#include "play/shaders/quilt_convert.vert.glsl.hpp"
+
+namespace lfd::play {
+namespace {
+
+// (Re)allocates `texture` when its size or format differs.
+void ensure_texture(gpu::Texture& texture, GLenum format, int width, int height) {
+  if (texture.width() == width && texture.height() == height && texture.internal_format() == format) return;
+  texture = gpu::Texture(format, width, height);
+  texture.set_filter(GL_LINEAR);
+}
+
+void upload_plane(gpu::Texture& texture, GLenum format, GLenum data_format, int width, int height,
+                  const uint8_t* data, int row_length_texels) {
+  ensure_texture(texture, format, width, height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length_texels);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, data_format, GL_UNSIGNED_BYTE, data);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+}
+
+}  // namespace
+
+QuiltTexture::QuiltTexture()
+    : program_("quilt convert", {{GL_VERTEX_SHADER, quilt_convert_vert_glsl},
+                                 {GL_FRAGMENT_SHADER, quilt_convert_frag_glsl}}) {}
+
+void QuiltTexture::ensure_quilt(int width, int height) {
+  if (quilt_.width() == width && quilt_.height() == height) return;
+  quilt_ = gpu::Texture(GL_RGBA8, width, height);
+  quilt_.set_filter(GL_LINEAR);
+  target_.attach(0, quilt_);
+  target_.finish(1);
+}
+
+void QuiltTexture::upload(const Image8& rgb) {
+  upload_plane(planes_[0], GL_RGBA8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
+  ensure_quilt(rgb.width, rgb.height);
+  convert(false, {});
+}
+
+void QuiltTexture::upload(const media::YuvFrame& frame) {
+  for (int p = 0; p < 3; ++p) {
+    const media::YuvPlane& plane = frame.planes[p];
+    upload_plane(planes_[p], GL_R8, GL_RED, plane.width, plane.height, plane.data, plane.stride);
+  }
+  ensure_quilt(frame.width, frame.height);
+  convert(true, media::yuv_to_rgb_coefficients(frame.matrix, frame.range));
+}
+
+void QuiltTexture::convert(bool yuv, const media::YuvToRgb& t) {
+  glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
+  glViewport(0, 0, quilt_.width(), quilt_.height());
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  program_.use();
+  glUniform1i(program_.uniform("u_is_yuv"), yuv ? 1 : 0);
+  if (yuv) {
+    glUniformMatrix3fv(program_.uniform("u_yuv_matrix"), 1, GL_FALSE, t.matrix.data());
+    glUniform3fv(program_.uniform("u_yuv_offset"), 1, t.offset.data());
+  }
+  for (int p = 0; p < (yuv ? 3 : 1); ++p) glBindTextureUnit(GLuint(p), planes_[p].id());
+  glBindVertexArray(triangle_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gpu::check_gl("converting the quilt");
+}
+
+}  // namespace lfd::play
