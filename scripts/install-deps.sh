@@ -22,7 +22,13 @@ PACKAGES=(
   gnuplot-nox
   # Debian packages (scripts/package.sh: cpack computes the Depends with dpkg-shlibdeps)
   dpkg-dev file
+  # lfd serve (docs/serve.md): NNG (HoloPlay WebSocket, events), libcbor, cpp-httplib (Bridge
+  # HTTP API); Chromium for the @lookingglass/webxr page test
+  libnng-dev libcbor-dev libcpp-httplib-dev chromium
 )
+# lfd serve's client tests run the npm clients in Node.js (scripts/install-npm-clients.sh); a
+# machine that already has node (NodeSource's, say) keeps it.
+command -v node >/dev/null || PACKAGES+=(nodejs npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do
