@@ -66,6 +66,8 @@ void HoloPlayServer::start(const ListenAddress& address) {
   nng_listener listener;
   check(nng_listener_create(&listener, socket_, url.c_str()), url);
   check(nng_listener_set_size(listener, NNG_OPT_RECVMAXSZ, limits_.max_message_bytes), url);
+  // Browsers and `ws` send a message as one frame: NNG's 1 MiB frame default would drop quilts.
+  check(nng_listener_set_size(listener, NNG_OPT_WS_RECVMAXFRAME, limits_.max_message_bytes), url);
   check(nng_listener_start(listener, 0), url);
   for (int i = 0; i < limits_.worker_threads; ++i) workers_.emplace_back([this] { work(); });
 }
