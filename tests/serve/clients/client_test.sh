@@ -11,6 +11,9 @@ case "$1" in
   bridge) node bridge_test.js "$CALIBRATION" "$A" "$B" 4 3 0.75 ;;
   cross-origin) node cross_origin_test.js "$A" ;;
   garbage) node garbage_test.js ;;
+  webxr)
+    command -v chromium >/dev/null || { echo "SKIP: Debian's chromium is not installed"; exit 77; }
+    node webxr_test.js "$CALIBRATION" ;;
   screenshot)
     # What the window shows (the Xvfb screen) against `lfd interlace` of the quilt sent.
     node holoplay_core_test.js "$CALIBRATION" "$A" 4 3 0.75 >/dev/null
