@@ -1,6 +1,8 @@
 // Bridge's HTTP API endpoints (docs/serve.md, "Bridge HTTP API").
 #include "serve/bridge_api.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <random>
 
@@ -133,7 +135,7 @@ void BridgeApi::add_handlers() {
                           {"calibration_source", d.calibration_source}});
     return reply("lfd_status", r,
                  wrapped("value", "VARIANT_MAP",
-                         {{"version", lfd::version_info().version}, {"showing", s.showing}, {"playlist", s.playlist},
+                         {{"version", lfd::version_info().version}, {"pid", static_cast<int>(::getpid())}, {"showing", s.showing}, {"playlist", s.playlist},
                           {"index", s.index}, {"entries", s.entries}, {"playing", s.playing},
                           {"displays", displays}}));
   };

@@ -1,6 +1,9 @@
 // The display service on lfd play's Players (docs/serve.md, "The display").
 #include "serve/player_display_service.hpp"
 
+#include <chrono>
+#include <thread>
+
 #include <fmt/format.h>
 
 #include "util/error.hpp"
@@ -36,7 +39,18 @@ void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const Qu
   picture.name = label;
   if (picture.layout.tile_width() < 1 || picture.layout.tile_height() < 1)
     throw_input_error("quilt: {} x {} pixels hold no {} x {} tiles", quilt.width, quilt.height, s.cols, s.rows);
-  player(display).show_quilt(std::move(picture));
+  play::Player& p = player(display);
+  {
+    // Shows faster than the display draws wait for its next frame, up to 100 ms: the Player's
+    // queue, which holds each picture, grows by at most one picture per 100 ms per worker even
+    // when frames stall, and other requests are never held up for longer.
+    std::lock_guard show_lock(show_mutex_);
+    const auto queued_at = last_show_frame_.count(display) ? last_show_frame_[display] : -1;
+    for (int i = 0; i < 50 && p.state().frames_shown <= queued_at; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    p.show_quilt(std::move(picture));
+    last_show_frame_[display] = p.state().frames_shown;
+  }
   std::lock_guard lock(mutex_);
   showing_ = fmt::format("{} ({}x{} tiles, {} views)", label, s.cols, s.rows, s.views);
   if (display == playlist_display_) playlist_.clear();

@@ -4,6 +4,8 @@
 // through each Player's thread-safe command queue; the Players' frames run on the main thread
 // (apps/serve.cpp). What the Player cannot do yet (RGB-D entries, update_current_entry's focus
 // and depthiness, hiding the window) is refused with a message, never pretended (docs/serve.md).
+#include <cstdint>
+#include <map>
 #include <mutex>
 #include <vector>
 
@@ -37,6 +39,8 @@ class PlayerDisplayService : public DisplayService {
   std::vector<ServedDisplay> displays_;
   std::vector<int> subscriptions_;
   mutable std::mutex mutex_;
+  std::mutex show_mutex_;
+  std::map<int, std::int64_t> last_show_frame_;  // frames_shown when a display's last quilt was queued
   std::string playlist_;      // the playlist the first display plays, empty if none
   int playlist_display_ = 0;
   std::string showing_;       // what was last shown through the service
