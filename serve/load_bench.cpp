@@ -143,8 +143,14 @@ void client_loop(const LoadBenchOptions& o, int id, Clock::time_point end, Share
   http.set_read_timeout(o.timeout_ms / 1000, 0);
   http.set_write_timeout(o.timeout_ms / 1000, 0);
   http.set_connection_timeout(o.timeout_ms / 1000, 0);
-  const auto token_reply = http.Put("/enter_orchestration", "{}", "application/json");
-  const std::string token = token_reply ? json::parse(token_reply->body)["payload"]["value"].get<std::string>() : "";
+  // 64 clients connecting at once overflow cpp-httplib's listen backlog (5): ask again, as a
+  // client whose connection was refused would.
+  std::string token;
+  for (int attempt = 0; attempt < 50 && token.empty() && Clock::now() < end; ++attempt) {
+    const auto reply = http.Put("/enter_orchestration", "{}", "application/json");
+    if (reply && reply->status == 200) token = json::parse(reply->body)["payload"]["value"].get<std::string>();
+    else std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
   const json show = {{"cmd", {{"show", {{"source", "bindata"}, {"quilt", {{"type", "image"},
                         {"settings", {{"vx", o.quilt.cols}, {"vy", o.quilt.rows}, {"aspect", o.quilt.aspect}}}}}}}}},
                      {"bin", json::binary(o.quilt_png)}};
