@@ -6,7 +6,7 @@
 
 #include <spdlog/spdlog.h>
 
-#include "serve/quilt_bytes.hpp"
+#include "media/quilt_image.hpp"
 #include "serve/served_display_json.hpp"
 #include "util/error.hpp"
 
@@ -126,7 +126,7 @@ json HoloPlayProtocol::show(const HoloPlayRequest& r) {
   }
   if (source != "bindata") throw_input_error("show: source: {} is neither bindata nor cache", source.substr(0, 64));
   const QuiltSettings settings = holoplay_quilt_settings(quilt.value("settings", json()));
-  const Image8 image = decode_quilt_bytes(r.bin, "show: bin", limits_.max_quilt_side_px);
+  const Image8 image = media::decode_image(r.bin, "show: bin");
   displays_.show_quilt(display, image, settings, "quilt sent by a HoloPlay client");
   return ok();
 }
@@ -138,7 +138,7 @@ json HoloPlayProtocol::cache(const HoloPlayRequest& r) {
   entry.name = quilt_name(quilt);
   entry.settings = holoplay_quilt_settings(quilt.value("settings", json()));
   entry.image = std::make_shared<const Image8>(
-      decode_quilt_bytes(r.bin, "cache: bin", limits_.max_quilt_side_px));
+      media::decode_image(r.bin, "cache: bin"));
   const bool show = r.args.value("show", false);
   if (show) displays_.show_quilt(target_display(r.args), *entry.image, entry.settings, "cached quilt " + entry.name);
   cache_.put(std::move(entry));

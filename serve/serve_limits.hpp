@@ -10,7 +10,6 @@ struct ServeLimits {
   std::size_t max_body_bytes = 1u << 20;      // one Bridge JSON body
   std::size_t max_event_message_bytes = 4096; // what a client may send on the event socket
   std::size_t max_file_bytes = 256u << 20;    // a `uri` read from disk
-  int max_quilt_side_px = 16384;              // a decoded quilt's width or height
   std::size_t max_cache_bytes = 1u << 30;     // decoded quilts kept by `cache`
   int max_cached_quilts = 64;
   int max_playlists = 64;
