@@ -20,5 +20,6 @@ int RunDevice(int argc, char** argv);
 int RunCamera(int argc, char** argv);
 int RunPlay(int argc, char** argv);
 int RunRgbdQuilt(int argc, char** argv);
+int RunServe(int argc, char** argv);
 
 }  // namespace lfd::apps

@@ -48,6 +48,7 @@ const std::vector<Command>& commands() {
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
       {"rgbd-quilt", RunRgbdQuilt, "turn an RGB-D image (colour + depth side by side) into a quilt"},
+      {"serve", RunServe, "serve the display to existing Looking Glass apps (HoloPlay, Bridge)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},

@@ -36,13 +36,18 @@ endif()
 # data/ as it is (display templates, demo scene, calibrations, README), found at run time by
 # util/data_dir.hpp relative to the program; udev rules go where udev reads them.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/ DESTINATION ${CMAKE_INSTALL_DATADIR}/lfd
-  COMPONENT runtime PATTERN udev EXCLUDE)
+  COMPONENT runtime PATTERN udev EXCLUDE PATTERN systemd EXCLUDE)
 file(GLOB _lfd_udev_rules CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/data/udev/*.rules)
 if(_lfd_udev_rules)
   install(FILES ${_lfd_udev_rules} DESTINATION ${LFD_UDEV_RULES_DIR} COMPONENT runtime)
 endif()
 install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE
   DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT runtime)
+# lfd serve's systemd user unit (docs/serve.md), with the installed program's path.
+set(LFD_SYSTEMD_USER_UNIT_DIR "lib/systemd/user" CACHE STRING
+    "where the lfd-serve user unit is installed, relative to the install prefix")
+configure_file(${PROJECT_SOURCE_DIR}/data/systemd/lfd-serve.service.in ${PROJECT_BINARY_DIR}/lfd-serve.service @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/lfd-serve.service DESTINATION ${LFD_SYSTEMD_USER_UNIT_DIR} COMPONENT runtime)
 # Debian's place for the license: /usr/share/doc/<package>/copyright; the notices of the code
 # compiled into the program (Ceres is a static library on Debian; CLI11, nlohmann-json, Eigen).
 install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian/copyright
@@ -168,6 +173,7 @@ set(_lfd_dependency_table
   "^glm::|find_dependency(glm)|libglm-dev"
   "^opencv_|find_dependency(OpenCV 4 COMPONENTS @OPENCV_COMPONENTS@)|libopencv-dev, libopencv-contrib-dev"
   "^TinyGLTF::|find_dependency(TinyGLTF)|libtinygltf-dev"
+  "^nng::|find_dependency(nng)|libnng-dev"
 )
 set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev" "imgui|libimgui-dev"
@@ -176,6 +182,8 @@ set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "libzip|libzip-dev" "libwebp|libwebp-dev")
 list(APPEND _lfd_pkgconfig_packages  # media/ (lfd play)
   "libavformat|libavformat-dev" "libavcodec|libavcodec-dev" "libavutil|libavutil-dev" "libswscale|libswscale-dev")
+list(APPEND _lfd_pkgconfig_packages  # serve/ (lfd serve)
+  "libcbor|libcbor-dev" "cpp-httplib|libcpp-httplib-dev")
 
 set(_lfd_links)
 foreach(t IN LISTS LFD_INSTALLED_LIBRARIES)

@@ -28,7 +28,13 @@ PACKAGES=(
   libzip-dev libwebp-dev libtinygltf-dev
   # lfd play (docs/play.md): FFmpeg's libraries for quilt videos, libwebp for WebP quilts
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
+  # lfd serve (docs/serve.md): NNG (HoloPlay WebSocket, events), libcbor, cpp-httplib (Bridge
+  # HTTP API); Chromium for the @lookingglass/webxr page test
+  libnng-dev libcbor-dev libcpp-httplib-dev chromium
 )
+# lfd serve's client tests run the npm clients in Node.js (scripts/install-npm-clients.sh); a
+# machine that already has node (NodeSource's, say) keeps it.
+command -v node >/dev/null || PACKAGES+=(nodejs npm)
 
 missing=()
 for p in "${PACKAGES[@]}"; do

@@ -4,6 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
+bash scripts/install-npm-clients.sh  # lfd serve's client tests (docs/serve.md)
 bash scripts/build.sh
 cd "${LFD_BUILD_DIR:-build}"
 ctest --output-on-failure --timeout 900 -j "$(nproc)"

@@ -1,0 +1,77 @@
+// Bridge's HTTP API server (docs/serve.md, "Bridge HTTP API").
+#include "serve/bridge_server.hpp"
+
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <httplib.h>
+#include <spdlog/spdlog.h>
+
+#include "serve/bounded_task_queue.hpp"
+#include "serve/bridge_reply.hpp"
+
+namespace lfd::serve {
+
+BridgeServer::BridgeServer(BridgeApi& api, const OriginPolicy& origins, const ServeLimits& limits)
+    : api_(api), origins_(origins), limits_(limits), server_(std::make_unique<httplib::Server>()) {}
+
+BridgeServer::~BridgeServer() { stop(); }
+
+void BridgeServer::add_routes() {
+  auto& s = *server_;
+  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    const std::string origin = req.get_header_value("Origin");
+    const bool host_ok = !check_host_ || OriginPolicy::is_loopback_host(req.get_header_value("Host"));
+    if (origins_.allows(origin) && host_ok) {
+      if (!origin.empty()) {
+        res.set_header("Access-Control-Allow-Origin", origin);
+        res.set_header("Vary", "Origin");
+      }
+      return httplib::Server::HandlerResponse::Unhandled;
+    }
+    ++refused_;
+    spdlog::warn("bridge: refused {} {} ({})", req.method, req.path.substr(0, 64),
+                 host_ok ? "origin " + origin.substr(0, 200) : "host " + req.get_header_value("Host").substr(0, 200));
+    res.status = 403;
+    res.set_content(bridge_reply("refused", "", wstring("value", "origin not allowed"), "Failure").dump(),
+                    "application/json");
+    return httplib::Server::HandlerResponse::Handled;
+  });
+  s.Get("/", [](const httplib::Request&, httplib::Response& res) {
+    res.set_content(R"({"service":"lfd serve"})", "application/json");
+  });
+  s.Options(R"(/.*)", [](const httplib::Request&, httplib::Response& res) {
+    res.set_header("Access-Control-Allow-Methods", "PUT, GET, OPTIONS");
+    res.set_header("Access-Control-Allow-Headers", "Content-Type");
+    res.set_header("Access-Control-Allow-Private-Network", "true");
+    res.status = 204;
+  });
+  s.Put(R"(/([A-Za-z_]{1,64}))", [this](const httplib::Request& req, httplib::Response& res) {
+    const BridgeResponse reply = api_.handle(req.matches[1].str(), req.body);
+    res.status = reply.http_status;
+    res.set_content(reply.body, "application/json");
+  });
+}
+
+void BridgeServer::start(const ListenAddress& address) {
+  check_host_ = address.is_loopback();
+  auto& s = *server_;
+  s.new_task_queue = [this] { return new BoundedTaskQueue(limits_.worker_threads * 4, limits_.max_connections); };
+  s.set_payload_max_length(limits_.max_body_bytes);
+  s.set_read_timeout(limits_.io_timeout_s, 0);
+  s.set_write_timeout(limits_.io_timeout_s, 0);
+  s.set_keep_alive_timeout(2);
+  s.set_keep_alive_max_count(100);
+  add_routes();
+  if (!s.bind_to_port(address.host, address.bridge_port))
+    throw std::runtime_error(fmt::format("http://{}:{}: cannot listen (in use?)", address.url_host(), address.bridge_port));
+  thread_ = std::thread([this] { server_->listen_after_bind(); });
+}
+
+void BridgeServer::stop() {
+  if (!thread_.joinable()) return;
+  server_->stop();
+  thread_.join();
+}
+
+}  // namespace lfd::serve

@@ -1,0 +1,41 @@
+#pragma once
+// Bridge's HTTP API on cpp-httplib, http://host:33334/<endpoint> (docs/serve.md): PUT with a
+// JSON body to BridgeApi; GET / answers that the service runs (bridge.js's status check);
+// OPTIONS answers CORS preflights for allowed origins. Every request first passes the Origin
+// allow-list and, on a loopback listener, the Host check: a refused one gets 403 and reaches no
+// handler. Bodies, timeouts and connections are bounded (ServeLimits).
+#include <atomic>
+#include <memory>
+#include <thread>
+
+#include "serve/bridge_api.hpp"
+#include "serve/listen_address.hpp"
+#include "serve/origin_policy.hpp"
+
+namespace httplib {
+class Server;
+}
+
+namespace lfd::serve {
+
+class BridgeServer {
+ public:
+  BridgeServer(BridgeApi& api, const OriginPolicy& origins, const ServeLimits& limits);
+  ~BridgeServer();
+  void start(const ListenAddress& address);  // throws std::runtime_error naming the address
+  void stop();
+  std::size_t refused_requests() const { return refused_; }
+
+ private:
+  void add_routes();
+
+  BridgeApi& api_;
+  const OriginPolicy& origins_;
+  const ServeLimits& limits_;
+  bool check_host_ = true;
+  std::unique_ptr<httplib::Server> server_;
+  std::thread thread_;
+  std::atomic<std::size_t> refused_{0};
+};
+
+}  // namespace lfd::serve

@@ -1,0 +1,55 @@
+#pragma once
+// The HoloPlay Service commands (reference/looking-glass-services.md; docs/serve.md): one
+// handler per command, from a parsed request to a reply map; `error` 0 is success, which is
+// all holoplay-core looks at (it rejects its promise on anything else).
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "serve/display_service.hpp"
+#include "serve/holoplay_request.hpp"
+#include "serve/quilt_cache.hpp"
+#include "serve/serve_limits.hpp"
+
+namespace lfd::serve {
+
+// The `error` values of a reply.
+enum class HoloPlayError : int {
+  kNone = 0,
+  kBadMessage = 1,      // not CBOR, not the request map, over a limit
+  kUnknownCommand = 2,  // a command the service does not know or implement
+  kBadArgument = 3,     // a field missing or out of range, an image that does not decode
+  kNotFound = 4,        // a cached quilt that is not there
+  kInternal = 5,        // the display failed
+};
+
+inline constexpr const char* kHoloPlayServiceVersion = "1.2.2";  // what `info` reports
+
+class HoloPlayProtocol {
+ public:
+  HoloPlayProtocol(DisplayService& displays, QuiltCache& cache, const ServeLimits& limits);
+  // A reply for any payload; bad input gets an error reply and a log line, never an exception.
+  std::vector<std::uint8_t> handle(std::span<const std::uint8_t> payload);
+  nlohmann::json handle_request(const HoloPlayRequest& request);
+
+ private:
+  nlohmann::json info() const;
+  nlohmann::json show(const HoloPlayRequest& request);
+  nlohmann::json cache(const HoloPlayRequest& request);
+  nlohmann::json check(const HoloPlayRequest& request) const;
+  nlohmann::json erase(const HoloPlayRequest& request);
+  nlohmann::json wipe(const HoloPlayRequest& request);
+  int target_display(const nlohmann::json& args) const;
+  std::string quilt_name(const nlohmann::json& holder) const;
+
+  DisplayService& displays_;
+  QuiltCache& cache_;
+  const ServeLimits& limits_;
+};
+
+nlohmann::json holoplay_error(HoloPlayError error, const std::string& message);
+
+}  // namespace lfd::serve

@@ -1,0 +1,172 @@
+// The display service on lfd play's Players (docs/serve.md, "The display").
+#include "serve/player_display_service.hpp"
+
+#include <chrono>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "util/error.hpp"
+
+namespace lfd::serve {
+
+PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays)
+    : players_(std::move(players)), displays_(std::move(displays)) {
+  for (std::size_t i = 0; i < players_.size(); ++i)
+    subscriptions_.push_back(players_[i]->subscribe(
+        [this, i](const play::PlaybackEvent& e) { on_player_event(static_cast<int>(i), e); }));
+}
+
+PlayerDisplayService::~PlayerDisplayService() {
+  for (std::size_t i = 0; i < players_.size(); ++i) players_[i]->unsubscribe(subscriptions_[i]);
+}
+
+play::Player& PlayerDisplayService::player(int display) const {
+  if (display < 0 || display >= static_cast<int>(players_.size()))
+    throw_input_error("display {}: not served (0..{})", display, players_.size() - 1);
+  return *players_[display];
+}
+
+void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const QuiltSettings& s, const std::string& label) {
+  play::QuiltPicture picture;
+  picture.pixels = quilt;
+  picture.layout.cols = s.cols;
+  picture.layout.rows = s.rows;
+  picture.layout.views = s.views;
+  picture.layout.aspect = s.aspect;
+  picture.layout.width = quilt.width;
+  picture.layout.height = quilt.height;
+  picture.name = label;
+  if (picture.layout.tile_width() < 1 || picture.layout.tile_height() < 1)
+    throw_input_error("quilt: {} x {} pixels hold no {} x {} tiles", quilt.width, quilt.height, s.cols, s.rows);
+  play::Player& p = player(display);
+  {
+    // Shows faster than the display draws wait for its next frame, up to 100 ms: the Player's
+    // queue, which holds each picture, grows by at most one picture per 100 ms per worker even
+    // when frames stall, and other requests are never held up for longer.
+    std::lock_guard show_lock(show_mutex_);
+    const auto queued_at = last_show_frame_.count(display) ? last_show_frame_[display] : -1;
+    for (int i = 0; i < 50 && p.state().frames_shown <= queued_at; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    p.show_quilt(std::move(picture));
+    last_show_frame_[display] = p.state().frames_shown;
+  }
+  std::lock_guard lock(mutex_);
+  showing_ = fmt::format("{} ({}x{} tiles, {} views)", label, s.cols, s.rows, s.views);
+  if (display == playlist_display_) playlist_.clear();
+}
+
+// The idle picture: a black quilt (one tile) in place of whatever was shown.
+void PlayerDisplayService::wipe(int display) {
+  play::QuiltPicture black;
+  black.pixels = Image8(8, 8, 3);
+  black.layout = {1, 1, 1, 1.0, 8, 8};
+  black.name = "nothing (wiped)";
+  player(display).show_quilt(std::move(black));
+  std::lock_guard lock(mutex_);
+  showing_ = "nothing (wiped)";
+  if (display == playlist_display_) playlist_.clear();
+}
+
+void PlayerDisplayService::play_playlist(int display, const Playlist& playlist, int head_index) {
+  std::vector<play::PlaylistEntry> entries;
+  for (const PlaylistEntry& e : playlist.entries) {
+    if (e.rgbd) throw_input_error("playlist {}: RGB-D entries are not played yet (docs/serve.md)", playlist.name);
+    play::PlaylistEntry p;
+    p.path = e.file;
+    p.quilt.cols = e.quilt.cols;
+    p.quilt.rows = e.quilt.rows;
+    p.quilt.views = e.quilt.views;
+    p.quilt.aspect = e.quilt.aspect;
+    if (e.duration_ms > 0) p.duration_s = e.duration_ms / 1000.0;
+    entries.push_back(std::move(p));
+  }
+  if (entries.empty()) throw_input_error("playlist {}: no entries", playlist.name);
+  play::Player& p = player(display);
+  p.set_loop(playlist.loop);
+  p.set_playlist(std::move(entries), std::max(head_index, 0));
+  p.play();
+  std::lock_guard lock(mutex_);
+  playlist_ = playlist.name;
+  playlist_display_ = display;
+  showing_ = "playlist " + playlist.name;
+}
+
+void PlayerDisplayService::stop_playlist(const std::string& name) {
+  int display;
+  {
+    std::lock_guard lock(mutex_);
+    if (playlist_ != name) return;
+    display = playlist_display_;
+  }
+  wipe(display);
+}
+
+void PlayerDisplayService::transport(Transport command, int index) {
+  int display;
+  {
+    std::lock_guard lock(mutex_);
+    display = playlist_display_;
+  }
+  play::Player& p = player(display);
+  switch (command) {
+    case Transport::kPlay: return p.play();
+    case Transport::kPause: return p.pause();
+    case Transport::kNext: return p.next();
+    case Transport::kPrevious: return p.previous();
+    case Transport::kSeekToIndex: return p.go_to(index);
+  }
+}
+
+void PlayerDisplayService::update_current_entry(const std::string& parameter, double) {
+  throw_input_error("update_current_entry: {} is not adjustable by lfd play's player yet (docs/serve.md)", parameter);
+}
+
+void PlayerDisplayService::show_window(bool show) {
+  if (!show) throw_input_error("show_window: the display's window stays open while lfd serve runs (docs/serve.md)");
+}
+
+PlaybackState PlayerDisplayService::state() const {
+  PlaybackState s;
+  int display;
+  {
+    std::lock_guard lock(mutex_);
+    s.showing = showing_.empty() ? "nothing yet" : showing_;
+    s.playlist = playlist_;
+    display = playlist_display_;
+  }
+  const play::PlayerState p = player(display).state();
+  s.index = p.entry_index;
+  s.entries = p.entry_count;
+  s.playing = p.playing;
+  if (!p.entry_name.empty() && !s.playlist.empty()) s.showing += ": " + p.entry_name;
+  return s;
+}
+
+void PlayerDisplayService::set_event_listener(std::function<void(const PlaybackEvent&)> listener) {
+  std::lock_guard lock(mutex_);
+  listener_ = std::move(listener);
+}
+
+// The Player's events under Bridge's names (bridge.js's event list); the transport events come
+// from the Bridge calls themselves (bridge_api.cpp), so the player's paused/resumed are not sent
+// twice.
+void PlayerDisplayService::on_player_event(int display, const play::PlaybackEvent& e) {
+  std::string name;
+  switch (e.kind) {
+    case play::PlaybackEventKind::kEntryStarted: name = "New Item Playing"; break;
+    case play::PlaybackEventKind::kPlaylistEnded: name = "Sync/Play Playlist Complete"; break;
+    case play::PlaybackEventKind::kEntrySkipped: name = "lfd Entry Skipped"; break;
+    default: return;
+  }
+  std::function<void(const PlaybackEvent&)> listener;
+  PlaybackEvent out{name, "", e.entry_index};
+  {
+    std::lock_guard lock(mutex_);
+    listener = listener_;
+    if (display == playlist_display_) out.playlist = playlist_;
+  }
+  if (listener) listener(out);
+}
+
+}  // namespace lfd::serve

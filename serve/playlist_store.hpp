@@ -1,0 +1,38 @@
+#pragma once
+// Bridge's playlists, by name, under the count limits, kept in a state file written atomically
+// (util/atomic_file.hpp) after every change and read back at start, so `lfd serve` restarted by
+// systemd knows them again. The file's path comes from the service's options, never from a
+// request. Thread-safe.
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <map>
+
+#include "serve/display_service.hpp"
+#include "serve/serve_limits.hpp"
+
+namespace lfd::serve {
+
+class PlaylistStore {
+ public:
+  // `state_file` empty: in memory only.
+  PlaylistStore(std::filesystem::path state_file, const ServeLimits& limits);
+  void instance(const std::string& name, bool loop);  // a new, empty playlist (replaces)
+  // Inserts at `index` (or appends when index < 0 or past the end). Throws InputError.
+  void insert(const std::string& name, int index, PlaylistEntry entry);
+  bool erase(const std::string& name);
+  std::optional<Playlist> get(const std::string& name) const;
+  std::size_t size() const;
+
+ private:
+  void save_locked() const;
+  void load();
+
+  std::filesystem::path file_;
+  const ServeLimits& limits_;
+  mutable std::mutex mutex_;
+  std::map<std::string, Playlist> playlists_;
+};
+
+}  // namespace lfd::serve

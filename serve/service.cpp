@@ -1,0 +1,77 @@
+// The service: three endpoints over one display service (docs/serve.md).
+#include "serve/service.hpp"
+
+#include <cstdlib>
+
+#include <fmt/format.h>
+#include <spdlog/spdlog.h>
+
+#include "serve/bridge_reply.hpp"
+
+namespace lfd::serve {
+
+std::filesystem::path default_state_file() {
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state)
+    return std::filesystem::path(state) / "lfd" / "serve-playlists.json";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".local" / "state" / "lfd" / "serve-playlists.json";
+  return {};
+}
+
+Service::Service(DisplayService& displays, ServeOptions options)
+    : displays_(displays),
+      options_(std::move(options)),
+      origins_(options_.allowed_origins),
+      cache_(options_.limits.max_cache_bytes, options_.limits.max_cached_quilts),
+      playlists_(options_.state_file, options_.limits),
+      holoplay_(displays_, cache_, options_.limits),
+      bridge_(displays_, playlists_, hub_, options_.limits),
+      holoplay_server_(holoplay_, origins_, options_.limits),
+      bridge_server_(bridge_, origins_, options_.limits),
+      event_server_(hub_, origins_, options_.limits) {}
+
+Service::~Service() { stop(); }
+
+void Service::start() {
+  // bridge.js's "New Item Playing" handler reads payload.value.playlist_name and .index.
+  displays_.set_event_listener([this](const PlaybackEvent& e) {
+    const int index = std::max(e.head_index, 0);
+    nlohmann::json fields = {{"head_index", wrapped("head_index", "UNSIGNED_INT", index)},
+                             {"index", wrapped("index", "UNSIGNED_INT", index)},
+                             {"playlist_name", wstring("playlist_name", e.playlist)}};
+    hub_.publish(bridge_event(e.name, "", std::move(fields)).dump());
+  });
+  holoplay_server_.start(options_.listen);
+  bridge_server_.start(options_.listen);
+  event_server_.start(options_.listen);
+}
+
+void Service::stop() {
+  displays_.set_event_listener({});
+  event_server_.stop();
+  bridge_server_.stop();
+  holoplay_server_.stop();
+}
+
+std::vector<std::string> Service::describe() const {
+  const ListenAddress& a = options_.listen;
+  std::vector<std::string> lines = {
+      fmt::format("HoloPlay Service protocol  ws://{}:{}/driver", a.ws_host(), a.holoplay_port),
+      fmt::format("Bridge HTTP API            http://{}:{}/", a.url_host(), a.bridge_port),
+      fmt::format("Bridge events              ws://{}:{}/event_source", a.ws_host(), a.events_port),
+      a.is_loopback() ? std::string("listening on loopback only: other machines cannot reach it")
+                      : fmt::format("listening on {}: OTHER MACHINES CAN REACH IT (--listen)", a.host)};
+  std::string origins = "web pages allowed: loopback (localhost, 127.0.0.1, [::1]) and file://";
+  for (const auto& o : origins_.extra_origins()) origins += ", " + o;
+  lines.push_back(origins + "; every other Origin is refused");
+  lines.push_back(options_.state_file.empty() ? std::string("playlists kept in memory only")
+                                              : "playlists kept in " + options_.state_file.string());
+  return lines;
+}
+
+std::size_t Service::refused() const {
+  return holoplay_server_.refused_connections() + bridge_server_.refused_requests() +
+         event_server_.refused_connections();
+}
+
+}  // namespace lfd::serve

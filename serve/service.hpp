@@ -1,0 +1,57 @@
+#pragma once
+// The whole service (docs/serve.md): the HoloPlay endpoint, Bridge's HTTP API and its event
+// socket over one DisplayService, with one Origin policy and one set of limits.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "serve/bridge_api.hpp"
+#include "serve/bridge_server.hpp"
+#include "serve/event_hub.hpp"
+#include "serve/event_server.hpp"
+#include "serve/holoplay_protocol.hpp"
+#include "serve/holoplay_server.hpp"
+#include "serve/listen_address.hpp"
+#include "serve/origin_policy.hpp"
+#include "serve/playlist_store.hpp"
+#include "serve/quilt_cache.hpp"
+
+namespace lfd::serve {
+
+struct ServeOptions {
+  ListenAddress listen;
+  std::vector<std::string> allowed_origins;  // --allow-origin
+  std::filesystem::path state_file;          // playlists; empty: in memory only
+  ServeLimits limits;
+};
+
+// $XDG_STATE_HOME/lfd/serve-playlists.json (or ~/.local/state/...); empty when neither is set.
+std::filesystem::path default_state_file();
+
+class Service {
+ public:
+  Service(DisplayService& displays, ServeOptions options);
+  ~Service();
+  void start();  // throws std::runtime_error naming the address it cannot listen on
+  void stop();
+  // What it listens on and who may talk to it, one line each (printed at start).
+  std::vector<std::string> describe() const;
+  EventHub& events() { return hub_; }
+  std::size_t refused() const;
+
+ private:
+  DisplayService& displays_;
+  ServeOptions options_;
+  OriginPolicy origins_;
+  QuiltCache cache_;
+  PlaylistStore playlists_;
+  EventHub hub_;
+  HoloPlayProtocol holoplay_;
+  BridgeApi bridge_;
+  HoloPlayServer holoplay_server_;
+  BridgeServer bridge_server_;
+  EventServer event_server_;
+};
+
+}  // namespace lfd::serve
