@@ -3,6 +3,7 @@
 // row once for them all.
 #include "interlace/direct_panel.hpp"
 
+#include <cmath>
 #include <vector>
 
 #include "interlace/interlacer.hpp"
@@ -22,6 +23,8 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
   ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
   const render::PlaneRays rays(planes, geometry, ref, options.filter, options.background);
   const double view_aspect = double(geometry.base.width) / double(geometry.base.height);
+  // Fractions lie in [0, 1]: offsets within the cone's edges s = +-1/2.
+  const float max_abs_dx = std::abs(geometry.view_offset_at(0.5f));
 #pragma omp parallel
   {
     std::vector<render::PlaneRay> row_rays;
@@ -45,7 +48,7 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
       if (row_rays.empty()) continue;
       // Base-camera NDC of the view row, top-down as the planes' rows ((2 y + 1) / H - 1 at tile
       // row y, v = 1 - (y + 1/2) / H).
-      rays.composite_row(float(1.0 - 2.0 * tile_v), row_rays, values);
+      rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values);
       const double gain = fringe_gain(cal, row);
       for (size_t i = 0; i < row_rays.size(); ++i) panel.at(row_x[i], row, row_rays[i].channel) = float(values[i] * gain);
     }

@@ -1,6 +1,7 @@
-// Single rays through the sweeping planes (render/plane_rays.hpp). Per row the plane rows each
-// plane is read at and their non-empty column span are found once; per ray only the column and
-// the blend remain, and a plane whose span the ray's sample cannot touch is skipped as empty.
+// Single rays through the sweeping planes (render/plane_rays.hpp). A row of rays goes through
+// the planes front to back as the swizzle's rows do: per plane the plane row it reads and that
+// row's non-empty columns once, then only the rays whose sample can reach those columns (a
+// window of the u-sorted rays), each stopping below the swizzle's transmittance.
 #include "render/plane_rays.hpp"
 
 #include <algorithm>
@@ -21,14 +22,6 @@ struct U8Texels {
 struct F32Texels {
   const float* data;
   float at(size_t texel, int ch) const { return data[texel * 4 + size_t(ch)]; }
-};
-
-// Where one row of rays reads plane k: rows row0/row1 (equal for nearest), vertical weight,
-// and the columns [first, last] that hold anything in them (first > last: nothing).
-struct PlaneRowSpan {
-  int row0, row1;
-  float fy;
-  int first, last;
 };
 
 // Channel `ch` and transmittance of texel (x, row) of the plane at `base`; outside the plane:
@@ -60,68 +53,79 @@ PlaneRays::PlaneRays(const SweepingPlanes& planes, const QuiltGeometry& geometry
 }
 
 template <typename Texels, bool kBilinear>
-void PlaneRays::composite(const Texels& tex, float v_ndc, const std::vector<PlaneRay>& rays,
+void PlaneRays::composite(const Texels& tex, float v_ndc, float max_abs_dx, const std::vector<PlaneRay>& rays,
                           std::vector<float>& out) const {
   const int wp = planes_.width, hp = planes_.height;
   const size_t plane_texels = size_t(wp) * size_t(hp);
-  std::vector<PlaneRowSpan> spans(size_t(planes_.count));
-  for (int k = 0; k < planes_.count; ++k) {
-    const float py = ((maps_[size_t(k)].scale_y * v_ndc + 1.0f) * float(hp) - 1.0f) * 0.5f;
-    PlaneRowSpan& s = spans[size_t(k)];
-    s.row0 = kBilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
-    s.row1 = kBilinear ? s.row0 + 1 : s.row0;
-    s.fy = py - float(s.row0);
-    s.first = wp;
-    s.last = -1;
-    for (int r : {s.row0, s.row1})
+  const size_t n = rays.size();
+  // Front to back with every ray's transmittance at hand, plane by plane as the swizzle does, so
+  // each plane touches only the rays whose sample can reach its non-empty columns.
+  std::vector<float> colour(n, 0.0f), trans(n, 1.0f);
+  size_t active = n;
+  for (int k = 0; k < planes_.count && active > 0; ++k) {
+    const PlaneMap& m = maps_[size_t(k)];
+    const float py = ((m.scale_y * v_ndc + 1.0f) * float(hp) - 1.0f) * 0.5f;
+    const int row0 = kBilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
+    const int row1 = kBilinear ? row0 + 1 : row0;
+    const float fy = py - float(row0);
+    int first = wp, last = -1;
+    for (int r : {row0, row1})
       if (r >= 0 && r < hp) {
-        s.first = std::min(s.first, planes_.row_first[size_t(k) * size_t(hp) + size_t(r)]);
-        s.last = std::max(s.last, planes_.row_last[size_t(k) * size_t(hp) + size_t(r)]);
+        first = std::min(first, planes_.row_first[size_t(k) * size_t(hp) + size_t(r)]);
+        last = std::max(last, planes_.row_last[size_t(k) * size_t(hp) + size_t(r)]);
       }
-  }
-  out.resize(rays.size());
-  for (size_t i = 0; i < rays.size(); ++i) {
-    const PlaneRay& ray = rays[i];
-    float colour = 0.0f, t = 1.0f;
-    for (int k = 0; k < planes_.count && t >= kMinTransmittance; ++k) {
-      const PlaneRowSpan& s = spans[size_t(k)];
-      const PlaneMap& m = maps_[size_t(k)];
+    if (first > last) continue;
+    // px = ((dx parallax + u scale_x + 1) wp - 1) / 2 must reach [first - 1.5, last + 1.5]:
+    // with |dx| <= max_abs_dx that bounds u, and the rays are sorted by u.
+    const float half_wp = 0.5f * float(wp);
+    const float reach = std::abs(m.parallax) * max_abs_dx;
+    const float ua = ((float(first) - 1.5f + 0.5f) / half_wp - 1.0f - reach) / m.scale_x;
+    const float ub = ((float(last) + 1.5f + 0.5f) / half_wp - 1.0f + reach) / m.scale_x;
+    const float u_lo = std::min(ua, ub) - 1e-4f, u_hi = std::max(ua, ub) + 1e-4f;
+    const auto begin = std::lower_bound(rays.begin(), rays.end(), u_lo,
+                                        [](const PlaneRay& r, float u) { return r.u_ndc < u; });
+    const size_t base = size_t(k) * plane_texels;
+    for (size_t i = size_t(begin - rays.begin()); i < n && rays[i].u_ndc <= u_hi; ++i) {
+      float& t = trans[i];
+      if (t < kMinTransmittance) continue;
+      const PlaneRay& ray = rays[i];
       const float px = ((ray.dx * m.parallax + ray.u_ndc * m.scale_x + 1.0f) * float(wp) - 1.0f) * 0.5f;
-      if (!(px >= float(s.first) - 1.5f && px <= float(s.last) + 1.5f)) continue;  // empty there
-      const size_t base = size_t(k) * plane_texels;
+      if (!(px >= float(first) - 1.5f && px <= float(last) + 1.5f)) continue;  // empty there
       float c, a;
       if constexpr (kBilinear) {
         const int col0 = int(std::floor(px));
         const float fx = px - float(col0);
         float c00, t00, c10, t10, c01, t01, c11, t11;
-        fetch(tex, base, wp, hp, col0, s.row0, ray.channel, c00, t00);
-        fetch(tex, base, wp, hp, col0 + 1, s.row0, ray.channel, c10, t10);
-        fetch(tex, base, wp, hp, col0, s.row1, ray.channel, c01, t01);
-        fetch(tex, base, wp, hp, col0 + 1, s.row1, ray.channel, c11, t11);
-        c = (1.0f - s.fy) * ((1.0f - fx) * c00 + fx * c10) + s.fy * ((1.0f - fx) * c01 + fx * c11);
-        a = (1.0f - s.fy) * ((1.0f - fx) * t00 + fx * t10) + s.fy * ((1.0f - fx) * t01 + fx * t11);
+        fetch(tex, base, wp, hp, col0, row0, ray.channel, c00, t00);
+        fetch(tex, base, wp, hp, col0 + 1, row0, ray.channel, c10, t10);
+        fetch(tex, base, wp, hp, col0, row1, ray.channel, c01, t01);
+        fetch(tex, base, wp, hp, col0 + 1, row1, ray.channel, c11, t11);
+        c = (1.0f - fy) * ((1.0f - fx) * c00 + fx * c10) + fy * ((1.0f - fx) * c01 + fx * c11);
+        a = (1.0f - fy) * ((1.0f - fx) * t00 + fx * t10) + fy * ((1.0f - fx) * t01 + fx * t11);
       } else {
-        fetch(tex, base, wp, hp, int(std::floor(px + 0.5f)), s.row0, ray.channel, c, a);
+        fetch(tex, base, wp, hp, int(std::floor(px + 0.5f)), row0, ray.channel, c, a);
       }
-      colour += t * c;
+      colour[i] += t * c;
       t *= a;
+      if (t < kMinTransmittance) --active;
     }
-    out[i] = colour + t * background_[ray.channel];
   }
+  out.resize(n);
+  for (size_t i = 0; i < n; ++i) out[i] = colour[i] + trans[i] * background_[rays[i].channel];
 }
 
-void PlaneRays::composite_row(float v_ndc_top_down, const std::vector<PlaneRay>& rays,
+void PlaneRays::composite_row(float v_ndc_top_down, float max_abs_dx, const std::vector<PlaneRay>& rays,
                               std::vector<float>& out) const {
   const bool bilinear = filter_ == PlaneFilter::kBilinear;
   if (planes_.precision == PlanePrecision::kU8) {
     U8Texels tex{planes_.texels_u8.data(), {}};
     for (int i = 0; i < 256; ++i) tex.lut[size_t(i)] = float(i) / 255.0f;
-    if (bilinear) composite<U8Texels, true>(tex, v_ndc_top_down, rays, out);
-    else composite<U8Texels, false>(tex, v_ndc_top_down, rays, out);
+    if (bilinear) composite<U8Texels, true>(tex, v_ndc_top_down, max_abs_dx, rays, out);
+    else composite<U8Texels, false>(tex, v_ndc_top_down, max_abs_dx, rays, out);
   } else {
     const F32Texels tex{planes_.texels_f32.data()};
-    if (bilinear) composite<F32Texels, true>(tex, v_ndc_top_down, rays, out);
-    else composite<F32Texels, false>(tex, v_ndc_top_down, rays, out);
+    if (bilinear) composite<F32Texels, true>(tex, v_ndc_top_down, max_abs_dx, rays, out);
+    else composite<F32Texels, false>(tex, v_ndc_top_down, max_abs_dx, rays, out);
   }
 }
 

@@ -18,7 +18,8 @@
 namespace lfd::render {
 
 // One ray of a row: camera offset dx (QuiltGeometry::view_offset_at), horizontal base-camera NDC
-// u, and the colour channel wanted (0 R, 1 G, 2 B).
+// u, and the colour channel wanted (0 R, 1 G, 2 B). A row's rays come in order of u
+// (non-decreasing), which lets a plane skip the rays that cannot reach its non-empty columns.
 struct PlaneRay {
   float dx = 0, u_ndc = 0;
   int channel = 0;
@@ -30,9 +31,11 @@ class PlaneRays {
   PlaneRays(const SweepingPlanes& planes, const QuiltGeometry& geometry, const ReferenceCamera& ref,
             PlaneFilter filter, const glm::vec3& background);
 
+  // The largest |dx| of the rays is `max_abs_dx` (the view cone's edge).
   // The composited channel of every ray of one row of base-camera NDC v_ndc_top_down
   // ((2 y + 1) / H - 1 for view row y, rows top-down as the planes): out[i] for rays[i].
-  void composite_row(float v_ndc_top_down, const std::vector<PlaneRay>& rays, std::vector<float>& out) const;
+  void composite_row(float v_ndc_top_down, float max_abs_dx, const std::vector<PlaneRay>& rays,
+                     std::vector<float>& out) const;
 
  private:
   // Per plane: Eq. (u_prime) as u' = dx parallax + u scale_x, v' = v scale_y.
@@ -40,7 +43,8 @@ class PlaneRays {
     float parallax, scale_x, scale_y;
   };
   template <typename Texels, bool kBilinear>
-  void composite(const Texels& tex, float v_ndc, const std::vector<PlaneRay>& rays, std::vector<float>& out) const;
+  void composite(const Texels& tex, float v_ndc, float max_abs_dx, const std::vector<PlaneRay>& rays,
+                 std::vector<float>& out) const;
 
   const SweepingPlanes& planes_;
   std::vector<PlaneMap> maps_;
