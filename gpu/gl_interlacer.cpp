@@ -32,12 +32,8 @@ GlInterlacer::GlInterlacer(const display::LensModel& lens, const render::QuiltLa
   glProgramUniform1i(p, at("quilt_cols"), layout_.cols);
   glProgramUniform2i(p, at("tile_size"), layout_.tile_width(), layout_.tile_height());
   // Interlacer::sample_for's aspect fit (looking-glass.md 3.8) as a scale of (u - 0.5, v - 0.5).
-  const double display_aspect = double(cal.screen_w) / cal.screen_h;
-  const double quilt_aspect = layout_.aspect;
-  const bool fit_x = (display_aspect >= quilt_aspect && !options.overscan) ||
-                     (display_aspect <= quilt_aspect && options.overscan);
-  glProgramUniform2f(p, at("aspect_scale"), float(fit_x ? display_aspect / quilt_aspect : 1.0),
-                     float(fit_x ? 1.0 : quilt_aspect / display_aspect));
+  const interlace::AspectFit fit = interlace::aspect_fit(cal, layout_.aspect, options.overscan);
+  glProgramUniform2f(p, at("aspect_scale"), float(fit.scale_u), float(fit.scale_v));
   glProgramUniform1i(p, at("invert_views"), options.invert_views ? 1 : 0);
   glProgramUniform1i(p, at("linear_blend"), options.blend == interlace::ViewBlend::kLinear);
   glProgramUniform1f(p, at("fringe"), float(cal.fringe));

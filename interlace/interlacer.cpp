@@ -23,17 +23,16 @@ Interlacer::Interlacer(const display::LensModel& lens, const render::QuiltLayout
   layout_.check("quilt");
 }
 
-TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row) {
-  const auto& cal = lens.calibration();
-  const display::ScreenUV p = lens.pixel_uv(x, row);
+AspectFit aspect_fit(const display::DisplayCalibration& cal, double view_aspect, bool overscan) {
   const double display_aspect = double(cal.screen_w) / cal.screen_h;
   const bool fit_x = (display_aspect >= view_aspect && !overscan) || (display_aspect <= view_aspect && overscan);
-  double nu = p.u - 0.5, nv = p.v - 0.5;
-  if (fit_x)
-    nu *= display_aspect / view_aspect;
-  else
-    nv *= view_aspect / display_aspect;
-  TilePoint t{true, nu + 0.5, nv + 0.5};
+  return fit_x ? AspectFit{display_aspect / view_aspect, 1.0} : AspectFit{1.0, view_aspect / display_aspect};
+}
+
+TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row) {
+  const display::ScreenUV p = lens.pixel_uv(x, row);
+  const AspectFit fit = aspect_fit(lens.calibration(), view_aspect, overscan);
+  TilePoint t{true, (p.u - 0.5) * fit.scale_u + 0.5, (p.v - 0.5) * fit.scale_v + 0.5};
   t.inside = !(t.u < 0 || t.u > 1 || t.v < 0 || t.v > 1);
   return t;
 }

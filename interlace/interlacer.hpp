@@ -41,6 +41,12 @@ struct SubpixelSample {
 // the black bars (the crop under overscan). The lens phase uses the unscaled pixel position;
 // only this lookup is scaled. Interlacer::sample_for and the direct panel pass
 // (interlace/direct_panel.hpp) both call it.
+// The aspect fit as the scale of (u - 1/2, v - 1/2): one of them is 1.
+struct AspectFit {
+  double scale_u = 1, scale_v = 1;
+};
+AspectFit aspect_fit(const display::DisplayCalibration& calibration, double view_aspect, bool overscan);
+
 struct TilePoint {
   bool inside = true;
   double u = 0, v = 0;
