@@ -51,6 +51,12 @@ class GlSweepingPlanes {
                     const render::QuiltLayout& layout, const render::G2lfOptions& options,
                     const glm::vec3& background, const Texture& quilt, bool timed, const char* frame);
 
+  // The same frame with the planes handed to `pass` instead of the swizzle (the direct panel
+  // pass, gpu/gl_direct_panel.hpp: no quilt); its GPU time is the swizzle's.
+  using PlanePass = std::function<void(const GlPlanes&, const render::ReferenceCamera&)>;
+  void render_planes(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
+                     const render::G2lfOptions& options, const PlanePass& pass, bool timed, const char* frame);
+
   GlSweepingPlaneSeconds seconds() const;  // of the last frame, which was timed; waits for the GPU
   const GlPlanes& planes() const { return planes_; }
   size_t bytes() const;  // the plane array and its table
