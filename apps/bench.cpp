@@ -23,6 +23,7 @@ const std::vector<Bench>& benches() {
       {"render", RunBenchRender, "per-view quilts vs G2LF: the paper's Table 1 (--backend cpu)"},
       {"voxels", RunBenchVoxels, "per-view voxel quilts vs V2LF: the paper's Table 1, V2LF half (CPU)"},
       {"gl-vs-cpu", RunBenchGlVsCpu, "GL G2LF against the CPU reference on large scenes (PSNR, times)"},
+      {"direct", RunBenchDirect, "the direct panel pass against swizzle + interlace (times, memory, PSNR)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
       {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},

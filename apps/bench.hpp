@@ -8,6 +8,7 @@ namespace lfd::apps {
 int RunBenchRender(int argc, char** argv);  // apps/bench_render.cpp (also renderer-only)
 int RunBenchVoxels(int argc, char** argv);  // apps/bench_voxels.cpp (also renderer-only)
 int RunBenchGlVsCpu(int argc, char** argv);  // apps/bench_gl_vs_cpu.cpp (also renderer-only)
+int RunBenchDirect(int argc, char** argv);  // apps/bench_direct.cpp (also renderer-only)
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
 int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp
