@@ -51,14 +51,6 @@ gpu::GlDirectPanel& GlRendererBase::direct_pass(const display::LensModel& lens) 
   return *direct_;
 }
 
-gpu::Texture& GlRendererBase::panel_texture() {
-  const GLenum format = options_.gl.quilt_format;
-  if (!panel_.id() || panel_.width() != direct_->panel_width() || panel_.height() != direct_->panel_height() ||
-      panel_.internal_format() != format)
-    panel_ = gpu::Texture(format, direct_->panel_width(), direct_->panel_height());
-  return panel_;
-}
-
 interlace::DirectPanelOptions GlRendererBase::direct_options(const PanelOptions& panel,
                                                              const glm::vec3& background) const {
   interlace::DirectPanelOptions o;
@@ -69,9 +61,21 @@ interlace::DirectPanelOptions GlRendererBase::direct_options(const PanelOptions&
   return o;
 }
 
-void GlRendererBase::finish_panel() {
+QuiltStats GlRendererBase::render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                        const PanelOptions& options) {
+  const GLenum format = options_.gl.quilt_format;
+  const int w = lens.calibration().screen_w, h = lens.calibration().screen_h;
+  if (!panel_.id() || panel_.width() != w || panel_.height() != h || panel_.internal_format() != format)
+    panel_ = gpu::Texture(format, w, h);
+  const QuiltStats stats = render_panel_into(geometry, lens, options, panel_);
   glFinish();  // the frame is complete when the call returns, as render_quilt's
   panel_read_ = false;
+  return stats;
+}
+
+QuiltStats GlRendererBase::render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                             const PanelOptions& options, gpu::Texture&) {
+  return LightFieldRenderer::render_panel(geometry, lens, options);  // the one-line error
 }
 
 const ImageF& GlRendererBase::read_panel() {

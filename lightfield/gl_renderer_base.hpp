@@ -26,6 +26,12 @@ class GlRendererBase : public GlLightFieldRenderer {
   void reset_peak_memory() override { GlDevice::reset_peak_memory(); }
   size_t peak_memory_bytes() const override { return GlDevice::peak_memory_bytes(); }
   GlDevice& gl_device() const override { return *device_; }
+  // render_panel_into the renderer's own panel texture (the quilt's format), then glFinish.
+  QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                          const PanelOptions& options) override;
+  // Per view: InputError (no direct pass).
+  QuiltStats render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                               const PanelOptions& options, gpu::Texture& panel) override;
   // The last direct panel (render_panel of a sweeping-plane renderer), read back.
   const ImageF& read_panel() override;
 
@@ -37,14 +43,9 @@ class GlRendererBase : public GlLightFieldRenderer {
   // Called by set_options after the options changed.
   virtual void options_changed(const RendererOptions& old) {}
   void forget_binding() { bound_generation_ = UINT64_MAX; }
-  // The direct pass for `lens`'s display (made again for another lens) and its panel texture
-  // (the quilt's format: options_.gl.quilt_format), for render_panel.
+  // The direct pass for `lens`'s display (made again for another lens or panel size).
   gpu::GlDirectPanel& direct_pass(const display::LensModel& lens);
-  gpu::Texture& panel_texture();
   interlace::DirectPanelOptions direct_options(const PanelOptions& panel, const glm::vec3& background) const;
-  // After a direct panel frame: waits for the GPU (the call's wall time is the frame) and marks
-  // the read-back stale.
-  void finish_panel();
 
   std::shared_ptr<GlDevice> device_;  // first: the context outlives what derived classes hold
   RendererOptions options_;
