@@ -9,8 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include "tests/apps/run_lfd.hpp"
 #include "tests/test_data.hpp"
+#include "util/atomic_file.hpp"
 #include "util/image.hpp"
 
 namespace lfd {
@@ -76,6 +79,32 @@ TEST(RenderDirectCli, OptionsThatDoNotApplyAreOneLineAndExitTwo) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
   }
   EXPECT_TRUE(fs::is_empty(dir)) << "nothing written";
+}
+
+// `lfd bench direct` on a small run: both sides timed, the quilt's bytes, the three PSNRs against
+// the reference, in the table and the JSON.
+TEST(BenchDirectCli, ATinyRunReportsBothSidesAndTheQuality) {
+  const fs::path dir = test::temp_dir("bench_direct");
+  const std::string json = (dir / "direct.json").string();
+  const auto r = test::run_lfd("bench direct --calibration " + kDisplay +
+                               " --generated 2000 --view-height 64 --chunks 4,8 --runs 1 --warmup 0 "
+                               "--reference-views 8 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("| N_chunk | swizzle [s]"), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(read_text_file(json));
+  ASSERT_EQ(j["tables"].size(), 1u);
+  const auto& rows = j["tables"][0]["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    EXPECT_GT(row["direct_pass_seconds"]["median"].get<double>(), 0.0);
+    EXPECT_GT(row["after_planes_quilt_seconds"]["median"].get<double>(), 0.0);
+    EXPECT_GT(row["quilt_bytes"].get<double>(), 0.0);
+    for (const char* psnr : {"psnr_direct_db", "psnr_quilt_nearest_db", "psnr_quilt_linear_db"})
+      EXPECT_GT(row[psnr].get<double>(), 15.0) << psnr;
+  }
+  const auto bad = test::run_lfd("bench direct --calibration " + kDisplay + " --chunks 0");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("direct benchmark: chunks: 0 is outside"), std::string::npos) << bad.output;
 }
 
 }  // namespace
