@@ -1,7 +1,8 @@
 // Single rays through the sweeping planes (render/plane_rays.hpp). A row of rays goes through
 // the planes front to back as the swizzle's rows do: per plane the plane row it reads and that
-// row's non-empty columns once, then only the rays whose sample can reach those columns (a
-// window of the u-sorted rays), each stopping below the swizzle's transmittance.
+// row's non-empty columns once, then, per bin of camera offsets, only the rays whose sample can
+// reach those columns (a window of the bin's u-sorted rays), each stopping below the swizzle's
+// transmittance.
 #include "render/plane_rays.hpp"
 
 #include <algorithm>
@@ -24,6 +25,12 @@ struct F32Texels {
   float at(size_t texel, int ch) const { return data[texel * 4 + size_t(ch)]; }
 };
 
+// Rays of one row whose offsets lie in [dx_min, dx_max], in order of u.
+struct OffsetBin {
+  float dx_min = 0, dx_max = 0;
+  std::vector<uint32_t> rays;
+};
+
 // Channel `ch` and transmittance of texel (x, row) of the plane at `base`; outside the plane:
 // empty (0, T = 1), as the swizzle's clamp-to-border.
 template <typename Texels>
@@ -36,6 +43,45 @@ inline void fetch(const Texels& tex, size_t base, int w, int h, int x, int row, 
   const size_t texel = base + size_t(row) * size_t(w) + size_t(x);
   c = tex.at(texel, ch);
   t = tex.at(texel, 3);
+}
+
+// Channel `ch` and transmittance of a plane at (px, the rows of py): nearest, or bilinear with
+// the swizzle's weights.
+template <typename Texels, bool kBilinear>
+inline void sample_plane(const Texels& tex, size_t base, int wp, int hp, int row0, int row1, float fy, float px,
+                         int ch, float& c, float& a) {
+  if constexpr (kBilinear) {
+    const int col0 = int(std::floor(px));
+    const float fx = px - float(col0);
+    float c00, t00, c10, t10, c01, t01, c11, t11;
+    fetch(tex, base, wp, hp, col0, row0, ch, c00, t00);
+    fetch(tex, base, wp, hp, col0 + 1, row0, ch, c10, t10);
+    fetch(tex, base, wp, hp, col0, row1, ch, c01, t01);
+    fetch(tex, base, wp, hp, col0 + 1, row1, ch, c11, t11);
+    c = (1.0f - fy) * ((1.0f - fx) * c00 + fx * c10) + fy * ((1.0f - fx) * c01 + fx * c11);
+    a = (1.0f - fy) * ((1.0f - fx) * t00 + fx * t10) + fy * ((1.0f - fx) * t01 + fx * t11);
+  } else {
+    fetch(tex, base, wp, hp, int(std::floor(px + 0.5f)), row0, ch, c, a);
+  }
+}
+
+// The rays binned by their camera offset: a bin's narrow range of dx narrows the window of u from
+// which a plane's non-empty span can be reached (the swizzle's per-view column range, for a
+// continuum of views).
+constexpr int kOffsetBins = 16;
+std::array<OffsetBin, kOffsetBins> bin_by_offset(const std::vector<PlaneRay>& rays, float max_abs_dx) {
+  std::array<OffsetBin, kOffsetBins> bins;
+  for (size_t i = 0; i < rays.size(); ++i) {
+    const float dx = rays[i].dx;
+    const int b =
+        max_abs_dx > 0.0f ? std::clamp(int((dx / max_abs_dx + 1.0f) * 0.5f * kOffsetBins), 0, kOffsetBins - 1) : 0;
+    OffsetBin& bin = bins[size_t(b)];
+    if (bin.rays.empty()) bin.dx_min = bin.dx_max = dx;
+    bin.dx_min = std::min(bin.dx_min, dx);
+    bin.dx_max = std::max(bin.dx_max, dx);
+    bin.rays.push_back(uint32_t(i));
+  }
+  return bins;
 }
 
 }  // namespace
@@ -62,6 +108,7 @@ void PlaneRays::composite(const Texels& tex, float v_ndc, float max_abs_dx, cons
   // each plane touches only the rays whose sample can reach its non-empty columns.
   std::vector<float> colour(n, 0.0f), trans(n, 1.0f);
   size_t active = n;
+  const std::array<OffsetBin, kOffsetBins> bins = bin_by_offset(rays, max_abs_dx);
   for (int k = 0; k < planes_.count && active > 0; ++k) {
     const PlaneMap& m = maps_[size_t(k)];
     const float py = ((m.scale_y * v_ndc + 1.0f) * float(hp) - 1.0f) * 0.5f;
@@ -75,39 +122,32 @@ void PlaneRays::composite(const Texels& tex, float v_ndc, float max_abs_dx, cons
         last = std::max(last, planes_.row_last[size_t(k) * size_t(hp) + size_t(r)]);
       }
     if (first > last) continue;
-    // px = ((dx parallax + u scale_x + 1) wp - 1) / 2 must reach [first - 1.5, last + 1.5]:
-    // with |dx| <= max_abs_dx that bounds u, and the rays are sorted by u.
-    const float half_wp = 0.5f * float(wp);
-    const float reach = std::abs(m.parallax) * max_abs_dx;
-    const float ua = ((float(first) - 1.5f + 0.5f) / half_wp - 1.0f - reach) / m.scale_x;
-    const float ub = ((float(last) + 1.5f + 0.5f) / half_wp - 1.0f + reach) / m.scale_x;
-    const float u_lo = std::min(ua, ub) - 1e-4f, u_hi = std::max(ua, ub) + 1e-4f;
-    const auto begin = std::lower_bound(rays.begin(), rays.end(), u_lo,
-                                        [](const PlaneRay& r, float u) { return r.u_ndc < u; });
+    // px = ((dx parallax + u scale_x + 1) wp - 1) / 2 must reach [first - 1.5, last + 1.5], i.e.
+    // dx parallax + u scale_x in [lo, hi]; per bin of offsets that bounds u, and each bin's rays
+    // are sorted by u.
+    const float lo = (2.0f * (float(first) - 1.5f) + 1.0f) / float(wp) - 1.0f;
+    const float hi = (2.0f * (float(last) + 1.5f) + 1.0f) / float(wp) - 1.0f;
     const size_t base = size_t(k) * plane_texels;
-    for (size_t i = size_t(begin - rays.begin()); i < n && rays[i].u_ndc <= u_hi; ++i) {
-      float& t = trans[i];
-      if (t < kMinTransmittance) continue;
-      const PlaneRay& ray = rays[i];
-      const float px = ((ray.dx * m.parallax + ray.u_ndc * m.scale_x + 1.0f) * float(wp) - 1.0f) * 0.5f;
-      if (!(px >= float(first) - 1.5f && px <= float(last) + 1.5f)) continue;  // empty there
-      float c, a;
-      if constexpr (kBilinear) {
-        const int col0 = int(std::floor(px));
-        const float fx = px - float(col0);
-        float c00, t00, c10, t10, c01, t01, c11, t11;
-        fetch(tex, base, wp, hp, col0, row0, ray.channel, c00, t00);
-        fetch(tex, base, wp, hp, col0 + 1, row0, ray.channel, c10, t10);
-        fetch(tex, base, wp, hp, col0, row1, ray.channel, c01, t01);
-        fetch(tex, base, wp, hp, col0 + 1, row1, ray.channel, c11, t11);
-        c = (1.0f - fy) * ((1.0f - fx) * c00 + fx * c10) + fy * ((1.0f - fx) * c01 + fx * c11);
-        a = (1.0f - fy) * ((1.0f - fx) * t00 + fx * t10) + fy * ((1.0f - fx) * t01 + fx * t11);
-      } else {
-        fetch(tex, base, wp, hp, int(std::floor(px + 0.5f)), row0, ray.channel, c, a);
+    for (const OffsetBin& bin : bins) {
+      if (bin.rays.empty()) continue;
+      const float m0 = std::min(bin.dx_min * m.parallax, bin.dx_max * m.parallax);
+      const float m1 = std::max(bin.dx_min * m.parallax, bin.dx_max * m.parallax);
+      const float ua = (lo - m1) / m.scale_x, ub = (hi - m0) / m.scale_x;
+      const float u_lo = std::min(ua, ub) - 1e-4f, u_hi = std::max(ua, ub) + 1e-4f;
+      const auto begin = std::lower_bound(bin.rays.begin(), bin.rays.end(), u_lo,
+                                          [&](uint32_t r, float u) { return rays[r].u_ndc < u; });
+      for (auto it = begin; it != bin.rays.end() && rays[*it].u_ndc <= u_hi; ++it) {
+        float& t = trans[*it];
+        if (t < kMinTransmittance) continue;
+        const PlaneRay& ray = rays[*it];
+        const float px = ((ray.dx * m.parallax + ray.u_ndc * m.scale_x + 1.0f) * float(wp) - 1.0f) * 0.5f;
+        if (!(px >= float(first) - 1.5f && px <= float(last) + 1.5f)) continue;  // empty there
+        float c, a;
+        sample_plane<Texels, kBilinear>(tex, base, wp, hp, row0, row1, fy, px, ray.channel, c, a);
+        colour[*it] += t * c;
+        t *= a;
+        if (t < kMinTransmittance) --active;
       }
-      colour[i] += t * c;
-      t *= a;
-      if (t < kMinTransmittance) --active;
     }
   }
   out.resize(n);
