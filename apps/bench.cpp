@@ -26,6 +26,7 @@ const std::vector<Bench>& benches() {
       {"gpu-frame", RunBenchGpuFrame, "the GL frame: timers waited for vs read late, swizzle variants"},
       {"play", RunBenchPlay, "quilt video playback: decoded, shown and dropped frames per second (4K)"},
       {"serve", RunBenchServe, "load test of a running lfd serve: many clients at once (docs/serve.md)"},
+      {"direct", RunBenchDirect, "the direct panel pass against swizzle + interlace (times, memory, PSNR)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
       {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},

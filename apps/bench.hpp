@@ -10,6 +10,7 @@ int RunBenchVoxels(int argc, char** argv);  // apps/bench_voxels.cpp (also rende
 int RunBenchGlVsCpu(int argc, char** argv);  // apps/bench_gl_vs_cpu.cpp (also renderer-only)
 int RunBenchGpuFrame(int argc, char** argv);  // apps/bench_gpu_frame.cpp (also renderer-only)
 int RunBenchServe(int argc, char** argv);  // apps/bench_serve.cpp (also renderer-only)
+int RunBenchDirect(int argc, char** argv);  // apps/bench_direct.cpp (also renderer-only)
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
 int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp

@@ -4,9 +4,11 @@
 //   lfd render --scene s.ply --chunks 512 --plane-scale 2 --filter bilinear --out q.png
 //   lfd render --scene s.ply --calibration calibration.json --panel panel.png --out q.png
 //   lfd render --scene s.ply --view 22 --out view.png
+//   lfd render --scene s.ply --calibration visual.json --panel panel.png --direct
 // With --calibration (visual.json or calibration.json) the display chooses the view cone (the
 // measured one if present), the view count (its recommendation unless --views), the tile grid
-// and the view aspect; --panel interlaces the quilt for it in the same run.
+// and the view aspect; --panel interlaces the quilt for it in the same run, or with --direct
+// renders the panel straight from the sweeping planes with no quilt (interlace/direct_panel.hpp).
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -44,6 +46,7 @@ struct RenderFlags {
   std::optional<int> views_opt, cols_opt, rows_opt;
   int view = -1;
   bool overscan = false;
+  bool direct = false;  // --direct: the panel straight from the planes, no quilt
   float orbit_deg = 0.0f, focal_distance = 0.0f;
   std::optional<float> view_cone_opt;
   render::G2lfOptions g2lf;
@@ -116,7 +119,10 @@ void add_camera_display_and_output_options(CLI::App& app, RenderFlags& f) {
   add_backend_option(app, f.backend_name,
                      "cpu (the reference), gl (OpenGL 4.5 through headless EGL; exit 2 without it) or "
                      "auto (gl when a context can be made, else the CPU with a notice)");
-  app.add_option("--out", f.out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix")->required();
+  app.add_option("--out", f.out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix (required unless --direct)");
+  app.add_flag("--direct", f.direct,
+               "G2LF and V2LF: render --panel straight from the sweeping planes, every subpixel at its own "
+               "view angle, with no quilt (needs --calibration or --device and --panel; no --out)");
 }
 
 // The planes' options of the flags (the method, the backend and the background come later).
@@ -130,6 +136,22 @@ lightfield::RendererOptions plane_options(const RenderFlags& f) {
   options.planes.binning = render::parse_chunk_binning(f.binning);
   options.planes.check();
   return options;
+}
+
+// --direct makes only the panel: the options of a quilt do not apply to it.
+void check_direct_flags(const RenderFlags& f, const CLI::App& app) {
+  if (!f.direct) {
+    if (f.out.empty()) throw_input_error("--out: required (only --direct renders without a quilt)");
+    return;
+  }
+  if (!f.display_source.given()) throw_input_error("--direct: needs the display (--calibration or --device)");
+  if (f.panel_path.empty()) throw_input_error("--direct: needs --panel, the file it writes");
+  for (const char* quilt_only : {"--out", "--view", "--cols", "--rows", "--blend"})
+    if (app.count(quilt_only))
+      throw_input_error("{}: a quilt option; --direct renders the panel with no quilt (every subpixel shows its own view)",
+                        quilt_only);
+  if (f.method == "per-view")
+    throw_input_error("--direct: needs the sweeping planes (g2lf or v2lf), not --method per-view");
 }
 
 // What the flags ask of the output, checked before anything is read.
@@ -243,6 +265,19 @@ void write_panel(const RenderFlags& f, const DisplayChoice& display, const Image
   std::cout << fmt::format("wrote {} ({}x{} panel)\n", f.panel_path, panel.width, panel.height);
 }
 
+// --direct: the panel from the renderer's direct pass; returns the file.
+std::string render_direct_panel(const RenderFlags& f, const DisplayChoice& display,
+                                lightfield::LightFieldRenderer& renderer, const render::QuiltGeometry& geometry) {
+  const display::LensModel lens(display.calibration->display, display.calibration->correction);
+  lightfield::PanelOptions options;
+  options.overscan = f.overscan;
+  renderer.render_panel(geometry, lens, options);
+  const ImageF& panel = renderer.read_panel();
+  write_png(f.panel_path, to_uint8(panel));
+  std::cout << fmt::format("wrote {} ({}x{} panel, direct: no quilt)\n", f.panel_path, panel.width, panel.height);
+  return f.panel_path;
+}
+
 // One view into --out, or the quilt into its suffixed name (and the panel); returns the file.
 std::string render_and_write(const RenderFlags& f, const DisplayChoice& display,
                              lightfield::LightFieldRenderer& renderer, const render::QuiltGeometry& geometry) {
@@ -281,6 +316,7 @@ int RunRender(int argc, char** argv) {
   if (auto code = parse(app, argc, argv)) return *code;
 
   lightfield::RendererOptions options = plane_options(f);
+  check_direct_flags(f, app);
   check_output_flags(f);
   const DisplayChoice display = choose_display(f);
   const lightfield::SceneKind kind = lightfield::scene_kind_of_file(f.scene_path);
@@ -300,11 +336,13 @@ int RunRender(int argc, char** argv) {
   print_display(display, geometry.base);
   const std::unique_ptr<lightfield::LightFieldRenderer> renderer = lightfield::make_renderer(options, kind, device);
   renderer->set_scene(scene);
-  const std::string written = render_and_write(f, display, *renderer, geometry);
+  const std::string written =
+      f.direct ? render_direct_panel(f, display, *renderer, geometry) : render_and_write(f, display, *renderer, geometry);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << fmt::format("wrote {} ({} {}, {} on the {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
                            written, scene.size(), scene.primitives(),
-                           f.view >= 0 ? fmt::format("view {}", f.view) : lightfield::method_name(options.method, kind),
+                           f.view >= 0 ? fmt::format("view {}", f.view)
+                           : lightfield::method_name(options.method, kind) + (f.direct ? " direct" : ""),
                            lightfield::processor_name(options.backend), f.view >= 0 ? 1 : display.views,
                            geometry.base.width, geometry.base.height, display.view_cone_deg, seconds);
   return 0;

@@ -32,8 +32,8 @@ int RunView(int argc, char** argv) {
   display_source.add(app, "--calibration", "the display: visual.json or calibration.json");
   app.add_option("--monitor", options.monitor_prefix, "the display's monitor name prefix")->capture_default_str();
   app.add_flag("--simulated", options.simulated_display, "show a simulated display in a window even if the display is connected");
-  app.add_option("--method", method, "g2lf or per-view (default: the saved setting, else g2lf)")
-      ->check(CLI::IsMember({"g2lf", "per-view"}));
+  app.add_option("--method", method, "g2lf, g2lf-direct (no quilt: the panel straight from the planes) or per-view (default: the saved setting, else g2lf)")
+      ->check(CLI::IsMember({"g2lf", "g2lf-direct", "per-view"}));
   app.add_option("--camera", camera, "cam.json to start from (default: framing the scene)");
   app.add_option("--settings", settings, "settings file (default: one per display under ~/.config/lfd/viewer)");
   app.add_option("--frames", options.frames, "render this many frames, then write the outputs and quit (0: until closed)")

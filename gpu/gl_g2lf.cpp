@@ -142,20 +142,43 @@ void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   stats_.frames_late = r->frames_late;
 }
 
+GlSweepingPlaneStages GlG2lfRenderer::frame_stages(const render::QuiltGeometry& geometry,
+                                                   const GlG2lfOptions& options,
+                                                   const render::RasterSettings& settings) {
+  const render::G2lfOptions& o = options.g2lf;
+  ensure_planes(options, geometry);
+  GlSweepingPlaneStages stages;
+  stages.prepare = [this, &geometry, &o, &settings](const render::ReferenceCamera& ref) {
+    preprocess(ref, geometry, o, settings);
+  };
+  stages.bin = [this, &o](const render::ReferenceCamera& ref, GlPlanes& planes) { bin(ref, o, planes); };
+  stages.draw_planes = [this](const render::ReferenceCamera&, GlPlanes& planes) { draw_planes(planes); };
+  return stages;
+}
+
 void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                   const GlG2lfOptions& options, const render::RasterSettings& settings,
                                   const Texture& quilt) {
   const render::G2lfOptions& o = options.g2lf;
   o.check(geometry);
   check_quilt_target("G2LF on the GPU", geometry, layout, quilt);
-  ensure_planes(options, geometry);
   sweeping_.set_swizzle_views(options.swizzle_views);
-  GlSweepingPlaneStages stages;
-  stages.prepare = [&](const render::ReferenceCamera& ref) { preprocess(ref, geometry, o, settings); };
-  stages.bin = [&](const render::ReferenceCamera& ref, GlPlanes& planes) { bin(ref, o, planes); };
-  stages.draw_planes = [&](const render::ReferenceCamera&, GlPlanes& planes) { draw_planes(planes); };
-  sweeping_.render_quilt(stages, geometry, layout, o, settings.background, quilt, options.gpu_timers,
-                         "a G2LF frame");
+  sweeping_.render_quilt(frame_stages(geometry, options, settings), geometry, layout, o, settings.background, quilt,
+                         options.gpu_timers, "a G2LF frame");
+  record_stats(options.gpu_timers, options.timer_reads);
+}
+
+void GlG2lfRenderer::render_panel(const render::QuiltGeometry& geometry, const GlG2lfOptions& options,
+                                  const render::RasterSettings& settings, GlDirectPanel& pass,
+                                  const interlace::DirectPanelOptions& panel_options, Texture& panel) {
+  const render::G2lfOptions& o = options.g2lf;
+  o.check(geometry);
+  sweeping_.render_planes(
+      frame_stages(geometry, options, settings), geometry, o,
+      [&](const GlPlanes& planes, const render::ReferenceCamera& ref) {
+        pass.run(planes, geometry, ref, panel_options, panel);
+      },
+      options.gpu_timers, "a G2LF direct panel frame");
   record_stats(options.gpu_timers, options.timer_reads);
 }
 

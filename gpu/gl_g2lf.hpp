@@ -22,6 +22,7 @@
 
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_depth_binning.hpp"
+#include "gpu/gl_direct_panel.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_plane_raster.hpp"
 #include "gpu/gl_planes.hpp"
@@ -95,11 +96,19 @@ class GlG2lfRenderer {
                     const GlG2lfOptions& options, const render::RasterSettings& settings,
                     const Texture& quilt);
 
+  // Alg. 1 lines 1-5 as render_quilt, then `pass` (the direct panel pass) into `panel` instead
+  // of the swizzle: the panel straight from the planes, no quilt (gpu/gl_direct_panel.hpp).
+  void render_panel(const render::QuiltGeometry& geometry, const GlG2lfOptions& options,
+                    const render::RasterSettings& settings, GlDirectPanel& pass,
+                    const interlace::DirectPanelOptions& panel_options, Texture& panel);
   const GlG2lfStats& stats() const { return stats_; }
   const GlPlanes& planes() const { return sweeping_.planes(); }  // the last frame's
 
  private:
   void ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
+  // The stages of a frame with these options (checked against `geometry` and the GPU first).
+  GlSweepingPlaneStages frame_stages(const render::QuiltGeometry& geometry, const GlG2lfOptions& options,
+                                     const render::RasterSettings& settings);
   // The stages of a frame (gpu/gl_sweeping_planes.hpp).
   void preprocess(const render::ReferenceCamera& ref, const render::QuiltGeometry& geometry,
                   const render::G2lfOptions& o, const render::RasterSettings& settings);

@@ -3,25 +3,19 @@
 // interlace::Interlacer, reading a quilt texture and writing the panel, so a frame can go
 // scene -> quilt -> panel on the GPU with no CPU round trip. Its constants come from
 // display::LensModel, the one definition of the lens phase, view fraction and view index; the
-// shader (gpu/shaders/interlace.frag.glsl) repeats LensModel's arithmetic line by line in double
-// precision. It matches interlace::interlace within 1/255 on all but a negligible fraction of
+// shader (gpu/shaders/interlace.frag.glsl) takes a subpixel's view fraction from
+// gpu/shaders/lens_view.glsl (gpu/gl_lens_view.hpp), in single precision. It matches interlace::interlace within 1/255 on all but a negligible fraction of
 // subpixels (tests/gpu/gl_interlacer_test.cpp, docs/rendering.md).
 #include <epoxy/gl.h>
 
 #include "display/lens_model.hpp"
+#include "gpu/gl_lens_view.hpp"
 #include "gpu/gl_objects.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
 
 namespace lfd::gpu {
-
-// The correction field w(u, v) is sampled bilinearly from a grid fine enough that the
-// interpolation stays within this many lens periods (a view boundary moves by as much, so about
-// 2 V times this fraction of subpixels may show the neighbouring view), with at most
-// kMaxCorrectionGridPoints per axis (64 MiB).
-inline constexpr double kCorrectionGridTolerancePeriods = 1e-6;
-inline constexpr int kMaxCorrectionGridPoints = 4096;
 
 class GlInterlacer {
  public:
@@ -42,7 +36,7 @@ class GlInterlacer {
   int panel_height() const { return panel_height_; }
   // w(u, v) at grid point (i, j) = (u, v) = (i / (width - 1), j / (height - 1)), R32F;
   // 2 x 2 zeros without a correction field.
-  const Texture& correction_grid() const { return correction_; }
+  const Texture& correction_grid() const { return lens_view_.correction_grid(); }
 
  private:
   void check_quilt(const Texture& quilt) const;
@@ -52,7 +46,7 @@ class GlInterlacer {
   Program program_;
   VertexArray triangle_;
   Framebuffer target_;
-  Texture correction_;
+  GlLensView lens_view_;
 };
 
 // A top-down image as an RGBA32F texture with rows bottom-up (GL's orientation, so a quilt

@@ -39,10 +39,9 @@ std::optional<GlSweepingPlaneReadout> GlSweepingPlanes::readout(TimerReads reads
   return r;
 }
 
-void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
-                                    const render::QuiltLayout& layout, const render::G2lfOptions& options,
-                                    const glm::vec3& background, const Texture& quilt, bool timed,
-                                    const char* frame) {
+void GlSweepingPlanes::render_planes(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
+                                     const render::G2lfOptions& options, const PlanePass& pass, bool timed,
+                                     const char* frame) {
   const render::ReferenceCamera ref = render::reference_camera(options, geometry);
   timed_ = timed;
   if (timed_) {
@@ -56,9 +55,7 @@ void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const r
   stamp(kBinned);
   stages.draw_planes(ref, planes_);
   stamp(kDrawn);
-  const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
-  glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
-  swizzle_.run(planes_, geometry, ref, layout, options.filter, background, quilt);
+  pass(planes_, ref);
   stamp(kSwizzled);
   if (timed_) {
     // The header (plane and binned counts) goes to the CPU through a GPU copy read frames
@@ -68,6 +65,20 @@ void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const r
     ring_->end_frame();
   }
   check_gl(frame);
+}
+
+void GlSweepingPlanes::render_quilt(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
+                                    const render::QuiltLayout& layout, const render::G2lfOptions& options,
+                                    const glm::vec3& background, const Texture& quilt, bool timed,
+                                    const char* frame) {
+  render_planes(
+      stages, geometry, options,
+      [&](const GlPlanes& planes, const render::ReferenceCamera& ref) {
+        const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // outside the tiles: 0, as the CPU's
+        glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
+        swizzle_.run(planes, geometry, ref, layout, options.filter, background, quilt);
+      },
+      timed, frame);
 }
 
 }  // namespace lfd::gpu

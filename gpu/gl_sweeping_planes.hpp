@@ -62,6 +62,12 @@ class GlSweepingPlanes {
                     const render::QuiltLayout& layout, const render::G2lfOptions& options,
                     const glm::vec3& background, const Texture& quilt, bool timed, const char* frame);
 
+  // The same frame with the planes handed to `pass` instead of the swizzle (the direct panel
+  // pass, gpu/gl_direct_panel.hpp: no quilt); its GPU time is the swizzle's.
+  using PlanePass = std::function<void(const GlPlanes&, const render::ReferenceCamera&)>;
+  void render_planes(const GlSweepingPlaneStages& stages, const render::QuiltGeometry& geometry,
+                     const render::G2lfOptions& options, const PlanePass& pass, bool timed, const char* frame);
+
   // The figures of the frame just rendered (kWait: waits for it) or of the newest timed frame
   // the GPU has finished (kLate: never waits; nullopt while none has). Only timed frames count.
   std::optional<GlSweepingPlaneReadout> readout(TimerReads reads);

@@ -163,8 +163,29 @@ void GlV2lfRenderer::convert_plane(int k, const Program& convert, GlPlanes& plan
 void GlV2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                   const GlV2lfOptions& options, const glm::vec3& background, const Texture& quilt) {
   options.v2lf.check(geometry);
-  const render::G2lfOptions& o = options.v2lf.planes;
   check_quilt_target("V2LF on the GPU", geometry, layout, quilt);
+  run_frame(geometry, options, [&](const GlSweepingPlaneStages& stages) {
+    sweeping_.render_quilt(stages, geometry, layout, options.v2lf.planes, background, quilt, false, "a V2LF frame");
+  });
+}
+
+void GlV2lfRenderer::render_panel(const render::QuiltGeometry& geometry, const GlV2lfOptions& options,
+                                  GlDirectPanel& pass, const interlace::DirectPanelOptions& panel_options,
+                                  Texture& panel) {
+  options.v2lf.check(geometry);
+  run_frame(geometry, options, [&](const GlSweepingPlaneStages& stages) {
+    sweeping_.render_planes(
+        stages, geometry, options.v2lf.planes,
+        [&](const GlPlanes& planes, const render::ReferenceCamera& ref) {
+          pass.run(planes, geometry, ref, panel_options, panel);
+        },
+        false, "a V2LF direct panel frame");
+  });
+}
+
+void GlV2lfRenderer::run_frame(const render::QuiltGeometry& geometry, const GlV2lfOptions& options,
+                               const std::function<void(const GlSweepingPlaneStages&)>& run) {
+  const render::G2lfOptions& o = options.v2lf.planes;
   // The texture limits and the memory budget, as G2LF's planes (no per-Gaussian buffers here).
   GlG2lfOptions plane_options;
   plane_options.g2lf = o;
@@ -192,7 +213,7 @@ void GlV2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
         o.adaptive_filter ? voxel::plane_lowpass_variance(scene_.scene(), geometry, ref, o.plane_scale) : 0.0f;
     draw_planes(frame_scene(), ranges, ref, geometry.base.position_world, lowpass_variance, planes);
   };
-  sweeping_.render_quilt(stages, geometry, layout, o, background, quilt, false, "a V2LF frame");
+  run(stages);
 
   record_stats(binned, frame_scene());
 }

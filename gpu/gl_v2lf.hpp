@@ -15,10 +15,12 @@
 //   swizzle   GlSwizzle into the quilt (the skeleton's)
 // The binning stays on the CPU (one pass over the voxels per frame, O(8 n) for the grouping);
 // the planes and the swizzle, where the time goes, are GPU work.
+#include <functional>
 #include <optional>
 #include <vector>
 
 #include "gpu/gl_context.hpp"
+#include "gpu/gl_direct_panel.hpp"
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_planes.hpp"
@@ -60,6 +62,10 @@ class GlV2lfRenderer {
   const GlV2lfStats& stats() const { return stats_; }
   const GlPlanes& planes() const { return sweeping_.planes(); }
 
+  // Binning and planes as render_quilt, then `pass` (the direct panel pass) into `panel` instead
+  // of the swizzle: no quilt (gpu/gl_direct_panel.hpp).
+  void render_panel(const render::QuiltGeometry& geometry, const GlV2lfOptions& options, GlDirectPanel& pass,
+                    const interlace::DirectPanelOptions& panel_options, Texture& panel);
  private:
   void ensure_planes(PlaneFormat format, int max_planes, int width, int height);
   // The stages of a frame (gpu/gl_sweeping_planes.hpp): the chunks' voxels in every octant
@@ -72,6 +78,10 @@ class GlV2lfRenderer {
   void convert_plane(int k, const Program& convert, GlPlanes& planes);
   void lowpass(float variance_px2);
   void record_stats(const voxel::VoxelChunks& binned, const GlVoxelScene& scene);
+  // One frame: the checks, the planes' allocation, the stages (binning on the CPU, planes on the
+  // GPU) handed to `run`, which runs them with the swizzle or the direct pass; then the stats.
+  void run_frame(const render::QuiltGeometry& geometry, const GlV2lfOptions& options,
+                 const std::function<void(const GlSweepingPlaneStages&)>& run);
 
   const GlVoxelScene& scene_;
   GlInfo info_;

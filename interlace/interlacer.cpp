@@ -23,24 +23,31 @@ Interlacer::Interlacer(const display::LensModel& lens, const render::QuiltLayout
   layout_.check("quilt");
 }
 
-SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
-  const auto& cal = lens_.calibration();
-  SubpixelSample s;
-  // Aspect fit (looking-glass.md 3.8): the phase uses the unscaled (u, v); only the tile
-  // lookup uses the aspect-corrected coordinate.
-  const display::ScreenUV p = lens_.pixel_uv(x, row);
+AspectFit aspect_fit(const display::DisplayCalibration& cal, double view_aspect, bool overscan) {
   const double display_aspect = double(cal.screen_w) / cal.screen_h;
-  const double quilt_aspect = layout_.aspect;
-  const bool fit_x = (display_aspect >= quilt_aspect && !options_.overscan) ||
-                     (display_aspect <= quilt_aspect && options_.overscan);
-  double nu = p.u - 0.5, nv = p.v - 0.5;
-  if (fit_x)
-    nu *= display_aspect / quilt_aspect;
-  else
-    nv *= quilt_aspect / display_aspect;
-  s.tile_u = nu + 0.5;
-  s.tile_v = nv + 0.5;
-  if (s.tile_u < 0 || s.tile_u > 1 || s.tile_v < 0 || s.tile_v > 1) {
+  const bool fit_x = (display_aspect >= view_aspect && !overscan) || (display_aspect <= view_aspect && overscan);
+  return fit_x ? AspectFit{display_aspect / view_aspect, 1.0} : AspectFit{1.0, view_aspect / display_aspect};
+}
+
+TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row) {
+  const display::ScreenUV p = lens.pixel_uv(x, row);
+  const AspectFit fit = aspect_fit(lens.calibration(), view_aspect, overscan);
+  TilePoint t{true, (p.u - 0.5) * fit.scale_u + 0.5, (p.v - 0.5) * fit.scale_v + 0.5};
+  t.inside = !(t.u < 0 || t.u > 1 || t.v < 0 || t.v > 1);
+  return t;
+}
+
+double fringe_gain(const display::DisplayCalibration& cal, int row) {
+  const int j = cal.screen_h - 1 - row;
+  return 1.0 - std::abs(cal.fringe) * std::floor(std::fmod(j + 0.5 + std::ceil(cal.fringe / 2), 2.0));
+}
+
+SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
+  SubpixelSample s;
+  const TilePoint point = tile_point(lens_, layout_.aspect, options_.overscan, x, row);
+  s.tile_u = point.u;
+  s.tile_v = point.v;
+  if (!point.inside) {
     s.inside = false;
     return s;
   }
@@ -85,13 +92,9 @@ ImageF Interlacer::interlace(const ImageF& quilt) const {
   const auto& cal = lens_.calibration();
   ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
   const int channels = quilt.channels;
-  // Fringe correction (looking-glass.md 3.11): every other row darkened by |fringe|.
-  const double fringe = cal.fringe;
 #pragma omp parallel for schedule(dynamic, 8)
   for (int row = 0; row < cal.screen_h; ++row) {
-    const int j = cal.screen_h - 1 - row;
-    const double fringe_gain =
-        1.0 - std::abs(fringe) * std::floor(std::fmod(j + 0.5 + std::ceil(fringe / 2), 2.0));
+    const double row_gain = fringe_gain(cal, row);
     for (int x = 0; x < cal.screen_w; ++x) {
       for (int c = 0; c < 3; ++c) {
         const SubpixelSample s = sample_for(x, row, c);
@@ -102,7 +105,7 @@ ImageF Interlacer::interlace(const ImageF& quilt) const {
           const float b = sample_tile(quilt, s.view_b, s.tile_u, s.tile_v, qc);
           value += (b - value) * s.weight_b;
         }
-        panel.at(x, row, c) = float(value * fringe_gain);
+        panel.at(x, row, c) = float(value * row_gain);
       }
     }
   }

@@ -36,6 +36,27 @@ struct SubpixelSample {
   double tile_u = 0, tile_v = 0;
 };
 
+// The aspect fit (looking-glass.md 3.8) of a view of aspect `view_aspect` (width / height) on
+// the panel: where pixel (x, row) falls in it, (u, v) in [0, 1] with v up, or inside = false in
+// the black bars (the crop under overscan). The lens phase uses the unscaled pixel position;
+// only this lookup is scaled. Interlacer::sample_for and the direct panel pass
+// (interlace/direct_panel.hpp) both call it.
+// The aspect fit as the scale of (u - 1/2, v - 1/2): one of them is 1.
+struct AspectFit {
+  double scale_u = 1, scale_v = 1;
+};
+AspectFit aspect_fit(const display::DisplayCalibration& calibration, double view_aspect, bool overscan);
+
+struct TilePoint {
+  bool inside = true;
+  double u = 0, v = 0;
+};
+TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row_top_down);
+
+// The fringe correction (looking-glass.md 3.11): the gain of panel row `row_top_down`, every
+// other row darkened by |fringe|.
+double fringe_gain(const display::DisplayCalibration& calibration, int row_top_down);
+
 class Interlacer {
  public:
   Interlacer(const display::LensModel& lens, const render::QuiltLayout& layout,

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "interlace/direct_panel.hpp"
 #include "lightfield/process_memory.hpp"
 #include "lightfield/renderer_checks.hpp"
 #include "render/g2lf.hpp"
@@ -35,6 +36,7 @@ class CpuRenderer : public LightFieldRenderer {
     scene_ = &scene;
   }
   const ImageF& read_quilt() override { return quilt_; }
+  const ImageF& read_panel() override { return panel_; }
   ImageF take_quilt() override { return std::move(quilt_); }
   std::string memory_kind() const override { return "process RSS"; }
   void reset_peak_memory() override { reset_peak_rss(); }
@@ -46,8 +48,22 @@ class CpuRenderer : public LightFieldRenderer {
     return *scene_;
   }
 
+  // The direct pass's consumer of the planes: the panel into panel_ (interlace/direct_panel.hpp).
+  render::PlaneConsumer direct_pass(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                    const PanelOptions& panel, const glm::vec3& background) {
+    interlace::DirectPanelOptions o;
+    o.filter = options_.planes.filter;
+    o.background = background;
+    o.overscan = panel.overscan;
+    o.invert_views = panel.invert_views;
+    return [this, &geometry, &lens, o](const render::SweepingPlanes& planes, const render::ReferenceCamera& ref) {
+      panel_ = interlace::render_direct_panel(planes, geometry, ref, lens, o);
+    };
+  }
+
   RendererOptions options_;
   ImageF quilt_;
+  ImageF panel_;
 
  private:
   SceneKind kind_;
@@ -82,6 +98,16 @@ class CpuG2lf final : public CpuGaussianRenderer {
             .seconds_binning = s.seconds_binning, .seconds_planes = s.seconds_planes,
             .seconds_swizzle = s.seconds_swizzle};
   }
+  QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                          const PanelOptions& panel) override {
+    render::G2lfStats s;
+    const render::RasterSettings settings = options_.raster_settings();
+    render::render_planes_g2lf(scene().gaussians(), geometry, options_.planes, settings,
+                               direct_pass(geometry, lens, panel, settings.background), &s);
+    return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.gaussians_in_frustum,
+            .seconds_binning = s.seconds_binning, .seconds_planes = s.seconds_planes,
+            .seconds_swizzle = s.seconds_swizzle};
+  }
 };
 
 class CpuVoxelRenderer : public CpuRenderer {
@@ -109,6 +135,16 @@ class CpuV2lf final : public CpuVoxelRenderer {
     voxel::V2lfStats s;
     quilt_ = voxel::render_quilt_v2lf(voxels, geometry, layout, options_.v2lf(),
                                       options_.background.value_or(voxels.background), &s);
+    return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
+            .voxels_split = s.voxels_split, .seconds_binning = s.seconds_binning,
+            .seconds_planes = s.seconds_planes, .seconds_swizzle = s.seconds_swizzle};
+  }
+  QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                          const PanelOptions& panel) override {
+    const voxel::VoxelScene& voxels = scene().voxels();
+    voxel::V2lfStats s;
+    voxel::render_planes_v2lf(voxels, geometry, options_.v2lf(),
+                              direct_pass(geometry, lens, panel, options_.background.value_or(voxels.background)), &s);
     return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
             .voxels_split = s.voxels_split, .seconds_binning = s.seconds_binning,
             .seconds_planes = s.seconds_planes, .seconds_swizzle = s.seconds_swizzle};

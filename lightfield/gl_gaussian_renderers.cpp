@@ -60,6 +60,18 @@ class GlG2lf final : public GlRendererBase {
             .seconds_binning = s.seconds_binning, .seconds_planes = s.seconds_planes,
             .seconds_swizzle = s.seconds_swizzle};
   }
+  QuiltStats render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                               const PanelOptions& panel, gpu::Texture& target) override {
+    ensure_bound();
+    gpu::GlDirectPanel& pass = direct_pass(lens);
+    const render::RasterSettings settings = options_.raster_settings();
+    g2lf_->render_panel(geometry, options_.gl_g2lf(), settings, pass, direct_options(panel, settings.background),
+                        target);
+    const gpu::GlG2lfStats& s = g2lf_->stats();
+    return {.planes = options_.planes.chunks, .plane_bytes = s.plane_bytes, .binned = s.gaussians_in_frustum,
+            .seconds_binning = s.seconds_binning, .seconds_planes = s.seconds_planes,
+            .seconds_swizzle = s.seconds_swizzle};
+  }
   // G2LF renders whole quilts: one view is the per-view renderer's.
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     ensure_bound();

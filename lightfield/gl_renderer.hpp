@@ -16,6 +16,11 @@ class GlLightFieldRenderer : public LightFieldRenderer {
   // view 0 in the bottom-left tile; 0 outside the tiles.
   virtual QuiltStats render_quilt_into(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                        gpu::Texture& quilt) = 0;
+  // The direct panel (LightFieldRenderer::render_panel) into the caller's `panel` (screenW x
+  // screenH, colour-renderable, rows bottom-up), without waiting for the GPU. Sweeping-plane
+  // renderers only (InputError otherwise).
+  virtual QuiltStats render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                       const PanelOptions& options, gpu::Texture& panel) = 0;
   virtual GlDevice& gl_device() const = 0;
 };
 

@@ -4,6 +4,7 @@
 
 #include <epoxy/gl.h>
 
+#include "gpu/gl_interlacer.hpp"
 #include "lightfield/renderer_checks.hpp"
 
 namespace lfd::lightfield {
@@ -38,6 +39,52 @@ QuiltStats GlRendererBase::render_quilt(const render::QuiltGeometry& geometry, c
   const QuiltStats stats = render_quilt_into(geometry, layout, device_->quilt(layout, options_.gl.quilt_format));
   glFinish();  // the frame is complete when the call returns: its wall time is the GPU frame
   return stats;
+}
+
+gpu::GlDirectPanel& GlRendererBase::direct_pass(const display::LensModel& lens) {
+  // Another lens (even one at the same address) needs its own constants: compare the panel too.
+  if (!direct_ || direct_lens_ != &lens || direct_->panel_width() != lens.calibration().screen_w ||
+      direct_->panel_height() != lens.calibration().screen_h) {
+    direct_ = std::make_unique<gpu::GlDirectPanel>(lens);
+    direct_lens_ = &lens;
+  }
+  return *direct_;
+}
+
+interlace::DirectPanelOptions GlRendererBase::direct_options(const PanelOptions& panel,
+                                                             const glm::vec3& background) const {
+  interlace::DirectPanelOptions o;
+  o.filter = options_.planes.filter;
+  o.background = background;
+  o.overscan = panel.overscan;
+  o.invert_views = panel.invert_views;
+  return o;
+}
+
+QuiltStats GlRendererBase::render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                        const PanelOptions& options) {
+  const GLenum format = options_.gl.quilt_format;
+  const int w = lens.calibration().screen_w, h = lens.calibration().screen_h;
+  if (!panel_.id() || panel_.width() != w || panel_.height() != h || panel_.internal_format() != format)
+    panel_ = gpu::Texture(format, w, h);
+  const QuiltStats stats = render_panel_into(geometry, lens, options, panel_);
+  glFinish();  // the frame is complete when the call returns, as render_quilt's
+  panel_read_ = false;
+  return stats;
+}
+
+QuiltStats GlRendererBase::render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                             const PanelOptions& options, gpu::Texture&) {
+  return LightFieldRenderer::render_panel(geometry, lens, options);  // the one-line error
+}
+
+const ImageF& GlRendererBase::read_panel() {
+  if (!panel_.id()) return LightFieldRenderer::read_panel();  // no direct frame yet: the one-line error
+  if (!panel_read_) {
+    panel_image_ = gpu::image_from_texture(panel_);
+    panel_read_ = true;
+  }
+  return panel_image_;
 }
 
 }  // namespace lfd::lightfield

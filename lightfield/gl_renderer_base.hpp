@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "gpu/gl_direct_panel.hpp"
 #include "lightfield/gl_renderer.hpp"
 
 namespace lfd::lightfield {
@@ -25,6 +26,14 @@ class GlRendererBase : public GlLightFieldRenderer {
   void reset_peak_memory() override { GlDevice::reset_peak_memory(); }
   size_t peak_memory_bytes() const override { return GlDevice::peak_memory_bytes(); }
   GlDevice& gl_device() const override { return *device_; }
+  // render_panel_into the renderer's own panel texture (the quilt's format), then glFinish.
+  QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                          const PanelOptions& options) override;
+  // Per view: InputError (no direct pass).
+  QuiltStats render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                               const PanelOptions& options, gpu::Texture& panel) override;
+  // The last direct panel (render_panel of a sweeping-plane renderer), read back.
+  const ImageF& read_panel() override;
 
  protected:
   // Binds the device's scene unless bound to its current upload (std::logic_error: none).
@@ -34,6 +43,9 @@ class GlRendererBase : public GlLightFieldRenderer {
   // Called by set_options after the options changed.
   virtual void options_changed(const RendererOptions& old) {}
   void forget_binding() { bound_generation_ = UINT64_MAX; }
+  // The direct pass for `lens`'s display (made again for another lens or panel size).
+  gpu::GlDirectPanel& direct_pass(const display::LensModel& lens);
+  interlace::DirectPanelOptions direct_options(const PanelOptions& panel, const glm::vec3& background) const;
 
   std::shared_ptr<GlDevice> device_;  // first: the context outlives what derived classes hold
   RendererOptions options_;
@@ -41,6 +53,11 @@ class GlRendererBase : public GlLightFieldRenderer {
  private:
   SceneKind kind_;
   uint64_t bound_generation_ = UINT64_MAX;
+  std::unique_ptr<gpu::GlDirectPanel> direct_;
+  const display::LensModel* direct_lens_ = nullptr;
+  gpu::Texture panel_;
+  ImageF panel_image_;
+  bool panel_read_ = false;
 };
 
 }  // namespace lfd::lightfield

@@ -58,6 +58,16 @@ class GlV2lf final : public GlRendererBase {
     return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
             .voxels_split = s.voxels_split};
   }
+  QuiltStats render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                               const PanelOptions& panel, gpu::Texture& target) override {
+    ensure_bound();
+    gpu::GlDirectPanel& pass = direct_pass(lens);
+    const glm::vec3 background = options_.background.value_or(scene_->scene().background);
+    v2lf_->render_panel(geometry, options_.gl_v2lf(), pass, direct_options(panel, background), target);
+    const gpu::GlV2lfStats& s = v2lf_->stats();
+    return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
+            .voxels_split = s.voxels_split};
+  }
   // V2LF renders whole quilts: one view is the per-view renderer's.
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     ensure_bound();

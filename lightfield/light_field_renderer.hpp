@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <string>
 
+#include "display/lens_model.hpp"
 #include "lightfield/light_field_scene.hpp"
 #include "lightfield/renderer_options.hpp"
 #include "render/quilt_geometry.hpp"
@@ -27,6 +28,13 @@ struct QuiltStats {
   size_t voxels_split = 0;
   double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;
   double seconds_raster = 0;  // per view: preprocess + sort + raster, summed over the views
+};
+
+// What a direct panel frame is asked for beyond the display's lens: the interlacer's options
+// that apply to it (view blending does not: every subpixel shows its own view).
+struct PanelOptions {
+  bool overscan = false;      // interlace::InterlaceOptions::overscan
+  bool invert_views = false;  // interlace::InterlaceOptions::invert_views
 };
 
 class LightFieldRenderer {
@@ -59,6 +67,15 @@ class LightFieldRenderer {
   // renderer moves it out rather than holding a second copy beside the caller's, which would
   // show in the process's peak memory; elsewhere a copy of read_quilt().
   virtual ImageF take_quilt() { return read_quilt(); }
+
+  // Direct panel rendering (docs/rendering.md "Direct panel rendering", issue 24): the panel of
+  // `lens`'s display straight from the sweeping planes, every subpixel at its own view angle, no
+  // quilt (QuiltStats::seconds_swizzle is the direct pass). Sweeping-plane renderers only: the
+  // others throw InputError. Checks the options against `geometry` first.
+  virtual QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
+                                  const PanelOptions& options);
+  // The last panel (screenW x screenH RGB floats, top row first), read back if it lives elsewhere.
+  virtual const ImageF& read_panel();
 
   // Peak memory since the last reset: what it measures is `memory_kind()` ("process RSS",
   // "GPU memory (...)").

@@ -45,9 +45,8 @@ ChunkBinning parse_chunk_binning(const std::string& name) {
   throw_input_error("G2LF options: binning: '{}' is not quantile or mixed", name);
 }
 
-ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
-                         const QuiltLayout& layout, const G2lfOptions& options,
-                         const RasterSettings& settings, G2lfStats* stats) {
+void render_planes_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry, const G2lfOptions& options,
+                        const RasterSettings& settings, const PlaneConsumer& consume, G2lfStats* stats) {
   options.check(geometry);
   DepthChunks chunks;
   SweepingPlaneStages stages;
@@ -63,12 +62,24 @@ ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geomet
     return render_sweeping_planes(scene, geometry, ref, binned, options.precision, plane_settings);
   };
   SweepingPlaneStats frame;
-  ImageF quilt =
-      render_sweeping_plane_quilt(stages, geometry, layout, options, settings.background, stats ? &frame : nullptr);
+  run_sweeping_planes(stages, geometry, options, consume, stats ? &frame : nullptr);
   if (stats) {
     copy_plane_stats(frame, *stats);
     stats->gaussians_in_frustum = frame.binned;
   }
+}
+
+ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
+                         const QuiltLayout& layout, const G2lfOptions& options,
+                         const RasterSettings& settings, G2lfStats* stats) {
+  ImageF quilt;
+  render_planes_g2lf(
+      scene, geometry, options, settings,
+      [&](const SweepingPlanes& planes, const ReferenceCamera& ref) {
+        quilt = ImageF(layout.width, layout.height, 3, 0.0f);
+        swizzle_blend(planes, geometry, ref, layout, options.filter, settings.background, quilt);
+      },
+      stats);
   return quilt;
 }
 

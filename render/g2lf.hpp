@@ -66,4 +66,9 @@ ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geomet
                          const QuiltLayout& layout, const G2lfOptions& options,
                          const RasterSettings& settings = {}, G2lfStats* stats = nullptr);
 
+// Alg. 1 lines 1-5 (binning and planes) with the same options, then `consume` with the planes
+// (the direct panel pass, interlace/direct_panel.hpp); stats->seconds_swizzle is its time.
+void render_planes_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry, const G2lfOptions& options,
+                        const RasterSettings& settings, const PlaneConsumer& consume, G2lfStats* stats = nullptr);
+
 }  // namespace lfd::render

@@ -11,8 +11,10 @@ float QuiltGeometry::view_position(int view) const {
   return (float(view) + 0.5f) / float(views) - 0.5f;
 }
 
-float QuiltGeometry::view_offset(int view) const {
-  return 2.0f * focal_distance * view_position(view) * std::tan(0.5f * view_cone_rad);
+float QuiltGeometry::view_offset(int view) const { return view_offset_at(view_position(view)); }
+
+float QuiltGeometry::view_offset_at(float position) const {
+  return 2.0f * focal_distance * position * std::tan(0.5f * view_cone_rad);
 }
 
 float QuiltGeometry::view_shift_ndc(int view) const {
@@ -66,7 +68,11 @@ float forward_distance(const QuiltGeometry& geometry) { return make_reference_ca
 
 float plane_coordinate_x(const QuiltGeometry& g, const ReferenceCamera& ref, int view, float u_ndc,
                          float d_k) {
-  const float dx = g.view_offset(view);
+  return plane_coordinate_x_at(g, ref, g.view_offset(view), u_ndc, d_k);
+}
+
+float plane_coordinate_x_at(const QuiltGeometry& g, const ReferenceCamera& ref, float dx, float u_ndc,
+                            float d_k) {
   return (dx * (g.focal_distance - d_k) / g.focal_distance + d_k * g.base.tan_half_fov_x() * u_ndc) /
          ((d_k - ref.d_forward_eff) * ref.camera.tan_half_fov_x());
 }

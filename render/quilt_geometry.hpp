@@ -18,6 +18,10 @@ struct QuiltGeometry {
   float view_position(int view) const;
   // dx_j = 2 D_focal s_j tan(phi/2), along the base camera's right axis.
   float view_offset(int view) const;
+  // The same for a continuous view position s in [-1/2, 1/2] (the one definition both use): the
+  // offset of the camera that a panel subpixel showing view fraction f = s + 1/2 looks from
+  // (interlace/direct_panel.hpp).
+  float view_offset_at(float position) const;
   // p_j = 2 s_j tan(phi/2) / tan(theta_x/2) (NDC units).
   float view_shift_ndc(int view) const;
   // The off-axis camera of view j: base moved by dx_j, same orientation, shifted principal
@@ -51,6 +55,10 @@ float forward_distance(const QuiltGeometry& geometry);
 // coordinate is the same formula with dy = 0 and theta_y, theta'_y.
 float plane_coordinate_x(const QuiltGeometry& g, const ReferenceCamera& ref, int view, float u_ndc,
                          float d_k);
+// The same for a camera offset dx along the right axis (continuous: view_offset_at); the
+// int-view form is this with dx = view_offset(view).
+float plane_coordinate_x_at(const QuiltGeometry& g, const ReferenceCamera& ref, float dx, float u_ndc,
+                            float d_k);
 float plane_coordinate_y(const QuiltGeometry& g, const ReferenceCamera& ref, float v_ndc, float d_k);
 
 // Paper Eq. (gs_prefilter_fix): the 2D dilation variance (reference-camera pixels^2) that

@@ -13,9 +13,9 @@ ReferenceCamera reference_camera(const G2lfOptions& options, const QuiltGeometry
   return make_reference_camera(geometry, d_shift, options.plane_scale);
 }
 
-ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
-                                   const QuiltLayout& layout, const G2lfOptions& options,
-                                   const glm::vec3& background, SweepingPlaneStats* stats) {
+void run_sweeping_planes(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
+                         const G2lfOptions& options, const PlaneConsumer& consume,
+                         SweepingPlaneStats* stats) {
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
@@ -26,8 +26,7 @@ ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const Quil
   const auto t1 = Clock::now();
   const SweepingPlanes planes = stages.render_planes(ref, chunks);
   const auto t2 = Clock::now();
-  ImageF quilt(layout.width, layout.height, 3, 0.0f);
-  swizzle_blend(planes, geometry, ref, layout, options.filter, background, quilt);
+  consume(planes, ref);
   const auto t3 = Clock::now();
   if (stats) {
     stats->binned = 0;
@@ -38,6 +37,19 @@ ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const Quil
     stats->seconds_planes = seconds(t1, t2);
     stats->seconds_swizzle = seconds(t2, t3);
   }
+}
+
+ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
+                                   const QuiltLayout& layout, const G2lfOptions& options,
+                                   const glm::vec3& background, SweepingPlaneStats* stats) {
+  ImageF quilt;
+  run_sweeping_planes(
+      stages, geometry, options,
+      [&](const SweepingPlanes& planes, const ReferenceCamera& ref) {
+        quilt = ImageF(layout.width, layout.height, 3, 0.0f);
+        swizzle_blend(planes, geometry, ref, layout, options.filter, background, quilt);
+      },
+      stats);
   return quilt;
 }
 

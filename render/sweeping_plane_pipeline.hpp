@@ -52,6 +52,17 @@ void copy_plane_stats(const SweepingPlaneStats& frame, MethodStats& stats) {
   stats.seconds_swizzle = frame.seconds_swizzle;
 }
 
+// What a frame does with its planes once they exist: the swizzle into a quilt
+// (render_sweeping_plane_quilt), or the direct pass into a panel (interlace/direct_panel.hpp).
+// Timed as the stage after the planes (SweepingPlaneStats::seconds_swizzle).
+using PlaneConsumer = std::function<void(const SweepingPlanes&, const ReferenceCamera&)>;
+
+// Alg. 1 lines 1-5 with `stages`, then `consume` with the planes; the caller has checked
+// `options` against `geometry`.
+void run_sweeping_planes(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
+                         const G2lfOptions& options, const PlaneConsumer& consume,
+                         SweepingPlaneStats* stats = nullptr);
+
 // Alg. 1 end to end with `stages`: the quilt (layout size, RGB, rows top-down, 0 outside the
 // tiles) for options.d_shift, plane_scale, filter over `background`. The caller has checked
 // `options` against `geometry`.

@@ -120,7 +120,7 @@ ControlActions ControlWindow::draw(ViewerSettings& s, SeenFromControls& seen, co
   ImGui::TextUnformatted(r.renderer.c_str());
   ImGui::Text("%.1f FPS  (%.2f ms a frame, p99 %.2f ms)", r.frame_seconds > 0 ? 1.0 / r.frame_seconds : 0.0,
               ms(r.frame_seconds), ms(r.frame_p99_seconds));
-  if (s.method == Method::kG2lf)
+  if (s.method != Method::kPerView)
     ImGui::Text("GPU: binning+sort %.2f  planes %.2f  swizzle %.2f  interlace %.2f ms", ms(r.binning_seconds),
                 ms(r.planes_seconds), ms(r.swizzle_seconds), ms(r.interlace_seconds));
   else
@@ -133,12 +133,14 @@ ControlActions ControlWindow::draw(ViewerSettings& s, SeenFromControls& seen, co
   ImGui::PopStyleColor();
 
   section("Method");
-  int method = s.method == Method::kG2lf ? 0 : 1;
+  int method = s.method == Method::kG2lf ? 0 : s.method == Method::kPerView ? 1 : 2;
   ImGui::RadioButton("G2LF", &method, 0);
   ImGui::SameLine();
   ImGui::RadioButton("per view", &method, 1);
-  s.method = method == 0 ? Method::kG2lf : Method::kPerView;
-  if (s.method == Method::kG2lf) {
+  ImGui::SameLine();
+  ImGui::RadioButton("G2LF direct", &method, 2);  // no quilt: swizzle = the direct pass, interlace 0
+  s.method = method == 0 ? Method::kG2lf : method == 1 ? Method::kPerView : Method::kG2lfDirect;
+  if (s.method != Method::kPerView) {
     ImGui::SliderInt("N_chunk", &s.g2lf.chunks, 1, 1024, "%d", ImGuiSliderFlags_Logarithmic);
     ImGui::SliderInt("P_s", &s.g2lf.plane_scale, 1, 4);
     int filter = s.g2lf.filter == render::PlaneFilter::kBilinear;

@@ -137,7 +137,7 @@ lightfield::QuiltStats LightFieldFrame::render_g2lf(lightfield::GlLightFieldRend
 lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& settings, bool timed) {
   lightfield::RendererOptions o;
   o.backend = lightfield::Backend::kGl;
-  const bool sweeping = settings.method == Method::kG2lf;
+  const bool sweeping = settings.method != Method::kPerView;
   o.method = sweeping ? lightfield::Method::kSweepingPlanes : lightfield::Method::kPerView;
   o.planes = settings.g2lf;
   o.split_levels = 0;  // V2LF: a split re-uploads the scene every frame
@@ -155,6 +155,8 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
     renderer = lightfield::make_gl_renderer(o, kind, device_);
   else
     renderer->set_options(o);
+  if (settings.method == Method::kG2lfDirect)  // the panel straight from the planes: no quilt
+    return renderer->render_panel_into(plan_.geometry, lens_, {}, panel_);
   if (sweeping && kind == lightfield::SceneKind::kGaussians) return render_g2lf(*renderer, o);
   return renderer->render_quilt_into(plan_.geometry, plan_.layout, quilt_);
 }
@@ -166,7 +168,7 @@ void LightFieldFrame::fill_report(const ViewerSettings& settings, const lightfie
     // Stage times of the voxel path are not timed per stage; the frame time says it all.
     report.binning_seconds = report.planes_seconds = report.swizzle_seconds = report.raster_seconds = 0.0;
     report.plane_bytes = stats.plane_bytes;
-  } else if (settings.method == Method::kG2lf) {
+  } else if (settings.method != Method::kPerView) {
     report.binning_seconds = stats.seconds_binning;
     report.planes_seconds = stats.seconds_planes;
     report.swizzle_seconds = stats.seconds_swizzle;
@@ -188,12 +190,15 @@ void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSetti
                              FrameReport* report) {
   plan_ = plan_frame(calibration_, camera, settings);
   const render::QuiltLayout& layout = plan_.layout;
-  if (quilt_.width() != layout.width || quilt_.height() != layout.height)
+  const bool direct = settings.method == Method::kG2lfDirect;
+  if (direct)
+    quilt_ = gpu::Texture();  // none on this path
+  else if (quilt_.width() != layout.width || quilt_.height() != layout.height)
     quilt_ = gpu::Texture(GL_RGBA8, layout.width, layout.height);
-  if (!interlacer_layout_ || interlacer_layout_->width != layout.width ||
+  if (!direct && (!interlacer_layout_ || interlacer_layout_->width != layout.width ||
       interlacer_layout_->height != layout.height || interlacer_layout_->cols != layout.cols ||
       interlacer_layout_->rows != layout.rows || interlacer_layout_->views != layout.views ||
-      interlacer_layout_->aspect != layout.aspect) {
+      interlacer_layout_->aspect != layout.aspect)) {
     interlacer_ = std::make_unique<gpu::GlInterlacer>(lens_, layout);
     interlacer_layout_ = layout;
   }
@@ -203,7 +208,7 @@ void LightFieldFrame::render(const render::CameraSpec& camera, const ViewerSetti
     interlace_timer_.begin_frame();
     interlace_timer_.stamp(0);
   }
-  interlacer_->interlace(quilt_, panel_);
+  if (!direct) interlacer_->interlace(quilt_, panel_);
   if (timed) {
     interlace_timer_.stamp(1);
     interlace_timer_.end_frame();

@@ -101,6 +101,10 @@ std::filesystem::path quilt_path_with_suffix(const std::filesystem::path& out, c
 }
 
 void write_quilt(const LightFieldFrame& frame, const std::filesystem::path& out) {
+  if (!frame.quilt().id()) {  // the direct method renders no quilt
+    std::cout << "no quilt: the g2lf-direct method renders the panel straight from the planes\n";
+    return;
+  }
   const auto path = quilt_path_with_suffix(out, frame.layout());
   write_png(path, to_uint8(gpu::image_from_texture(frame.quilt())));
   std::cout << fmt::format("wrote {}\n", path.string());
@@ -291,7 +295,7 @@ void run_control_actions(FrameLoop& loop) {
   if (!loop.controls) return;
   const LightFieldFrame& frame = loop.frame;
   ControlImages images;
-  images.quilt = &frame.quilt();
+  images.quilt = frame.quilt().id() ? &frame.quilt() : nullptr;  // none with g2lf-direct
   images.seen_from = loop.previewer.texture();
   images.seen_from_age_s = loop.previewer.age_seconds();
   images.seen_from_cost_s = loop.previewer.last_compute_seconds();

@@ -24,12 +24,15 @@ void read_field(const json& j, const char* field, T& value, const std::string& s
 
 }  // namespace
 
-std::string method_name(Method m) { return m == Method::kG2lf ? "g2lf" : "per-view"; }
+std::string method_name(Method m) {
+  return m == Method::kG2lf ? "g2lf" : m == Method::kG2lfDirect ? "g2lf-direct" : "per-view";
+}
 
 Method parse_method(const std::string& name) {
   if (name == "g2lf") return Method::kG2lf;
   if (name == "per-view") return Method::kPerView;
-  throw_input_error("method: '{}' is neither g2lf nor per-view", name);
+  if (name == "g2lf-direct") return Method::kG2lfDirect;
+  throw_input_error("method: '{}' is not g2lf, g2lf-direct or per-view", name);
 }
 
 void ViewerSettings::check(const std::string& source) const {

@@ -11,7 +11,8 @@
 
 namespace lfd::viewer {
 
-enum class Method { kG2lf, kPerView };
+// kG2lfDirect: G2LF's planes straight into the panel, no quilt (gpu/gl_direct_panel.hpp).
+enum class Method { kG2lf, kPerView, kG2lfDirect };
 
 struct ViewerSettings {
   Method method = Method::kG2lf;
@@ -29,7 +30,7 @@ struct ViewerSettings {
   void check(const std::string& source) const;
 };
 
-std::string method_name(Method m);  // "g2lf" | "per-view"
+std::string method_name(Method m);  // "g2lf" | "per-view" | "g2lf-direct"
 Method parse_method(const std::string& name);  // InputError for another name
 
 // JSON text of the settings, and back (missing fields keep their defaults; wrong types and

@@ -137,9 +137,8 @@ render::SweepingPlanes render_voxel_planes(const VoxelChunks& binned, const Voxe
 
 }  // namespace
 
-ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
-                         const render::QuiltLayout& layout, const V2lfOptions& options,
-                         const glm::vec3& background, V2lfStats* stats) {
+void render_planes_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+                        const V2lfOptions& options, const render::PlaneConsumer& consume, V2lfStats* stats) {
   options.check(geometry);
   const render::G2lfOptions& o = options.planes;
   VoxelChunks binned;
@@ -152,12 +151,25 @@ ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& g
     return render_voxel_planes(binned, scene, geometry, ref, o);
   };
   render::SweepingPlaneStats frame;
-  ImageF quilt = render::render_sweeping_plane_quilt(stages, geometry, layout, o, background, stats ? &frame : nullptr);
+  render::run_sweeping_planes(stages, geometry, o, consume, stats ? &frame : nullptr);
   if (stats) {
     render::copy_plane_stats(frame, *stats);
     stats->voxels_binned = frame.binned;
     stats->voxels_split = binned.voxels_split;
   }
+}
+
+ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+                         const render::QuiltLayout& layout, const V2lfOptions& options,
+                         const glm::vec3& background, V2lfStats* stats) {
+  ImageF quilt;
+  render_planes_v2lf(
+      scene, geometry, options,
+      [&](const render::SweepingPlanes& planes, const render::ReferenceCamera& ref) {
+        quilt = ImageF(layout.width, layout.height, 3, 0.0f);
+        render::swizzle_blend(planes, geometry, ref, layout, options.planes.filter, background, quilt);
+      },
+      stats);
   return quilt;
 }
 

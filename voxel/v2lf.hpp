@@ -63,6 +63,12 @@ ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& g
                          const render::QuiltLayout& layout, const V2lfOptions& options,
                          const glm::vec3& background, V2lfStats* stats = nullptr);
 
+// Binning and planes with the same options, then `consume` with the planes (the direct panel
+// pass, interlace/direct_panel.hpp); checks `options` first.
+void render_planes_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+                        const V2lfOptions& options, const render::PlaneConsumer& consume,
+                        V2lfStats* stats = nullptr);
+
 // The same without splitting.
 ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, const render::G2lfOptions& options,

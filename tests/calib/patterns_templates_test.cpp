@@ -22,7 +22,7 @@ TEST(PatternsTemplates, EveryShippedTemplateParsesAndPlansPatterns) {
     EXPECT_GE(set.board.corners_px.size(), 10u) << e.path();
     ++count;
   }
-  EXPECT_EQ(count, 8);
+  EXPECT_EQ(count, 10);
 }
 
 TEST(PatternsTemplates, Gen3TemplatesCarryTheirSubpixelCells) {

@@ -1,0 +1,83 @@
+// lfd bench direct: the direct panel pass against the quilt path (bench/direct_benchmark.hpp).
+#include <cstdio>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "apps/bench.hpp"
+#include "apps/cli.hpp"
+#include "bench/bench_renderers.hpp"
+#include "bench/direct_benchmark.hpp"
+#include "render/g2lf.hpp"
+#include "util/atomic_file.hpp"
+#include "util/data_dir.hpp"
+
+namespace lfd::apps {
+
+int RunBenchDirect(int argc, char** argv) {
+  CLI::App app{
+      "The direct panel pass (every subpixel composited from the sweeping planes at its own view\n"
+      "offset, no quilt) against the quilt path (swizzle blend, then the interlacer) on one backend,\n"
+      "the runs alternating: per display, scene and N_chunk the median time after the planes and of\n"
+      "the whole frame, the quilt's memory, and PSNR over the panel against a continuous reference\n"
+      "(per-view renders at --reference-views views, nearest view per subpixel) for the direct panel\n"
+      "and the quilt path with nearest and linear view blending.\n"
+      "\nExamples:\n"
+      "  lfd bench direct --quick\n"
+      "  lfd bench direct --chunks 16,64,256 --json direct.json\n"
+      "  lfd bench direct --scene ../shared/data/scenes/guitar.compressed.ply --generated 0 --reference-views 0",
+      "direct"};
+  bench::DirectBenchOptions o;
+  std::string backend = "cpu", json_path;
+  std::vector<std::string> scene_files;
+  std::vector<size_t> generated = {100000};
+  const std::filesystem::path displays = data_dir() / "displays";
+  o.calibrations = {(displays / "portrait.visual.json").string(), (displays / "16in-landscape-gen3.visual.json").string(),
+                    (displays / "go.visual.json").string()};
+  bool quick = false;
+  std::string direct_filter = "bilinear";
+  app.add_option("--direct-filter", direct_filter,
+                 "the direct pass's plane sampling, nearest or bilinear (the quilt path: nearest, then the "
+                 "interlacer's bilinear lookup)")
+      ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
+  app.add_option("--backend", backend, "renderer: cpu, or gl (OpenGL 4.5 through headless EGL; exit 2 without it)")
+      ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
+  app.add_option("--calibration", o.calibrations, "displays (visual.json or calibration.json), comma-separated")
+      ->delimiter(',')->capture_default_str();
+  app.add_option("--scene", scene_files, "scene files (repeatable; a missing one is skipped with a message)");
+  app.add_option("--generated", generated, "Gaussians of generated tabletop scenes, comma-separated (0: none)")
+      ->delimiter(',')->capture_default_str();
+  app.add_option("--chunks", o.chunks, "N_chunk of each row, comma-separated")->delimiter(',')->capture_default_str();
+  app.add_option("--runs", o.runs, "timed frames per side and row (0: the backend's default)")->capture_default_str();
+  app.add_option("--warmup", o.warmup, "untimed frames of each side first")->capture_default_str();
+  app.add_option("--reference-views", o.reference_views,
+                 "views of the continuous reference (per-view renders; 0: no PSNR)")->capture_default_str();
+  app.add_option("--view-height", o.view_height, "view height in pixels (width: the display's aspect)")
+      ->capture_default_str();
+  app.add_flag("--quick", quick, "a short run: the Go only, 20k Gaussians, 64 reference views, 2 runs");
+  app.add_option("--json", json_path, "write the figures as JSON to this file");
+  if (auto code = parse(app, argc, argv)) return *code;
+  o.direct_filter = render::parse_plane_filter(direct_filter);
+  if (quick) {
+    if (!app.count("--calibration")) o.calibrations = {(displays / "go.visual.json").string()};
+    if (!app.count("--generated")) generated = scene_files.empty() ? std::vector<size_t>{20000} : std::vector<size_t>{};
+    if (!app.count("--reference-views")) o.reference_views = 64;
+    if (!app.count("--runs")) o.runs = 2;
+  }
+  for (const std::string& f : scene_files) o.scenes.push_back({f, 0});
+  for (size_t n : generated)
+    if (n > 0) o.scenes.push_back({"", n});
+  o.check();
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
+  const nlohmann::ordered_json result = bench::run_direct_benchmark(
+      *renderers.sweeping, o.reference_views > 0 ? renderers.per_view.get() : nullptr, o);
+  if (!json_path.empty()) {
+    write_text_atomic(json_path, result.dump(2) + "\n");
+    std::printf("\nwrote %s\n", json_path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace lfd::apps

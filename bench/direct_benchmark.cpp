@@ -1,0 +1,301 @@
+#include "bench/direct_benchmark.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "bench/timing_stats.hpp"
+#include "display/calibration_file.hpp"
+#include "display/display_quilt.hpp"
+#include "display/lens_model.hpp"
+#include "gpu/gl_interlacer.hpp"
+#include "interlace/interlacer.hpp"
+#include "lightfield/gl_renderer.hpp"
+#include "render/default_camera.hpp"
+#include "render/image_metrics.hpp"
+#include "render/per_view_quilt.hpp"
+#include "render/scene_generator.hpp"
+#include "render/scene_io.hpp"
+#include "util/error.hpp"
+
+namespace lfd::bench {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// One display's frame: the views the display asks for around the scene's framing.
+struct Frame {
+  std::string display_name;
+  display::Calibration calibration;
+  display::DisplayQuilt quilt;
+  render::QuiltGeometry geometry;
+  render::QuiltLayout layout;
+};
+
+Frame make_frame(const std::string& path, const lightfield::LightFieldScene& scene, int view_height) {
+  Frame f;
+  f.display_name = fs::path(path).filename().string();
+  f.calibration = display::read_calibration(path);
+  f.quilt = display::quilt_for_display(f.calibration);
+  const display::ViewSize size = display::view_size_for_display(f.quilt, view_height);
+  const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
+  const render::Camera base = render::camera_from_spec(spec, size.width, size.height);
+  f.geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
+                                           float(f.quilt.view_cone_deg), f.quilt.views);
+  f.layout = render::make_quilt_layout(f.geometry, f.quilt.grid.cols, f.quilt.grid.rows);
+  return f;
+}
+
+// The quilt path's interlacing on the renderer's backend: the CPU reference interlacer on the
+// quilt image, or the interlacing shader on the GL device's quilt texture.
+class QuiltInterlacer {
+ public:
+  QuiltInterlacer(lightfield::LightFieldRenderer& renderer, const display::LensModel& lens,
+                  const render::QuiltLayout& layout, interlace::ViewBlend blend)
+      : renderer_(renderer), lens_(lens), layout_(layout) {
+    options_.blend = blend;
+    gl_ = dynamic_cast<lightfield::GlLightFieldRenderer*>(&renderer);
+    if (gl_) {
+      gl_interlacer_ = std::make_unique<gpu::GlInterlacer>(lens, layout, options_);
+      gl_panel_ = gpu::Texture(renderer.options().gl.quilt_format, lens.calibration().screen_w,
+                               lens.calibration().screen_h);
+    }
+  }
+  // The last quilt into the panel; returns the seconds (GL: until the GPU is done).
+  double interlace() {
+    const auto t0 = Clock::now();
+    if (gl_) {
+      gl_interlacer_->interlace(gl_->gl_device().quilt(layout_, renderer_.options().gl.quilt_format), gl_panel_);
+      glFinish();
+    } else {
+      panel_ = interlace::interlace(renderer_.read_quilt(), layout_, lens_, options_);
+    }
+    return seconds_since(t0);
+  }
+  ImageF panel() const { return gl_ ? gpu::image_from_texture(gl_panel_) : panel_; }
+
+ private:
+  lightfield::LightFieldRenderer& renderer_;
+  const display::LensModel& lens_;
+  render::QuiltLayout layout_;
+  interlace::InterlaceOptions options_;
+  lightfield::GlLightFieldRenderer* gl_ = nullptr;
+  std::unique_ptr<gpu::GlInterlacer> gl_interlacer_;
+  gpu::Texture gl_panel_;
+  ImageF panel_;
+};
+
+// The continuous reference: every subpixel from the per-view render at `views` views nearest its
+// view fraction, looked up as the interlacer looks up a tile (bilinear, the aspect fit), one view
+// rendered at a time.
+ImageF reference_panel(lightfield::LightFieldRenderer& per_view, const Frame& f, const display::LensModel& lens,
+                       int views) {
+  const auto& cal = lens.calibration();
+  render::QuiltGeometry g = f.geometry;
+  g.views = views;
+  render::QuiltLayout one;
+  one.cols = one.rows = one.views = 1;
+  one.width = g.base.width;
+  one.height = g.base.height;
+  one.aspect = double(g.base.width) / g.base.height;
+  const interlace::Interlacer lookup(lens, one);
+  std::vector<uint16_t> nearest(size_t(cal.screen_w) * cal.screen_h * 3);
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int row = 0; row < cal.screen_h; ++row)
+    for (int x = 0; x < cal.screen_w; ++x)
+      for (int c = 0; c < 3; ++c)
+        nearest[(size_t(row) * cal.screen_w + x) * 3 + c] =
+            uint16_t(display::LensModel::view_index(lens.subpixel_view_fraction(x, row, c), views));
+  ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
+  for (int j = 0; j < views; ++j) {
+    const ImageF view = per_view.render_view(g, j);
+#pragma omp parallel for schedule(dynamic, 16)
+    for (int row = 0; row < cal.screen_h; ++row) {
+      const double gain = interlace::fringe_gain(cal, row);
+      for (int x = 0; x < cal.screen_w; ++x) {
+        const interlace::TilePoint t = interlace::tile_point(lens, one.aspect, false, x, row);
+        if (!t.inside) continue;
+        for (int c = 0; c < 3; ++c)
+          if (nearest[(size_t(row) * cal.screen_w + x) * 3 + c] == j)
+            panel.at(x, row, c) = float(lookup.sample_tile(view, 0, t.u, t.v, c) * gain);
+      }
+    }
+  }
+  return panel;
+}
+
+class Runner {
+ public:
+  Runner(lightfield::LightFieldRenderer& sweeping, lightfield::LightFieldRenderer* per_view,
+         const DirectBenchOptions& options)
+      : sweeping_(sweeping), per_view_(per_view), options_(options),
+        runs_(options.runs > 0 ? options.runs : sweeping.default_runs()) {}
+
+  nlohmann::ordered_json run() {
+    nlohmann::ordered_json out = {{"benchmark", "direct"},       {"backend", sweeping_.name()},
+                                  {"device", sweeping_.device()}, {"memory", sweeping_.memory_kind()},
+                                  {"runs", runs_},                {"warmup", options_.warmup},
+                                  {"reference_views", options_.reference_views},
+                                  {"tables", nlohmann::ordered_json::array()}};
+    std::printf("lfd bench direct: backend %s (%s); per row the median of %d frames of each side after %d "
+                "warm-up, the sides alternating; 'after planes': quilt path = swizzle + interlace, direct = the "
+                "direct pass; PSNR against the panel of per-view renders at %d views (nearest view per subpixel)\n",
+                sweeping_.name().c_str(), sweeping_.device().c_str(), runs_, options_.warmup,
+                options_.reference_views);
+    for (const SceneSource& source : options_.scenes) {
+      if (!source.path.empty() && !fs::exists(source.path)) {
+        std::printf("\nskipped %s: not found\n", source.path.c_str());
+        continue;
+      }
+      const lightfield::LightFieldScene scene(source.path.empty() ? generated(source.generated)
+                                                                  : render::load_scene(source.path));
+      sweeping_.set_scene(scene);
+      if (per_view_) per_view_->set_scene(scene);
+      for (const std::string& calibration : options_.calibrations)
+        out["tables"].push_back(run_table(source, scene, make_frame(calibration, scene, options_.view_height)));
+    }
+    return out;
+  }
+
+ private:
+  static render::GaussianScene generated(size_t gaussians) {
+    render::SceneGeneratorOptions g;
+    g.count = gaussians;
+    return render::generate_scene(g);
+  }
+
+  nlohmann::ordered_json run_table(const SceneSource& source, const lightfield::LightFieldScene& scene,
+                                   const Frame& f) {
+    const display::LensModel lens(f.calibration.display, f.calibration.correction);
+    const auto& cal = f.calibration.display;
+    std::printf("\n#### %s on %s (%dx%d panel): %zu %s, %d views of %dx%d (%dx%d quilt), view cone %.0f deg\n\n",
+                source.label().c_str(), f.display_name.c_str(), cal.screen_w, cal.screen_h, scene.size(),
+                scene.primitives(), f.geometry.views, f.geometry.base.width, f.geometry.base.height,
+                f.layout.width, f.layout.height, f.quilt.view_cone_deg);
+    std::optional<ImageF> reference;
+    if (per_view_ && options_.reference_views > 0) {
+      const auto t0 = Clock::now();
+      reference = reference_panel(*per_view_, f, lens, options_.reference_views);
+      std::printf("(reference: %d per-view renders in %.1f s)\n\n", options_.reference_views, seconds_since(t0));
+    }
+    std::printf("| N_chunk | swizzle [s] | interlace [s] | after planes: quilt [s] | direct pass [s] | speed-up "
+                "| frame: quilt [s] | frame: direct [s] | speed-up | quilt [MB] | PSNR direct [dB] "
+                "| PSNR quilt nearest [dB] | PSNR quilt linear [dB] |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    nlohmann::ordered_json table = {{"scene", source.label()},
+                                    {"primitives", scene.size()},
+                                    {"display", f.display_name},
+                                    {"panel", {cal.screen_w, cal.screen_h}},
+                                    {"views", f.geometry.views},
+                                    {"view_size", {f.geometry.base.width, f.geometry.base.height}},
+                                    {"quilt", {f.layout.width, f.layout.height}},
+                                    {"rows", nlohmann::ordered_json::array()}};
+    for (int chunks : options_.chunks) table["rows"].push_back(run_row(f, lens, chunks, reference));
+    return table;
+  }
+
+  nlohmann::ordered_json run_row(const Frame& f, const display::LensModel& lens, int chunks,
+                                 const std::optional<ImageF>& reference) {
+    lightfield::RendererOptions o = sweeping_.options();
+    o.planes.chunks = chunks;
+    o.gl.gpu_timers = true;  // the stage times (they wait at the end of a frame, as glFinish does)
+    sweeping_.set_options(o);
+    lightfield::RendererOptions direct = o;
+    direct.planes.filter = options_.direct_filter;
+    QuiltInterlacer nearest(sweeping_, lens, f.layout, interlace::ViewBlend::kNearest);
+    std::vector<double> swizzle, interlace_s, after_quilt, direct_pass, frame_quilt, frame_direct;
+    for (int i = 0; i < options_.warmup + runs_; ++i) {
+      auto t0 = Clock::now();
+      const lightfield::QuiltStats q = sweeping_.render_quilt(f.geometry, f.layout);
+      const double il = nearest.interlace();
+      const double quilt_frame = seconds_since(t0);
+      sweeping_.set_options(direct);
+      t0 = Clock::now();
+      const lightfield::QuiltStats d = sweeping_.render_panel(f.geometry, lens, {});
+      const double direct_frame = seconds_since(t0);
+      sweeping_.set_options(o);
+      if (i < options_.warmup) continue;
+      swizzle.push_back(q.seconds_swizzle);
+      interlace_s.push_back(il);
+      after_quilt.push_back(q.seconds_swizzle + il);
+      direct_pass.push_back(d.seconds_swizzle);
+      frame_quilt.push_back(quilt_frame);
+      frame_direct.push_back(direct_frame);
+    }
+    const TimingStats sw = summarize(swizzle), il = summarize(interlace_s), aq = summarize(after_quilt),
+                      dp = summarize(direct_pass), fq = summarize(frame_quilt), fd = summarize(frame_direct);
+    const double quilt_mb = double(f.layout.width) * f.layout.height *
+                            (dynamic_cast<lightfield::GlLightFieldRenderer*>(&sweeping_) ? 4.0 : 12.0) / 1e6;
+    std::optional<double> psnr_direct, psnr_nearest, psnr_linear;
+    if (reference) {
+      psnr_direct = render::psnr(sweeping_.read_panel(), *reference);
+      sweeping_.render_quilt(f.geometry, f.layout);
+      nearest.interlace();
+      psnr_nearest = render::psnr(nearest.panel(), *reference);
+      QuiltInterlacer linear(sweeping_, lens, f.layout, interlace::ViewBlend::kLinear);
+      linear.interlace();
+      psnr_linear = render::psnr(linear.panel(), *reference);
+    }
+    const auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.2f}", *v) : std::string("-"); };
+    std::printf("| %d | %.3f | %.3f | %.3f | %.3f | %.2fx | %.3f | %.3f | %.2fx | %.0f | %s | %s | %s |\n", chunks,
+                sw.median, il.median, aq.median, dp.median, aq.median / dp.median, fq.median, fd.median,
+                fq.median / fd.median, quilt_mb, opt(psnr_direct).c_str(), opt(psnr_nearest).c_str(),
+                opt(psnr_linear).c_str());
+    std::fflush(stdout);
+    const auto json_opt = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; };
+    return {{"chunks", chunks},
+            {"swizzle_seconds", sw.to_json()},
+            {"interlace_seconds", il.to_json()},
+            {"after_planes_quilt_seconds", aq.to_json()},
+            {"direct_pass_seconds", dp.to_json()},
+            {"after_planes_speedup", aq.median / dp.median},
+            {"frame_quilt_seconds", fq.to_json()},
+            {"frame_direct_seconds", fd.to_json()},
+            {"frame_speedup", fq.median / fd.median},
+            {"quilt_bytes", quilt_mb * 1e6},
+            {"psnr_direct_db", json_opt(psnr_direct)},
+            {"psnr_quilt_nearest_db", json_opt(psnr_nearest)},
+            {"psnr_quilt_linear_db", json_opt(psnr_linear)}};
+  }
+
+  lightfield::LightFieldRenderer& sweeping_;
+  lightfield::LightFieldRenderer* per_view_;
+  const DirectBenchOptions& options_;
+  const int runs_;
+};
+
+}  // namespace
+
+void DirectBenchOptions::check() const {
+  const auto fail = [](const std::string& field, const std::string& problem) {
+    throw_input_error("direct benchmark: {}: {}", field, problem);
+  };
+  if (calibrations.empty()) fail("calibrations", "no display");
+  if (scenes.empty()) fail("scenes", "no scene");
+  if (chunks.empty()) fail("chunks", "no plane count");
+  for (int c : chunks)
+    if (c < 1 || c > 4096) fail("chunks", fmt::format("{} is outside 1..4096", c));
+  if (runs < 0 || runs > 1000) fail("runs", fmt::format("{} is outside 0..1000", runs));
+  if (warmup < 0 || warmup > 100) fail("warmup", fmt::format("{} is outside 0..100", warmup));
+  if (reference_views != 0 && (reference_views < 2 || reference_views > 4096))
+    fail("reference_views", fmt::format("{} is outside 2..4096 (0: none)", reference_views));
+  if (view_height < 16 || view_height > 4096) fail("view_height", fmt::format("{} is outside 16..4096", view_height));
+}
+
+nlohmann::ordered_json run_direct_benchmark(lightfield::LightFieldRenderer& sweeping,
+                                            lightfield::LightFieldRenderer* per_view,
+                                            const DirectBenchOptions& options) {
+  options.check();
+  return Runner(sweeping, per_view, options).run();
+}
+
+}  // namespace lfd::bench

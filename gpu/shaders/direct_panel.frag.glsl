@@ -1,0 +1,95 @@
+// The direct panel pass (issue 24; docs/rendering.md "Direct panel rendering"), the GLSL twin of
+// interlace::render_direct_panel (interlace/direct_panel.cpp) and render::PlaneRays
+// (render/plane_rays.cpp): one fragment per panel pixel. Each channel's view fraction comes from
+// lens_view.glsl (prepended: the one GLSL definition the interlacer uses too); it stands for the
+// camera at view position s = f - 1/2, offset dx = view_offset_at(s) (render/quilt_geometry.hpp),
+// and the sweeping planes are composited front to back along that camera's ray through the
+// pixel's point in the view (the interlacer's aspect fit), for that channel alone. Plane
+// coordinates are Eq. (u_prime) as plane_coordinate_x_at / plane_coordinate_y write it, sampled
+// as the CPU's (nearest, or bilinear from four texelFetches, empty (0, 0, 0, 1) outside); a ray
+// stops below 0.5/255 transmittance. No quilt.
+// Defines: BILINEAR 0|1.
+
+layout(binding = 0) uniform sampler2DArray planes;  // rows bottom-up (gpu/gl_planes.hpp)
+
+// The plane table (gpu/gl_planes.hpp): header, then d_k and the first splat per plane.
+struct PlaneEntry {
+  float depth;
+  uint begin;
+};
+layout(std430, binding = 0) readonly buffer PlaneTable {
+  uint plane_count;
+  uint splats_binned;
+  uint pad0, pad1;
+  PlaneEntry plane[];
+};
+
+uniform ivec2 plane_size;        // Wp, Hp
+uniform float focal_distance;    // D_focal
+uniform float tan_x, tan_y;      // base camera tan(theta/2)
+uniform float tan_rx, tan_ry;    // reference camera tan(theta'/2)
+uniform float d_forward_eff;
+uniform float two_focal_distance, tan_half_cone;  // view_offset_at(s) = 2 D_focal s tan(phi/2)
+uniform vec2 aspect_scale;       // interlace::aspect_fit for the views' aspect
+uniform bool invert_views;       // InterlaceOptions::invert_views
+uniform float fringe;            // calibration().fringe
+uniform vec3 background;
+
+layout(location = 0) out vec4 panel;
+
+const float kMinTransmittance = 0.5 / 255.0;
+
+vec4 fetch(int x, int row, int layer) {
+  if (x < 0 || x >= plane_size.x || row < 0 || row >= plane_size.y) return vec4(0.0, 0.0, 0.0, 1.0);
+  return texelFetch(planes, ivec3(x, plane_size.y - 1 - row, layer), 0);
+}
+
+void main() {
+  const ivec2 pixel = ivec2(gl_FragCoord.xy);  // (x, j), j bottom-up
+  const vec2 tile_uv = (lens_pixel_uv(pixel) - 0.5) * aspect_scale + 0.5;
+  if (any(lessThan(tile_uv, vec2(0.0))) || any(greaterThan(tile_uv, vec2(1.0)))) {
+    panel = vec4(0.0, 0.0, 0.0, 1.0);
+    return;
+  }
+  precise const float u_ndc = 2.0 * tile_uv.x - 1.0;
+  precise const float v_ndc = 1.0 - 2.0 * tile_uv.y;  // top-down, as the planes' rows
+  const float Wp = float(plane_size.x), Hp = float(plane_size.y);
+  vec3 dx;
+  for (int c = 0; c < 3; ++c) {
+    float f = lens_view_fraction(pixel, c);
+    if (invert_views) f = 1.0 - f;
+    precise const float s = f - 0.5;
+    dx[c] = two_focal_distance * s * tan_half_cone;
+  }
+  vec3 C = vec3(0.0), t = vec3(1.0);
+  const uint count = plane_count;
+  for (uint k = 0u; k < count && max(t.r, max(t.g, t.b)) >= kMinTransmittance; ++k) {
+    const float d = plane[k].depth;
+    precise const float depth_ref = d - d_forward_eff;
+    precise const float parallax = (focal_distance - d) / focal_distance / (depth_ref * tan_rx);
+    precise const float scale_x = d * tan_x / (depth_ref * tan_rx);
+    precise const float scale_y = d * tan_y / (depth_ref * tan_ry);
+    precise const float py = ((scale_y * v_ndc + 1.0) * Hp - 1.0) * 0.5;
+    const int layer = int(k);
+    for (int c = 0; c < 3; ++c) {
+      if (t[c] < kMinTransmittance) continue;
+      precise const float px = ((dx[c] * parallax + u_ndc * scale_x + 1.0) * Wp - 1.0) * 0.5;
+      vec4 sample_k;
+#if BILINEAR
+      const int row0 = int(floor(py)), col0 = int(floor(px));
+      precise const float fy = py - float(row0), fx = px - float(col0);
+      const vec4 a = fetch(col0, row0, layer), b = fetch(col0 + 1, row0, layer);
+      const vec4 e = fetch(col0, row0 + 1, layer), g = fetch(col0 + 1, row0 + 1, layer);
+      precise vec4 mixed = (1.0 - fy) * ((1.0 - fx) * a + fx * b) + fy * ((1.0 - fx) * e + fx * g);
+      sample_k = mixed;
+#else
+      sample_k = fetch(int(floor(px + 0.5)), int(floor(py + 0.5)), layer);
+#endif
+      C[c] += t[c] * sample_k[c];
+      t[c] *= sample_k.a;
+    }
+  }
+  // interlace::fringe_gain (looking-glass.md 3.11): every other row darkened.
+  const float fringe_gain = 1.0 - abs(fringe) * floor(mod(float(pixel.y) + 0.5 + ceil(fringe / 2.0), 2.0));
+  panel = vec4((C + t * background) * fringe_gain, 1.0);
+}

@@ -1,0 +1,59 @@
+// The direct panel pass (interlace/direct_panel.hpp): one job per panel row; the row's rays
+// (three per pixel inside the fitted view) go to render::PlaneRays, which finds each plane's
+// row once for them all.
+#include "interlace/direct_panel.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "interlace/interlacer.hpp"
+#include "render/plane_rays.hpp"
+
+namespace lfd::interlace {
+
+double panel_view_fraction(const display::LensModel& lens, bool invert_views, int x, int row, int channel) {
+  const double f = lens.subpixel_view_fraction(x, row, channel);
+  return invert_views ? 1.0 - f : f;
+}
+
+ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::QuiltGeometry& geometry,
+                           const render::ReferenceCamera& ref, const display::LensModel& lens,
+                           const DirectPanelOptions& options) {
+  const auto& cal = lens.calibration();
+  ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
+  const render::PlaneRays rays(planes, geometry, ref, options.filter, options.background);
+  const double view_aspect = double(geometry.base.width) / double(geometry.base.height);
+  // Fractions lie in [0, 1]: offsets within the cone's edges s = +-1/2.
+  const float max_abs_dx = std::abs(geometry.view_offset_at(0.5f));
+#pragma omp parallel
+  {
+    std::vector<render::PlaneRay> row_rays;
+    std::vector<int> row_x;
+    std::vector<float> values;
+#pragma omp for schedule(dynamic, 8)
+    for (int row = 0; row < cal.screen_h; ++row) {
+      row_rays.clear();
+      row_x.clear();
+      double tile_v = 0;
+      for (int x = 0; x < cal.screen_w; ++x) {
+        const TilePoint t = tile_point(lens, view_aspect, options.overscan, x, row);
+        if (!t.inside) continue;
+        tile_v = t.v;  // the same for every pixel of the row
+        for (int c = 0; c < 3; ++c) {
+          const double f = panel_view_fraction(lens, options.invert_views, x, row, c);
+          row_rays.push_back({geometry.view_offset_at(view_position_of_fraction(f)), float(2.0 * t.u - 1.0), c});
+          row_x.push_back(x);
+        }
+      }
+      if (row_rays.empty()) continue;
+      // Base-camera NDC of the view row, top-down as the planes' rows ((2 y + 1) / H - 1 at tile
+      // row y, v = 1 - (y + 1/2) / H).
+      rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values);
+      const double gain = fringe_gain(cal, row);
+      for (size_t i = 0; i < row_rays.size(); ++i) panel.at(row_x[i], row, row_rays[i].channel) = float(values[i] * gain);
+    }
+  }
+  return panel;
+}
+
+}  // namespace lfd::interlace

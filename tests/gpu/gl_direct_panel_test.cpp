@@ -1,0 +1,96 @@
+// The direct panel pass on the GPU (gpu/gl_direct_panel.hpp) against the CPU's
+// (interlace::render_direct_panel) on the same planes of flat-coloured layers: u8 and f32
+// planes, nearest and bilinear, invView both ways, overscan, Gen3 cells, fringe.
+#include "gpu/gl_direct_panel.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "display/visual_json.hpp"
+#include "gpu/gl_context.hpp"
+#include "tests/interlace/flat_layer_planes.hpp"
+#include "tests/test_data.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+struct Agreement {
+  double max_difference = 0;
+  double fraction_within = 0;  // of subpixels within 1/255
+};
+
+Agreement compare(const ImageF& gpu, const ImageF& cpu) {
+  EXPECT_EQ(gpu.width, cpu.width);
+  EXPECT_EQ(gpu.height, cpu.height);
+  Agreement a;
+  size_t within = 0;
+  for (size_t i = 0; i < cpu.pixels.size() && i < gpu.pixels.size(); ++i) {
+    const double d = std::abs(double(gpu.pixels[i]) - cpu.pixels[i]);
+    a.max_difference = std::max(a.max_difference, d);
+    within += d <= 1.0 / 255;
+  }
+  a.fraction_within = double(within) / double(cpu.pixels.size());
+  return a;
+}
+
+// A sample lands on the other side of a texel boundary (nearest) when the CPU's and the GPU's
+// float rounding differ there: a few subpixels on layer edges, so the bar is a fraction.
+void expect_gpu_matches_cpu(const std::string& name, const display::LensModel& lens,
+                            const test_planes::FlatLayerScene& s) {
+  for (const render::PlaneFilter filter : {render::PlaneFilter::kNearest, render::PlaneFilter::kBilinear})
+    for (int variant = 0; variant < 3; ++variant) {
+      interlace::DirectPanelOptions o;
+      o.filter = filter;
+      o.background = s.background;
+      o.overscan = variant == 1;
+      o.invert_views = variant == 2;
+      const ImageF cpu = interlace::render_direct_panel(s.planes, s.geometry, s.ref, lens, o);
+      const ImageF gpu = direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o);
+      const Agreement a = compare(gpu, cpu);
+      const std::string what = name + (filter == render::PlaneFilter::kBilinear ? " bilinear" : " nearest") +
+                               (o.overscan ? " overscan" : "") + (o.invert_views ? " invert" : "");
+      std::printf("  %-44s max |GL - CPU| %.2e  within 1/255: %.4f %%\n", what.c_str(), a.max_difference,
+                  100 * a.fraction_within);
+      EXPECT_GE(a.fraction_within, 0.999) << what;
+      if (filter == render::PlaneFilter::kBilinear) EXPECT_LT(a.max_difference, 0.02) << what;
+    }
+}
+
+TEST(GlDirectPanel, MatchesTheCpuDirectPass) {
+  HeadlessContext context;
+  display::DisplayCalibration c = display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json"));
+  c.screen_w /= 8;
+  c.screen_h /= 8;
+  c.fringe = 0.1;
+  const display::LensModel lens(c);
+  expect_gpu_matches_cpu("LKG-2K-04409 / 8, f32 planes", lens, test_planes::flat_layer_scene(160, 100, 8));
+  expect_gpu_matches_cpu("LKG-2K-04409 / 8, u8 planes", lens,
+                         test_planes::flat_layer_scene(160, 100, 8, render::PlanePrecision::kU8));
+}
+
+TEST(GlDirectPanel, MatchesTheCpuDirectPassOnGen3Cells) {
+  HeadlessContext context;
+  display::DisplayCalibration c =
+      display::read_visual_json(test::fixture_calibration("template-16in-portrait-gen3.visual.json"));
+  c.screen_w /= 8;
+  c.screen_h /= 8;
+  c.inv_view = false;
+  const display::LensModel lens(c);
+  expect_gpu_matches_cpu("16in portrait Gen3 / 8, !invView", lens, test_planes::flat_layer_scene(135, 240, 32));
+}
+
+TEST(GlDirectPanel, APanelTextureOfTheWrongSizeIsAnInputError) {
+  HeadlessContext context;
+  const display::LensModel lens(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")));
+  const test_planes::FlatLayerScene s = test_planes::flat_layer_scene(32, 20, 4);
+  const GlPlanes planes = upload_planes(s.planes);
+  GlDirectPanel pass(lens);
+  Texture panel(GL_RGBA8, 100, 100);
+  EXPECT_THROW(pass.run(planes, s.geometry, s.ref, {}, panel), InputError);
+}
+
+}  // namespace
+}  // namespace lfd::gpu
