@@ -49,18 +49,7 @@ std::optional<rgbd::RgbdOptions> rgbd_options(bool rgbd, const std::string& sett
   bool any = rgbd || !settings_path.empty();
   for (const auto& [key, value] : flags) any = any || !value.empty();
   if (!any) return std::nullopt;
-  rgbd::RgbdOptions options;
-  if (!settings_path.empty()) {
-    const auto bytes = media::read_file_bytes(settings_path, 1 << 20);
-    try {
-      options = rgbd::parse_rgbd_options_json(std::string(bytes.begin(), bytes.end()));
-    } catch (const InputError& e) {
-      throw_input_error("{}: {}", settings_path, e.what());
-    }
-  }
-  for (const auto& [key, value] : flags)
-    if (!value.empty()) rgbd::set_rgbd_option(options, key, value);
-  return options;
+  return rgbd::rgbd_options_from_command_line(settings_path, flags);
 }
 
 }  // namespace

@@ -21,25 +21,6 @@
 #include "util/image.hpp"
 
 namespace lfd::apps {
-namespace {
-
-// The RGB-D options: a bridge.js settings file first, then each flag given, by its bridge.js key.
-rgbd::RgbdOptions rgbd_options(const std::string& settings_path,
-                               const std::vector<std::pair<std::string, std::string>>& flags) {
-  rgbd::RgbdOptions options;
-  if (!settings_path.empty()) {
-    try {
-      options = rgbd::parse_rgbd_options_json(read_text_file(settings_path));
-    } catch (const InputError& e) {
-      throw_input_error("{}: {}", settings_path, e.what());
-    }
-  }
-  for (const auto& [key, value] : flags)
-    if (!value.empty()) rgbd::set_rgbd_option(options, key, value);
-  return options;
-}
-
-}  // namespace
 
 int RunRgbdQuilt(int argc, char** argv) {
   CLI::App app{"Turn an RGB-D image (colour and depth side by side, Looking Glass / bridge.js "
@@ -77,7 +58,7 @@ int RunRgbdQuilt(int argc, char** argv) {
   add_backend_option(app, backend_name, "cpu (the reference) or gl (the GL twin, same quilt), auto");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const rgbd::RgbdOptions options = rgbd_options(
+  const rgbd::RgbdOptions options = rgbd::rgbd_options_from_command_line(
       settings_path, {{"depth_loc", depth_loc}, {"depthiness", depthiness}, {"focus", focus},
                       {"zoom", zoom}, {"crop_pos_x", crop_x}, {"crop_pos_y", crop_y},
                       {"depth_inversion", inversion ? "1" : ""}, {"chroma_depth", chroma ? "1" : ""}});

@@ -1,6 +1,9 @@
 #include "gpu/glfw_session.hpp"
 
 #include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include <iostream>
 
 #include "util/error.hpp"
 
@@ -55,6 +58,17 @@ GLFWmonitor* GlfwSession::find_display_monitor(const std::string& name_prefix, i
   if (int(index) >= count)  // unplugged just now
     throw_input_error("the monitors changed while looking for the display; try again");
   return handles[index];
+}
+
+GLFWmonitor* GlfwSession::display_monitor_or_none(const std::string& name_prefix, int width_px,
+                                                  int height_px) const {
+  try {
+    return find_display_monitor(name_prefix, width_px, height_px);
+  } catch (const InputError& e) {
+    std::cerr << fmt::format("notice: no monitor for the display ({}); showing a simulated display in a window\n",
+                             e.what());
+  }
+  return nullptr;
 }
 
 }  // namespace lfd::gpu

@@ -28,6 +28,9 @@ class GlfwSession {
   // The monitor for a display of width_px x height_px (choose_monitor's rule).
   GLFWmonitor* find_display_monitor(const std::string& name_prefix, int width_px,
                                     int height_px) const;
+  // The same, or nullptr with a notice on stderr when the display is not connected: the caller
+  // shows a simulated display in a window instead (`lfd view`, `lfd play`).
+  GLFWmonitor* display_monitor_or_none(const std::string& name_prefix, int width_px, int height_px) const;
   // GLFW's description of its most recent error ("" if none).
   static std::string last_error();
 };

@@ -49,13 +49,7 @@ bool same_layout(const render::QuiltLayout& a, const render::QuiltLayout& b) {
 GLFWmonitor* find_monitor(const gpu::GlfwSession& session, const PlayerOptions& options) {
   if (options.simulated_display) return nullptr;
   const auto& d = options.calibration.display;
-  try {
-    return session.find_display_monitor(options.monitor_prefix, d.screen_w, d.screen_h);
-  } catch (const InputError& e) {
-    std::cerr << fmt::format("notice: no monitor for the display ({}); showing a simulated display in a window\n",
-                             e.what());
-  }
-  return nullptr;
+  return session.display_monitor_or_none(options.monitor_prefix, d.screen_w, d.screen_h);
 }
 
 }  // namespace

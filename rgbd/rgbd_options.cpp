@@ -5,10 +5,12 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
 namespace lfd::rgbd {
@@ -148,6 +150,28 @@ nlohmann::json rgbd_options_to_json(const RgbdOptions& options) {
           {"zoom", options.zoom},
           {"crop_pos_x", options.crop_pos_x},
           {"crop_pos_y", options.crop_pos_y}};
+}
+
+RgbdOptions rgbd_options_from_command_line(const std::string& settings_path,
+                                           const std::vector<std::pair<std::string, std::string>>& flags) {
+  RgbdOptions options;
+  if (!settings_path.empty()) {
+    constexpr std::uintmax_t kMaxSettingsBytes = 1 << 20;  // a settings object is a few hundred bytes
+    std::error_code error;
+    const std::uintmax_t size = std::filesystem::file_size(settings_path, error);
+    if (error) throw_input_error("{}: cannot read the RGB-D settings ({})", settings_path, error.message());
+    if (size > kMaxSettingsBytes)
+      throw_input_error("{}: {} bytes, more than the {} an RGB-D settings file may have", settings_path, size,
+                        kMaxSettingsBytes);
+    try {
+      options = parse_rgbd_options_json(read_text_file(settings_path));
+    } catch (const InputError& e) {
+      throw_input_error("{}: {}", settings_path, e.what());
+    }
+  }
+  for (const auto& [key, value] : flags)
+    if (!value.empty()) set_rgbd_option(options, key, value);
+  return options;
 }
 
 }  // namespace lfd::rgbd

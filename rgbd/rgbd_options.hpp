@@ -6,6 +6,8 @@
 // (docs/rgbd.md "Options"). Bridge's own renderer is closed: what each value does to the views is
 // lfd's model, written out in docs/rgbd.md "The view model".
 #include <string>
+#include <utility>
+#include <vector>
 #include <string_view>
 
 #include <nlohmann/json_fwd.hpp>
@@ -56,5 +58,11 @@ RgbdOptions rgbd_options_from_json(const nlohmann::json& settings, RgbdOptions b
 RgbdOptions parse_rgbd_options_json(std::string_view text, RgbdOptions base = {});
 // The options as bridge.js keys (depth_loc as its number, flags as 0/1).
 nlohmann::json rgbd_options_to_json(const RgbdOptions& options);
+
+// The options of a command line (`lfd play`, `lfd rgbd-quilt`): a bridge.js settings file first
+// (when `settings_path` is not empty; at most 1 MiB), then each flag given (key, value; an empty
+// value is a flag not given). InputError naming the file or the key.
+RgbdOptions rgbd_options_from_command_line(const std::string& settings_path,
+                                           const std::vector<std::pair<std::string, std::string>>& flags);
 
 }  // namespace lfd::rgbd

@@ -141,23 +141,38 @@ void BridgeApi::add_handlers() {
   };
 }
 
+namespace {
+
+// An RGB-D entry's keys (depth_loc, depthiness, focus, ...) read by the RGB-D module's one
+// parser, which knows bridge.js's ranges and defaults; bridge.js sends some values as text.
+rgbd::RgbdOptions rgbd_options_of(const json& r) {
+  rgbd::RgbdOptions o;
+  for (const char* key : {"depth_loc", "depthiness", "focus", "depth_inversion", "chroma_depth", "zoom",
+                          "crop_pos_x", "crop_pos_y"}) {
+    if (!r.contains(key)) continue;
+    const json& v = r.at(key);
+    if (v.is_string())
+      rgbd::set_rgbd_option(o, key, v.get<std::string>());
+    else if (v.is_number() || v.is_boolean())
+      rgbd::set_rgbd_option(o, key, v.is_boolean() ? (v.get<bool>() ? "1" : "0") : v.dump());
+    else
+      throw_input_error("{}: not a number", key);
+  }
+  return o;
+}
+
+}  // namespace
+
 PlaylistEntry BridgeApi::entry_of(const json& r) const {
   PlaylistEntry e;
   e.file = checked_request_file(field_text(r, "uri", 4096, ""), limits_.max_file_bytes);
-  e.rgbd = field_bool(r, "isRGBD", false);
   e.quilt.cols = field_int(r, "cols", 1, 100, 1);
   e.quilt.rows = field_int(r, "rows", 1, 100, 1);
   e.quilt.views = field_int(r, "view_count", 1, e.quilt.cols * e.quilt.rows, e.quilt.cols * e.quilt.rows);
   e.quilt.aspect = field_number(r, "aspect", 0.01, 100, 1.0);
   e.focus = field_number(r, "focus", -10, 10, 0);
   e.duration_ms = field_int(r, "durationMS", 0, 86'400'000, 0);
-  e.rgbd_settings.depth_loc = field_int(r, "depth_loc", 0, 3, 2);
-  e.rgbd_settings.depth_inversion = field_bool(r, "depth_inversion", false);
-  e.rgbd_settings.chroma_depth = field_bool(r, "chroma_depth", false);
-  e.rgbd_settings.depthiness = field_number(r, "depthiness", 0, 10, 1);
-  e.rgbd_settings.zoom = field_number(r, "zoom", 0.01, 10, 1);
-  e.rgbd_settings.crop_x = field_number(r, "crop_pos_x", -1, 1, 0);
-  e.rgbd_settings.crop_y = field_number(r, "crop_pos_y", -1, 1, 0);
+  if (field_bool(r, "isRGBD", false)) e.rgbd = rgbd_options_of(r);
   return e;
 }
 

@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "display/calibration_file.hpp"
+#include "rgbd/rgbd_options.hpp"
 #include "util/image.hpp"
 
 namespace lfd::serve {
@@ -36,22 +38,12 @@ struct ServedDisplay {
   int window_x = 0, window_y = 0;
 };
 
-// An RGB-D entry's settings as bridge.js sends them; depth_loc follows bridge.js (0 top,
-// 1 bottom, 2 right, 3 left; reference/looking-glass-services.md).
-struct RgbdSettings {
-  int depth_loc = 2;
-  bool depth_inversion = false;
-  bool chroma_depth = false;
-  double depthiness = 1.0;
-  double zoom = 1.0;
-  double crop_x = 0, crop_y = 0;
-};
-
 struct PlaylistEntry {
   std::filesystem::path file;  // a checked local file (serve/request_file.hpp)
-  bool rgbd = false;
+  // An RGB-D entry's settings (isRGBD: bridge.js's keys, ranges and defaults, docs/rgbd.md);
+  // none for a quilt.
+  std::optional<rgbd::RgbdOptions> rgbd;
   QuiltSettings quilt;
-  RgbdSettings rgbd_settings;
   double focus = 0;
   int duration_ms = 0;  // 0: the player's default
 };

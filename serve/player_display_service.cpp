@@ -71,13 +71,13 @@ void PlayerDisplayService::wipe(int display) {
 void PlayerDisplayService::play_playlist(int display, const Playlist& playlist, int head_index) {
   std::vector<play::PlaylistEntry> entries;
   for (const PlaylistEntry& e : playlist.entries) {
-    if (e.rgbd) throw_input_error("playlist {}: RGB-D entries are not played yet (docs/serve.md)", playlist.name);
     play::PlaylistEntry p;
     p.path = e.file;
     p.quilt.cols = e.quilt.cols;
     p.quilt.rows = e.quilt.rows;
     p.quilt.views = e.quilt.views;
     p.quilt.aspect = e.quilt.aspect;
+    p.rgbd = e.rgbd;  // RGB-D: turned into views on the GPU by the player (docs/rgbd.md)
     if (e.duration_ms > 0) p.duration_s = e.duration_ms / 1000.0;
     entries.push_back(std::move(p));
   }

@@ -4,6 +4,7 @@
 #include <spdlog/spdlog.h>
 #include <nlohmann/json.hpp>
 
+#include "rgbd/rgbd_options.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
@@ -14,24 +15,19 @@ using json = nlohmann::json;
 namespace {
 
 json entry_json(const PlaylistEntry& e) {
-  return {{"file", e.file.string()}, {"rgbd", e.rgbd}, {"cols", e.quilt.cols}, {"rows", e.quilt.rows},
+  return {{"file", e.file.string()}, {"cols", e.quilt.cols}, {"rows", e.quilt.rows},
           {"views", e.quilt.views}, {"aspect", e.quilt.aspect}, {"focus", e.focus},
-          {"duration_ms", e.duration_ms}, {"depth_loc", e.rgbd_settings.depth_loc},
-          {"depth_inversion", e.rgbd_settings.depth_inversion},
-          {"chroma_depth", e.rgbd_settings.chroma_depth}, {"depthiness", e.rgbd_settings.depthiness},
-          {"zoom", e.rgbd_settings.zoom}, {"crop_x", e.rgbd_settings.crop_x}, {"crop_y", e.rgbd_settings.crop_y}};
+          {"duration_ms", e.duration_ms},
+          {"rgbd", e.rgbd ? rgbd::rgbd_options_to_json(*e.rgbd) : json(nullptr)}};
 }
 
 PlaylistEntry entry_from_json(const json& j) {
   PlaylistEntry e;
   e.file = j.at("file").get<std::string>();
-  e.rgbd = j.at("rgbd").get<bool>();
+  if (!j.at("rgbd").is_null()) e.rgbd = rgbd::rgbd_options_from_json(j.at("rgbd"));
   e.quilt = {j.at("cols").get<int>(), j.at("rows").get<int>(), j.at("views").get<int>(), j.at("aspect").get<double>()};
   e.focus = j.at("focus").get<double>();
   e.duration_ms = j.at("duration_ms").get<int>();
-  e.rgbd_settings = {j.at("depth_loc").get<int>(), j.at("depth_inversion").get<bool>(),
-                     j.at("chroma_depth").get<bool>(), j.at("depthiness").get<double>(),
-                     j.at("zoom").get<double>(), j.at("crop_x").get<double>(), j.at("crop_y").get<double>()};
   return e;
 }
 

@@ -79,6 +79,37 @@ TEST_F(BridgeApiTest, PlaysAPlaylistOfCheckedFiles) {
   EXPECT_EQ(again.get("p")->entries[0].file, fake.last_playlist.entries[0].file);
 }
 
+TEST_F(BridgeApiTest, RgbdEntriesCarryBridgeJsSettingsToThePlayer) {
+  call("instance_playlist", {{"orchestration", token}, {"name", "p"}});
+  call("insert_playlist_entry", {{"orchestration", token}, {"name", "p"}, {"index", 0}, {"uri", quilt_file()},
+                                 {"isRGBD", 1}, {"depth_loc", 3}, {"depthiness", "2.5"}, {"focus", 0.01},
+                                 {"depth_inversion", 1}, {"chroma_depth", 0}, {"zoom", 1.5}});
+  call("insert_playlist_entry", {{"orchestration", token}, {"name", "p"}, {"index", 1}, {"uri", quilt_file()},
+                                 {"rows", 1}, {"cols", 1}, {"isRGBD", 0}});
+  call("play_playlist", {{"orchestration", token}, {"name", "p"}, {"head_index", -1}});
+  ASSERT_EQ(fake.last_playlist.entries.size(), 2u);
+  const auto& rgbd = fake.last_playlist.entries[0].rgbd;
+  ASSERT_TRUE(rgbd);
+  EXPECT_EQ(rgbd->depth_loc, rgbd::DepthLocation::left);
+  EXPECT_DOUBLE_EQ(rgbd->depthiness, 2.5);
+  EXPECT_DOUBLE_EQ(rgbd->focus, 0.01);
+  EXPECT_TRUE(rgbd->depth_inversion);
+  EXPECT_DOUBLE_EQ(rgbd->zoom, 1.5);
+  EXPECT_FALSE(fake.last_playlist.entries[1].rgbd);
+  // The state file keeps them: a second store reads the same settings back.
+  PlaylistStore again{tmp.path / "state" / "playlists.json", limits};
+  ASSERT_TRUE(again.get("p"));
+  ASSERT_TRUE(again.get("p")->entries[0].rgbd);
+  EXPECT_DOUBLE_EQ(again.get("p")->entries[0].rgbd->depthiness, 2.5);
+  EXPECT_FALSE(again.get("p")->entries[1].rgbd);
+  // Out of bridge.js's range: an error reply naming the key, and the playlist unchanged.
+  const BridgeResponse bad = api.handle("insert_playlist_entry",
+      json{{"orchestration", token}, {"name", "p"}, {"uri", quilt_file()}, {"isRGBD", 1}, {"depthiness", 99}}.dump());
+  EXPECT_EQ(bad.http_status, 400);
+  EXPECT_NE(bad.body.find("depthiness"), std::string::npos) << bad.body;
+  EXPECT_EQ(playlists.get("p")->entries.size(), 2u);
+}
+
 TEST_F(BridgeApiTest, RefusesUrisThatAreNotReadableRegularFiles) {
   call("instance_playlist", {{"orchestration", token}, {"name", "p"}});
   const auto fifo = tmp.path / "fifo.png";

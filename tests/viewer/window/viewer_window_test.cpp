@@ -54,7 +54,9 @@ Files write_inputs(const ViewerSettings& s, const std::string& tag) {
   fs::create_directories(kDir);
   Files f;
   f.scene = kDir / "scene.ply";
-  if (!fs::exists(f.scene)) write_text_atomic(f.scene, render::encode_ply(test_scene()));
+  // Written every time: a scene left in the temporary folder by another build (another generator)
+  // would not be the one the headless render draws.
+  write_text_atomic(f.scene, render::encode_ply(test_scene()));
   f.settings = kDir / (tag + ".settings.json");
   save_settings(f.settings, s);
   f.camera = kDir / "cam.json";
