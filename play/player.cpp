@@ -136,6 +136,15 @@ struct Player::Impl {
 
   std::string entry_name() const { return content ? content->name : std::string(); }
 
+  void update_rgbd_option(const std::string& key, const std::string& value) {
+    if (!content || !content->rgbd)
+      throw_input_error("{}: not an RGB-D entry, so {} does not apply", content ? content->name : "nothing shown", key);
+    rgbd::set_rgbd_option(*content->rgbd, key, value);
+    if (index >= 0 && index < int(playlist.size()) && playlist[size_t(index)].rgbd)
+      rgbd::set_rgbd_option(*playlist[size_t(index)].rgbd, key, value);
+    panel_dirty = true;  // the views are made again from the same frame
+  }
+
   void emit(PlaybackEventKind kind, const std::string& message = {}, std::string name = {}) {
     const PlaybackEvent event{kind, index, name.empty() ? entry_name() : std::move(name), position, message};
     std::vector<std::function<void(const PlaybackEvent&)>> callbacks;
@@ -424,6 +433,14 @@ void Player::previous() { impl_->enqueue([](Impl& p) { p.go_to(p.index - 1); });
 void Player::go_to(int entry_index) { impl_->enqueue([entry_index](Impl& p) { p.go_to(entry_index); }); }
 void Player::seek(double seconds) { impl_->enqueue([seconds](Impl& p) { p.seek(seconds); }); }
 void Player::seek_by(double seconds) { impl_->enqueue([seconds](Impl& p) { p.seek(p.position + seconds); }); }
+void Player::update_rgbd_option(const std::string& key, const std::string& value) {
+  if (key == "depth_loc" || key == "depth-loc")
+    throw_input_error("{}: changes the layout of the views; give it with the entry", key);
+  rgbd::RgbdOptions checked;
+  rgbd::set_rgbd_option(checked, key, value);  // a bad key or value throws here, not in a frame
+  impl_->enqueue([key, value](Impl& p) { p.update_rgbd_option(key, value); });
+}
+
 void Player::set_loop(bool loop) { impl_->enqueue([loop](Impl& p) { p.looping = loop; }); }
 void Player::set_overlay(bool visible) { impl_->enqueue([visible](Impl& p) { p.overlay = visible; }); }
 void Player::quit() {

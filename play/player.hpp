@@ -136,6 +136,12 @@ class Player {
   // Relative to the current position.
   void seek_by(double seconds);
   void set_loop(bool loop);
+  // Changes one RGB-D setting (a bridge.js key: focus, depthiness, zoom, crop_pos_x, ...; what
+  // Bridge's update_current_entry sends) of the entry shown, if it is RGB-D, and redraws its
+  // views; the playlist keeps the change. Throws InputError now, on the caller's thread, for an
+  // unknown key or a value out of range; an entry that is not RGB-D is left as it is, with a
+  // notice event.
+  void update_rgbd_option(const std::string& key, const std::string& value);
   // Shows or hides the notice/help overlay (what the H key does). Off by default: nothing
   // covers the panel unless asked.
   void set_overlay(bool visible);

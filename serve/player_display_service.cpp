@@ -2,6 +2,7 @@
 #include "serve/player_display_service.hpp"
 
 #include <chrono>
+#include <set>
 #include <thread>
 
 #include <fmt/format.h>
@@ -118,8 +119,18 @@ void PlayerDisplayService::transport(Transport command, int index) {
   }
 }
 
-void PlayerDisplayService::update_current_entry(const std::string& parameter, double) {
-  throw_input_error("update_current_entry: {} is not adjustable by lfd play's player yet (docs/serve.md)", parameter);
+void PlayerDisplayService::update_current_entry(const std::string& parameter, double value) {
+  // The RGB-D settings of the entry shown change its views on the next frame; the quilt-only
+  // ones (aspect, depth_cutoff) the player does not adjust (docs/serve.md).
+  static const std::set<std::string> rgbd_keys = {"focus", "depthiness", "zoom", "crop_pos_x", "crop_pos_y"};
+  if (!rgbd_keys.count(parameter))
+    throw_input_error("update_current_entry: {} is not adjustable by lfd play's player yet (docs/serve.md)", parameter);
+  int display;
+  {
+    std::lock_guard lock(mutex_);
+    display = playlist_display_;
+  }
+  player(std::max(display, 0)).update_rgbd_option(parameter, fmt::format("{}", value));
 }
 
 void PlayerDisplayService::show_window(bool show) {

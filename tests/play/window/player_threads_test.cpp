@@ -11,6 +11,9 @@
 #include "display/calibration_file.hpp"
 #include "media/synthetic_quilt.hpp"
 #include "play/player.hpp"
+#include "render/image_metrics.hpp"
+#include "tests/rgbd/rgbd_fixture.hpp"
+#include "util/error.hpp"
 
 namespace lfd::play {
 namespace {
@@ -71,6 +74,39 @@ TEST(PlayerThreads, CommandsFromAnotherThreadApplyInOrder) {
       {PlaybackEventKind::kEntryStarted, 0}, {PlaybackEventKind::kPaused, 1}, {PlaybackEventKind::kSeeked, 1},
       {PlaybackEventKind::kEntryStarted, 1}, {PlaybackEventKind::kQuit, 1}};
   EXPECT_EQ(events, expected);
+}
+
+// Bridge's update_current_entry through lfd serve: an RGB-D setting changed on the entry shown
+// makes its views again, equal to an entry that had the setting from the start.
+TEST(PlayerThreads, RgbdSettingOfTheShownEntryChangesItsViews) {
+  PlayerOptions options;
+  options.calibration =
+      display::read_calibration(fs::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json");
+  options.print_notices = false;
+  Player player(options);
+  const fs::path dir = fs::temp_directory_path() / "lfd_player_threads_test";
+  fs::create_directories(dir);
+  const fs::path frame = dir / "layers_rgbd.png";
+  write_png(frame, to_uint8(rgbd::test::layered_rgbd_frame(160, 120, rgbd::DepthLocation::right)));
+  rgbd::RgbdOptions deep, flat;
+  deep.depthiness = 2.0;
+  flat.depthiness = 0.1;
+  PlaylistEntry a{frame}, b{frame};
+  a.rgbd = deep;
+  b.rgbd = flat;
+  player.set_playlist({a, b});
+  player.pause();
+  Image8 before, after, reference;
+  player.run(3, &before);
+  EXPECT_THROW(player.update_rgbd_option("depthiness", "99"), InputError);  // out of bridge.js's range
+  EXPECT_THROW(player.update_rgbd_option("depth_loc", "left"), InputError);  // would change the layout
+  player.update_rgbd_option("depthiness", "0.1");
+  player.run(2, &after);
+  player.go_to(1);
+  player.run(2, &reference);
+  EXPECT_EQ(player.state().entry_index, 1);
+  EXPECT_GE(render::psnr(to_float(after), to_float(reference)), 40.0);
+  EXPECT_LT(render::psnr(to_float(before), to_float(reference)), 35.0);
 }
 
 }  // namespace
