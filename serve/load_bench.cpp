@@ -75,11 +75,17 @@ struct HoloPlayClient {
   }
 };
 
-Outcome bridge_put(httplib::Client& c, const std::string& endpoint, const json& body) {
+Outcome bridge_put(httplib::Client& c, const std::string& endpoint, const json& body, int timeout_ms) {
+  const auto start = std::chrono::steady_clock::now();
   const auto r = c.Put(("/" + endpoint).c_str(), body.dump(), "application/json");
   // No answer read in time is unanswered; a connection refused or closed first is a refusal.
-  if (!r) return r.error() == httplib::Error::Read || r.error() == httplib::Error::Write ? Outcome::kUnanswered
-                                                                                       : Outcome::kRefused;
+  // cpp-httplib reports both a read timeout and a connection the service closed (its keep-alive
+  // ending as the request went out) as a read or write error: the time taken tells them apart.
+  if (!r) {
+    const double waited_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    const bool io_error = r.error() == httplib::Error::Read || r.error() == httplib::Error::Write;
+    return io_error && waited_ms >= 0.9 * timeout_ms ? Outcome::kUnanswered : Outcome::kRefused;
+  }
   if (r->status != 200) return Outcome::kRefused;
   const json reply = json::parse(r->body, nullptr, false);
   return !reply.is_discarded() && reply["status"]["value"] == "Completion" ? Outcome::kAnswered : Outcome::kRefused;
@@ -163,15 +169,16 @@ void client_loop(const LoadBenchOptions& o, int id, Clock::time_point end, Share
     switch (kind) {
       case 0: outcome = holoplay.request({{"cmd", {{"info", json::object()}}}, {"bin", nullptr}}); break;
       case 1: outcome = holoplay.request(show); break;
-      case 2: outcome = bridge_put(http, "available_output_devices", {{"orchestration", token}}); break;
+      case 2: outcome = bridge_put(http, "available_output_devices", {{"orchestration", token}}, o.timeout_ms); break;
       case 3:
-        outcome = bridge_put(http, "instance_playlist", {{"orchestration", token}, {"name", playlist}});
+        outcome = bridge_put(http, "instance_playlist", {{"orchestration", token}, {"name", playlist}}, o.timeout_ms);
         if (outcome == Outcome::kAnswered)
           outcome = bridge_put(http, "insert_playlist_entry",
                                {{"orchestration", token}, {"name", playlist}, {"uri", "file://" + o.quilt_file},
-                                {"rows", o.quilt.rows}, {"cols", o.quilt.cols}, {"aspect", o.quilt.aspect}});
+                                {"rows", o.quilt.rows}, {"cols", o.quilt.cols}, {"aspect", o.quilt.aspect}},
+                               o.timeout_ms);
         if (outcome == Outcome::kAnswered)
-          outcome = bridge_put(http, "play_playlist", {{"orchestration", token}, {"name", playlist}, {"head_index", 0}});
+          outcome = bridge_put(http, "play_playlist", {{"orchestration", token}, {"name", playlist}, {"head_index", 0}}, o.timeout_ms);
         break;
       case 4: outcome = event_socket(o); break;
       case 5: vanish(o); break;  // counted as sent only: nothing is due
