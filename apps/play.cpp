@@ -8,6 +8,7 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "apps/rgbd_cli.hpp"
 #include "media/quilt_image.hpp"
 #include "rgbd/rgbd_options.hpp"
 #include "play/entry_content.hpp"
@@ -40,16 +41,6 @@ std::vector<play::PlaylistEntry> collect_entries(const std::vector<std::string>&
     entries.push_back(std::move(e));
   }
   return entries;
-}
-
-// The RGB-D options of the command line's files: a bridge.js settings file, then each flag by its
-// bridge.js key (as `lfd rgbd-quilt` reads them); nullopt when no RGB-D option was given.
-std::optional<rgbd::RgbdOptions> rgbd_options(bool rgbd, const std::string& settings_path,
-                                              const std::vector<std::pair<std::string, std::string>>& flags) {
-  bool any = rgbd || !settings_path.empty();
-  for (const auto& [key, value] : flags) any = any || !value.empty();
-  if (!any) return std::nullopt;
-  return rgbd::rgbd_options_from_command_line(settings_path, flags);
 }
 
 }  // namespace
@@ -85,19 +76,10 @@ int RunPlay(int argc, char** argv) {
   app.add_option("--rows", quilt.rows, "quilt rows (overrides the name)")->check(CLI::Range(1, 256));
   app.add_option("--views", quilt.views, "number of views (default cols*rows)")->check(CLI::Range(1, 256));
   app.add_option("--aspect", quilt.aspect, "aspect of one tile's content")->check(CLI::PositiveNumber);
-  bool is_rgbd = false, inversion = false, chroma = false;
-  std::string rgbd_settings, depth_loc, depthiness, focus, zoom, crop_x, crop_y;
+  bool is_rgbd = false;
   app.add_flag("--rgbd", is_rgbd, "the files are RGB-D (colour and depth side by side; any RGB-D option implies it)");
-  app.add_option("--rgbd-settings", rgbd_settings, "bridge.js RGBDHologram settings (JSON); flags override");
-  app.add_option("--depth-loc", depth_loc, "RGB-D: where the depth half is: right (default), left, top, bottom, "
-                 "or bridge.js's 2, 3, 0, 1");
-  app.add_option("--depthiness", depthiness, "RGB-D: relief scale, 0.1 to 4 (bridge.js default 1.5)");
-  app.add_option("--focus", focus, "RGB-D: zero-parallax offset, -0.05 to 0.05");
-  app.add_option("--zoom", zoom, "RGB-D: magnification about the crop centre, 0.1 to 4");
-  app.add_option("--crop-pos-x", crop_x, "RGB-D: crop centre, half widths, + right, -2 to 2");
-  app.add_option("--crop-pos-y", crop_y, "RGB-D: crop centre, half heights, + up, -2 to 2");
-  app.add_flag("--depth-inversion", inversion, "RGB-D: the depth map has black near");
-  app.add_flag("--chroma-depth", chroma, "RGB-D: depth as hue (red near, blue far)");
+  RgbdFlags rgbd_flags;
+  rgbd_flags.add(app, "--rgbd-settings", "RGB-D: ");
   bool no_loop = false, software = false, overscan = false, invert = false;
   app.add_flag("--no-loop", no_loop, "stop after the last entry");
   std::string blend = "nearest";
@@ -121,10 +103,9 @@ int RunPlay(int argc, char** argv) {
   options.interlace.invert_views = invert;
   options.hardware_decode = !software;
   std::optional<bool> loop;
-  const auto rgbd = rgbd_options(is_rgbd, rgbd_settings,
-                                 {{"depth_loc", depth_loc}, {"depthiness", depthiness}, {"focus", focus},
-                                  {"zoom", zoom}, {"crop_pos_x", crop_x}, {"crop_pos_y", crop_y},
-                                  {"depth_inversion", inversion ? "1" : ""}, {"chroma_depth", chroma ? "1" : ""}});
+  // RGB-D when asked (--rgbd) or implied by any RGB-D option; nullopt: the files are quilts.
+  std::optional<rgbd::RgbdOptions> rgbd;
+  if (is_rgbd || rgbd_flags.any()) rgbd = rgbd_flags.options();
   std::vector<play::PlaylistEntry> entries = collect_entries(files, quilt, rgbd, duration, loop);
   options.loop = loop.value_or(!no_loop) && !no_loop;
   // One file: a bad one is an error (exit 2), not a skipped entry.

@@ -10,6 +10,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "apps/quilt_file_name.hpp"
+#include "apps/rgbd_cli.hpp"
 #include "display/display_quilt.hpp"
 #include "render/quilt_layout.hpp"
 #include "rgbd/gl_rgbd_views.hpp"
@@ -32,24 +33,14 @@ int RunRgbdQuilt(int argc, char** argv) {
                "  lfd rgbd-quilt frame.png q.png --calibration visual.json --backend gl\n"
                "  lfd rgbd-quilt frame.png q.png --settings rgbd.json  (bridge.js RGBDHologram settings)",
                "rgbd-quilt"};
-  std::string in_path, out_path, settings_path, backend_name = "cpu";
-  std::string depth_loc, depthiness, focus, zoom, crop_x, crop_y;
-  bool inversion = false, chroma = false;
+  std::string in_path, out_path, backend_name = "cpu";
+  RgbdFlags rgbd_flags;
   std::optional<int> views;
   double view_cone_deg = kDefaultViewConeDeg;
   int tile_height = 0;
   app.add_option("rgbd", in_path, "RGB-D image (PNG, JPEG, ...)")->required();
   app.add_option("out", out_path, "quilt file to write (PNG; _qsCxRaA is added)")->required();
-  app.add_option("--settings", settings_path, "bridge.js RGBDHologram settings (JSON); flags override");
-  app.add_option("--depth-loc", depth_loc, "where the depth half is: right (default), left, top, "
-                 "bottom, or bridge.js's 2, 3, 0, 1");
-  app.add_option("--depthiness", depthiness, "relief scale, 0.1 to 4 (bridge.js default 1.5)");
-  app.add_option("--focus", focus, "zero-parallax offset, -0.05 to 0.05 (0: mid depth)");
-  app.add_option("--zoom", zoom, "magnification about the crop centre, 0.1 to 4 (default 1)");
-  app.add_option("--crop-pos-x", crop_x, "crop centre, half widths, + right, -2 to 2");
-  app.add_option("--crop-pos-y", crop_y, "crop centre, half heights, + up, -2 to 2");
-  app.add_flag("--depth-inversion", inversion, "the depth map has black near (white far)");
-  app.add_flag("--chroma-depth", chroma, "depth as hue: red near, blue far");
+  rgbd_flags.add(app, "--settings");
   DisplaySource display;
   display.add(app, "--calibration", "display whose view count and view cone to use", false);
   app.add_option("--views", views, "number of views (default: the display's, else 45)");
@@ -58,10 +49,7 @@ int RunRgbdQuilt(int argc, char** argv) {
   add_backend_option(app, backend_name, "cpu (the reference) or gl (the GL twin, same quilt), auto");
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const rgbd::RgbdOptions options = rgbd::rgbd_options_from_command_line(
-      settings_path, {{"depth_loc", depth_loc}, {"depthiness", depthiness}, {"focus", focus},
-                      {"zoom", zoom}, {"crop_pos_x", crop_x}, {"crop_pos_y", crop_y},
-                      {"depth_inversion", inversion ? "1" : ""}, {"chroma_depth", chroma ? "1" : ""}});
+  const rgbd::RgbdOptions options = rgbd_flags.options();
   int view_count = views.value_or(kDefaultViewCount);
   if (display.given()) {
     const display::DisplayQuilt quilt = display::quilt_for_display(display.load(), views);

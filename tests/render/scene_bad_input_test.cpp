@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "tests/render/gzip_for_tests.hpp"
+#include "tests/render/scene_bad_input_fixture.hpp"
 #include "render/ply_writer.hpp"
 #include "render/scene_io.hpp"
 #include "util/error.hpp"
@@ -19,37 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class SceneBadInput : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("lfd_scene_bad_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& bytes) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-    return p;
-  }
-
-  // Loading must throw InputError whose message names the file and contains `problem`.
-  void expect_rejected(const fs::path& path, const std::string& problem) {
-    try {
-      load_scene(path);
-      FAIL() << path << " loaded without error";
-    } catch (const InputError& e) {
-      const std::string message = e.what();
-      EXPECT_NE(message.find(path.string()), std::string::npos) << message;
-      EXPECT_NE(message.find(problem), std::string::npos) << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-    }
-  }
-
-  fs::path dir_;
-};
+class SceneBadInput : public SceneBadInputFixture {};
 
 GaussianScene two_gaussians(int degree = 1) {
   GaussianScene s;

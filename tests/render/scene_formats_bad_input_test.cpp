@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/scene_io.hpp"
+#include "tests/render/scene_bad_input_fixture.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
@@ -26,34 +27,8 @@ std::string read(const fs::path& p) {
   return s.str();
 }
 
-class SceneFormatsBadInput : public ::testing::Test {
+class SceneFormatsBadInput : public SceneBadInputFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) /
-           ("lfd_formats_bad_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path write(const std::string& name, const std::string& bytes) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary).write(bytes.data(), std::streamsize(bytes.size()));
-    return p;
-  }
-
-  void expect_rejected(const fs::path& path, const std::string& problem) {
-    try {
-      load_scene(path);
-      FAIL() << path << " loaded without error";
-    } catch (const InputError& e) {
-      const std::string message = e.what();
-      EXPECT_NE(message.find(path.string()), std::string::npos) << message;
-      EXPECT_NE(message.find(problem), std::string::npos) << message;
-      EXPECT_EQ(message.find('\n'), std::string::npos) << "not one line: " << message;
-    }
-  }
-
   // A copy of the unpacked SOG fixture with meta.json edited by `edit`.
   fs::path sog_with(const std::function<void(nlohmann::json&)>& edit) {
     const fs::path d = dir_ / "sog";
@@ -65,8 +40,6 @@ class SceneFormatsBadInput : public ::testing::Test {
     std::ofstream(d / "meta.json") << meta.dump();
     return d / "meta.json";
   }
-
-  fs::path dir_;
 };
 
 // A lossless-WebP header (VP8L) claiming width x height, with no image data after it.
