@@ -13,7 +13,8 @@
 //               blended in float a batch of layers at a time and rounded once, as the CPU's
 //   swizzle     GlSwizzle (render::swizzle_blend) into the quilt texture
 // One frame is GPU work only: the plane count, the binned count and the draw's instance count
-// stay on the GPU, so nothing waits for a read-back (GpuTimer reads and stats excepted).
+// stay on the GPU, so nothing waits for a read-back (the stage times and counts come through
+// gpu/gl_frame_ring.hpp, read frames late; docs/gpu.md "A frame that never waits").
 #include <cstddef>
 #include <optional>
 #include <vector>

@@ -277,23 +277,4 @@ void Program::dispatch_1d(size_t items, int local_size) const {
   glDispatchCompute(x, y, 1);
 }
 
-// ---- GpuTimer ----
-
-GpuTimer::GpuTimer() {
-  GLuint ids[2] = {0, 0};
-  glCreateQueries(GL_TIMESTAMP, 2, ids);
-  start_ = GlName<delete_query>(ids[0]);
-  stop_ = GlName<delete_query>(ids[1]);
-}
-
-void GpuTimer::begin() const { glQueryCounter(start_.id(), GL_TIMESTAMP); }
-void GpuTimer::end() const { glQueryCounter(stop_.id(), GL_TIMESTAMP); }
-
-double GpuTimer::seconds() const {
-  GLuint64 t0 = 0, t1 = 0;
-  glGetQueryObjectui64v(start_.id(), GL_QUERY_RESULT, &t0);
-  glGetQueryObjectui64v(stop_.id(), GL_QUERY_RESULT, &t1);
-  return t1 > t0 ? double(t1 - t0) * 1e-9 : 0.0;
-}
-
 }  // namespace lfd::gpu

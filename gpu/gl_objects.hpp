@@ -158,19 +158,6 @@ class Program {
   std::vector<std::pair<std::string, GLint>> uniforms_;  // active uniforms and their locations
 };
 
-// GPU time of a span of commands, read back after the frame. Two GL_TIMESTAMP queries rather
-// than GL_TIME_ELAPSED: llvmpipe reads 0 for elapsed-time queries around compute dispatches.
-class GpuTimer {
- public:
-  GpuTimer();
-  void begin() const;
-  void end() const;
-  double seconds() const;  // waits for the result
-
- private:
-  GlName<delete_query> start_, stop_;
-};
-
 // The 2D image of a texture (level 0; one layer of an array), RGBA float, rows bottom-up.
 std::vector<float> read_texture_rgba(const Texture& texture, int layer = 0);
 
