@@ -38,6 +38,8 @@ int RunBenchGpuFrame(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
+  app.add_flag("--sort-only", o.sort_only,
+               "only the sort rows: all N against the visible (binned) Gaussians, float against normalised keys");
   if (auto code = parse(app, argc, argv)) return *code;
   if (scene_path.empty() == (generated == 0)) {
     std::fprintf(stderr, "lfd bench gpu-frame: error: give one of --scene and --generated\n");

@@ -64,26 +64,67 @@ GpuFrameRow g2lf_row(gpu::GlG2lfRenderer& renderer, const render::QuiltGeometry&
 }
 
 GpuFrameRow per_view_row(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
-                         const render::QuiltLayout& layout, gpu::Texture& quilt, gpu::TimerReads reads,
-                         GLenum accumulation, int key_bits, const GpuFrameOptions& o, const std::string& variant) {
-  gpu::GlPerViewOptions options;
-  options.depth_key_bits = key_bits;
+                         const render::QuiltLayout& layout, gpu::Texture& quilt, gpu::GlPerViewOptions options,
+                         const GpuFrameOptions& o, const std::string& variant) {
   options.gpu_timers = true;
-  options.timer_reads = reads;
-  options.accumulation_format = accumulation;
   gpu::GlPerViewRenderer renderer(scene, options);
   GpuFrameRow row;
   row.method = "per view";
   row.variant = variant;
   row.runs = o.runs;
   Stages stages;
-  row.frame_s = median_frame_seconds(o, reads == gpu::TimerReads::kLate ? o.batch : 1, [&] {
+  std::vector<double> sort;
+  row.frame_s = median_frame_seconds(o, options.timer_reads == gpu::TimerReads::kLate ? o.batch : 1, [&] {
     renderer.render_quilt(geometry, layout, {}, quilt);
     const gpu::GlPerViewStats& st = renderer.stats();
     stages.raster.push_back(st.preprocess_s + st.sort_s + st.raster_s);
+    sort.push_back(st.sort_s);
   });
   fill_stages(row, stages);
+  row.sort_s = summarize(sort).median;
   return row;
+}
+
+gpu::GlPerViewOptions per_view_options(gpu::TimerReads reads, GLenum accumulation, int key_bits) {
+  gpu::GlPerViewOptions options;
+  options.depth_key_bits = key_bits;
+  options.timer_reads = reads;
+  options.accumulation_format = accumulation;
+  return options;
+}
+
+// Sorting what is visible (docs/gpu.md "Sorting what is visible"), side by side: G2LF's binning
+// sort over all N against the binned ones only; per view the sort over all N against the visible
+// ones, and 24-bit float keys against 16 bits normalised to the visible range.
+void sort_rows(const gpu::GlScene& scene, const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+               gpu::Texture& quilt, const GpuFrameOptions& o, const gpu::GlInfo& info, std::vector<GpuFrameRow>& rows) {
+  {
+    gpu::GlG2lfRenderer renderer(scene, info);
+    gpu::GlG2lfOptions options;
+    options.g2lf.chunks = o.chunks;
+    options.g2lf.d_shift = -1.0f;
+    options.gpu_timers = true;
+    for (const bool binned_only : {false, true}) {
+      options.sort_binned_only = binned_only;
+      rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
+                              binned_only ? "binning sort over the binned Gaussians" : "binning sort over all N"));
+    }
+  }
+  struct Variant {
+    int bits;
+    bool visible_only, normalised;
+    const char* what;
+  };
+  for (const Variant& v : {Variant{24, false, false, "sort all N, 24-bit float keys (3 passes)"},
+                           Variant{24, true, false, "sort the visible, 24-bit float keys (3 passes)"},
+                           Variant{16, true, true, "sort the visible, 16-bit normalised keys (2 passes)"},
+                           Variant{32, false, false, "sort all N, 32-bit float keys (4 passes)"},
+                           Variant{32, true, false, "sort the visible, 32-bit float keys (4 passes)"}}) {
+    gpu::GlPerViewOptions options = per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, v.bits);
+    options.sort_visible_only = v.visible_only;
+    options.normalised_depth_keys = v.normalised;
+    rows.push_back(per_view_row(scene, geometry, layout, quilt, options, o, v.what));
+  }
 }
 
 }  // namespace
@@ -94,7 +135,7 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
   const gpu::GlScene scene(s.scene, info);
   gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA8);  // the quilt as displayed
   std::vector<GpuFrameRow> rows;
-  {
+  if (!o.sort_only) {
     gpu::GlG2lfRenderer renderer(scene, info);
     gpu::GlG2lfOptions options;
     options.g2lf.chunks = o.chunks;
@@ -110,25 +151,31 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
     rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
                             fmt::format("timers read late, {} frames a batch, swizzle {}", o.batch, options.swizzle_views)));
   }
+  if (o.sort_only) {
+    sort_rows(scene, geometry, layout, quilt, o, info, rows);
+    return rows;
+  }
   const int bits = 24;  // the viewer's
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, 32, o,
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, 32), o,
                               "timers waited for, RGBA32F blending, 32-bit depth keys"));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA32F, bits, o,
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, bits), o,
                               fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits)));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kLate, GL_RGBA32F, bits, o,
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kLate, GL_RGBA32F, bits), o,
                               fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, gpu::TimerReads::kWait, GL_RGBA16F, bits, o,
+  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA16F, bits), o,
                               fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
+  sort_rows(scene, geometry, layout, quilt, o, info, rows);
   return rows;
 }
 
 std::string gpu_frame_table(const std::vector<GpuFrameRow>& rows) {
   std::string out =
-      "| method | variant | frame ms | GPU binning ms | GPU planes ms | GPU swizzle ms | GPU per-view raster ms |\n"
-      "|---|---|---|---|---|---|---|\n";
+      "| method | variant | frame ms | GPU binning ms | GPU planes ms | GPU swizzle ms | GPU per-view raster ms | GPU per-view sort ms |\n"
+      "|---|---|---|---|---|---|---|---|\n";
   for (const GpuFrameRow& r : rows)
-    out += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} |\n", r.method, r.variant, r.frame_s * 1e3,
-                       r.binning_s * 1e3, r.planes_s * 1e3, r.swizzle_s * 1e3, r.raster_s * 1e3);
+    out += fmt::format("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} | {:.1f} |\n", r.method, r.variant,
+                       r.frame_s * 1e3, r.binning_s * 1e3, r.planes_s * 1e3, r.swizzle_s * 1e3, r.raster_s * 1e3,
+                       r.sort_s * 1e3);
   return out;
 }
 
@@ -137,7 +184,7 @@ nlohmann::ordered_json gpu_frame_json(const std::vector<GpuFrameRow>& rows) {
   for (const GpuFrameRow& r : rows)
     out.push_back({{"method", r.method}, {"variant", r.variant}, {"runs", r.runs}, {"frame_seconds_median", r.frame_s},
                    {"gpu_seconds_median", {{"binning", r.binning_s}, {"planes", r.planes_s}, {"swizzle", r.swizzle_s},
-                                           {"per_view_raster", r.raster_s}}}});
+                                           {"per_view_raster", r.raster_s}, {"per_view_sort", r.sort_s}}}});
   return out;
 }
 

@@ -7,7 +7,10 @@
 //     to back and finished once per batch: the wall time per frame of a pipelined loop;
 //   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
 //   - per view: RGBA32F blending targets against RGBA16F (half the bytes a blend), and the
-//     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3).
+//     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3);
+//   - the sort over all N against the visible (binned) Gaussians only, for G2LF's binning and
+//     per view, and per view 24-bit float keys against 16 bits normalised to the visible range
+//     (--sort-only: these rows alone).
 // Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
 #include <string>
@@ -26,6 +29,7 @@ struct GpuFrameOptions {
   int runs = 5, warmup = 1;
   int batch = 4;                          // frames per pipelined batch
   std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
+  bool sort_only = false;                   // only the sort rows (sort_rows)
 };
 
 struct GpuFrameRow {
@@ -33,6 +37,7 @@ struct GpuFrameRow {
   std::string variant;  // what differs between rows of one method
   double frame_s = 0;   // median wall time per frame
   double binning_s = 0, planes_s = 0, swizzle_s = 0, raster_s = 0;  // median GPU stage times (0: not timed)
+  double sort_s = 0;  // per view: the sort's share of raster_s
   int runs = 0;
 };
 

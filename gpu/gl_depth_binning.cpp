@@ -22,7 +22,7 @@ GlDepthBinning::GlDepthBinning()
 
 void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& ref, int chunks,
                          render::ChunkBinning binning, GlRadixSort& sort, Buffer& keys,
-                         Buffer& values, Buffer& layers, GlPlaneTable& table, const Buffer* draw) {
+                         Buffer& values, Buffer& layers, GlPlaneTable& table, const Buffer* draw, bool binned_only) {
   if (chunks < 1 || chunks > 4096 || chunks > table.max_planes)
     throw std::logic_error("GlDepthBinning: chunks outside 1..min(4096, table.max_planes)");
   const size_t n = scene.size();
@@ -57,7 +57,9 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
     keys_.dispatch_1d(n, 256);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
-  sort.sort(keys, values, uint32_t(n), 32);
+  SortKeys how;
+  how.drop_culled = binned_only;
+  sort.sort(keys, values, uint32_t(n), how);
   // The sort binds its own buffers: bind ours again.
   keys.bind_storage(kSplatKeys);
   layers.bind_storage(kSplatLayers);

@@ -4,7 +4,8 @@
 //   keys    cull to the reference frustum (centre z > 0.2, |ndc| <= 1.3), key = reference depth,
 //           value = Gaussian index, binned ones counted (gpu/shaders/binning_keys.comp.glsl)
 //   sort    GlRadixSort: binned Gaussians first, front to back, depth ties in index order (the
-//           CPU sorts (depth, index) pairs: the same order)
+//           CPU sorts (depth, index) pairs: the same order); with binned_only its first pass
+//           drops the others (stably) and the later three run over the binned ones only
 //   cuts    count quantiles n k / K, and for kMixed the cuts uniform in base-camera disparity
 //           (binning_cuts.comp.glsl)
 //   chunks  merge the cuts, drop empty chunks, plane table: count, first splat and d_k = median
@@ -32,14 +33,15 @@ class GlDepthBinning {
   GlDepthBinning();  // needs a current context; compiles the passes
 
   // Bins `scene` for `ref` into at most `chunks` planes (<= table.max_planes):
-  //   keys, values  grown to the scene; end sorted, the binned Gaussians first
+  //   keys, values  grown to the scene; end sorted, the binned Gaussians first (with
+  //                 binned_only, what follows them is stale)
   //   layers        grown to the scene; layers[i] = plane of sorted splat i < splats_binned
   //   table         plane count, binned count, d_k and first splat per plane
   //   draw          (optional) a DrawArraysIndirect whose instance count becomes the binned count
   // Enqueues GPU work only; ends with the barriers the raster, the swizzle and read-backs need.
   void run(const GlScene& scene, const render::ReferenceCamera& ref, int chunks,
            render::ChunkBinning binning, GlRadixSort& sort, Buffer& keys, Buffer& values,
-           Buffer& layers, GlPlaneTable& table, const Buffer* draw = nullptr);
+           Buffer& layers, GlPlaneTable& table, const Buffer* draw = nullptr, bool binned_only = true);
 
  private:
   Program keys_, cuts_, chunks_, layers_;

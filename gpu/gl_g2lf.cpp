@@ -101,11 +101,12 @@ void GlG2lfRenderer::preprocess(const render::ReferenceCamera& ref, const render
   preprocess_.run(scene_, ref.camera, plane_settings, buffers_);
 }
 
-void GlG2lfRenderer::bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes) {
+void GlG2lfRenderer::bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes,
+                         bool binned_only) {
   // Overwrites the preprocess's keys and values (the planes need the binning's order) and sets
   // the draw's instance count to the binned count; culled records are zero and draw nothing.
   binning_.run(scene_, ref, o.chunks, o.binning, sort_, buffers_.keys, buffers_.values, layers_, planes.table,
-               &buffers_.draw);
+               &buffers_.draw, binned_only);
 }
 
 void GlG2lfRenderer::draw_planes(GlPlanes& planes) {
@@ -151,7 +152,10 @@ GlSweepingPlaneStages GlG2lfRenderer::frame_stages(const render::QuiltGeometry& 
   stages.prepare = [this, &geometry, &o, &settings](const render::ReferenceCamera& ref) {
     preprocess(ref, geometry, o, settings);
   };
-  stages.bin = [this, &o](const render::ReferenceCamera& ref, GlPlanes& planes) { bin(ref, o, planes); };
+  const bool binned_only = options.sort_binned_only;
+  stages.bin = [this, &o, binned_only](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    bin(ref, o, planes, binned_only);
+  };
   stages.draw_planes = [this](const render::ReferenceCamera&, GlPlanes& planes) { draw_planes(planes); };
   return stages;
 }

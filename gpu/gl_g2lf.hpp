@@ -56,6 +56,9 @@ struct GlG2lfOptions {
   TimerReads timer_reads = TimerReads::kWait;
   // Views one swizzle invocation composites (gpu/gl_swizzle.hpp; `lfd bench gpu-frame` compares).
   int swizzle_views = kSwizzleViewsPerInvocation;
+  // The binning sort's first pass drops the Gaussians outside the reference frustum and the
+  // later passes sort the binned ones only (GlDepthBinning; false: all N, for comparison).
+  bool sort_binned_only = true;
 
   PlaneFormat format() const { return plane_format.value_or(plane_format_for(g2lf.precision)); }
 };
@@ -113,7 +116,7 @@ class GlG2lfRenderer {
   // The stages of a frame (gpu/gl_sweeping_planes.hpp).
   void preprocess(const render::ReferenceCamera& ref, const render::QuiltGeometry& geometry,
                   const render::G2lfOptions& o, const render::RasterSettings& settings);
-  void bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes);
+  void bin(const render::ReferenceCamera& ref, const render::G2lfOptions& o, GlPlanes& planes, bool binned_only);
   void draw_planes(GlPlanes& planes);
   void record_stats(bool timed, TimerReads reads);
 

@@ -19,6 +19,8 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
     throw std::invalid_argument("per-view renderer: the accumulation target must be GL_RGBA16F or GL_RGBA32F");
   if (options_.depth_key_bits % 8 != 0 || options_.depth_key_bits < 8 || options_.depth_key_bits > 32)
     throw std::invalid_argument("per-view renderer: depth_key_bits must be 8, 16, 24 or 32");
+  if (options_.normalised_depth_keys && (options_.depth_key_bits > 24 || !options_.sort_visible_only))
+    throw std::invalid_argument("per-view renderer: normalised depth keys need 8, 16 or 24 bits and sort_visible_only");
 }
 
 void GlPerViewRenderer::begin_timing(int views) {
@@ -43,7 +45,14 @@ void GlPerViewRenderer::prepare(const render::Camera& camera, const render::Rast
   stamp(4 * size_t(view));
   preprocess_.run(scene_, camera, settings, buffers_);
   stamp(4 * size_t(view) + 1);
-  sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()), 32, 32 - options_.depth_key_bits);
+  SortKeys how;
+  how.low_bit = 32 - options_.depth_key_bits;
+  how.drop_culled = options_.sort_visible_only;
+  if (options_.normalised_depth_keys) {
+    how.normalise_bits = options_.depth_key_bits;
+    how.key_range = &buffers_.depth_range;
+  }
+  sort_.sort(buffers_.keys, buffers_.values, uint32_t(scene_.size()), how);
   stamp(4 * size_t(view) + 2);
 }
 

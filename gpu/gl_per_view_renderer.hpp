@@ -50,6 +50,14 @@ struct GlPerViewOptions {
   // bits, so depths within a relative 2^-15 (3e-5) of each other keep the Gaussian order instead
   // of the depth order (docs/gpu.md, "Per-view renderer"). 8, 16, 24 or 32.
   int depth_key_bits = 32;
+  // Keys normalised to the view's visible depth range (GlRadixSort, SortKeys::normalise_bits):
+  // depth_key_bits (8, 16 or 24) spread over the range the visible splats span, instead of the
+  // float bits' high bits; 16 normalised bits (2 passes) order about as finely as 24 float bits.
+  bool normalised_depth_keys = false;
+  // The sort's first pass drops the culled splats and the later passes run over the visible
+  // ones only (indirect dispatches; docs/gpu.md "Sorting what is visible"). Exact either way
+  // (a stable compaction); false sorts all N keys every pass, for comparison.
+  bool sort_visible_only = true;
 };
 
 class GlPerViewRenderer {

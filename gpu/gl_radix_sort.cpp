@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
+#include "gpu/shaders/radix_common.glsl.hpp"
 #include "gpu/shaders/radix_histogram.comp.glsl.hpp"
 #include "gpu/shaders/radix_scan.comp.glsl.hpp"
 #include "gpu/shaders/radix_scatter.comp.glsl.hpp"
+#include "gpu/shaders/radix_setup.comp.glsl.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -13,54 +16,104 @@ namespace {
 constexpr uint32_t kTile = 256;           // elements ranked together (local_size_x)
 constexpr uint32_t kTargetBlocks = 1024;  // enough work groups to fill a large GPU
 constexpr uint32_t kMaxTilesPerBlock = 64;
+constexpr GLintptr kParamsGroupsOffset = 16;  // SortParams.param_groups_x (radix_common.glsl)
 
-void set_pass_uniforms(const Program& p, uint32_t count, uint32_t shift, uint32_t blocks, uint32_t items) {
+Program pass_program(const char* label, const char* source) {
+  const std::string text = std::string(radix_common_glsl) + source;
+  return Program(label, {{GL_COMPUTE_SHADER, text.c_str()}});
+}
+
+struct BlockLayout {
+  uint32_t items = 0, blocks = 0;
+};
+
+// Blocks of whole tiles, about kTargetBlocks of them (more for huge counts); radix_setup makes
+// the same choice on the GPU.
+BlockLayout block_layout(uint32_t count) {
+  const uint32_t tiles = (count + kTile - 1) / kTile;
+  const uint32_t tiles_per_block = std::clamp<uint32_t>((tiles + kTargetBlocks - 1) / kTargetBlocks, 1, kMaxTilesPerBlock);
+  BlockLayout layout;
+  layout.items = tiles_per_block * kTile;
+  layout.blocks = std::max<uint32_t>(1, (count + layout.items - 1) / layout.items);
+  return layout;
+}
+
+void set_pass_uniforms(const Program& p, uint32_t count, const BlockLayout& layout, bool later, bool drop,
+                       uint32_t normalise_bits) {
   glProgramUniform1ui(p.id(), p.uniform("count"), count);
-  glProgramUniform1ui(p.id(), p.uniform("shift"), shift);
-  glProgramUniform1ui(p.id(), p.uniform("block_count"), blocks);
-  glProgramUniform1ui(p.id(), p.uniform("block_items"), items);
+  glProgramUniform1ui(p.id(), p.uniform("block_count"), layout.blocks);
+  glProgramUniform1ui(p.id(), p.uniform("block_items"), layout.items);
+  glProgramUniform1i(p.id(), p.uniform("later_pass"), later ? 1 : 0);
+  glProgramUniform1i(p.id(), p.uniform("drop_culled"), drop ? 1 : 0);
+  glProgramUniform1ui(p.id(), p.uniform("normalise_bits"), normalise_bits);
+}
+
+void check_keys(const SortKeys& how) {
+  if (how.normalise_bits != 0) {
+    if (how.normalise_bits % 8 != 0 || how.normalise_bits < 8 || how.normalise_bits > 24)
+      throw std::invalid_argument("GlRadixSort: normalise_bits must be 8, 16 or 24");
+    if (!how.drop_culled || how.key_range == nullptr)
+      throw std::invalid_argument("GlRadixSort: normalised keys need drop_culled and a key range");
+    return;
+  }
+  if (how.key_bits < 1 || how.key_bits > 32) throw std::invalid_argument("GlRadixSort: key_bits must be in 1..32");
+  if (how.low_bit < 0 || how.low_bit >= how.key_bits)
+    throw std::invalid_argument("GlRadixSort: low_bit must be in 0..key_bits - 1");
 }
 
 }  // namespace
 
 GlRadixSort::GlRadixSort()
-    : histogram_("radix sort histogram", {{GL_COMPUTE_SHADER, radix_histogram_comp_glsl}}),
-      scan_("radix sort scan", {{GL_COMPUTE_SHADER, radix_scan_comp_glsl}}),
-      scatter_("radix sort scatter", {{GL_COMPUTE_SHADER, radix_scatter_comp_glsl}}),
-      digit_totals_(256 * 4) {}
-
-size_t GlRadixSort::scratch_bytes() const {
-  return keys_tmp_.bytes() + values_tmp_.bytes() + block_offsets_.bytes() + digit_totals_.bytes();
+    : histogram_(pass_program("radix sort histogram", radix_histogram_comp_glsl)),
+      scan_(pass_program("radix sort scan", radix_scan_comp_glsl)),
+      scatter_(pass_program("radix sort scatter", radix_scatter_comp_glsl)),
+      setup_(pass_program("radix sort setup", radix_setup_comp_glsl)),
+      digit_totals_(256 * 4),
+      params_(8 * 4) {
+  glProgramUniform1ui(setup_.id(), setup_.uniform("target_blocks"), kTargetBlocks);
+  glProgramUniform1ui(setup_.id(), setup_.uniform("max_tiles_per_block"), kMaxTilesPerBlock);
 }
 
-void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, int key_bits, int low_bit) {
-  if (key_bits < 1 || key_bits > 32) throw std::invalid_argument("GlRadixSort: key_bits must be in 1..32");
-  if (low_bit < 0 || low_bit >= key_bits) throw std::invalid_argument("GlRadixSort: low_bit must be in 0..key_bits - 1");
+size_t GlRadixSort::scratch_bytes() const {
+  return keys_tmp_.bytes() + values_tmp_.bytes() + block_offsets_.bytes() + digit_totals_.bytes() + params_.bytes();
+}
+
+int GlRadixSort::passes(const SortKeys& how) {
+  if (how.normalise_bits != 0) return (how.normalise_bits + 7) / 8;
+  return (how.key_bits - how.low_bit + 7) / 8;
+}
+
+void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortKeys& how) {
+  check_keys(how);
   if (size_t(count) * 4 > keys.bytes() || size_t(count) * 4 > values.bytes())
     throw std::invalid_argument("GlRadixSort: count exceeds the buffers");
-  if (count <= 1) return;
+  // Without dropping, 0 or 1 keys are sorted; with it a single key may still be dropped.
+  if (count == 0 || (count == 1 && !how.drop_culled)) return;
 
-  // Blocks of whole tiles, about kTargetBlocks of them (more for huge counts).
-  const uint32_t tiles = (count + kTile - 1) / kTile;
-  const uint32_t tiles_per_block = std::clamp<uint32_t>((tiles + kTargetBlocks - 1) / kTargetBlocks, 1, kMaxTilesPerBlock);
-  const uint32_t block_items = tiles_per_block * kTile;
-  const uint32_t blocks = (count + block_items - 1) / block_items;
-  if (blocks > 65535) throw std::invalid_argument("GlRadixSort: too many keys for one dispatch");
-
+  const BlockLayout first = block_layout(count);
+  if (first.blocks > 65535) throw std::invalid_argument("GlRadixSort: too many keys for one dispatch");
   keys_tmp_.ensure(size_t(count) * 4);
   values_tmp_.ensure(size_t(count) * 4);
-  block_offsets_.ensure(size_t(blocks) * 256 * 4);
+  // The later passes' layout (for at most `count` kept keys) has at most max(first, kTargetBlocks) blocks.
+  block_offsets_.ensure(size_t(std::max(first.blocks, kTargetBlocks)) * 256 * 4);
 
   // Ping-pong: pass p reads copy p % 2 and writes the other.
   Buffer* key_copies[2] = {&keys, &keys_tmp_};
   Buffer* value_copies[2] = {&values, &values_tmp_};
-  const int passes = (key_bits - low_bit + 7) / 8;
+  const int passes = GlRadixSort::passes(how);
+  const int low_bit = how.normalise_bits ? 0 : how.low_bit;
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  params_.bind_storage(6);
+  if (how.key_range) how.key_range->bind_storage(7);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, params_.id());
   for (int pass = 0; pass < passes; ++pass) {
     const uint32_t shift = uint32_t(low_bit + 8 * pass);
-    set_pass_uniforms(histogram_, count, shift, blocks, block_items);
-    set_pass_uniforms(scatter_, count, shift, blocks, block_items);
-    glProgramUniform1ui(scan_.id(), scan_.uniform("block_count"), blocks);
+    const bool later = how.drop_culled && pass > 0;
+    const bool drop = how.drop_culled && pass == 0;
+    const uint32_t normalise = pass == 0 ? uint32_t(how.normalise_bits) : 0u;
+    for (const Program* p : {&histogram_, &scan_, &scatter_}) set_pass_uniforms(*p, count, first, later, drop, normalise);
+    glProgramUniform1ui(histogram_.id(), histogram_.uniform("shift"), shift);
+    glProgramUniform1ui(scatter_.id(), scatter_.uniform("shift"), shift);
 
     key_copies[pass % 2]->bind_storage(0);
     block_offsets_.bind_storage(1);
@@ -69,20 +122,31 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, int key_bit
     key_copies[(pass + 1) % 2]->bind_storage(4);
     value_copies[(pass + 1) % 2]->bind_storage(5);
 
+    const auto dispatch_blocks = [&] {
+      if (later) glDispatchComputeIndirect(kParamsGroupsOffset);
+      else glDispatchCompute(first.blocks, 1, 1);
+    };
     histogram_.use();
-    glDispatchCompute(blocks, 1, 1);
+    dispatch_blocks();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scan_.use();
     glDispatchCompute(256, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scatter_.use();
-    glDispatchCompute(blocks, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    dispatch_blocks();
+    if (drop) {  // the kept count and the later passes' layout, from this pass's digit totals
+      setup_.use();
+      glDispatchCompute(1, 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    } else {
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
   }
   if (passes % 2 == 1) {  // the result is in the scratch copies
     glCopyNamedBufferSubData(keys_tmp_.id(), keys.id(), 0, 0, GLsizeiptr(count) * 4);
     glCopyNamedBufferSubData(values_tmp_.id(), values.id(), 0, 0, GLsizeiptr(count) * 4);
   }
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   check_gl("the radix sort");
 }

@@ -21,6 +21,7 @@ void SplatBuffers::ensure(size_t gaussians) {
   keys.ensure(n * 4);
   values.ensure(n * 4);
   draw.ensure(sizeof(DrawArraysIndirect));
+  depth_range.ensure(2 * sizeof(uint32_t));
   capacity = n;
 }
 
@@ -29,6 +30,7 @@ void SplatBuffers::bind() const {
   keys.bind_storage(kSplatKeys);
   values.bind_storage(kSplatValues);
   draw.bind_storage(kSplatDraw);
+  depth_range.bind_storage(kSplatDepthRange);
 }
 
 GlSplatPreprocess::GlSplatPreprocess() {
@@ -41,6 +43,8 @@ void GlSplatPreprocess::run(const GlScene& scene, const render::Camera& camera,
   buffers.ensure(scene.size());
   const DrawArraysIndirect reset{4, 0, 0, 0};
   buffers.draw.upload(&reset, sizeof(reset));
+  const uint32_t empty_range[2] = {0xFFFFFFFFu, 0u};
+  buffers.depth_range.upload(empty_range, sizeof(empty_range));
   if (scene.size() == 0) return;
 
   const int requested = settings.sh_degree < 0 ? scene.sh_degree() : settings.sh_degree;

@@ -32,6 +32,7 @@ constexpr GLuint kSplatKeys = 5;
 constexpr GLuint kSplatValues = 6;  // sorted: the Gaussian index of each sorted position
 constexpr GLuint kSplatDraw = 7;
 constexpr GLuint kSplatLayers = 8;  // layered raster: the layer of each sorted position
+constexpr GLuint kSplatDepthRange = 11;  // the visible depths' range (the sort's normalised keys)
 
 // std430 record of one projected Gaussian (gpu/shaders/splat_record.glsl), 64 bytes.
 struct SplatRecord {
@@ -52,11 +53,13 @@ struct DrawArraysIndirect {
 
 // Per-Gaussian buffers of one view, reused from frame to frame.
 struct SplatBuffers {
-  Buffer records, keys, values, draw;
+  Buffer records, keys, values, draw, depth_range;
   size_t capacity = 0;  // Gaussians
   void ensure(size_t gaussians);
-  size_t bytes() const { return records.bytes() + keys.bytes() + values.bytes() + draw.bytes(); }
-  void bind() const;  // records, keys, values, draw at their bindings
+  size_t bytes() const {
+    return records.bytes() + keys.bytes() + values.bytes() + draw.bytes() + depth_range.bytes();
+  }
+  void bind() const;  // records, keys, values, draw, depth_range at their bindings
 };
 
 class GlSplatPreprocess {

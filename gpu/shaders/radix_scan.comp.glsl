@@ -1,16 +1,15 @@
 // Radix sort pass 2 (gpu/gl_radix_sort.hpp): one work group per digit turns its row of block
-// counts into exclusive offsets and writes the digit's total.
+// counts into exclusive offsets and writes the digit's total. Needs radix_common.glsl prepended.
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 1) buffer BlockCounts { uint block_counts[]; };
 layout(std430, binding = 2) writeonly buffer DigitTotals { uint digit_totals[]; };
 
-uniform uint block_count;
-
 shared uint partial[256];
 
 void main() {
   uint tid = gl_LocalInvocationID.x;
+  uint block_count = pass_block_count();
   uint row = gl_WorkGroupID.x * block_count;
   uint carry = 0u;
   for (uint base = 0u; base < block_count; base += 256u) {

@@ -2,7 +2,7 @@
 // base(digit) + offset(digit, block) + (stable rank among the block's earlier equal digits).
 // The rank within a 256-element tile comes from a bit mask per digit in shared memory (each
 // thread sets its bit, then counts the bits of lower threads), which does what a subgroup
-// match/ballot would without needing the extension.
+// match/ballot would without needing the extension. Needs radix_common.glsl prepended.
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 0) readonly buffer KeysIn { uint keys_in[]; };
@@ -12,10 +12,7 @@ layout(std430, binding = 3) readonly buffer ValuesIn { uint values_in[]; };
 layout(std430, binding = 4) writeonly buffer KeysOut { uint keys_out[]; };
 layout(std430, binding = 5) writeonly buffer ValuesOut { uint values_out[]; };
 
-uniform uint count;
 uniform uint shift;
-uniform uint block_count;
-uniform uint block_items;  // a multiple of 256
 
 shared uint scan[256];
 shared uint digit_cursor[256];  // where the block's next element of each digit goes
@@ -35,16 +32,18 @@ void main() {
     scan[tid] += add;
     barrier();
   }
-  digit_cursor[tid] = scan[tid] - total + block_offsets[tid * block_count + block];
+  digit_cursor[tid] = scan[tid] - total + block_offsets[tid * pass_block_count() + block];
 
-  uint begin = block * block_items;
-  uint end = min(begin + block_items, count);
+  uint items = pass_block_items();
+  uint begin = block * items;
+  uint end = min(begin + items, pass_count());
   for (uint tile = begin; tile < end; tile += 256u) {
     for (uint w = 0u; w < 8u; ++w) masks[tid * 8u + w] = 0u;
     barrier();
     uint k = tile + tid;
-    bool valid = k < end;
-    uint key = valid ? keys_in[k] : 0u;
+    uint raw = k < end ? keys_in[k] : 0xFFFFFFFFu;
+    bool valid = k < end && !dropped(raw);
+    uint key = pass_key(raw);
     uint digit = (key >> shift) & 255u;
     uint word = tid >> 5, bit = tid & 31u;
     if (valid) atomicOr(masks[digit * 8u + word], 1u << bit);

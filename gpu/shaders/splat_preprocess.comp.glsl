@@ -12,6 +12,9 @@ layout(std430, binding = 4) writeonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = 5) writeonly buffer Keys { uint keys[]; };
 layout(std430, binding = 6) writeonly buffer Values { uint values[]; };
 layout(std430, binding = 7) buffer Draw { uint draw_count; uint draw_instances; uint draw_first; uint draw_base; };
+// The visible depths' range as float bits (positive floats order as their bits), reset to
+// (0xFFFFFFFF, 0) before the pass: the sort's normalised keys (gpu/gl_radix_sort.hpp).
+layout(std430, binding = 11) buffer DepthRange { uint depth_min_bits; uint depth_max_bits; };
 
 uniform uint gaussian_count;
 uniform mat3 world_to_camera;
@@ -63,28 +66,26 @@ vec3 covariance_2d(vec3 t, mat3 cov3d) {
 }
 
 
-void cull(uint i) {
+uint cull(uint i) {
   records[i] = SplatRecord(vec4(0.0), vec4(0.0), vec4(0.0), ivec4(0));
   keys[i] = 0xFFFFFFFFu;
   values[i] = i;
+  return 0xFFFFFFFFu;
 }
 
-void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
-  if (i >= gaussian_count) return;
+// Gaussian i's record, key and value; returns the key (0xFFFFFFFF: culled).
+uint preprocess(uint i) {
   vec4 position_opacity = positions[i];
   vec3 mean = position_opacity.xyz;
   precise vec3 t = world_to_camera * (mean - camera_position);
   if (t.z <= 0.2) {  // in_frustum: near cull only (section 3.1)
-    cull(i);
-    return;
+    return cull(i);
   }
   mat3 cov3d = covariance_3d(scales[i].xyz, rotations[i]);
   precise vec3 cov = covariance_2d(t, cov3d);
   precise float det = cov.x * cov.z - cov.y * cov.y;
   if (det == 0.0) {
-    cull(i);
-    return;
+    return cull(i);
   }
   float det_inv = 1.0 / det;
   vec3 conic = vec3(cov.z * det_inv, -cov.y * det_inv, cov.x * det_inv);
@@ -105,13 +106,40 @@ void main() {
   ivec2 rmax = ivec2(min(tile_grid.x, max(0, int((px.x + radius + float(kTileSize - 1)) / float(kTileSize)))),
                      min(tile_grid.y, max(0, int((px.y + radius + float(kTileSize - 1)) / float(kTileSize)))));
   if ((rmax.x - rmin.x) * (rmax.y - rmin.y) == 0) {
-    cull(i);
-    return;
+    return cull(i);
   }
   vec3 color = sh_color(i, normalize(mean - sh_origin));
   records[i] = SplatRecord(vec4(px, t.z, position_opacity.w), vec4(conic, radius), vec4(color, 0.0),
                            ivec4(rmin, rmax));
   keys[i] = floatBitsToUint(t.z);
   values[i] = i;
-  atomicAdd(draw_instances, 1u);
+  return floatBitsToUint(t.z);
+}
+
+// The visible count and depth range reduced in the work group first: three global atomics per
+// group instead of one per visible Gaussian.
+shared uint group_visible, group_min, group_max;
+
+void main() {
+  if (gl_LocalInvocationIndex == 0u) {
+    group_visible = 0u;
+    group_min = 0xFFFFFFFFu;
+    group_max = 0u;
+  }
+  barrier();
+  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  if (i < gaussian_count) {
+    uint key = preprocess(i);
+    if (key != 0xFFFFFFFFu) {
+      atomicAdd(group_visible, 1u);
+      atomicMin(group_min, key);
+      atomicMax(group_max, key);
+    }
+  }
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && group_visible > 0u) {
+    atomicAdd(draw_instances, group_visible);
+    atomicMin(depth_min_bits, group_min);
+    atomicMax(depth_max_bits, group_max);
+  }
 }

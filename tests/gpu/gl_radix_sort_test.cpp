@@ -5,6 +5,8 @@
 #include <cstring>
 #include <cstdint>
 #include <numeric>
+#include <optional>
+#include <string>
 #include <random>
 #include <vector>
 
@@ -153,6 +155,103 @@ TEST(GlRadixSort, SortsBlocksOfSeveralTiles) {
   GlRadixSort sorter;
   const auto keys = random_keys(300001, 5, 1u << 20);
   expect_same(gpu_sort(sorter, keys), expected_sort(keys), "300001 keys");
+}
+
+// Sorting what is visible: the first pass drops the keys 0xFFFFFFFF, stably, and the later
+// passes (dispatched indirectly from the kept count the GPU computed) sort the kept ones, which
+// end first in std::stable_sort's order; the kept count is on the GPU.
+Sorted gpu_sort_kept(GlRadixSort& sorter, const std::vector<uint32_t>& keys, SortKeys how,
+                     const std::vector<uint32_t>& range = {}) {
+  const size_t n = keys.size();
+  std::vector<uint32_t> k = keys, v(n);
+  std::iota(v.begin(), v.end(), 0u);
+  if (k.empty()) k.push_back(0u), v.push_back(0u);  // a buffer of 0 bytes cannot be made
+  Buffer key_buffer(k.size() * 4, k.data()), value_buffer(v.size() * 4, v.data());
+  std::optional<Buffer> range_buffer;
+  if (!range.empty()) {
+    range_buffer.emplace(range.size() * 4, range.data());
+    how.key_range = &*range_buffer;
+  }
+  how.drop_culled = true;
+  sorter.sort(key_buffer, value_buffer, uint32_t(n), how);
+  const uint32_t kept = sorter.kept_count_buffer().download_as<uint32_t>(1)[0];
+  Sorted s;
+  s.keys = key_buffer.download_as<uint32_t>(k.size());
+  s.values = value_buffer.download_as<uint32_t>(v.size());
+  EXPECT_LE(kept, n);
+  s.keys.resize(std::min<size_t>(kept, n));
+  s.values.resize(std::min<size_t>(kept, n));
+  return s;
+}
+
+// The kept (not 0xFFFFFFFF) keys in std::stable_sort order by `order_key`.
+template <typename OrderKey>
+Sorted expected_kept(const std::vector<uint32_t>& keys, OrderKey order_key) {
+  std::vector<uint32_t> order;
+  for (uint32_t i = 0; i < keys.size(); ++i)
+    if (keys[i] != 0xFFFFFFFFu) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return order_key(keys[a]) < order_key(keys[b]); });
+  Sorted s;
+  for (uint32_t i : order) {
+    s.keys.push_back(keys[i]);
+    s.values.push_back(i);
+  }
+  return s;
+}
+
+TEST(GlRadixSort, DropsCulledKeysInTheFirstPassAndSortsTheRestStably) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  for (const size_t n : {size_t(0), size_t(1), size_t(2), size_t(255), size_t(1000), size_t(70000), size_t(300001)}) {
+    for (const double culled : {0.0, 0.3, 1.0}) {
+      std::vector<uint32_t> keys = random_keys(n, 23, 1u << 12);  // many ties: stability shows
+      std::mt19937 rng(uint32_t(n) + 7);
+      for (auto& k : keys)
+        if (std::uniform_real_distribution<double>(0, 1)(rng) < culled) k = 0xFFFFFFFFu;
+      const auto what = "n " + std::to_string(n) + ", culled " + std::to_string(culled);
+      for (const int bits : {32, 24, 8}) {  // 4, 3 (odd: a copy back) and 1 passes
+        SortKeys how;
+        how.low_bit = 32 - bits;
+        const Sorted got = gpu_sort_kept(sorter, keys, how);
+        const Sorted want = expected_kept(keys, [&](uint32_t k) { return k >> (32 - bits); });
+        expect_same(got, want, (what + ", bits " + std::to_string(bits)).c_str());
+      }
+    }
+  }
+}
+
+// Normalised keys: (key - min) >> s with s the smallest shift that fits max - min in the bits;
+// the first pass writes them, so the kept keys come back normalised, in that order.
+TEST(GlRadixSort, NormalisesKeysToTheKeptRange) {
+  HeadlessContext context;
+  GlRadixSort sorter;
+  std::mt19937 rng(5);
+  std::vector<uint32_t> keys;
+  for (int i = 0; i < 50000; ++i) {
+    const float depth = std::uniform_real_distribution<float>(0.5f, 40.0f)(rng);
+    uint32_t bits = 0;
+    std::memcpy(&bits, &depth, 4);
+    keys.push_back(i % 7 == 3 ? 0xFFFFFFFFu : bits);
+  }
+  keys[10] = keys[20];  // an exact tie
+  uint32_t lo = 0xFFFFFFFFu, hi = 0;
+  for (uint32_t k : keys)
+    if (k != 0xFFFFFFFFu) lo = std::min(lo, k), hi = std::max(hi, k);
+  for (const int bits : {8, 16, 24}) {
+    int shift = 0;
+    while (((hi - lo) >> shift) >= (1u << bits)) ++shift;
+    SortKeys how;
+    how.normalise_bits = bits;
+    const Sorted got = gpu_sort_kept(sorter, keys, how, {lo, hi});
+    Sorted want = expected_kept(keys, [&](uint32_t k) { return (k - lo) >> shift; });
+    for (auto& k : want.keys) k = (k - lo) >> shift;
+    expect_same(got, want, ("normalised to " + std::to_string(bits) + " bits").c_str());
+    EXPECT_EQ(got.keys.back() >> (bits - 1), 1u) << "the range fills the top bit";
+  }
+  SortKeys no_range;
+  no_range.normalise_bits = 16;
+  Buffer k(16), v(16);
+  EXPECT_THROW(sorter.sort(k, v, 4, no_range), std::invalid_argument);
 }
 
 }  // namespace
