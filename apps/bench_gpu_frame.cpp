@@ -1,12 +1,15 @@
 // `lfd bench gpu-frame`: the GL frame, both sides of each GPU-side change in one run
 // (bench/gpu_frame_benchmark.hpp; docs/gpu.md "A frame that never waits").
 //   lfd bench gpu-frame --scene data/scenes/demo.ply --views 45 --size 256
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "apps/backend.hpp"
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/gpu_frame_benchmark.hpp"
+#include "render/preprocess.hpp"
 #include "util/atomic_file.hpp"
 
 namespace lfd::apps {
@@ -21,6 +24,7 @@ int RunBenchGpuFrame(int argc, char** argv) {
                "gpu-frame"};
   std::string json_path, scene_path;
   int size = 256, generated = 0;
+  float zoom = 1.0f;
   bench::GpuFrameOptions o;
   app.add_option("--json", json_path, "write the figures as JSON to this file");
   app.add_option("--scene", scene_path, "a Gaussian scene file, framed automatically");
@@ -40,6 +44,11 @@ int RunBenchGpuFrame(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   app.add_flag("--sort-only", o.sort_only,
                "only the sort rows: all N against the visible (binned) Gaussians, float against normalised keys");
+  app.add_option("--zoom", zoom,
+                 "narrow the framed view's field of view this many times (a part of the scene in view: "
+                 "the others culled, what the sort rows compare)")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0f, 100.0f));
   if (auto code = parse(app, argc, argv)) return *code;
   if (scene_path.empty() == (generated == 0)) {
     std::fprintf(stderr, "lfd bench gpu-frame: error: give one of --scene and --generated\n");
@@ -48,10 +57,15 @@ int RunBenchGpuFrame(int argc, char** argv) {
 
   const auto context = open_backend(Backend::kGl, false);
   std::printf("backend: gl on %s\n", context->info().summary().c_str());
-  const bench::GlVsCpuScene scene =
+  bench::GlVsCpuScene scene =
       scene_path.empty() ? bench::gl_vs_cpu_tabletop(generated, size) : bench::gl_vs_cpu_scene_file(scene_path, size);
+  scene.base.fov_x_rad = 2.0f * std::atan(scene.base.tan_half_fov_x() / zoom);
+  scene.base.fov_y_rad = 2.0f * std::atan(scene.base.tan_half_fov_y() / zoom);
   std::printf("%s (%zu Gaussians), %d views of %dx%d, N_chunk %d, %d runs after %d warm-up\n", scene.name.c_str(),
               scene.scene.size(), o.views, scene.base.width, scene.base.height, o.chunks, o.runs, o.warmup);
+  const auto projected = render::preprocess(scene.scene, scene.base, render::RasterSettings{});
+  const auto visible = std::count_if(projected.begin(), projected.end(), [](const auto& p) { return p.radius_px > 0; });
+  std::printf("zoom %.1f: %td of the Gaussians visible in the centre view (the sort rows sort these)\n", zoom, visible);
   const auto rows = bench::run_gpu_frame(scene, o, context->info());
   std::fputs(bench::gpu_frame_table(rows).c_str(), stdout);
   if (!json_path.empty()) {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <functional>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -93,9 +94,40 @@ gpu::GlPerViewOptions per_view_options(gpu::TimerReads reads, GLenum accumulatio
   return options;
 }
 
+// Runs o.warmup + o.runs rounds, each timing one frame of every variant in turn (wall time to
+// glFinish; `frame(v)` renders variant v and returns its GPU sort seconds): variants interleaved,
+// so a machine whose load changes during the run (shared cores) slows them alike.
+std::vector<GpuFrameRow> interleaved_rows(const GpuFrameOptions& o, const std::string& method,
+                                          const std::vector<std::string>& variants,
+                                          const std::function<double(size_t)>& frame) {
+  std::vector<std::vector<double>> seconds(variants.size()), sort(variants.size());
+  for (int run = 0; run < o.warmup + o.runs; ++run) {
+    for (size_t v = 0; v < variants.size(); ++v) {
+      const auto t0 = Clock::now();
+      const double sort_s = frame(v);
+      glFinish();
+      if (run < o.warmup) continue;
+      seconds[v].push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+      sort[v].push_back(sort_s);
+    }
+  }
+  std::vector<GpuFrameRow> rows;
+  for (size_t v = 0; v < variants.size(); ++v) {
+    GpuFrameRow row;
+    row.method = method;
+    row.variant = variants[v] + " (interleaved)";
+    row.runs = o.runs;
+    row.frame_s = summarize(seconds[v]).median;
+    row.sort_s = summarize(sort[v]).median;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 // Sorting what is visible (docs/gpu.md "Sorting what is visible"), side by side: G2LF's binning
-// sort over all N against the binned ones only; per view the sort over all N against the visible
-// ones, and 24-bit float keys against 16 bits normalised to the visible range.
+// sort over all N against the binned ones only (its sort time in the binning column: keys to
+// layers); per view the sort over all N against the visible ones, and float keys against 16
+// bits normalised to the visible range.
 void sort_rows(const gpu::GlScene& scene, const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                gpu::Texture& quilt, const GpuFrameOptions& o, const gpu::GlInfo& info, std::vector<GpuFrameRow>& rows) {
   {
@@ -104,10 +136,17 @@ void sort_rows(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
     options.g2lf.chunks = o.chunks;
     options.g2lf.d_shift = -1.0f;
     options.gpu_timers = true;
-    for (const bool binned_only : {false, true}) {
-      options.sort_binned_only = binned_only;
-      rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
-                              binned_only ? "binning sort over the binned Gaussians" : "binning sort over all N"));
+    const std::vector<GpuFrameRow> g2lf = interleaved_rows(
+        o, fmt::format("G2LF N={}", o.chunks), {"binning sort over all N", "binning sort over the binned Gaussians"},
+        [&](size_t v) {
+          options.sort_binned_only = v == 1;
+          renderer.render_quilt(geometry, layout, options, {}, quilt);
+          return renderer.stats().seconds_binning;
+        });
+    for (GpuFrameRow row : g2lf) {
+      row.binning_s = row.sort_s;  // the binning stage (keys to layers), most of it the sort
+      row.sort_s = 0;
+      rows.push_back(row);
     }
   }
   struct Variant {
@@ -115,16 +154,26 @@ void sort_rows(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
     bool visible_only, normalised;
     const char* what;
   };
-  for (const Variant& v : {Variant{24, false, false, "sort all N, 24-bit float keys (3 passes)"},
-                           Variant{24, true, false, "sort the visible, 24-bit float keys (3 passes)"},
-                           Variant{16, true, true, "sort the visible, 16-bit normalised keys (2 passes)"},
-                           Variant{32, false, false, "sort all N, 32-bit float keys (4 passes)"},
-                           Variant{32, true, false, "sort the visible, 32-bit float keys (4 passes)"}}) {
+  const std::vector<Variant> variants{{24, false, false, "sort all N, 24-bit float keys (3 passes)"},
+                                      {24, true, false, "sort the visible, 24-bit float keys (3 passes)"},
+                                      {16, true, true, "sort the visible, 16-bit normalised keys (2 passes)"},
+                                      {32, false, false, "sort all N, 32-bit float keys (4 passes)"},
+                                      {32, true, false, "sort the visible, 32-bit float keys (4 passes)"}};
+  std::vector<std::unique_ptr<gpu::GlPerViewRenderer>> renderers;
+  std::vector<std::string> names;
+  for (const Variant& v : variants) {
     gpu::GlPerViewOptions options = per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, v.bits);
+    options.gpu_timers = true;
     options.sort_visible_only = v.visible_only;
     options.normalised_depth_keys = v.normalised;
-    rows.push_back(per_view_row(scene, geometry, layout, quilt, options, o, v.what));
+    renderers.push_back(std::make_unique<gpu::GlPerViewRenderer>(scene, options));
+    names.push_back(v.what);
   }
+  for (const GpuFrameRow& row : interleaved_rows(o, "per view", names, [&](size_t v) {
+         renderers[v]->render_quilt(geometry, layout, {}, quilt);
+         return renderers[v]->stats().sort_s;
+       }))
+    rows.push_back(row);
 }
 
 }  // namespace

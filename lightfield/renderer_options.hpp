@@ -48,6 +48,9 @@ struct GlRenderOptions {
   // Per view: the depth key bits sorted (gpu::GlPerViewOptions::depth_key_bits; 32 exact, the
   // viewer 24: 3 radix passes instead of 4).
   int depth_key_bits = 32;
+  // Per view: those bits spread over the view's visible depth range
+  // (gpu::GlPerViewOptions::normalised_depth_keys; the viewer's 16 bits: 2 radix passes).
+  bool normalised_depth_keys = false;
   size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
   size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
 };

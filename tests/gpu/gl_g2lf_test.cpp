@@ -234,24 +234,29 @@ TEST_P(GlG2lfBinning, SameChunksAndPlaneDepthsAsTheCpu) {
   GlDepthBinning binning;
   GlRadixSort sort;
   Buffer keys(4), values(4), layers(4);
-  binning.run(scene, ref, c.chunks, c.binning, sort, keys, values, layers, table);
+  // The sort over the binned Gaussians only (its first pass drops the others; the default) and
+  // over all N give the same chunks.
+  for (const bool binned_only : {false, true}) {
+    SCOPED_TRACE(binned_only ? "sort over the binned Gaussians" : "sort over all N");
+    binning.run(scene, ref, c.chunks, c.binning, sort, keys, values, layers, table, nullptr, binned_only);
 
-  const PlaneTableHeader header = table.read_header();
-  const std::vector<PlaneTableEntry> entries = table.read_entries();
-  const auto sorted = values.download_as<uint32_t>(s.scene.size());
-  const auto layer_of = layers.download_as<uint32_t>(header.splats_binned);
-  size_t cpu_binned = 0;
-  for (const auto& m : cpu.members) cpu_binned += m.size();
-  ASSERT_EQ(header.splats_binned, cpu_binned);
-  ASSERT_EQ(header.plane_count, cpu.members.size());
-  EXPECT_EQ(entries.back().begin, header.splats_binned);
-  for (size_t k = 0; k < cpu.members.size(); ++k) {
-    // Bit-exact depths: the same float operations as the CPU.
-    EXPECT_EQ(entries[k].depth, cpu.plane_depth[k]) << "plane " << k;
-    std::vector<uint32_t> members(sorted.begin() + entries[k].begin, sorted.begin() + entries[k + 1].begin);
-    std::sort(members.begin(), members.end());
-    EXPECT_EQ(members, cpu.members[k]) << "plane " << k;
-    for (uint32_t i = entries[k].begin; i < entries[k + 1].begin; ++i) ASSERT_EQ(layer_of[i], k) << i;
+    const PlaneTableHeader header = table.read_header();
+    const std::vector<PlaneTableEntry> entries = table.read_entries();
+    const auto sorted = values.download_as<uint32_t>(s.scene.size());
+    const auto layer_of = layers.download_as<uint32_t>(header.splats_binned);
+    size_t cpu_binned = 0;
+    for (const auto& m : cpu.members) cpu_binned += m.size();
+    ASSERT_EQ(header.splats_binned, cpu_binned);
+    ASSERT_EQ(header.plane_count, cpu.members.size());
+    EXPECT_EQ(entries.back().begin, header.splats_binned);
+    for (size_t k = 0; k < cpu.members.size(); ++k) {
+      // Bit-exact depths: the same float operations as the CPU.
+      EXPECT_EQ(entries[k].depth, cpu.plane_depth[k]) << "plane " << k;
+      std::vector<uint32_t> members(sorted.begin() + entries[k].begin, sorted.begin() + entries[k + 1].begin);
+      std::sort(members.begin(), members.end());
+      EXPECT_EQ(members, cpu.members[k]) << "plane " << k;
+      for (uint32_t i = entries[k].begin; i < entries[k + 1].begin; ++i) ASSERT_EQ(layer_of[i], k) << i;
+    }
   }
 }
 
