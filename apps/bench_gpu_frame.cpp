@@ -43,7 +43,7 @@ int RunBenchGpuFrame(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
   app.add_flag("--sort-only", o.sort_only,
-               "only the sort rows: all N against the visible (binned) Gaussians, float against normalised keys");
+               "the sort rows instead: all N against the visible (binned) Gaussians, float against normalised keys");
   app.add_option("--zoom", zoom,
                  "narrow the framed view's field of view this many times (a part of the scene in view: "
                  "the others culled, what the sort rows compare)")

@@ -213,7 +213,6 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
                               fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
   rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA16F, bits), o,
                               fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
-  sort_rows(scene, geometry, layout, quilt, o, info, rows);
   return rows;
 }
 

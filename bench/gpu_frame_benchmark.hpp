@@ -8,9 +8,9 @@
 //   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
 //   - per view: RGBA32F blending targets against RGBA16F (half the bytes a blend), and the
 //     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3);
-//   - the sort over all N against the visible (binned) Gaussians only, for G2LF's binning and
-//     per view, and per view 24-bit float keys against 16 bits normalised to the visible range
-//     (--sort-only: these rows alone).
+//   - with sort_only (--sort-only) instead: the sort over all N against the visible (binned)
+//     Gaussians only, for G2LF's binning and per view, and per view float keys against 16 bits
+//     normalised to the visible range, the variants interleaved round by round.
 // Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
 #include <string>
@@ -29,7 +29,7 @@ struct GpuFrameOptions {
   int runs = 5, warmup = 1;
   int batch = 4;                          // frames per pipelined batch
   std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
-  bool sort_only = false;                   // only the sort rows (sort_rows)
+  bool sort_only = false;                   // the sort rows instead of the others
 };
 
 struct GpuFrameRow {

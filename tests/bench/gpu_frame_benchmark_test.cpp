@@ -37,5 +37,28 @@ TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
   EXPECT_EQ(gpu_frame_json(rows).size(), 7u);
 }
 
+// --sort-only: G2LF's binning sort over all N and over the binned Gaussians, then per view five
+// sorts (all N / the visible, float / normalised keys), each with its stage time.
+TEST(GpuFrameBenchmark, TheSortRowsCompareTheSortsInterleaved) {
+  gpu::HeadlessContext context;
+  const GlVsCpuScene scene = gl_vs_cpu_tabletop(2000, 32);
+  GpuFrameOptions o;
+  o.views = 3;
+  o.chunks = 8;
+  o.runs = 2;
+  o.warmup = 1;
+  o.sort_only = true;
+  const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
+  ASSERT_EQ(rows.size(), 7u);
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].method, i < 2 ? "G2LF N=8" : "per view");
+    EXPECT_GT(rows[i].frame_s, 0.0) << rows[i].variant;
+    EXPECT_GT(i < 2 ? rows[i].binning_s : rows[i].sort_s, 0.0) << rows[i].variant;
+    EXPECT_NE(rows[i].variant.find("interleaved"), std::string::npos);
+  }
+  EXPECT_NE(rows[4].variant.find("16-bit normalised"), std::string::npos);
+  EXPECT_NE(gpu_frame_table(rows).find("GPU per-view sort ms"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace lfd::bench
