@@ -38,14 +38,22 @@ BlockLayout block_layout(uint32_t count) {
   return layout;
 }
 
-void set_pass_uniforms(const Program& p, uint32_t count, const BlockLayout& layout, bool later, bool drop,
-                       uint32_t normalise_bits) {
-  glProgramUniform1ui(p.id(), p.uniform("count"), count);
-  glProgramUniform1ui(p.id(), p.uniform("block_count"), layout.blocks);
-  glProgramUniform1ui(p.id(), p.uniform("block_items"), layout.items);
-  glProgramUniform1i(p.id(), p.uniform("later_pass"), later ? 1 : 0);
-  glProgramUniform1i(p.id(), p.uniform("drop_culled"), drop ? 1 : 0);
-  glProgramUniform1ui(p.id(), p.uniform("normalise_bits"), normalise_bits);
+// The uniforms of one pass, and those last set on a program: only what changed is set again
+// (a sort of 3 passes would otherwise make 60 uniform calls a view; docs/gpu.md "A frame that
+// never waits" counts the calls).
+void set_changed(const Program& p, RadixPassUniforms& last, const RadixPassUniforms& now) {
+  const auto set = [&](const char* name, uint32_t RadixPassUniforms::*field) {
+    if (last.*field == now.*field) return;
+    glProgramUniform1ui(p.id(), p.uniform(name), now.*field);
+  };
+  set("count", &RadixPassUniforms::count);
+  set("block_count", &RadixPassUniforms::block_count);
+  set("block_items", &RadixPassUniforms::block_items);
+  set("later_pass", &RadixPassUniforms::later);
+  set("drop_culled", &RadixPassUniforms::drop);
+  set("normalise_bits", &RadixPassUniforms::normalise_bits);
+  set("shift", &RadixPassUniforms::shift);
+  last = now;
 }
 
 void check_keys(const SortKeys& how) {
@@ -111,9 +119,10 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
     const bool later = how.drop_culled && pass > 0;
     const bool drop = how.drop_culled && pass == 0;
     const uint32_t normalise = pass == 0 ? uint32_t(how.normalise_bits) : 0u;
-    for (const Program* p : {&histogram_, &scan_, &scatter_}) set_pass_uniforms(*p, count, first, later, drop, normalise);
-    glProgramUniform1ui(histogram_.id(), histogram_.uniform("shift"), shift);
-    glProgramUniform1ui(scatter_.id(), scatter_.uniform("shift"), shift);
+    const RadixPassUniforms now{count, first.blocks, first.items, later, drop, normalise, shift};
+    set_changed(histogram_, last_uniforms_[0], now);
+    set_changed(scan_, last_uniforms_[1], now);
+    set_changed(scatter_, last_uniforms_[2], now);
 
     key_copies[pass % 2]->bind_storage(0);
     block_offsets_.bind_storage(1);

@@ -23,6 +23,7 @@
 // the float bits are a piecewise-linear log2 of the depth, so 16 bits spread over the visible
 // depths order them to a relative 2^(s - 23) and fill the digits evenly, where the raw bits'
 // top digit holds nearly every key (one hot bucket).
+#include <array>
 #include <cstdint>
 
 #include "gpu/gl_objects.hpp"
@@ -43,6 +44,12 @@ struct SortKeys {
   // low_bit are then ignored.
   int normalise_bits = 0;
   const Buffer* key_range = nullptr;
+};
+
+// The uniforms of one sort pass (what GlRadixSort set last on each program; it sets only what
+// changes).
+struct RadixPassUniforms {
+  uint32_t count = 0, block_count = 0, block_items = 0, later = 0, drop = 0, normalise_bits = 0, shift = 0;
 };
 
 class GlRadixSort {
@@ -66,6 +73,7 @@ class GlRadixSort {
  private:
   Program histogram_, scan_, scatter_, setup_;
   Buffer keys_tmp_, values_tmp_, block_offsets_, digit_totals_, params_;
+  std::array<RadixPassUniforms, 3> last_uniforms_{};  // histogram, scan, scatter (GL sets 0 at link)
 };
 
 }  // namespace lfd::gpu
