@@ -96,6 +96,10 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
   if (size_t(count) * 4 > keys.bytes() || size_t(count) * 4 > values.bytes())
     throw std::invalid_argument("GlRadixSort: count exceeds the buffers");
   // Without dropping, 0 or 1 keys are sorted; with it a single key may still be dropped.
+  if (count == 0 && how.drop_culled) {  // nothing kept: what kept_count_buffer() promises
+    const uint32_t none[8] = {};
+    params_.upload(none, sizeof(none));
+  }
   if (count == 0 || (count == 1 && !how.drop_culled)) return;
 
   const BlockLayout first = block_layout(count);
