@@ -143,9 +143,11 @@ void sort_rows(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
           renderer.render_quilt(geometry, layout, options, {}, quilt);
           return renderer.stats().seconds_binning;
         });
+    const size_t binned = renderer.stats().gaussians_in_frustum;
     for (GpuFrameRow row : g2lf) {
       row.binning_s = row.sort_s;  // the binning stage (keys to layers), most of it the sort
       row.sort_s = 0;
+      row.variant += fmt::format(", {} of {} binned", binned, scene.size());
       rows.push_back(row);
     }
   }
