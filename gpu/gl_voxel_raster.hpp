@@ -12,6 +12,7 @@
 // 1e-4 max(colour) there (the splat raster's note, gl_splat_raster.hpp, with 1e-4 for 0.01).
 #include <array>
 #include <cstdint>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -21,6 +22,9 @@
 #include "render/camera.hpp"
 
 namespace lfd::gpu {
+
+// Storage binding of V2LF's indirect draws (voxel_raster.vert.glsl reads their base instance).
+constexpr GLuint kVoxelDraws = 4;
 
 // Entries [offset, offset + count) of an order buffer: one octant's voxels, front to back.
 struct VoxelOrderRange {
@@ -38,11 +42,21 @@ class GlVoxelRaster {
   // no pixel's ray takes are skipped. The target is not cleared.
   void draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
             const Buffer& order, const VoxelOrderRanges& ranges, const SplatRasterTarget& target) const;
+  // The indirect draws of plane `plane` (gpu/gl_voxel_binning.hpp: command 8 plane + octant of
+  // `draws`, base instance = where its voxels begin in `order`), the octants no pixel's ray takes
+  // skipped; sizes and offsets stay on the GPU.
+  void draw_indirect(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                     const Buffer& order, const Buffer& draws, int plane, const SplatRasterTarget& target) const;
   // Every voxel of the scene, in the scene's own orders.
   void draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
             const SplatRasterTarget& target) const;
 
  private:
+  // The uniforms and state of a draw; then `issue(octant)` per octant in view.
+  void draw_octants(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                    const Buffer& order, const SplatRasterTarget& target,
+                    const std::function<void(int octant)>& issue) const;
+
   Program program_;
   VertexArray vertex_array_;
 };

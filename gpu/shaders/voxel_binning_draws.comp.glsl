@@ -1,0 +1,35 @@
+// V2LF depth binning, pass 7: the indirect draws of the planes, one per (plane k, octant o) at
+// command 8 k + o (gpu/gl_voxel_raster.hpp, draw_indirect): a 4-vertex strip instanced once per
+// voxel of chunk k in octant o's order; the base instance is where those voxels begin in the
+// grouped orders (the vertex shader reads it: gl_InstanceID does not include it). Planes past the
+// frame's plane count and octants not in view draw nothing.
+layout(local_size_x = 64) in;
+
+struct PlaneEntry {
+  float depth;
+  uint begin;
+};
+layout(std430, binding = 4) writeonly buffer Draws { uvec4 draws[]; };  // count, instances, first, base instance
+layout(std430, binding = 9) readonly buffer PlaneTable {
+  uint plane_count;
+  uint splats_binned;
+  uint pad0, pad1;
+  PlaneEntry plane[];
+};
+
+uniform uint voxel_count;
+uniform uint max_planes;
+uniform int slot_of_octant[8];  // -1: not in view
+
+void main() {
+  const uint c = gl_GlobalInvocationID.x;
+  if (c >= 8u * max_planes) return;
+  const uint k = c / 8u, octant = c % 8u;
+  const int slot = slot_of_octant[octant];
+  if (k >= plane_count || slot < 0) {
+    draws[c] = uvec4(4u, 0u, 0u, 0u);
+    return;
+  }
+  const uint begin = plane[k].begin;
+  draws[c] = uvec4(4u, plane[k + 1u].begin - begin, 0u, uint(slot) * voxel_count + begin);
+}
