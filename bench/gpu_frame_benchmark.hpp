@@ -7,7 +7,9 @@
 //     to back and finished once per batch: the wall time per frame of a pipelined loop;
 //   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
 //   - per view: RGBA32F blending targets against RGBA16F (half the bytes a blend), and the
-//     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3).
+//     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3);
+//   - V2LF on a generated voxel scene: the voxels binned on the CPU and uploaded every frame
+//     against binned on the GPU (gpu/gl_voxel_binning.hpp), runs alternated.
 // Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
 #include <string>
@@ -26,10 +28,11 @@ struct GpuFrameOptions {
   int runs = 5, warmup = 1;
   int batch = 4;                          // frames per pipelined batch
   std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
+  int voxel_level = 7;  // the generated voxel tabletop of the V2LF rows (voxel/voxel_generator.hpp); 0: none
 };
 
 struct GpuFrameRow {
-  std::string method;   // "G2LF N=64" or "per view"
+  std::string method;   // "G2LF N=64", "per view" or "V2LF N=64"
   std::string variant;  // what differs between rows of one method
   double frame_s = 0;   // median wall time per frame
   double binning_s = 0, planes_s = 0, swizzle_s = 0, raster_s = 0;  // median GPU stage times (0: not timed)

@@ -18,6 +18,9 @@ namespace {
 
 constexpr GLuint kPlaneTableBinding = 9;  // g2lf_plane_convert.comp.glsl's PlaneTable
 
+// Work groups of a per-plane pass (low-pass, convert: 16 x 8 texels each).
+glm::uvec2 plane_groups(int width, int height) { return {GLuint((width + 15) / 16), GLuint((height + 7) / 8)}; }
+
 // Where each chunk begins in the binned voxels listed chunk by chunk, and one past the last.
 std::vector<uint32_t> chunk_starts(const render::DepthChunks& chunks) {
   std::vector<uint32_t> start(chunks.members.size() + 1, 0);
@@ -84,9 +87,27 @@ GlV2lfRenderer::GlV2lfRenderer(const GlVoxelScene& scene, const GlInfo& info)
       convert_f32_(plane_convert_program("rgba32f", false)),
       lowpass_("v2lf plane low-pass", {{GL_COMPUTE_SHADER, voxel_plane_lowpass_comp_glsl}}) {}
 
-void GlV2lfRenderer::lowpass(float variance_px2) {
+// How a per-plane pass (filter, convert) is dispatched over plane k: its work groups (16 x 8
+// texels each), or with the GPU binning the indirect dispatch it wrote, empty past the frame's
+// plane count (gpu/gl_voxel_binning.hpp).
+struct GlV2lfRenderer::PlaneDispatch {
+  glm::uvec2 groups;
+  const Buffer* indirect = nullptr;
+  int max_planes = 0;
+
+  void operator()(int k) const {
+    if (!indirect) {
+      glDispatchCompute(groups.x, groups.y, 1);
+      return;
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, indirect->id());
+    glDispatchComputeIndirect(GLintptr(GlVoxelBinning::plane_dispatch_offset(k, max_planes)));
+  }
+};
+
+bool GlV2lfRenderer::prepare_lowpass(float variance_px2) {
   const std::vector<float> kernel = voxel::gaussian_lowpass_kernel(variance_px2);  // the CPU's weights
-  if (kernel.empty()) return;
+  if (kernel.empty()) return false;
   const int radius = int(kernel.size() / 2);
   if (radius > 64)
     throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than 64 texels; "
@@ -99,12 +120,16 @@ void GlV2lfRenderer::lowpass(float variance_px2) {
   glProgramUniform2i(p, lowpass_.uniform("plane_size"), wp, hp);
   glProgramUniform1i(p, lowpass_.uniform("radius"), radius);
   glProgramUniform1fv(p, lowpass_.uniform("kernel"), GLsizei(kernel.size()), kernel.data());
+  return true;
+}
+
+void GlV2lfRenderer::lowpass(int k, const PlaneDispatch& dispatch) {
   glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(2, lowpass_scratch_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   lowpass_.use();
   for (int along_y = 0; along_y < 2; ++along_y) {
-    glProgramUniform1i(p, lowpass_.uniform("along_y"), along_y);
-    glDispatchCompute(GLuint((wp + 15) / 16), GLuint((hp + 7) / 8), 1);
+    glProgramUniform1i(lowpass_.id(), lowpass_.uniform("along_y"), along_y);
+    dispatch(k);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 }
@@ -128,7 +153,8 @@ std::vector<VoxelOrderRanges> GlV2lfRenderer::upload_chunk_orders(const GlVoxelS
   return std::move(groups.ranges);
 }
 
-void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance, GlPlanes& planes) {
+void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance,
+                                 const Buffer* plane_dispatches, GlPlanes& planes) {
   SplatRasterTarget target;
   target.framebuffer = accumulation_framebuffer_.id();
   target.image_size = {planes.width, planes.height};
@@ -137,24 +163,28 @@ void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float l
                                                                     : convert_f32_;
   glProgramUniform1ui(convert.id(), convert.uniform("batch_layers"), 1u);
   glProgramUniform2i(convert.id(), convert.uniform("plane_size"), planes.width, planes.height);
+  const PlaneDispatch dispatch{plane_groups(planes.width, planes.height), plane_dispatches, planes.max_planes};
+  const bool filtered = prepare_lowpass(lowpass_variance);
+  // Empty once a frame: each plane's convert pass resets the layer for the next.
+  targets_.clear(target);
   for (int k = 0; k < count; ++k) {
-    targets_.clear(target);
     draw_chunk(k, target);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    lowpass(lowpass_variance);
-    convert_plane(k, convert, planes);
+    if (filtered) lowpass(k, dispatch);
+    convert_plane(k, convert, dispatch, planes);
   }
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 // Layer k of the planes from the accumulation layer (which the pass resets to empty).
-void GlV2lfRenderer::convert_plane(int k, const Program& convert, GlPlanes& planes) {
+void GlV2lfRenderer::convert_plane(int k, const Program& convert, const PlaneDispatch& dispatch, GlPlanes& planes) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(1, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
   planes.table.buffer.bind_storage(kPlaneTableBinding);
   glProgramUniform1ui(convert.id(), convert.uniform("batch"), GLuint(k));
   convert.use();
-  glDispatchCompute(GLuint((planes.width + 15) / 16), GLuint((planes.height + 7) / 8), 1);
+  dispatch(k);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
@@ -209,7 +239,7 @@ GlSweepingPlaneStages GlV2lfRenderer::cpu_binned_stages(const render::QuiltGeome
         [&](int k, const SplatRasterTarget& target) {
           raster_.draw(scene, ref.camera, geometry.base.position_world, chunk_orders_, ranges_[size_t(k)], target);
         },
-        lowpass_variance(geometry, ref, o), planes);
+        lowpass_variance(geometry, ref, o), nullptr, planes);
   };
   return stages;
 }
@@ -220,7 +250,7 @@ GlSweepingPlaneStages GlV2lfRenderer::gpu_binned_stages(const render::QuiltGeome
   const render::G2lfOptions& o = options.v2lf.planes;
   GlSweepingPlaneStages stages;
   stages.bin = [this, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
-    binning_.run(scene_, ref, o.chunks, o.binning, planes.table);
+    binning_.run(scene_, ref, o.chunks, o.binning, plane_groups(planes.width, planes.height), planes.table);
   };
   stages.draw_planes = [this, &geometry, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
     draw_planes(
@@ -229,7 +259,7 @@ GlSweepingPlaneStages GlV2lfRenderer::gpu_binned_stages(const render::QuiltGeome
           raster_.draw_indirect(scene_, ref.camera, geometry.base.position_world, binning_.orders(),
                                 binning_.draws(), k, target);
         },
-        lowpass_variance(geometry, ref, o), planes);
+        lowpass_variance(geometry, ref, o), &binning_.draws(), planes);
   };
   return stages;
 }

@@ -17,8 +17,8 @@
 //             pass, gpu/shaders/g2lf_plane_convert.comp.glsl)
 //   swizzle   GlSwizzle into the quilt (the skeleton's)
 // With the GPU binning a frame makes no CPU pass over the voxels and no upload: the plane count
-// and the draw sizes stay on the GPU, so every possible plane (N_chunk) gets its draws (empty
-// past the frame's count) and its filter and convert passes (the convert skips those planes).
+// and the draw sizes stay on the GPU, so every possible plane (N_chunk) gets its draws and its
+// filter and convert dispatches, all indirect: empty past the frame's plane count.
 #include <functional>
 #include <optional>
 #include <vector>
@@ -93,13 +93,19 @@ class GlV2lfRenderer {
   // Planes 0 .. count - 1: each cleared, `draw_chunk(k, target)` into the accumulation layer,
   // filtered and converted.
   using ChunkDraw = std::function<void(int k, const SplatRasterTarget& target)>;
-  void draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance, GlPlanes& planes);
+  // `plane_dispatches`: the GPU binning's indirect dispatches of the per-plane passes (none past
+  // the frame's plane count); nullptr: every plane below `count` is dispatched.
+  struct PlaneDispatch;
+  void draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance, const Buffer* plane_dispatches,
+                   GlPlanes& planes);
   GlSweepingPlaneStages cpu_binned_stages(const render::QuiltGeometry& geometry, const GlV2lfOptions& options);
   GlSweepingPlaneStages gpu_binned_stages(const render::QuiltGeometry& geometry, const GlV2lfOptions& options);
-  void convert_plane(int k, const Program& convert, GlPlanes& planes);
+  void convert_plane(int k, const Program& convert, const PlaneDispatch& dispatch, GlPlanes& planes);
   float lowpass_variance(const render::QuiltGeometry& geometry, const render::ReferenceCamera& ref,
                          const render::G2lfOptions& o) const;
-  void lowpass(float variance_px2);
+  // The planes' low-pass filter: its kernel once a frame (false: off), then per plane.
+  bool prepare_lowpass(float variance_px2);
+  void lowpass(int k, const PlaneDispatch& dispatch);
   void record_stats(const GlV2lfOptions& options);
   // One frame: the checks, the planes' allocation, the stages (binning on the CPU, planes on the
   // GPU) handed to `run`, which runs them with the swizzle or the direct pass; then the stats.

@@ -57,7 +57,7 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
 }
 
 void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, int max_planes,
-                                  GlPlaneTable& table) {
+                                  const glm::uvec2& plane_groups, GlPlaneTable& table) {
   const size_t n = scene.size();
   GLint octant_of_slot[8] = {0, 0, 0, 0, 0, 0, 0, 0}, slot_of_octant[8];
   GLuint slots = 0;
@@ -100,24 +100,29 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   glProgramUniform1ui(d, draws_pass_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(d, draws_pass_.uniform("max_planes"), GLuint(max_planes));
   glProgramUniform1iv(d, draws_pass_.uniform("slot_of_octant"), 8, slot_of_octant);
+  glProgramUniform2ui(d, draws_pass_.uniform("plane_groups"), plane_groups.x, plane_groups.y);
   draws_pass_.use();
   draws_pass_.dispatch_1d(size_t(max_planes) * 8, 64);
   // Next: the raster (storage reads of the orders and draws, indirect draws), the swizzle.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
+size_t GlVoxelBinning::plane_dispatch_offset(int plane, int max_planes) {
+  return (size_t(8) * size_t(max_planes) + size_t(plane)) * 4 * sizeof(uint32_t);
+}
+
 void GlVoxelBinning::run(const GlVoxelScene& scene, const render::ReferenceCamera& ref, int chunks,
-                         render::ChunkBinning binning, GlPlaneTable& table) {
+                         render::ChunkBinning binning, const glm::uvec2& plane_groups, GlPlaneTable& table) {
   const size_t n = scene.size();
   keys_buffer_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   values_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   layers_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   chunk_of_buffer_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
-  draws_.ensure(size_t(table.max_planes) * 8 * 4 * sizeof(uint32_t));
+  draws_.ensure(size_t(table.max_planes) * 9 * 4 * sizeof(uint32_t));  // 8 draws, 1 dispatch a plane
   keys(scene, ref.camera, table);
   sort_.sort(keys_buffer_, values_, uint32_t(n), 32);
   chunking_.chunk_sorted(ref, chunks, binning, keys_buffer_, n, layers_, table);
-  group_orders(scene, octants_in_view(ref.camera), table.max_planes, table);
+  group_orders(scene, octants_in_view(ref.camera), table.max_planes, plane_groups, table);
   check_gl("V2LF depth binning");
 }
 

@@ -13,13 +13,16 @@
 //   orders    each octant in view's front-to-back order (uploaded once with the scene) grouped
 //             by chunk with one stable radix sort of (slot, chunk) keys
 //             (voxel_binning_orders.comp.glsl): what group_by_octant does on the CPU
-//   draws     per (plane, octant) an indirect draw of that chunk's voxels in that order
-//             (voxel_binning_draws.comp.glsl)
+//   draws     per (plane, octant) an indirect draw of that chunk's voxels in that order, and
+//             per plane the indirect dispatch of its filter and convert passes, empty past the
+//             frame's plane count (voxel_binning_draws.comp.glsl)
 // The scene never leaves the GPU and nothing is read back: the plane count and every draw's size
 // stay on the GPU, so the CPU issues the same commands whatever the scene (docs/gpu.md, "Voxels
 // on the GPU"). Membership, plane count and plane depths are the CPU's bit for bit.
 #include <cstddef>
 #include <cstdint>
+
+#include <glm/glm.hpp>
 
 #include "gpu/gl_depth_binning.hpp"
 #include "gpu/gl_objects.hpp"
@@ -38,9 +41,13 @@ class GlVoxelBinning {
 
   // Bins `scene` for `ref` into at most `chunks` planes (<= table.max_planes) and writes the
   // plane table, the grouped orders (orders()) and the draws (draws(): command 8 k + octant for
-  // plane k). Enqueues GPU work only; ends with the barriers the raster and the swizzle need.
+  // plane k, then per plane a dispatch of `plane_groups` work groups, or none past the plane
+  // count, at plane_dispatch_offset). Enqueues GPU work only; ends with the barriers the
+  // raster, the per-plane passes and the swizzle need.
   void run(const GlVoxelScene& scene, const render::ReferenceCamera& ref, int chunks,
-           render::ChunkBinning binning, GlPlaneTable& table);
+           render::ChunkBinning binning, const glm::uvec2& plane_groups, GlPlaneTable& table);
+  // Byte offset in draws() of plane `plane`'s DispatchIndirectCommand.
+  static size_t plane_dispatch_offset(int plane, int max_planes);
 
   const Buffer& orders() const { return group_values_; }  // uint voxel ids, slot s at [s n, (s + 1) n)
   const Buffer& draws() const { return draws_; }          // DrawArraysIndirect commands
@@ -48,7 +55,8 @@ class GlVoxelBinning {
 
  private:
   void keys(const GlVoxelScene& scene, const render::Camera& camera, GlPlaneTable& table);
-  void group_orders(const GlVoxelScene& scene, uint32_t octants, int max_planes, GlPlaneTable& table);
+  void group_orders(const GlVoxelScene& scene, uint32_t octants, int max_planes, const glm::uvec2& plane_groups,
+                    GlPlaneTable& table);
 
   Program keys_, chunk_of_, orders_, draws_pass_;
   GlDepthBinning chunking_;

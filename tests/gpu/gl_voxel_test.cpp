@@ -199,7 +199,7 @@ TEST_P(GlVoxelBinningCases, SameChunksDepthsOrdersAndDrawsAsTheCpu) {
   const GlVoxelScene scene(f.scene, ctx.info());
   GlPlaneTable table(c.chunks);
   GlVoxelBinning binning;
-  binning.run(scene, ref, c.chunks, c.binning, table);
+  binning.run(scene, ref, c.chunks, c.binning, glm::uvec2(3, 5), table);
   const PlaneTableHeader header = table.read_header();
   const std::vector<PlaneTableEntry> entries = table.read_entries();
   size_t cpu_binned = 0;
@@ -213,7 +213,15 @@ TEST_P(GlVoxelBinningCases, SameChunksDepthsOrdersAndDrawsAsTheCpu) {
   const uint32_t octants = octants_in_view(ref.camera);
   const int slots = std::popcount(octants);
   const auto orders = binning.orders().download_as<uint32_t>(n * size_t(slots));
-  const auto draws = binning.draws().download_as<uint32_t>(size_t(c.chunks) * 8 * 4);
+  const auto draws = binning.draws().download_as<uint32_t>(size_t(c.chunks) * 9 * 4);
+  // The per-plane passes' dispatches: the plane's groups, none past the plane count.
+  for (int k = 0; k < c.chunks; ++k) {
+    const uint32_t* groups = draws.data() + GlVoxelBinning::plane_dispatch_offset(k, c.chunks) / sizeof(uint32_t);
+    const bool used = size_t(k) < cpu.chunks.members.size();
+    EXPECT_EQ(groups[0], used ? 3u : 0u) << k;
+    EXPECT_EQ(groups[1], used ? 5u : 0u) << k;
+    EXPECT_EQ(groups[2], used ? 1u : 0u) << k;
+  }
   for (size_t k = 0; k < cpu.chunks.members.size(); ++k) {
     EXPECT_EQ(entries[k].depth, cpu.chunks.plane_depth[k]) << "plane " << k;  // bit-exact
     const std::vector<uint32_t>& members = cpu.chunks.members[k];  // sorted by index
