@@ -33,7 +33,7 @@ GlVoxelBinning::GlVoxelBinning()
 
 size_t GlVoxelBinning::bytes() const {
   return keys_buffer_.bytes() + values_.bytes() + layers_.bytes() + chunk_of_buffer_.bytes() + group_keys_.bytes() +
-         group_values_.bytes() + draws_.bytes() + sort_.scratch_bytes();
+         group_sorted_.bytes() + group_values_.bytes() + draws_.bytes() + sort_.scratch_bytes();
 }
 
 void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camera, GlPlaneTable& table) {
@@ -65,10 +65,10 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
     slot_of_octant[octant] = (octants & (1u << octant)) ? GLint(slots) : -1;
     if (octants & (1u << octant)) octant_of_slot[slots++] = octant;
   }
-  // Chunk ids 0..max_planes - 1 and max_planes for the unbinned, the slot above them.
+  // Chunk ids 0..max_planes - 1 and max_planes for the unbinned.
   const int chunk_bits = std::bit_width(unsigned(max_planes));
-  const int slot_bits = std::bit_width(unsigned(slots > 0 ? slots - 1 : 0));
-  group_keys_.ensure(std::max<size_t>(n * slots, 1) * sizeof(uint32_t));
+  group_keys_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
+  group_sorted_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   group_values_.ensure(std::max<size_t>(n * slots, 1) * sizeof(uint32_t));
 
   values_.bind_storage(kSplatValues);
@@ -81,18 +81,23 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   chunk_of_.dispatch_1d(n, 256);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  scene.order_buffer().bind_storage(kVoxelOrder);
-  group_keys_.bind_storage(kSplatKeys);
-  group_values_.bind_storage(kSplatValues);
+  // Per octant in view: its order keyed by chunk, sorted stably, copied to its slot.
   const GLuint p = orders_.id();
   glProgramUniform1ui(p, orders_.uniform("voxel_count"), GLuint(n));
-  glProgramUniform1ui(p, orders_.uniform("slots"), slots);
-  glProgramUniform1iv(p, orders_.uniform("octant_of_slot"), 8, octant_of_slot);
-  glProgramUniform1ui(p, orders_.uniform("chunk_bits"), GLuint(chunk_bits));
-  orders_.use();
-  orders_.dispatch_1d(n * slots, 256);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  sort_.sort(group_keys_, group_values_, uint32_t(n * slots), chunk_bits + slot_bits);
+  for (GLuint s = 0; s < slots; ++s) {
+    scene.order_buffer().bind_storage(kVoxelOrder);
+    group_keys_.bind_storage(kSplatKeys);
+    group_sorted_.bind_storage(kSplatValues);
+    chunk_of_buffer_.bind_storage(kVoxelChunkOf);
+    glProgramUniform1ui(p, orders_.uniform("octant"), GLuint(octant_of_slot[s]));
+    orders_.use();
+    orders_.dispatch_1d(n, 256);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    sort_.sort(group_keys_, group_sorted_, uint32_t(n), chunk_bits);
+    if (n > 0)
+      glCopyNamedBufferSubData(group_sorted_.id(), group_values_.id(), 0, GLintptr(s * n * sizeof(uint32_t)),
+                               GLsizeiptr(n * sizeof(uint32_t)));
+  }
 
   draws_.bind_storage(kVoxelDraws);
   table.buffer.bind_storage(kPlaneTable);

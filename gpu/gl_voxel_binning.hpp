@@ -11,8 +11,8 @@
 //             definition of the chunk relation (render/depth_binning.hpp's twin): plane table
 //   chunk_of  each voxel's chunk by index (voxel_binning_chunk_of.comp.glsl)
 //   orders    each octant in view's front-to-back order (uploaded once with the scene) grouped
-//             by chunk with one stable radix sort of (slot, chunk) keys
-//             (voxel_binning_orders.comp.glsl): what group_by_octant does on the CPU
+//             by chunk with a stable radix sort of chunk keys (one pass up to 255 planes), copied
+//             to the octant's slot (voxel_binning_orders.comp.glsl): group_by_octant on the CPU
 //   draws     per (plane, octant) an indirect draw of that chunk's voxels in that order, and
 //             per plane the indirect dispatch of its filter and convert passes, empty past the
 //             frame's plane count (voxel_binning_draws.comp.glsl)
@@ -61,7 +61,7 @@ class GlVoxelBinning {
   Program keys_, chunk_of_, orders_, draws_pass_;
   GlDepthBinning chunking_;
   GlRadixSort sort_;
-  Buffer keys_buffer_, values_, layers_, chunk_of_buffer_, group_keys_, group_values_, draws_;
+  Buffer keys_buffer_, values_, layers_, chunk_of_buffer_, group_keys_, group_sorted_, group_values_, draws_;
 };
 
 }  // namespace lfd::gpu
