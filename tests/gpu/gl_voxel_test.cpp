@@ -279,6 +279,17 @@ TEST(GlVoxel, GpuBinnedPlanesEqualTheCpuBinnedOnes) {
       const Texture quilt = make_quilt_texture(f.layout, GL_RGBA32F);
       renderer.render_quilt(f.geometry, f.layout, options, f.scene.background, quilt);
       EXPECT_EQ(renderer.stats().binned_on_gpu, on_gpu);
+      // Timed frames bring the GPU binning's counts through the frame ring (read at once here).
+      options.gpu_timers = true;
+      renderer.render_quilt(f.geometry, f.layout, options, f.scene.background, quilt);
+      options.gpu_timers = false;
+      const voxel::VoxelChunks cpu = voxel::bin_voxels_by_depth(
+          f.scene, f.geometry, render::reference_camera(options.v2lf.planes, f.geometry), options.v2lf.planes.chunks,
+          binning);
+      EXPECT_EQ(renderer.stats().planes, int(cpu.chunks.members.size()));
+      size_t binned = 0;
+      for (const auto& m : cpu.chunks.members) binned += m.size();
+      EXPECT_EQ(renderer.stats().voxels_binned, binned);
       for (int k = 0; k < options.v2lf.planes.chunks; ++k)
         planes[on_gpu].push_back(read_texture_rgba(renderer.planes().texels, k));
       quilts[on_gpu] = read_image_top_down(quilt, 3);
