@@ -153,11 +153,16 @@ std::vector<VoxelOrderRanges> GlV2lfRenderer::upload_chunk_orders(const GlVoxelS
   return std::move(groups.ranges);
 }
 
-void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance,
-                                 const Buffer* plane_dispatches, GlPlanes& planes) {
+SplatRasterTarget GlV2lfRenderer::accumulation_target(const GlPlanes& planes) const {
   SplatRasterTarget target;
   target.framebuffer = accumulation_framebuffer_.id();
   target.image_size = {planes.width, planes.height};
+  return target;
+}
+
+void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance,
+                                 const Buffer* plane_dispatches, GlPlanes& planes) {
+  const SplatRasterTarget target = accumulation_target(planes);
   const Program& convert = planes.format == PlaneFormat::kRgba8    ? convert_u8_
                            : planes.format == PlaneFormat::kRgba16f ? convert_f16_
                                                                     : convert_f32_;
@@ -253,12 +258,10 @@ GlSweepingPlaneStages GlV2lfRenderer::gpu_binned_stages(const render::QuiltGeome
     binning_.run(scene_, ref, o.chunks, o.binning, plane_groups(planes.width, planes.height), planes.table);
   };
   stages.draw_planes = [this, &geometry, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    raster_.begin_indirect(scene_, ref.camera, geometry.base.position_world, binning_.orders(), binning_.draws(),
+                           accumulation_target(planes));
     draw_planes(
-        o.chunks,
-        [&](int k, const SplatRasterTarget& target) {
-          raster_.draw_indirect(scene_, ref.camera, geometry.base.position_world, binning_.orders(),
-                                binning_.draws(), k, target);
-        },
+        o.chunks, [&](int k, const SplatRasterTarget& target) { raster_.draw_indirect(k, target); },
         lowpass_variance(geometry, ref, o), &binning_.draws(), planes);
   };
   return stages;

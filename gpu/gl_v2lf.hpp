@@ -96,6 +96,7 @@ class GlV2lfRenderer {
   // `plane_dispatches`: the GPU binning's indirect dispatches of the per-plane passes (none past
   // the frame's plane count); nullptr: every plane below `count` is dispatched.
   struct PlaneDispatch;
+  SplatRasterTarget accumulation_target(const GlPlanes& planes) const;  // the RGBA32F layer
   void draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance, const Buffer* plane_dispatches,
                    GlPlanes& planes);
   GlSweepingPlaneStages cpu_binned_stages(const render::QuiltGeometry& geometry, const GlV2lfOptions& options);
