@@ -49,6 +49,9 @@ int RunBenchGpuFrame(int argc, char** argv) {
                  "the others culled, what the sort rows compare)")
       ->capture_default_str()
       ->check(CLI::Range(1.0f, 100.0f));
+  app.add_option("--voxel-level", o.voxel_level, "finest level of the generated voxel scene of the V2LF rows (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 11));
   if (auto code = parse(app, argc, argv)) return *code;
   if (scene_path.empty() == (generated == 0)) {
     std::fprintf(stderr, "lfd bench gpu-frame: error: give one of --scene and --generated\n");

@@ -12,6 +12,9 @@ BenchRenderers make_bench_renderers(const std::string& backend, lightfield::Scen
   else if (backend != "cpu")
     throw_input_error("--backend: '{}' is neither cpu nor gl", backend);
   options.gl.quilt_format = GL_RGBA8;
+  // V2LF bins on the GPU: its plane and binned counts (the table's figures) come with timed
+  // frames, read when the frame ends (gpu::GlV2lfStats).
+  options.gl.gpu_timers = kind == lightfield::SceneKind::kVoxels;
   const std::shared_ptr<lightfield::GlDevice> device = lightfield::open_device(options.backend);
   BenchRenderers renderers;
   options.method = lightfield::Method::kPerView;

@@ -11,9 +11,12 @@
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_swizzle.hpp"
+#include "gpu/gl_v2lf.hpp"
+#include "gpu/gl_voxel_scene.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/per_view_quilt.hpp"
 #include "util/default_display.hpp"
+#include "voxel/voxel_generator.hpp"
 
 namespace lfd::bench {
 namespace {
@@ -178,6 +181,76 @@ void sort_rows(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
     rows.push_back(row);
 }
 
+GpuFrameRow v2lf_row(gpu::GlV2lfRenderer& renderer, const render::QuiltGeometry& geometry,
+                     const render::QuiltLayout& layout, const gpu::Texture& quilt, const glm::vec3& background,
+                     const gpu::GlV2lfOptions& options, const GpuFrameOptions& o, const std::string& variant) {
+  GpuFrameRow row;
+  row.method = fmt::format("V2LF N={}", options.v2lf.planes.chunks);
+  row.variant = variant;
+  row.runs = o.runs;
+  Stages stages;
+  row.frame_s = median_frame_seconds(o, o.batch, [&] {
+    renderer.render_quilt(geometry, layout, options, background, quilt);
+    const gpu::GlV2lfStats& st = renderer.stats();
+    stages.binning.push_back(st.seconds_binning);
+    stages.planes.push_back(st.seconds_planes);
+    stages.swizzle.push_back(st.seconds_swizzle);
+  });
+  fill_stages(row, stages);
+  return row;
+}
+
+// V2LF on the generated voxel tabletop (its default camera, the views' size of the Gaussian
+// rows): the voxels binned on the CPU and uploaded every frame (the path before) against binned
+// on the GPU (gpu/gl_voxel_binning.hpp); the same frames otherwise, timers read late, alternated
+// per run so both see the same machine load.
+void append_v2lf_rows(const GpuFrameOptions& o, const render::Camera& gaussian_base, const gpu::GlInfo& info,
+                      std::vector<GpuFrameRow>& rows) {
+  voxel::VoxelGeneratorOptions generator;
+  generator.detail_level = o.voxel_level;
+  const voxel::VoxelScene scene = voxel::generate_voxel_scene(generator);
+  const render::CameraSpec spec = voxel::frame_voxel_scene(scene);
+  const render::Camera base = render::camera_from_spec(spec, gaussian_base.width, gaussian_base.height);
+  const auto geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
+                                                    float(kDefaultViewConeDeg), o.views);
+  const auto layout = render::make_quilt_layout(geometry, o.views, 1);
+  const gpu::GlVoxelScene gl_scene(scene, info);
+  const gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA8);
+  gpu::GlV2lfOptions options;
+  options.v2lf.planes.chunks = o.chunks;
+  options.gpu_timers = true;
+  options.timer_reads = gpu::TimerReads::kLate;
+  const std::string scene_name = fmt::format("level-{} tabletop, {} voxels", o.voxel_level, scene.size());
+  std::vector<GpuFrameRow> sides[2];
+  GpuFrameOptions one = o;
+  one.runs = 1;
+  for (int run = 0; run < o.runs; ++run)
+    for (const bool on_gpu : {false, true}) {
+      gpu::GlV2lfRenderer renderer(gl_scene, info);
+      options.gpu_binning = on_gpu;
+      one.warmup = o.warmup;
+      sides[on_gpu].push_back(v2lf_row(renderer, geometry, layout, quilt, scene.background, options, one,
+                                       fmt::format("{}: binning on the {}, {} frames a batch", scene_name,
+                                                   on_gpu ? "GPU" : "CPU (uploaded per frame)", o.batch)));
+    }
+  for (const auto& side : sides) {
+    GpuFrameRow row = side.front();
+    std::vector<double> frame, binning, planes, swizzle;
+    for (const GpuFrameRow& r : side) {
+      frame.push_back(r.frame_s);
+      binning.push_back(r.binning_s);
+      planes.push_back(r.planes_s);
+      swizzle.push_back(r.swizzle_s);
+    }
+    row.frame_s = summarize(frame).median;
+    row.binning_s = summarize(binning).median;
+    row.planes_s = summarize(planes).median;
+    row.swizzle_s = summarize(swizzle).median;
+    row.runs = o.runs;
+    rows.push_back(row);
+  }
+}
+
 }  // namespace
 
 std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOptions& o, const gpu::GlInfo& info) {
@@ -215,6 +288,7 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
                               fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
   rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA16F, bits), o,
                               fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
+  if (o.voxel_level > 0) append_v2lf_rows(o, s.base, info, rows);
   return rows;
 }
 

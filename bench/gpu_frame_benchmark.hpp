@@ -11,6 +11,8 @@
 //   - with sort_only (--sort-only) instead: the sort over all N against the visible (binned)
 //     Gaussians only, for G2LF's binning and per view, and per view float keys against 16 bits
 //     normalised to the visible range, the variants interleaved round by round.
+//   - V2LF on a generated voxel scene: the voxels binned on the CPU and uploaded every frame
+//     against binned on the GPU (gpu/gl_voxel_binning.hpp), runs alternated.
 // Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
 #include <string>
@@ -30,10 +32,11 @@ struct GpuFrameOptions {
   int batch = 4;                          // frames per pipelined batch
   std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
   bool sort_only = false;                   // the sort rows instead of the others
+  int voxel_level = 7;  // the generated voxel tabletop of the V2LF rows (voxel/voxel_generator.hpp); 0: none
 };
 
 struct GpuFrameRow {
-  std::string method;   // "G2LF N=64" or "per view"
+  std::string method;   // "G2LF N=64", "per view" or "V2LF N=64"
   std::string variant;  // what differs between rows of one method
   double frame_s = 0;   // median wall time per frame
   double binning_s = 0, planes_s = 0, swizzle_s = 0, raster_s = 0;  // median GPU stage times (0: not timed)

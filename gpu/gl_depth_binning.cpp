@@ -1,6 +1,7 @@
 #include "gpu/gl_depth_binning.hpp"
 
 #include <stdexcept>
+#include <string>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -9,13 +10,24 @@
 #include "gpu/shaders/binning_cuts.comp.glsl.hpp"
 #include "gpu/shaders/binning_keys.comp.glsl.hpp"
 #include "gpu/shaders/binning_layers.comp.glsl.hpp"
+#include "gpu/shaders/depth_key.glsl.hpp"
 
 namespace lfd::gpu {
+namespace {
 
-GlDepthBinning::GlDepthBinning()
+// A pass that reads depths from sorted keys: depth_key.glsl with the keys' encoding first.
+Program depth_pass(const char* label, const char* source, DepthKeys keys) {
+  const std::string text = std::string(depth_key_glsl) + source;
+  return Program(label, {{GL_COMPUTE_SHADER, text.c_str()}},
+                 {keys == DepthKeys::kSigned ? "SIGNED_DEPTH_KEYS 1" : "SIGNED_DEPTH_KEYS 0"});
+}
+
+}  // namespace
+
+GlDepthBinning::GlDepthBinning(DepthKeys keys)
     : keys_("g2lf binning: keys", {{GL_COMPUTE_SHADER, binning_keys_comp_glsl}}),
-      cuts_("g2lf binning: cuts", {{GL_COMPUTE_SHADER, binning_cuts_comp_glsl}}),
-      chunks_("g2lf binning: chunks", {{GL_COMPUTE_SHADER, binning_chunks_comp_glsl}}),
+      cuts_(depth_pass("depth binning: cuts", binning_cuts_comp_glsl, keys)),
+      chunks_(depth_pass("depth binning: chunks", binning_chunks_comp_glsl, keys)),
       layers_("g2lf binning: layers", {{GL_COMPUTE_SHADER, binning_layers_comp_glsl}}),
       cut_positions_(sizeof(uint32_t) * 4098),
       unused_draw_(sizeof(DrawArraysIndirect)) {}
@@ -30,9 +42,6 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
   values.ensure(n * sizeof(uint32_t));
   layers.ensure(n * sizeof(uint32_t));
   const render::Camera& cam = ref.camera;
-  const bool mixed = binning == render::ChunkBinning::kMixed;
-  const GLuint count_chunks = GLuint(mixed ? chunks - chunks / 2 : chunks);
-  const GLuint disparity_chunks = GLuint(mixed ? chunks / 2 : 0);
 
   // The header counts binned splats with atomics: start from zero.
   const PlaneTableHeader zero;
@@ -60,6 +69,18 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
   SortKeys how;
   how.drop_culled = binned_only;
   sort.sort(keys, values, uint32_t(n), how);
+  chunk_sorted(ref, chunks, binning, keys, n, layers, table, draw);
+}
+
+void GlDepthBinning::chunk_sorted(const render::ReferenceCamera& ref, int chunks, render::ChunkBinning binning,
+                                  const Buffer& keys, size_t n, Buffer& layers, GlPlaneTable& table,
+                                  const Buffer* draw) {
+  if (chunks < 1 || chunks > 4096 || chunks > table.max_planes)
+    throw std::logic_error("GlDepthBinning: chunks outside 1..min(4096, table.max_planes)");
+  layers.ensure(n * sizeof(uint32_t));
+  const bool mixed = binning == render::ChunkBinning::kMixed;
+  const GLuint count_chunks = GLuint(mixed ? chunks - chunks / 2 : chunks);
+  const GLuint disparity_chunks = GLuint(mixed ? chunks / 2 : 0);
   // The sort binds its own buffers: bind ours again.
   keys.bind_storage(kSplatKeys);
   layers.bind_storage(kSplatLayers);

@@ -28,9 +28,14 @@ namespace lfd::gpu {
 constexpr GLuint kPlaneTable = 9;
 constexpr GLuint kBinningCuts = 10;
 
+// How sort keys hold depths (gpu/shaders/depth_key.glsl): float bits (positive depths, G2LF's)
+// or the order-preserving map of any float (V2LF's voxel centres, gpu/gl_voxel_binning.hpp).
+enum class DepthKeys { kPositive, kSigned };
+
 class GlDepthBinning {
  public:
-  GlDepthBinning();  // needs a current context; compiles the passes
+  // Needs a current context; compiles the passes for `keys`.
+  explicit GlDepthBinning(DepthKeys keys = DepthKeys::kPositive);
 
   // Bins `scene` for `ref` into at most `chunks` planes (<= table.max_planes):
   //   keys, values  grown to the scene; end sorted, the binned Gaussians first (with
@@ -42,6 +47,13 @@ class GlDepthBinning {
   void run(const GlScene& scene, const render::ReferenceCamera& ref, int chunks,
            render::ChunkBinning binning, GlRadixSort& sort, Buffer& keys, Buffer& values,
            Buffer& layers, GlPlaneTable& table, const Buffer* draw = nullptr, bool binned_only = true);
+
+  // The passes after the sort (cuts, chunks, layers) for any primitives (V2LF's voxels): `keys`
+  // sorted, the binned ones (table.splats_binned of them, counted on the GPU) first, as this
+  // binning's DepthKeys; `count` keys in all. Writes layers, the table and `draw` as run().
+  void chunk_sorted(const render::ReferenceCamera& ref, int chunks, render::ChunkBinning binning,
+                    const Buffer& keys, size_t count, Buffer& layers, GlPlaneTable& table,
+                    const Buffer* draw = nullptr);
 
  private:
   Program keys_, cuts_, chunks_, layers_;

@@ -18,6 +18,9 @@ namespace {
 
 constexpr GLuint kPlaneTableBinding = 9;  // g2lf_plane_convert.comp.glsl's PlaneTable
 
+// Work groups of a per-plane pass (low-pass, convert: 16 x 8 texels each).
+glm::uvec2 plane_groups(int width, int height) { return {GLuint((width + 15) / 16), GLuint((height + 7) / 8)}; }
+
 // Where each chunk begins in the binned voxels listed chunk by chunk, and one past the last.
 std::vector<uint32_t> chunk_starts(const render::DepthChunks& chunks) {
   std::vector<uint32_t> start(chunks.members.size() + 1, 0);
@@ -84,9 +87,27 @@ GlV2lfRenderer::GlV2lfRenderer(const GlVoxelScene& scene, const GlInfo& info)
       convert_f32_(plane_convert_program("rgba32f", false)),
       lowpass_("v2lf plane low-pass", {{GL_COMPUTE_SHADER, voxel_plane_lowpass_comp_glsl}}) {}
 
-void GlV2lfRenderer::lowpass(float variance_px2) {
+// How a per-plane pass (filter, convert) is dispatched over plane k: its work groups (16 x 8
+// texels each), or with the GPU binning the indirect dispatch it wrote, empty past the frame's
+// plane count (gpu/gl_voxel_binning.hpp).
+struct GlV2lfRenderer::PlaneDispatch {
+  glm::uvec2 groups;
+  const Buffer* indirect = nullptr;
+  int max_planes = 0;
+
+  void operator()(int k) const {
+    if (!indirect) {
+      glDispatchCompute(groups.x, groups.y, 1);
+      return;
+    }
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, indirect->id());
+    glDispatchComputeIndirect(GLintptr(GlVoxelBinning::plane_dispatch_offset(k, max_planes)));
+  }
+};
+
+bool GlV2lfRenderer::prepare_lowpass(float variance_px2) {
   const std::vector<float> kernel = voxel::gaussian_lowpass_kernel(variance_px2);  // the CPU's weights
-  if (kernel.empty()) return;
+  if (kernel.empty()) return false;
   const int radius = int(kernel.size() / 2);
   if (radius > 64)
     throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than 64 texels; "
@@ -99,12 +120,16 @@ void GlV2lfRenderer::lowpass(float variance_px2) {
   glProgramUniform2i(p, lowpass_.uniform("plane_size"), wp, hp);
   glProgramUniform1i(p, lowpass_.uniform("radius"), radius);
   glProgramUniform1fv(p, lowpass_.uniform("kernel"), GLsizei(kernel.size()), kernel.data());
+  return true;
+}
+
+void GlV2lfRenderer::lowpass(int k, const PlaneDispatch& dispatch) {
   glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(2, lowpass_scratch_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   lowpass_.use();
   for (int along_y = 0; along_y < 2; ++along_y) {
-    glProgramUniform1i(p, lowpass_.uniform("along_y"), along_y);
-    glDispatchCompute(GLuint((wp + 15) / 16), GLuint((hp + 7) / 8), 1);
+    glProgramUniform1i(lowpass_.id(), lowpass_.uniform("along_y"), along_y);
+    dispatch(k);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 }
@@ -128,35 +153,43 @@ std::vector<VoxelOrderRanges> GlV2lfRenderer::upload_chunk_orders(const GlVoxelS
   return std::move(groups.ranges);
 }
 
-void GlV2lfRenderer::draw_planes(const GlVoxelScene& scene, const std::vector<VoxelOrderRanges>& ranges,
-                                 const render::ReferenceCamera& ref, const glm::vec3& sh_origin,
-                                 float lowpass_variance, GlPlanes& planes) {
+SplatRasterTarget GlV2lfRenderer::accumulation_target(const GlPlanes& planes) const {
   SplatRasterTarget target;
   target.framebuffer = accumulation_framebuffer_.id();
   target.image_size = {planes.width, planes.height};
+  return target;
+}
+
+void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance,
+                                 const Buffer* plane_dispatches, GlPlanes& planes) {
+  const SplatRasterTarget target = accumulation_target(planes);
   const Program& convert = planes.format == PlaneFormat::kRgba8    ? convert_u8_
                            : planes.format == PlaneFormat::kRgba16f ? convert_f16_
                                                                     : convert_f32_;
   glProgramUniform1ui(convert.id(), convert.uniform("batch_layers"), 1u);
   glProgramUniform2i(convert.id(), convert.uniform("plane_size"), planes.width, planes.height);
-  for (size_t k = 0; k < ranges.size(); ++k) {
-    targets_.clear(target);
-    raster_.draw(scene, ref.camera, sh_origin, chunk_orders_, ranges[k], target);
+  const PlaneDispatch dispatch{plane_groups(planes.width, planes.height), plane_dispatches, planes.max_planes};
+  const bool filtered = prepare_lowpass(lowpass_variance);
+  // Empty once a frame: each plane's convert pass resets the layer for the next.
+  targets_.clear(target);
+  for (int k = 0; k < count; ++k) {
+    draw_chunk(k, target);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-    lowpass(lowpass_variance);
-    convert_plane(int(k), convert, planes);
+    if (filtered) lowpass(k, dispatch);
+    convert_plane(k, convert, dispatch, planes);
   }
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 // Layer k of the planes from the accumulation layer (which the pass resets to empty).
-void GlV2lfRenderer::convert_plane(int k, const Program& convert, GlPlanes& planes) {
+void GlV2lfRenderer::convert_plane(int k, const Program& convert, const PlaneDispatch& dispatch, GlPlanes& planes) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
   glBindImageTexture(1, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
   planes.table.buffer.bind_storage(kPlaneTableBinding);
   glProgramUniform1ui(convert.id(), convert.uniform("batch"), GLuint(k));
   convert.use();
-  glDispatchCompute(GLuint((planes.width + 15) / 16), GLuint((planes.height + 7) / 8), 1);
+  dispatch(k);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
@@ -165,7 +198,8 @@ void GlV2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   options.v2lf.check(geometry);
   check_quilt_target("V2LF on the GPU", geometry, layout, quilt);
   run_frame(geometry, options, [&](const GlSweepingPlaneStages& stages) {
-    sweeping_.render_quilt(stages, geometry, layout, options.v2lf.planes, background, quilt, false, "a V2LF frame");
+    sweeping_.render_quilt(stages, geometry, layout, options.v2lf.planes, background, quilt, options.gpu_timers,
+                           "a V2LF frame");
   });
 }
 
@@ -179,8 +213,58 @@ void GlV2lfRenderer::render_panel(const render::QuiltGeometry& geometry, const G
         [&](const GlPlanes& planes, const render::ReferenceCamera& ref) {
           pass.run(planes, geometry, ref, panel_options, panel);
         },
-        false, "a V2LF direct panel frame");
+        options.gpu_timers, "a V2LF direct panel frame");
   });
+}
+
+float GlV2lfRenderer::lowpass_variance(const render::QuiltGeometry& geometry, const render::ReferenceCamera& ref,
+                                       const render::G2lfOptions& o) const {
+  return o.adaptive_filter ? voxel::plane_lowpass_variance(scene_.scene(), geometry, ref, o.plane_scale) : 0.0f;
+}
+
+// The CPU path's chunks, uploaded. Split voxels' children are appended to the scene: that scene
+// is uploaded for this frame.
+GlSweepingPlaneStages GlV2lfRenderer::cpu_binned_stages(const render::QuiltGeometry& geometry,
+                                                        const GlV2lfOptions& options) {
+  const render::G2lfOptions& o = options.v2lf.planes;
+  GlSweepingPlaneStages stages;
+  stages.bin = [this, &geometry, &options, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    cpu_binned_ =
+        voxel::bin_voxels_by_depth(scene_.scene(), geometry, ref, o.chunks, o.binning, options.v2lf.split_levels);
+    split_scene_.reset();
+    if (cpu_binned_.scene.size() != scene_.size()) split_scene_.emplace(cpu_binned_.scene, info_);
+    ranges_ = upload_chunk_orders(split_scene_ ? *split_scene_ : scene_, cpu_binned_.chunks, ref.camera);
+    const std::vector<uint8_t> table = plane_table(cpu_binned_.chunks, o.chunks);
+    planes.table.buffer.upload(table.data(), table.size());
+  };
+  stages.draw_planes = [this, &geometry, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    const GlVoxelScene& scene = split_scene_ ? *split_scene_ : scene_;
+    draw_planes(
+        int(ranges_.size()),
+        [&](int k, const SplatRasterTarget& target) {
+          raster_.draw(scene, ref.camera, geometry.base.position_world, chunk_orders_, ranges_[size_t(k)], target);
+        },
+        lowpass_variance(geometry, ref, o), nullptr, planes);
+  };
+  return stages;
+}
+
+// The GPU binning: every possible plane drawn through its indirect draws.
+GlSweepingPlaneStages GlV2lfRenderer::gpu_binned_stages(const render::QuiltGeometry& geometry,
+                                                        const GlV2lfOptions& options) {
+  const render::G2lfOptions& o = options.v2lf.planes;
+  GlSweepingPlaneStages stages;
+  stages.bin = [this, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    binning_.run(scene_, ref, o.chunks, o.binning, plane_groups(planes.width, planes.height), planes.table);
+  };
+  stages.draw_planes = [this, &geometry, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    raster_.begin_indirect(scene_, ref.camera, geometry.base.position_world, binning_.orders(), binning_.draws(),
+                           accumulation_target(planes));
+    draw_planes(
+        o.chunks, [&](int k, const SplatRasterTarget& target) { raster_.draw_indirect(k, target); },
+        lowpass_variance(geometry, ref, o), &binning_.draws(), planes);
+  };
+  return stages;
 }
 
 void GlV2lfRenderer::run_frame(const render::QuiltGeometry& geometry, const GlV2lfOptions& options,
@@ -193,39 +277,34 @@ void GlV2lfRenderer::run_frame(const render::QuiltGeometry& geometry, const GlV2
   check_g2lf_fits(plane_options, geometry, 0, info_, std::nullopt);
   ensure_planes(options.format(), o.chunks, geometry.base.width * o.plane_scale,
                 geometry.base.height * o.plane_scale);
-
-  // The CPU path's chunks. Split voxels' children are appended to the scene: that scene is
-  // uploaded for this frame.
-  voxel::VoxelChunks binned;
-  std::optional<GlVoxelScene> split_scene;
-  std::vector<VoxelOrderRanges> ranges;
-  const auto frame_scene = [&]() -> const GlVoxelScene& { return split_scene ? *split_scene : scene_; };
-  GlSweepingPlaneStages stages;
-  stages.bin = [&](const render::ReferenceCamera& ref, GlPlanes& planes) {
-    binned = voxel::bin_voxels_by_depth(scene_.scene(), geometry, ref, o.chunks, o.binning, options.v2lf.split_levels);
-    if (binned.scene.size() != scene_.size()) split_scene.emplace(binned.scene, info_);
-    ranges = upload_chunk_orders(frame_scene(), binned.chunks, ref.camera);
-    const std::vector<uint8_t> table = plane_table(binned.chunks, o.chunks);
-    planes.table.buffer.upload(table.data(), table.size());
-  };
-  stages.draw_planes = [&](const render::ReferenceCamera& ref, GlPlanes& planes) {
-    const float lowpass_variance =
-        o.adaptive_filter ? voxel::plane_lowpass_variance(scene_.scene(), geometry, ref, o.plane_scale) : 0.0f;
-    draw_planes(frame_scene(), ranges, ref, geometry.base.position_world, lowpass_variance, planes);
-  };
-  run(stages);
-
-  record_stats(binned, frame_scene());
+  run(options.bins_on_gpu() ? gpu_binned_stages(geometry, options) : cpu_binned_stages(geometry, options));
+  record_stats(options);
 }
 
-void GlV2lfRenderer::record_stats(const voxel::VoxelChunks& binned, const GlVoxelScene& scene) {
+void GlV2lfRenderer::record_stats(const GlV2lfOptions& options) {
+  const GlV2lfStats last = stats_;
   stats_ = {};
-  stats_.planes = int(binned.chunks.members.size());
-  stats_.voxels_binned = chunk_starts(binned.chunks).back();
-  stats_.voxels_split = binned.voxels_split;
+  stats_.binned_on_gpu = options.bins_on_gpu();
+  const GlVoxelScene& scene = split_scene_ && !stats_.binned_on_gpu ? *split_scene_ : scene_;
   stats_.plane_bytes = sweeping_.planes().texels.bytes();
   stats_.gpu_bytes = scene.bytes() + sweeping_.bytes() + accumulation_.bytes() + lowpass_scratch_.bytes() +
-                     chunk_orders_.bytes();
+                     chunk_orders_.bytes() + binning_.bytes();
+  if (!stats_.binned_on_gpu) {
+    stats_.planes = int(cpu_binned_.chunks.members.size());
+    stats_.voxels_binned = chunk_starts(cpu_binned_.chunks).back();
+    stats_.voxels_split = cpu_binned_.voxels_split;
+  }
+  if (!options.gpu_timers) return;
+  const std::optional<GlSweepingPlaneReadout> r = sweeping_.readout(options.timer_reads);
+  const bool fresh = r.has_value();
+  if (stats_.binned_on_gpu) {
+    stats_.planes = fresh ? int(r->header.plane_count) : last.planes;
+    stats_.voxels_binned = fresh ? r->header.splats_binned : last.voxels_binned;
+  }
+  stats_.seconds_binning = fresh ? r->seconds.binning : last.seconds_binning;
+  stats_.seconds_planes = fresh ? r->seconds.planes : last.seconds_planes;
+  stats_.seconds_swizzle = fresh ? r->seconds.swizzle : last.seconds_swizzle;
+  stats_.frames_late = fresh ? r->frames_late : last.frames_late;
 }
 
 ImageF render_quilt_v2lf_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
@@ -237,7 +316,14 @@ ImageF render_quilt_v2lf_gl(const voxel::VoxelScene& scene, const render::QuiltG
   GlV2lfRenderer renderer(gl_scene, info);
   const Texture quilt = make_quilt_texture(layout, GL_RGBA32F);
   renderer.render_quilt(geometry, layout, options, background, quilt);
-  if (stats) *stats = renderer.stats();
+  if (stats) {
+    *stats = renderer.stats();
+    if (stats->binned_on_gpu) {  // a one-off: the counts read back after the frame
+      const PlaneTableHeader header = renderer.planes().table.read_header();
+      stats->planes = int(header.plane_count);
+      stats->voxels_binned = header.splats_binned;
+    }
+  }
   return read_image_top_down(quilt, 3);
 }
 

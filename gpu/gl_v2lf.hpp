@@ -2,19 +2,23 @@
 // V2LF on the GPU (issue #13; paper section "V2LF"): the GL twin of voxel/v2lf.hpp, the
 // sweeping-plane skeleton (gpu/gl_sweeping_planes.hpp, shared with G2LF) with voxels as the
 // primitives. Its stages:
-//   bin       voxel::bin_voxels_by_depth on the CPU, the same chunks (and split voxels) the
-//             CPU path renders; when voxels were split, the split scene is uploaded for the
-//             frame (its orders sorted again). group_by_octant: each chunk's voxels taken from
-//             the scene's eight front-to-back orders in order, uploaded as one buffer of (chunk,
-//             octant) ranges; the plane table written from the CPU's depths.
+//   bin       on the GPU (gpu/gl_voxel_binning.hpp, the default): the voxels culled, sorted
+//             by centre depth and chunked by G2LF's passes, each octant's front-to-back order
+//             grouped by chunk, and the indirect draws of every (plane, octant) written; nothing
+//             read back, the scene uploaded once. On the CPU (split voxels, or
+//             GlV2lfOptions::gpu_binning false): voxel::bin_voxels_by_depth, the same chunks
+//             and split voxels the CPU path renders (a split scene uploaded for the frame), each
+//             chunk's voxels taken from the scene's eight orders (group_by_octant) and uploaded
+//             as one buffer of (chunk, octant) ranges, the plane table from the CPU's depths.
 //   planes    per chunk, GlVoxelRaster from the reference camera (zero background, SH from the
 //             base camera) into an RGBA32F accumulation layer, the low-pass filter
 //             (voxel/plane_lowpass.hpp; gpu/shaders/voxel_plane_lowpass.comp.glsl) when
 //             adaptive_filter, then rounded into its plane as the CPU stores it (G2LF's convert
 //             pass, gpu/shaders/g2lf_plane_convert.comp.glsl)
 //   swizzle   GlSwizzle into the quilt (the skeleton's)
-// The binning stays on the CPU (one pass over the voxels per frame, O(8 n) for the grouping);
-// the planes and the swizzle, where the time goes, are GPU work.
+// With the GPU binning a frame makes no CPU pass over the voxels and no upload: the plane count
+// and the draw sizes stay on the GPU, so every possible plane (N_chunk) gets its draws and its
+// filter and convert dispatches, all indirect: empty past the frame's plane count.
 #include <functional>
 #include <optional>
 #include <vector>
@@ -26,6 +30,7 @@
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_splat_raster.hpp"
 #include "gpu/gl_sweeping_planes.hpp"
+#include "gpu/gl_voxel_binning.hpp"
 #include "gpu/gl_voxel_raster.hpp"
 #include "gpu/gl_voxel_scene.hpp"
 #include "util/image.hpp"
@@ -37,15 +42,28 @@ struct GlV2lfOptions {
   voxel::V2lfOptions v2lf;  // every option of the CPU path, with its defaults
   // Plane texel format; unset: the CPU precision's (u8 -> RGBA8, f32 -> RGBA32F).
   std::optional<PlaneFormat> plane_format;
+  // Bin on the GPU (gpu/gl_voxel_binning.hpp). false: the CPU's binning uploaded every frame,
+  // the path before it (`lfd bench gpu-frame` compares both). Split voxels (v2lf.split_levels >
+  // 0) always bin on the CPU: the split scene is made there.
+  bool gpu_binning = true;
+  // GL_TIMESTAMP stage times and the plane table's counts through the frame ring, as G2LF's
+  // (GlG2lfOptions::gpu_timers, timer_reads; docs/gpu.md "A frame that never waits").
+  bool gpu_timers = false;
+  TimerReads timer_reads = TimerReads::kWait;
+  bool bins_on_gpu() const { return gpu_binning && v2lf.split_levels == 0; }
   PlaneFormat format() const { return plane_format.value_or(plane_format_for(v2lf.planes.precision)); }
 };
 
 struct GlV2lfStats {
+  bool binned_on_gpu = false;
+  // Binned on the CPU: this frame's; on the GPU: the newest timed frame's (gpu_timers), else 0.
   int planes = 0;
   size_t voxels_binned = 0;  // in the chunks, split children included
   size_t voxels_split = 0;
   size_t plane_bytes = 0;  // the plane array
-  size_t gpu_bytes = 0;    // scene + planes + accumulation + order buffer
+  size_t gpu_bytes = 0;    // scene + planes + accumulation + order buffer (+ the GPU binning's)
+  double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;  // GPU time (gpu_timers)
+  uint64_t frames_late = 0;  // how many frames ago the timed figures were rendered (kLate)
 };
 
 class GlV2lfRenderer {
@@ -72,12 +90,24 @@ class GlV2lfRenderer {
   // order into chunk_orders_ (their ranges per chunk), then every plane drawn.
   std::vector<VoxelOrderRanges> upload_chunk_orders(const GlVoxelScene& scene, const render::DepthChunks& chunks,
                                                     const render::Camera& camera);
-  void draw_planes(const GlVoxelScene& scene, const std::vector<VoxelOrderRanges>& ranges,
-                   const render::ReferenceCamera& ref, const glm::vec3& sh_origin, float lowpass_variance,
+  // Planes 0 .. count - 1: each cleared, `draw_chunk(k, target)` into the accumulation layer,
+  // filtered and converted.
+  using ChunkDraw = std::function<void(int k, const SplatRasterTarget& target)>;
+  // `plane_dispatches`: the GPU binning's indirect dispatches of the per-plane passes (none past
+  // the frame's plane count); nullptr: every plane below `count` is dispatched.
+  struct PlaneDispatch;
+  SplatRasterTarget accumulation_target(const GlPlanes& planes) const;  // the RGBA32F layer
+  void draw_planes(int count, const ChunkDraw& draw_chunk, float lowpass_variance, const Buffer* plane_dispatches,
                    GlPlanes& planes);
-  void convert_plane(int k, const Program& convert, GlPlanes& planes);
-  void lowpass(float variance_px2);
-  void record_stats(const voxel::VoxelChunks& binned, const GlVoxelScene& scene);
+  GlSweepingPlaneStages cpu_binned_stages(const render::QuiltGeometry& geometry, const GlV2lfOptions& options);
+  GlSweepingPlaneStages gpu_binned_stages(const render::QuiltGeometry& geometry, const GlV2lfOptions& options);
+  void convert_plane(int k, const Program& convert, const PlaneDispatch& dispatch, GlPlanes& planes);
+  float lowpass_variance(const render::QuiltGeometry& geometry, const render::ReferenceCamera& ref,
+                         const render::G2lfOptions& o) const;
+  // The planes' low-pass filter: its kernel once a frame (false: off), then per plane.
+  bool prepare_lowpass(float variance_px2);
+  void lowpass(int k, const PlaneDispatch& dispatch);
+  void record_stats(const GlV2lfOptions& options);
   // One frame: the checks, the planes' allocation, the stages (binning on the CPU, planes on the
   // GPU) handed to `run`, which runs them with the swizzle or the direct pass; then the stats.
   void run_frame(const render::QuiltGeometry& geometry, const GlV2lfOptions& options,
@@ -92,6 +122,11 @@ class GlV2lfRenderer {
   Texture accumulation_;  // one RGBA32F layer of the planes' size
   Texture lowpass_scratch_;
   Framebuffer accumulation_framebuffer_;
+  GlVoxelBinning binning_;
+  // The CPU binning's frame: its chunks, the split scene (when voxels were split), the ranges.
+  voxel::VoxelChunks cpu_binned_;
+  std::optional<GlVoxelScene> split_scene_;
+  std::vector<VoxelOrderRanges> ranges_;
   Buffer chunk_orders_;
   GlV2lfStats stats_;
 };

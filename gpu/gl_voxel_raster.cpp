@@ -21,8 +21,8 @@ Program voxel_program() {
 
 GlVoxelRaster::GlVoxelRaster() : program_(voxel_program()) {}
 
-void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
-                         const Buffer& order, const VoxelOrderRanges& ranges, const SplatRasterTarget& target) const {
+uint32_t GlVoxelRaster::set_view(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                                 const Buffer& order, const SplatRasterTarget& target) const {
   if (camera.width != target.image_size.x || camera.height != target.image_size.y)
     throw_input_error("voxel raster: the camera is {}x{}, the target {}x{}", camera.width, camera.height,
                       target.image_size.x, target.image_size.y);
@@ -39,23 +39,53 @@ void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera
   glProgramUniform1i(p, program_.uniform("sh_degree"), scene.scene().sh_degree);
   glProgramUniform1i(p, program_.uniform("sh_stride"), sh_vec4_stride(scene.scene().sh_degree));
   glProgramUniform1i(p, program_.uniform("samples_per_voxel"), scene.scene().samples_per_voxel);
-
-  begin_raster_target(target);
-  glBindVertexArray(vertex_array_.id());
   scene.bind();
   order.bind_storage(kVoxelOrder);
+  return octants_in_view(camera);
+}
+
+void GlVoxelRaster::draw_octants(uint32_t octants, const SplatRasterTarget& target,
+                                 const std::function<void(int octant)>& issue) const {
+  begin_raster_target(target);
+  glBindVertexArray(vertex_array_.id());
   program_.use();
   enable_front_to_back_blend();
-  const uint32_t octants = octants_in_view(camera);
-  for (int octant = 0; octant < 8; ++octant) {
+  for (int octant = 0; octant < 8; ++octant)
+    if (octants & (1u << octant)) issue(octant);
+  end_raster_target();
+  check_gl("drawing voxels");
+}
+
+void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                         const Buffer& order, const VoxelOrderRanges& ranges, const SplatRasterTarget& target) const {
+  const GLuint p = program_.id();
+  glProgramUniform1i(p, program_.uniform("draw_command"), -1);
+  draw_octants(set_view(scene, camera, sh_origin, order, target), target, [&](int octant) {
     const VoxelOrderRange& range = ranges[size_t(octant)];
-    if (!(octants & (1u << octant)) || range.count == 0) continue;
+    if (range.count == 0) return;
     glProgramUniform1ui(p, program_.uniform("order_offset"), range.offset);
     glProgramUniform1i(p, program_.uniform("octant"), octant);
     glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(range.count));
-  }
-  end_raster_target();
-  check_gl("drawing voxels");
+  });
+}
+
+void GlVoxelRaster::begin_indirect(const GlVoxelScene& scene, const render::Camera& camera,
+                                   const glm::vec3& sh_origin, const Buffer& order, const Buffer& draws,
+                                   const SplatRasterTarget& target) {
+  glProgramUniform1ui(program_.id(), program_.uniform("order_offset"), 0u);
+  indirect_octants_ = set_view(scene, camera, sh_origin, order, target);
+  draws.bind_storage(kVoxelDraws);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.id());
+}
+
+void GlVoxelRaster::draw_indirect(int plane, const SplatRasterTarget& target) const {
+  const GLuint p = program_.id();
+  draw_octants(indirect_octants_, target, [&](int octant) {
+    const int command = 8 * plane + octant;
+    glProgramUniform1i(p, program_.uniform("draw_command"), command);
+    glProgramUniform1i(p, program_.uniform("octant"), octant);
+    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(command) * 4 * sizeof(uint32_t)));
+  });
 }
 
 void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,

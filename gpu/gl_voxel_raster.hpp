@@ -12,6 +12,7 @@
 // 1e-4 max(colour) there (the splat raster's note, gl_splat_raster.hpp, with 1e-4 for 0.01).
 #include <array>
 #include <cstdint>
+#include <functional>
 
 #include <glm/glm.hpp>
 
@@ -21,6 +22,9 @@
 #include "render/camera.hpp"
 
 namespace lfd::gpu {
+
+// Storage binding of V2LF's indirect draws (voxel_raster.vert.glsl reads their base instance).
+constexpr GLuint kVoxelDraws = 4;
 
 // Entries [offset, offset + count) of an order buffer: one octant's voxels, front to back.
 struct VoxelOrderRange {
@@ -38,13 +42,29 @@ class GlVoxelRaster {
   // no pixel's ray takes are skipped. The target is not cleared.
   void draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
             const Buffer& order, const VoxelOrderRanges& ranges, const SplatRasterTarget& target) const;
+  // V2LF's planes (gpu/gl_voxel_binning.hpp): the view's uniforms and buffers once a frame
+  // (begin_indirect), then per plane its indirect draws (draw_indirect: command 8 plane + octant
+  // of `draws`, base instance = where its voxels begin in `order`; sizes and offsets stay on the
+  // GPU), the octants no pixel's ray takes skipped. In between, passes may run that leave storage
+  // bindings 0-4 and the draw-indirect buffer alone (the planes' filter and convert passes).
+  void begin_indirect(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                      const Buffer& order, const Buffer& draws, const SplatRasterTarget& target);
+  void draw_indirect(int plane, const SplatRasterTarget& target) const;
   // Every voxel of the scene, in the scene's own orders.
   void draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
             const SplatRasterTarget& target) const;
 
  private:
+  // The view's uniforms and the scene's buffers; returns the octants in view.
+  uint32_t set_view(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                    const Buffer& order, const SplatRasterTarget& target) const;
+  // The target's state, then `issue(octant)` per octant of `octants`.
+  void draw_octants(uint32_t octants, const SplatRasterTarget& target,
+                    const std::function<void(int octant)>& issue) const;
+
   Program program_;
   VertexArray vertex_array_;
+  uint32_t indirect_octants_ = 0;  // begin_indirect's view
 };
 
 }  // namespace lfd::gpu

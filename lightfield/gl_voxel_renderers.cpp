@@ -44,6 +44,13 @@ class GlVoxelViewsRenderer final : public GlRendererBase {
   std::unique_ptr<gpu::GlVoxelViews> views_;
 };
 
+// The stage times are those of the newest timed frame (gpu_timers; the viewer reads them late).
+QuiltStats v2lf_quilt_stats(const gpu::GlV2lfStats& s) {
+  return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
+          .voxels_split = s.voxels_split, .seconds_binning = s.seconds_binning,
+          .seconds_planes = s.seconds_planes, .seconds_swizzle = s.seconds_swizzle};
+}
+
 class GlV2lf final : public GlRendererBase {
  public:
   GlV2lf(const RendererOptions& options, std::shared_ptr<GlDevice> device)
@@ -55,8 +62,7 @@ class GlV2lf final : public GlRendererBase {
     const glm::vec3 background = options_.background.value_or(scene_->scene().background);
     v2lf_->render_quilt(geometry, layout, options_.gl_v2lf(), background, quilt);
     const gpu::GlV2lfStats& s = v2lf_->stats();
-    return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
-            .voxels_split = s.voxels_split};
+    return v2lf_quilt_stats(v2lf_->stats());
   }
   QuiltStats render_panel_into(const render::QuiltGeometry& geometry, const display::LensModel& lens,
                                const PanelOptions& panel, gpu::Texture& target) override {
@@ -65,8 +71,7 @@ class GlV2lf final : public GlRendererBase {
     const glm::vec3 background = options_.background.value_or(scene_->scene().background);
     v2lf_->render_panel(geometry, options_.gl_v2lf(), pass, direct_options(panel, background), target);
     const gpu::GlV2lfStats& s = v2lf_->stats();
-    return {.planes = s.planes, .plane_bytes = s.plane_bytes, .binned = s.voxels_binned,
-            .voxels_split = s.voxels_split};
+    return v2lf_quilt_stats(v2lf_->stats());
   }
   // V2LF renders whole quilts: one view is the per-view renderer's.
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {

@@ -51,6 +51,8 @@ gpu::GlV2lfOptions RendererOptions::gl_v2lf() const {
   gpu::GlV2lfOptions o;
   o.v2lf = v2lf();
   o.plane_format = gl.plane_format;
+  o.gpu_timers = gl.gpu_timers;
+  o.timer_reads = gl.timer_reads;
   return o;
 }
 

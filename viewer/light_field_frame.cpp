@@ -167,10 +167,10 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
 void LightFieldFrame::fill_report(const ViewerSettings& settings, const lightfield::QuiltStats& stats,
                                   FrameReport& report) {
   if (const auto interlaced = interlace_timer_.newest_ready()) report.interlace_seconds = interlaced->seconds(0, 1);
-  if (shows_voxels()) {
-    // Stage times of the voxel path are not timed per stage; the frame time says it all.
+  if (shows_voxels() && settings.method == Method::kPerView) {
+    // The per-view voxel path is not timed per stage; the frame time says it all.
     report.binning_seconds = report.planes_seconds = report.swizzle_seconds = report.raster_seconds = 0.0;
-    report.plane_bytes = stats.plane_bytes;
+    report.plane_bytes = 0;
   } else if (settings.method != Method::kPerView) {
     report.binning_seconds = stats.seconds_binning;
     report.planes_seconds = stats.seconds_planes;

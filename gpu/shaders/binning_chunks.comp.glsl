@@ -4,7 +4,8 @@
 // and give empty chunks, which are dropped, as the CPU does. The non-empty chunks become the
 // planes, front to back: plane p gets its first sorted splat and d_k = the median reference
 // depth of its members + D_forward_eff (base-camera depth, Eq. u_prime). Also sets the
-// indirect draw's instance count to the binned count (the layered raster draws those).
+// indirect draw's instance count to the binned count (the layered raster draws those). Needs
+// depth_key.glsl prepended.
 layout(local_size_x = 256) in;
 
 const uint kThreads = 256u;
@@ -60,7 +61,7 @@ uint count_cuts_not_above(uint n, uint value) {
   return lo;
 }
 
-float depth_at(uint i) { return uintBitsToFloat(keys[i]); }
+float depth_at(uint i) { return key_depth(keys[i]); }
 
 void main() {
   const uint tid = gl_LocalInvocationIndex;

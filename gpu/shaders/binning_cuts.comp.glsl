@@ -4,7 +4,7 @@
 //   cuts[K + m], m = 1..M-1    kMixed only: lower_bound of the depth z_m whose base-camera
 //                              disparity is the m/M step from the nearest to the farthest
 //                              binned Gaussian (M = disparity_chunks), in double as the CPU.
-// Both runs are non-decreasing; the chunk pass merges them.
+// Both runs are non-decreasing; the chunk pass merges them. Needs depth_key.glsl prepended.
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 5) readonly buffer Keys { uint keys[]; };  // sorted
@@ -21,7 +21,7 @@ uniform float d_forward_eff;    // reference depth + d_forward_eff = base depth
 // The first sorted position whose depth is not below z (std::lower_bound on (depth, index)
 // pairs with (z, 0): only the depth decides).
 uint lower_bound(uint n, float z) {
-  const uint bits = floatBitsToUint(z);
+  const uint bits = depth_key(z);
   uint lo = 0u, hi = n;
   while (lo < hi) {
     const uint mid = lo + (hi - lo) / 2u;
@@ -47,8 +47,8 @@ void main() {
     return;
   }
   precise const double fwd = double(d_forward_eff);
-  precise const double w_near = 1.0lf / (double(uintBitsToFloat(keys[0])) + fwd);
-  precise const double w_far = 1.0lf / (double(uintBitsToFloat(keys[n - 1u])) + fwd);
+  precise const double w_near = 1.0lf / (double(key_depth(keys[0])) + fwd);
+  precise const double w_far = 1.0lf / (double(key_depth(keys[n - 1u])) + fwd);
   precise const float z = float(1.0lf / (w_near + (w_far - w_near) * double(m) / double(disparity_chunks)) - fwd);
   cuts[c] = lower_bound(n, z);
 }

@@ -7,8 +7,11 @@
 // Needs sh_color.glsl prepended.
 layout(std430, binding = 0) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
 layout(std430, binding = 2) readonly buffer Order { uint order[]; };
+// V2LF's indirect draws (gpu/gl_voxel_binning.hpp): count, instances, first, base instance.
+layout(std430, binding = 4) readonly buffer Draws { uvec4 draws[]; };
 
 uniform uint order_offset;  // first entry of this draw's order
+uniform int draw_command;   // >= 0: an indirect draw's, whose base instance is added to order_offset
 uniform mat3 world_to_camera;
 uniform vec3 camera_position;
 uniform vec2 tan_half_fov;
@@ -20,7 +23,8 @@ flat out uint v_voxel;
 flat out vec3 v_color;
 
 void main() {
-  uint voxel = order[order_offset + uint(gl_InstanceID)];
+  const uint draw_first = order_offset + (draw_command >= 0 ? draws[draw_command].w : 0u);
+  uint voxel = order[draw_first + uint(gl_InstanceID)];
   v_voxel = voxel;
   vec4 box = boxes[voxel];
   vec2 lo = vec2(1e30), hi = vec2(-1e30);

@@ -18,6 +18,7 @@ TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
   o.warmup = 1;
   o.batch = 2;
   o.swizzle_views = {1, 3};
+  o.voxel_level = 0;  // no V2LF rows: the next test's
   const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
   ASSERT_EQ(rows.size(), 7u);  // G2LF: 2 swizzle variants + timers read late; per view: 4
   for (const GpuFrameRow& r : rows) {
@@ -58,6 +59,32 @@ TEST(GpuFrameBenchmark, TheSortRowsCompareTheSortsInterleaved) {
   }
   EXPECT_NE(rows[4].variant.find("16-bit normalised"), std::string::npos);
   EXPECT_NE(gpu_frame_table(rows).find("GPU per-view sort ms"), std::string::npos);
+}
+
+// The V2LF rows: the same frames binned on the CPU (uploaded) and on the GPU, each with its
+// stages, after the G2LF and per-view rows.
+TEST(GpuFrameBenchmark, ComparesV2lfBinnedOnTheCpuAndOnTheGpu) {
+  gpu::HeadlessContext context;
+  const GlVsCpuScene scene = gl_vs_cpu_tabletop(2000, 32);
+  GpuFrameOptions o;
+  o.views = 5;
+  o.chunks = 8;
+  o.runs = 2;
+  o.warmup = 1;
+  o.batch = 2;
+  o.swizzle_views = {1};
+  o.voxel_level = 4;
+  const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
+  ASSERT_EQ(rows.size(), 8u);  // G2LF 2, per view 4, V2LF 2
+  for (size_t i = 6; i < 8; ++i) {
+    EXPECT_EQ(rows[i].method, "V2LF N=8");
+    EXPECT_EQ(rows[i].runs, 2);
+    EXPECT_GT(rows[i].frame_s, 0.0);
+    EXPECT_GT(rows[i].planes_s, 0.0);
+    EXPECT_GT(rows[i].swizzle_s, 0.0);
+  }
+  EXPECT_NE(rows[6].variant.find("binning on the CPU"), std::string::npos);
+  EXPECT_NE(rows[7].variant.find("binning on the GPU"), std::string::npos);
 }
 
 }  // namespace

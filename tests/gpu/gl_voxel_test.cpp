@@ -1,14 +1,22 @@
 // The GL voxel path (issue #13) against the exact CPU voxel rasterizer and CPU V2LF on real EGL
 // contexts (llvmpipe here): one box's transmittance, views whose rays take several octants,
 // per-view quilts with supersampling, and V2LF with every option the CPU path has (split
-// voxels, the planes' low-pass filter, u8/f32 planes). Small images: llvmpipe runs on the CPU.
+// voxels, the planes' low-pass filter, u8/f32 planes); V2LF's GPU binning against the CPU's
+// binning (chunks, plane depths, grouped orders, draws) and its planes against the CPU-binned GL
+// path's, texel for texel. Small images: llvmpipe runs on the CPU.
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "gpu/gl_context.hpp"
+#include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_v2lf.hpp"
+#include "gpu/gl_voxel_binning.hpp"
 #include "gpu/gl_voxel_scene.hpp"
 #include "gpu/gl_voxel_views.hpp"
 #include "render/image_metrics.hpp"
@@ -120,7 +128,9 @@ TEST(GlVoxel, V2lfMatchesTheCpuWithEveryOption) {
   for (const Case& c : {Case{"u8 nearest, 16 chunks, split, low-pass", render::PlanePrecision::kU8,
                              render::PlaneFilter::kNearest, 16, 1, 1, true},
                         Case{"f32 bilinear, 32 chunks, Ps 2, no split, no low-pass", render::PlanePrecision::kF32,
-                             render::PlaneFilter::kBilinear, 32, 2, 0, false}}) {
+                             render::PlaneFilter::kBilinear, 32, 2, 0, false},
+                        Case{"u8 bilinear, 64 chunks, no split, low-pass", render::PlanePrecision::kU8,
+                             render::PlaneFilter::kBilinear, 64, 1, 0, true}}) {
     GlV2lfOptions options;
     options.v2lf.planes.chunks = c.chunks;
     options.v2lf.planes.plane_scale = c.plane_scale;
@@ -137,11 +147,162 @@ TEST(GlVoxel, V2lfMatchesTheCpuWithEveryOption) {
     std::printf("V2LF %s: GL vs CPU %.1f dB (%d planes, %zu voxels binned, %zu split)\n", c.name, db, stats.planes,
                 stats.voxels_binned, stats.voxels_split);
     EXPECT_GT(db, 45.0) << c.name;
+    EXPECT_EQ(stats.binned_on_gpu, c.split_levels == 0);  // split voxels bin on the CPU
     EXPECT_EQ(stats.planes, cpu_stats.planes);  // the CPU's binning, split voxels included
     EXPECT_EQ(stats.voxels_binned, cpu_stats.voxels_binned);
     if (c.split_levels > 0) {
       EXPECT_GT(stats.voxels_split, 0u);
     }
+  }
+}
+
+// ---- V2LF's binning on the GPU against voxel::bin_voxels_by_depth ----
+
+// The reference camera of the fixture's quilt, or one standing inside the scene: its image plane
+// cuts through voxels, so some binned voxels (a corner in front) have their centre behind it
+// (negative depths: the signed sort keys).
+render::ReferenceCamera reference_for(bool inside, float d_shift) {
+  const Fixture& f = fixture();
+  if (!inside) {
+    render::G2lfOptions o;
+    o.d_shift = d_shift;
+    return render::reference_camera(o, f.geometry);
+  }
+  render::ReferenceCamera ref;
+  ref.camera = render::make_look_at_camera({0.1f, 0.3f, 0.05f}, {0.3f, 0.5f, 4.0f}, {0, -1, 0}, 1.2f, 96, 72);
+  ref.d_forward = ref.d_forward_eff = 0.5f;
+  return ref;
+}
+
+struct VoxelBinningCase {
+  int chunks;
+  render::ChunkBinning binning;
+  bool inside;
+  float d_shift;
+};
+
+class GlVoxelBinningCases : public ::testing::TestWithParam<VoxelBinningCase> {};
+
+TEST_P(GlVoxelBinningCases, SameChunksDepthsOrdersAndDrawsAsTheCpu) {
+  const VoxelBinningCase& c = GetParam();
+  HeadlessContext& ctx = context();
+  ctx.make_current();
+  const Fixture& f = fixture();
+  const render::ReferenceCamera ref = reference_for(c.inside, c.d_shift);
+  const voxel::VoxelChunks cpu = voxel::bin_voxels_by_depth(f.scene, f.geometry, ref, c.chunks, c.binning);
+  if (c.inside) {  // the case this camera is for: a binned centre behind the camera
+    bool behind = false;
+    for (uint32_t v : cpu.chunks.members.front()) behind = behind || ref.camera.to_camera(f.scene.voxel_center(v)).z < 0;
+    ASSERT_TRUE(behind);
+  }
+
+  const GlVoxelScene scene(f.scene, ctx.info());
+  GlPlaneTable table(c.chunks);
+  GlVoxelBinning binning;
+  binning.run(scene, ref, c.chunks, c.binning, glm::uvec2(3, 5), table);
+  const PlaneTableHeader header = table.read_header();
+  const std::vector<PlaneTableEntry> entries = table.read_entries();
+  size_t cpu_binned = 0;
+  for (const auto& m : cpu.chunks.members) cpu_binned += m.size();
+  ASSERT_EQ(header.splats_binned, cpu_binned);
+  ASSERT_EQ(header.plane_count, cpu.chunks.members.size());
+  EXPECT_EQ(entries.back().begin, header.splats_binned);
+
+  // Per octant in view: chunk k's voxels in that octant's order, as the CPU path groups them.
+  const size_t n = f.scene.size();
+  const uint32_t octants = octants_in_view(ref.camera);
+  const int slots = std::popcount(octants);
+  const auto orders = binning.orders().download_as<uint32_t>(n * size_t(slots));
+  const auto draws = binning.draws().download_as<uint32_t>(size_t(c.chunks) * 9 * 4);
+  // The per-plane passes' dispatches: the plane's groups, none past the plane count.
+  for (int k = 0; k < c.chunks; ++k) {
+    const uint32_t* groups = draws.data() + GlVoxelBinning::plane_dispatch_offset(k, c.chunks) / sizeof(uint32_t);
+    const bool used = size_t(k) < cpu.chunks.members.size();
+    EXPECT_EQ(groups[0], used ? 3u : 0u) << k;
+    EXPECT_EQ(groups[1], used ? 5u : 0u) << k;
+    EXPECT_EQ(groups[2], used ? 1u : 0u) << k;
+  }
+  for (size_t k = 0; k < cpu.chunks.members.size(); ++k) {
+    EXPECT_EQ(entries[k].depth, cpu.chunks.plane_depth[k]) << "plane " << k;  // bit-exact
+    const std::vector<uint32_t>& members = cpu.chunks.members[k];  // sorted by index
+    const uint32_t begin = entries[k].begin, count = entries[k + 1].begin - begin;
+    ASSERT_EQ(count, members.size()) << "plane " << k;
+    int slot = 0;
+    for (int octant = 0; octant < 8; ++octant) {
+      const uint32_t* draw = draws.data() + (8 * k + size_t(octant)) * 4;
+      if (!(octants & (1u << octant))) {
+        EXPECT_EQ(draw[1], 0u);
+        continue;
+      }
+      std::vector<uint32_t> expected;
+      for (uint32_t v : scene.order(octant))
+        if (std::binary_search(members.begin(), members.end(), v)) expected.push_back(v);
+      const auto first = orders.begin() + std::ptrdiff_t(size_t(slot) * n + begin);
+      EXPECT_EQ(std::vector<uint32_t>(first, first + count), expected) << "plane " << k << ", octant " << octant;
+      EXPECT_EQ(draw[0], 4u);
+      EXPECT_EQ(draw[1], count);
+      EXPECT_EQ(draw[3], uint32_t(slot) * n + begin);
+      ++slot;
+    }
+  }
+  for (size_t k = cpu.chunks.members.size(); k < size_t(c.chunks); ++k)
+    for (int octant = 0; octant < 8; ++octant) EXPECT_EQ(draws[(8 * k + size_t(octant)) * 4 + 1], 0u) << k;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, GlVoxelBinningCases,
+                         ::testing::Values(VoxelBinningCase{1, render::ChunkBinning::kQuantile, false, 0.0f},
+                                           VoxelBinningCase{16, render::ChunkBinning::kQuantile, false, 0.0f},
+                                           VoxelBinningCase{64, render::ChunkBinning::kMixed, false, -1.0f},
+                                           VoxelBinningCase{7, render::ChunkBinning::kMixed, false, 0.5f},
+                                           VoxelBinningCase{512, render::ChunkBinning::kQuantile, false, 0.0f},
+                                           VoxelBinningCase{32, render::ChunkBinning::kQuantile, true, 0.0f},
+                                           VoxelBinningCase{32, render::ChunkBinning::kMixed, true, 0.0f}));
+
+// The same frame binned on the GPU and on the CPU (uploaded) draws the same voxels in the same
+// order into each plane: the planes and the quilts are equal texel for texel.
+TEST(GlVoxel, GpuBinnedPlanesEqualTheCpuBinnedOnes) {
+  HeadlessContext& ctx = context();
+  ctx.make_current();
+  const Fixture& f = fixture();
+  const GlVoxelScene scene(f.scene, ctx.info());
+  for (const render::ChunkBinning binning : {render::ChunkBinning::kQuantile, render::ChunkBinning::kMixed}) {
+    GlV2lfOptions options;
+    options.v2lf.planes.chunks = 24;
+    options.v2lf.planes.binning = binning;
+    options.v2lf.planes.precision = render::PlanePrecision::kF32;
+    options.v2lf.planes.filter = render::PlaneFilter::kBilinear;
+    std::vector<std::vector<float>> planes[2];
+    ImageF quilts[2];
+    for (const bool on_gpu : {false, true}) {
+      options.gpu_binning = on_gpu;
+      GlV2lfRenderer renderer(scene, ctx.info());
+      const Texture quilt = make_quilt_texture(f.layout, GL_RGBA32F);
+      renderer.render_quilt(f.geometry, f.layout, options, f.scene.background, quilt);
+      EXPECT_EQ(renderer.stats().binned_on_gpu, on_gpu);
+      // Timed frames bring the GPU binning's counts through the frame ring (read at once here).
+      options.gpu_timers = true;
+      renderer.render_quilt(f.geometry, f.layout, options, f.scene.background, quilt);
+      options.gpu_timers = false;
+      const voxel::VoxelChunks cpu = voxel::bin_voxels_by_depth(
+          f.scene, f.geometry, render::reference_camera(options.v2lf.planes, f.geometry), options.v2lf.planes.chunks,
+          binning);
+      EXPECT_EQ(renderer.stats().planes, int(cpu.chunks.members.size()));
+      size_t binned = 0;
+      for (const auto& m : cpu.chunks.members) binned += m.size();
+      EXPECT_EQ(renderer.stats().voxels_binned, binned);
+      for (int k = 0; k < options.v2lf.planes.chunks; ++k)
+        planes[on_gpu].push_back(read_texture_rgba(renderer.planes().texels, k));
+      quilts[on_gpu] = read_image_top_down(quilt, 3);
+    }
+    const int used = int(voxel::bin_voxels_by_depth(f.scene, f.geometry,
+                                                    render::reference_camera(options.v2lf.planes, f.geometry),
+                                                    options.v2lf.planes.chunks, binning)
+                             .chunks.members.size());
+    for (int k = 0; k < used; ++k) EXPECT_EQ(planes[1][size_t(k)], planes[0][size_t(k)]) << "plane " << k;
+    // Bit for bit (memcmp: the quantile case's first plane sits at base depth ~0, behind the
+    // reference camera, where the GL swizzle writes NaN on both paths; the CPU's does not).
+    ASSERT_EQ(quilts[1].pixels.size(), quilts[0].pixels.size());
+    EXPECT_EQ(std::memcmp(quilts[1].pixels.data(), quilts[0].pixels.data(), quilts[0].pixels.size() * sizeof(float)), 0);
   }
 }
 

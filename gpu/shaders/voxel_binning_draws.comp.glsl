@@ -1,0 +1,39 @@
+// V2LF depth binning, pass 7: the indirect draws of the planes, one per (plane k, octant o) at
+// command 8 k + o (gpu/gl_voxel_raster.hpp, draw_indirect): a 4-vertex strip instanced once per
+// voxel of chunk k in octant o's order; the base instance is where those voxels begin in the
+// grouped orders (the vertex shader reads it: gl_InstanceID does not include it). Planes past the
+// frame's plane count and octants not in view draw nothing. After the draws, per plane k at
+// entry 8 max_planes + k, the indirect dispatch of its filter and convert passes: the plane's
+// work groups, none past the plane count (so those planes cost no GPU work).
+layout(local_size_x = 64) in;
+
+struct PlaneEntry {
+  float depth;
+  uint begin;
+};
+layout(std430, binding = 4) writeonly buffer Draws { uvec4 draws[]; };  // count, instances, first, base instance
+layout(std430, binding = 9) readonly buffer PlaneTable {
+  uint plane_count;
+  uint splats_binned;
+  uint pad0, pad1;
+  PlaneEntry plane[];
+};
+
+uniform uint voxel_count;
+uniform uint max_planes;
+uniform int slot_of_octant[8];  // -1: not in view
+uniform uvec2 plane_groups;     // work groups of a per-plane pass (16 x 8 texels each)
+
+void main() {
+  const uint c = gl_GlobalInvocationID.x;
+  if (c >= 8u * max_planes) return;
+  const uint k = c / 8u, octant = c % 8u;
+  if (octant == 0u) draws[8u * max_planes + k] = k < plane_count ? uvec4(plane_groups, 1u, 0u) : uvec4(0u);
+  const int slot = slot_of_octant[octant];
+  if (k >= plane_count || slot < 0) {
+    draws[c] = uvec4(4u, 0u, 0u, 0u);
+    return;
+  }
+  const uint begin = plane[k].begin;
+  draws[c] = uvec4(4u, plane[k + 1u].begin - begin, 0u, uint(slot) * voxel_count + begin);
+}
