@@ -2,6 +2,8 @@
 // (bench/gpu_frame_benchmark.hpp; docs/gpu.md "A frame that never waits").
 //   lfd bench gpu-frame --scene data/scenes/demo.ply --views 45 --size 256
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "apps/backend.hpp"
 #include "apps/bench.hpp"
@@ -38,7 +40,27 @@ int RunBenchGpuFrame(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
+  app.add_option("--planes", o.planes, "G2LF plane raster variants: batched, layered, layered-rgba8, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"batched", "layered", "layered-rgba8"}));
+  std::vector<std::string> table{"off", "on"}, hardware{"off", "on"};
+  app.add_option("--swizzle-table", table, "G2LF swizzle views x planes table variants: off, on, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "on"}));
+  app.add_option("--hardware-bilinear", hardware, "G2LF bilinear swizzle variants: off (by hand), on (texture unit)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "on"}));
+  bool no_per_view = false;
+  app.add_flag("--no-per-view", no_per_view, "G2LF rows only (the per-view ones take seconds a frame on llvmpipe)");
   if (auto code = parse(app, argc, argv)) return *code;
+  o.per_view = !no_per_view;
+  o.swizzle_table.clear();
+  for (const std::string& t : table) o.swizzle_table.push_back(t == "on");
+  o.hardware_bilinear.clear();
+  for (const std::string& h : hardware) o.hardware_bilinear.push_back(h == "on");
   if (scene_path.empty() == (generated == 0)) {
     std::fprintf(stderr, "lfd bench gpu-frame: error: give one of --scene and --generated\n");
     return 2;
