@@ -22,17 +22,7 @@ layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 layout(binding = 0) uniform sampler2DArray planes;
 layout(QUILT_FORMAT, binding = 0) uniform writeonly image2D quilt;
 
-// The plane table (gpu/gl_planes.hpp): header, then d_k and the first splat per plane.
-struct PlaneEntry {
-  float depth;
-  uint begin;
-};
-layout(std430, binding = 0) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
+// PlaneTable (plane_table.glsl, prepended at binding 0): plane_count, splats_binned, plane[k].
 #if TABLE
 layout(std430, binding = 2) readonly buffer PlaneFactors { vec2 plane_factors[]; };  // scale_y, beta
 layout(std430, binding = 3) readonly buffer ViewPlaneColumns { float view_plane_column[]; };  // [k V + j]

@@ -7,16 +7,7 @@
 // same positions bit for bit with or without the table.
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
-struct PlaneEntry {
-  float depth;
-  uint begin;
-};
-layout(std430, binding = 0) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
+// PlaneTable (plane_table.glsl, prepended at binding 0): plane_count, splats_binned, plane[k].
 layout(std430, binding = 1) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
 // Per plane: scale_y (for the sample row) and beta (the column step per pixel x).
 layout(std430, binding = 2) writeonly buffer PlaneFactors { vec2 plane_factors[]; };
