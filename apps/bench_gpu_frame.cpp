@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "apps/backend.hpp"
 #include "apps/bench.hpp"
@@ -52,7 +54,27 @@ int RunBenchGpuFrame(int argc, char** argv) {
   app.add_option("--voxel-level", o.voxel_level, "finest level of the generated voxel scene of the V2LF rows (0: none)")
       ->capture_default_str()
       ->check(CLI::Range(0, 11));
+  app.add_option("--planes", o.planes, "G2LF plane raster variants: batched, layered, layered-rgba8, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"batched", "layered", "layered-rgba8"}));
+  std::vector<std::string> table{"off", "on"}, hardware{"off", "on"};
+  app.add_option("--swizzle-table", table, "G2LF swizzle views x planes table variants: off, on, comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "on"}));
+  app.add_option("--hardware-bilinear", hardware, "G2LF bilinear swizzle variants: off (by hand), on (texture unit)")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"off", "on"}));
+  bool no_per_view = false;
+  app.add_flag("--no-per-view", no_per_view, "G2LF rows only (the per-view ones take seconds a frame on llvmpipe)");
   if (auto code = parse(app, argc, argv)) return *code;
+  o.per_view = !no_per_view;
+  o.swizzle_table.clear();
+  for (const std::string& t : table) o.swizzle_table.push_back(t == "on");
+  o.hardware_bilinear.clear();
+  for (const std::string& h : hardware) o.hardware_bilinear.push_back(h == "on");
   if (scene_path.empty() == (generated == 0)) {
     std::fprintf(stderr, "lfd bench gpu-frame: error: give one of --scene and --generated\n");
     return 2;

@@ -78,7 +78,8 @@ void add_scene_and_plane_options(CLI::App& app, RenderFlags& f) {
   app.add_option("--filter", f.filter, "G2LF and V2LF: plane sampling, nearest or bilinear")
       ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
   app.add_option("--precision", f.precision,
-                 "G2LF and V2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F), or f16 (RGBA16F, --backend gl only)")
+                 "G2LF and V2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F; G2LF on the GPU blends u8 planes "
+                 "in RGBA16F, RGBA8 only where those exceed the memory), or f16 (RGBA16F, --backend gl only)")
       ->check(CLI::IsMember({"u8", "f16", "f32"}))->capture_default_str();
   app.add_option("--binning", f.binning,
                  "G2LF and V2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "

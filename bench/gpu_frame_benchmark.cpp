@@ -3,6 +3,8 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -47,24 +49,86 @@ void fill_stages(GpuFrameRow& row, const Stages& s) {
   row.raster_s = summarize(s.raster).median;
 }
 
-GpuFrameRow g2lf_row(gpu::GlG2lfRenderer& renderer, const render::QuiltGeometry& geometry,
-                     const render::QuiltLayout& layout, const gpu::Texture& quilt, gpu::GlG2lfOptions options,
-                     const GpuFrameOptions& o, const std::string& variant) {
-  GpuFrameRow row;
-  row.method = fmt::format("G2LF N={}", options.g2lf.chunks);
-  row.variant = variant;
-  row.runs = o.runs;
-  Stages stages;
-  const bool late = options.timer_reads == gpu::TimerReads::kLate;
-  row.frame_s = median_frame_seconds(o, late ? o.batch : 1, [&] {
-    renderer.render_quilt(geometry, layout, options, {}, quilt);
-    const gpu::GlG2lfStats& st = renderer.stats();
-    stages.binning.push_back(st.seconds_binning);
-    stages.planes.push_back(st.seconds_planes);
-    stages.swizzle.push_back(st.seconds_swizzle);
-  });
-  fill_stages(row, stages);
-  return row;
+struct G2lfVariant {
+  std::string name;
+  gpu::GlG2lfOptions options;
+};
+
+// Each variant on a renderer of its own (switching one renderer's planes would time their
+// reallocation), the runs interleaved: run r of every variant, then run r + 1, so a load that
+// drifts during the benchmark (a shared machine) weighs on every variant alike. The variant's
+// name gets the planes as drawn (the raster and format, after any fallback).
+std::vector<GpuFrameRow> g2lf_rows(const gpu::GlScene& scene, const gpu::GlInfo& info,
+                                   const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
+                                   const gpu::Texture& quilt, const std::vector<G2lfVariant>& variants,
+                                   const GpuFrameOptions& o) {
+  const size_t n = variants.size();
+  std::vector<std::unique_ptr<gpu::GlG2lfRenderer>> renderers;
+  for (size_t v = 0; v < n; ++v) renderers.push_back(std::make_unique<gpu::GlG2lfRenderer>(scene, info));
+  std::vector<std::vector<double>> frames(n);
+  std::vector<Stages> stages(n);
+  for (int run = 0; run < o.warmup + o.runs; ++run)
+    for (size_t v = 0; v < n; ++v) {
+      const gpu::GlG2lfOptions& options = variants[v].options;
+      const int batch = options.timer_reads == gpu::TimerReads::kLate ? o.batch : 1;
+      const auto t0 = Clock::now();
+      for (int i = 0; i < batch; ++i) {
+        renderers[v]->render_quilt(geometry, layout, options, {}, quilt);
+        const gpu::GlG2lfStats& st = renderers[v]->stats();
+        if (run < o.warmup) continue;
+        stages[v].binning.push_back(st.seconds_binning);
+        stages[v].planes.push_back(st.seconds_planes);
+        stages[v].swizzle.push_back(st.seconds_swizzle);
+      }
+      glFinish();
+      if (run >= o.warmup) frames[v].push_back(std::chrono::duration<double>(Clock::now() - t0).count() / batch);
+    }
+  std::vector<GpuFrameRow> rows;
+  for (size_t v = 0; v < n; ++v) {
+    GpuFrameRow row;
+    const gpu::GlG2lfStats& st = renderers[v]->stats();
+    row.method = fmt::format("G2LF N={}", variants[v].options.g2lf.chunks);
+    row.variant = fmt::format("{}; planes {} {}", variants[v].name, gpu::plane_raster_name(st.plane_raster),
+                              gpu::plane_format_name(st.plane_format));
+    row.runs = o.runs;
+    row.frame_s = summarize(frames[v]).median;
+    fill_stages(row, stages[v]);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// The variants: swizzle views per invocation; the plane raster (u8 precision: batched RGBA8,
+// layered RGBA16F, layered RGBA8); the swizzle's table off and on; bilinear by hand and by the
+// texture unit; timers read late.
+std::vector<G2lfVariant> g2lf_variants(gpu::GlG2lfOptions options, const GpuFrameOptions& o) {
+  std::vector<G2lfVariant> out;
+  const gpu::GlG2lfOptions defaults = options;
+  for (const int views : o.swizzle_views) {
+    options.swizzle_views = views;
+    out.push_back({fmt::format("timers waited for, swizzle {} view{}/invocation", views, views > 1 ? "s" : ""), options});
+  }
+  for (const std::string& planes : o.planes) {
+    options = defaults;
+    options.plane_raster = planes == "batched" ? gpu::PlaneRaster::kBatched : gpu::PlaneRaster::kLayered;
+    if (planes == "layered-rgba8") options.plane_format = gpu::PlaneFormat::kRgba8;
+    out.push_back({fmt::format("timers waited for, --planes {}", planes), options});
+  }
+  for (const bool table : o.swizzle_table) {
+    options = defaults;
+    options.swizzle_table = table;
+    out.push_back({fmt::format("timers waited for, swizzle table {}", table ? "on" : "off"), options});
+  }
+  for (const bool hardware : o.hardware_bilinear) {
+    options = defaults;
+    options.g2lf.filter = render::PlaneFilter::kBilinear;
+    options.swizzle_hardware_bilinear = hardware;
+    out.push_back({fmt::format("timers waited for, bilinear by {}", hardware ? "the texture unit" : "hand"), options});
+  }
+  options = defaults;
+  options.timer_reads = gpu::TimerReads::kLate;
+  out.push_back({fmt::format("timers read late, {} frames a batch", o.batch), options});
+  return out;
 }
 
 GpuFrameRow per_view_row(const gpu::GlScene& scene, const render::QuiltGeometry& geometry,
@@ -259,26 +323,18 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
   const gpu::GlScene scene(s.scene, info);
   gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA8);  // the quilt as displayed
   std::vector<GpuFrameRow> rows;
-  if (!o.sort_only) {
-    gpu::GlG2lfRenderer renderer(scene, info);
-    gpu::GlG2lfOptions options;
-    options.g2lf.chunks = o.chunks;
-    options.g2lf.d_shift = -1.0f;  // D_shift = D_forward, as gl-vs-cpu
-    options.gpu_timers = true;
-    for (const int views : o.swizzle_views) {
-      options.swizzle_views = views;
-      rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
-                              fmt::format("timers waited for, swizzle {} view{}/invocation", views, views > 1 ? "s" : "")));
-    }
-    options.timer_reads = gpu::TimerReads::kLate;
-    options.swizzle_views = gpu::kSwizzleViewsPerInvocation;  // the default, against its waited-for row
-    rows.push_back(g2lf_row(renderer, geometry, layout, quilt, options, o,
-                            fmt::format("timers read late, {} frames a batch, swizzle {}", o.batch, options.swizzle_views)));
-  }
   if (o.sort_only) {
     sort_rows(scene, geometry, layout, quilt, o, info, rows);
     return rows;
   }
+  {
+    gpu::GlG2lfOptions options;
+    options.g2lf.chunks = o.chunks;
+    options.g2lf.d_shift = -1.0f;  // D_shift = D_forward, as gl-vs-cpu
+    options.gpu_timers = true;
+    rows = g2lf_rows(scene, info, geometry, layout, quilt, g2lf_variants(options, o), o);
+  }
+  if (!o.per_view) return rows;  // --no-per-view: the G2LF rows alone
   const int bits = 24;  // the viewer's
   rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, 32), o,
                               "timers waited for, RGBA32F blending, 32-bit depth keys"));

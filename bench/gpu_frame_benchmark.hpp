@@ -6,6 +6,10 @@
 //     GPU: the old frame) against timers read late (gpu/gl_frame_ring.hpp), frames issued back
 //     to back and finished once per batch: the wall time per frame of a pipelined loop;
 //   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
+//   - G2LF's planes drawn in batches through RGBA32F accumulation (RGBA8 planes) against one
+//     layered draw straight into RGBA16F planes (and into RGBA8);
+//   - G2LF's swizzle with its views x planes table and without; bilinear by hand (the CPU's
+//     weights) against the texture unit's;
 //   - per view: RGBA32F blending targets against RGBA16F (half the bytes a blend), and the
 //     depth sorted by all 32 bits of its key (4 radix passes) against the default 24 (3);
 //   - with sort_only (--sort-only) instead: the sort over all N against the visible (binned)
@@ -13,7 +17,8 @@
 //     normalised to the visible range, the variants interleaved round by round.
 //   - V2LF on a generated voxel scene: the voxels binned on the CPU and uploaded every frame
 //     against binned on the GPU (gpu/gl_voxel_binning.hpp), runs alternated.
-// Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
+// G2LF's variants each on a renderer of its own, their runs interleaved (a drifting load weighs
+// on all alike). Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
 #include <string>
 #include <vector>
@@ -33,6 +38,12 @@ struct GpuFrameOptions {
   std::vector<int> swizzle_views{1, 4, 8};  // G2LF swizzle variants
   bool sort_only = false;                   // the sort rows instead of the others
   int voxel_level = 7;  // the generated voxel tabletop of the V2LF rows (voxel/voxel_generator.hpp); 0: none
+  // G2LF plane raster variants: "batched" (RGBA8 through accumulation), "layered" (RGBA16F),
+  // "layered-rgba8" (blended in RGBA8).
+  std::vector<std::string> planes{"batched", "layered", "layered-rgba8"};
+  std::vector<bool> swizzle_table{false, true};       // the views x planes table off / on
+  std::vector<bool> hardware_bilinear{false, true};   // bilinear rows: by hand / texture unit
+  bool per_view = true;                               // the per-view rows (slow on llvmpipe)
 };
 
 struct GpuFrameRow {

@@ -15,9 +15,27 @@ namespace {
 double mib(double bytes) { return bytes / 1048576.0; }
 
 int batch_layers_for(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
+  if (options.plane_raster == PlaneRaster::kLayered) return 0;
   const int s = options.g2lf.plane_scale;
   return plane_batch_layers(options.format(), options.g2lf.chunks, geometry.base.width * s,
                             geometry.base.height * s, options.accumulation_budget_bytes);
+}
+
+// The budget of `options` (memory_budget_bytes, else the driver's free bytes if known) and how
+// it was found, for the refusal's message.
+std::optional<double> budget_bytes(const GlG2lfOptions& options, std::optional<long long> free_bytes,
+                                   std::string* what = nullptr) {
+  if (options.memory_budget_bytes > 0) {
+    if (what) *what = fmt::format("the memory budget is {:.1f} MiB", mib(double(options.memory_budget_bytes)));
+    return double(options.memory_budget_bytes);
+  }
+  if (!free_bytes) return std::nullopt;
+  if (what) *what = fmt::format("this GPU has {:.1f} MiB free", mib(double(*free_bytes)));
+  return double(*free_bytes);
+}
+
+double g2lf_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians) {
+  return double(g2lf_plane_array_bytes(options, geometry)) + double(g2lf_other_bytes(options, geometry, gaussians));
 }
 
 }  // namespace
@@ -51,15 +69,8 @@ void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& 
                       wp, hp, o.plane_scale, geometry.base.width, geometry.base.height, info.max_texture_size);
   const double planes = double(g2lf_plane_array_bytes(options, geometry));
   const double buffers = double(g2lf_other_bytes(options, geometry, gaussians));
-  std::optional<double> budget;
   std::string what;
-  if (options.memory_budget_bytes > 0) {
-    budget = double(options.memory_budget_bytes);
-    what = fmt::format("the memory budget is {:.1f} MiB", mib(*budget));
-  } else if (free_bytes) {
-    budget = double(*free_bytes);
-    what = fmt::format("this GPU has {:.1f} MiB free", mib(*budget));
-  }
+  const std::optional<double> budget = budget_bytes(options, free_bytes, &what);
   if (budget && planes + buffers > *budget)
     throw_input_error("G2LF on the GPU needs {:.1f} MiB ({} planes of {}x{} {}: {:.1f} MiB, "
                       "buffers: {:.1f} MiB) but {}; lower --chunks, --plane-scale or "
@@ -68,25 +79,44 @@ void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& 
                       mib(planes), mib(buffers), what);
 }
 
+GlG2lfOptions g2lf_fitting_options(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
+                                   size_t gaussians, std::optional<long long> free_bytes) {
+  GlG2lfOptions fitting = options;
+  const std::optional<double> budget = budget_bytes(options, free_bytes);
+  const bool u8_as_rgba16f = !options.plane_format && options.g2lf.precision == render::PlanePrecision::kU8 &&
+                             options.plane_raster == PlaneRaster::kLayered;
+  if (u8_as_rgba16f && budget && g2lf_bytes(options, geometry, gaussians) > *budget)
+    fitting.plane_raster = PlaneRaster::kBatched;  // RGBA8 planes: half the plane bytes
+  return fitting;
+}
+
 GlG2lfRenderer::GlG2lfRenderer(const GlScene& scene, const GlInfo& info) : scene_(scene), info_(info) {}
 
-void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
-  const render::G2lfOptions& o = options.g2lf;
+void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render::QuiltGeometry& geometry) {
+  const render::G2lfOptions& o = requested.g2lf;
   const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
-  const int batch_layers = batch_layers_for(options, geometry);
-  const bool same = sweeping_.has_planes(options.format(), o.chunks, wp, hp) && batch_layers_ == batch_layers;
-  const size_t held = same ? 0 : sweeping_.bytes() + buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() +
-                                     plane_raster_.bytes();
+  // A request as the last frame's keeps its planes as drawn then (the fallback included): no
+  // driver query, no new fit.
+  const PlaneRequest request{requested.format(), requested.plane_raster, o.chunks, wp, hp,
+                             requested.accumulation_budget_bytes, requested.memory_budget_bytes};
+  if (request_ && *request_ == request) {
+    GlG2lfOptions drawn = requested;
+    drawn.plane_raster = raster_;
+    return check_g2lf_fits(drawn, geometry, scene_.size(), info_, std::nullopt);
+  }
+  const size_t held = sweeping_.bytes() + buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
   // What the driver says is free, plus what this renderer would give back before allocating.
   std::optional<long long> free_bytes;
-  if (!same && options.memory_budget_bytes == 0) {
+  if (requested.memory_budget_bytes == 0) {
     free_bytes = query_gl_info(info_.platform).free_memory_bytes;
     if (free_bytes) *free_bytes += (long long)held;
   }
+  const GlG2lfOptions options = g2lf_fitting_options(requested, geometry, scene_.size(), free_bytes);
   check_g2lf_fits(options, geometry, scene_.size(), info_, free_bytes);
-  if (same) return;
-  sweeping_.allocate_planes(options.format(), o.chunks, wp, hp);
-  batch_layers_ = batch_layers;  // GlPlaneRaster sizes its accumulation array to it
+  if (!sweeping_.has_planes(options.format(), o.chunks, wp, hp)) sweeping_.allocate_planes(options.format(), o.chunks, wp, hp);
+  batch_layers_ = batch_layers_for(options, geometry);  // GlPlaneRaster sizes its accumulation array to it
+  raster_ = options.plane_raster;
+  request_ = request;
 }
 
 void GlG2lfRenderer::preprocess(const render::ReferenceCamera& ref, const render::QuiltGeometry& geometry,
@@ -119,6 +149,8 @@ void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   const GlG2lfStats last = stats_;
   stats_ = {};
   stats_.plane_bytes = planes.texels.bytes();
+  stats_.plane_format = planes.format;
+  stats_.plane_raster = raster_;
   stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
                      sort_.scratch_bytes() + plane_raster_.bytes();
   stats_.gpu_bytes_peak = gpu_bytes_peak();
@@ -166,7 +198,7 @@ void GlG2lfRenderer::render_quilt(const render::QuiltGeometry& geometry, const r
   const render::G2lfOptions& o = options.g2lf;
   o.check(geometry);
   check_quilt_target("G2LF on the GPU", geometry, layout, quilt);
-  sweeping_.set_swizzle_views(options.swizzle_views);
+  sweeping_.set_swizzle({options.swizzle_views, options.swizzle_table, options.swizzle_hardware_bilinear});
   sweeping_.render_quilt(frame_stages(geometry, options, settings), geometry, layout, o, settings.background, quilt,
                          options.gpu_timers, "a G2LF frame");
   record_stats(options.gpu_timers, options.timer_reads);

@@ -9,8 +9,9 @@
 //               chunk cuts, plane table, per-splat layer
 //   planes      GlPlaneRaster (render::render_sweeping_planes): GlSplatRaster's layered draw,
 //               every chunk in one instanced indirect draw into the layers of a 2D array texture
-//               (premultiplied colour + transmittance, zero background); 8/16-bit planes are
-//               blended in float a batch of layers at a time and rounded once, as the CPU's
+//               (premultiplied colour + transmittance, zero background), blended in the planes'
+//               format (u8 precision: RGBA16F planes); RGBA8 planes through batches of float
+//               accumulation when RGBA16F planes exceed the budget
 //   swizzle     GlSwizzle (render::swizzle_blend) into the quilt texture
 // One frame is GPU work only: the plane count, the binned count and the draw's instance count
 // stay on the GPU, so nothing waits for a read-back (the stage times and counts come through
@@ -40,9 +41,14 @@ namespace lfd::gpu {
 
 struct GlG2lfOptions {
   render::G2lfOptions g2lf;  // every option of the CPU path, with its defaults
-  // Plane texel format; unset: the CPU precision's (u8 -> RGBA8, f32 -> RGBA32F). RGBA16F
-  // exists only here.
+  // Plane texel format; unset: the CPU precision's (f32 -> RGBA32F; u8 -> RGBA16F drawn
+  // layered, RGBA8 batched). RGBA16F exists only here.
   std::optional<PlaneFormat> plane_format;
+  // How the planes are drawn (gpu/gl_plane_raster.hpp): kLayered blends every chunk straight
+  // into the plane array in one draw; u8-precision planes are then RGBA16F (blending in RGBA8
+  // rounds T at every step), and fall back to kBatched RGBA8 planes (float accumulation,
+  // rounded once) when the RGBA16F ones exceed the memory budget (docs/gpu.md "Planes").
+  PlaneRaster plane_raster = PlaneRaster::kLayered;
   // GPU bytes G2LF may allocate (planes + per-Gaussian buffers); 0: the free memory the driver
   // reports, no limit beyond the texture limits when it reports none (llvmpipe).
   size_t memory_budget_bytes = 0;
@@ -59,14 +65,24 @@ struct GlG2lfOptions {
   // The binning sort's first pass drops the Gaussians outside the reference frustum and the
   // later passes sort the binned ones only (GlDepthBinning; false: all N, for comparison).
   bool sort_binned_only = true;
+  // The swizzle's views x planes table and hardware bilinear (gpu/gl_swizzle.hpp SwizzleOptions).
+  bool swizzle_table = SwizzleOptions{}.factor_table;
+  bool swizzle_hardware_bilinear = SwizzleOptions{}.hardware_bilinear;
 
-  PlaneFormat format() const { return plane_format.value_or(plane_format_for(g2lf.precision)); }
+  PlaneFormat format() const {
+    if (plane_format) return *plane_format;
+    if (g2lf.precision == render::PlanePrecision::kU8 && plane_raster == PlaneRaster::kLayered)
+      return PlaneFormat::kRgba16f;
+    return plane_format_for(g2lf.precision);
+  }
 };
 
 struct GlG2lfStats {
   size_t gaussians_in_frustum = 0;  // binned (gpu_timers only)
   int planes = 0;                   // planes used this frame (gpu_timers only)
   size_t plane_bytes = 0;           // the plane array: N_chunk layers (what is allocated)
+  PlaneFormat plane_format = PlaneFormat::kRgba8;  // of the plane array
+  PlaneRaster plane_raster = PlaneRaster::kLayered;  // as drawn (kBatched: the budget's fallback)
   size_t plane_bytes_used = 0;      // the layers in use (gpu_timers only; the CPU's plane_bytes)
   double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;  // GPU time (gpu_timers)
   uint64_t frames_late = 0;  // how many frames ago the timed figures were rendered (kLate)
@@ -85,6 +101,10 @@ size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometr
 // or the budget: options.memory_budget_bytes, else `free_bytes` (the driver's figure) if known.
 void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
                      size_t gaussians, const GlInfo& info, std::optional<long long> free_bytes);
+// The options a frame is drawn with: `options`, except that u8-precision planes drawn layered
+// (RGBA16F, twice RGBA8's bytes) that exceed the budget fall back to kBatched RGBA8 planes.
+GlG2lfOptions g2lf_fitting_options(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
+                                   size_t gaussians, std::optional<long long> free_bytes);
 
 class GlG2lfRenderer {
  public:
@@ -129,7 +149,17 @@ class GlG2lfRenderer {
   GlSweepingPlanes sweeping_;
   SplatBuffers buffers_;
   Buffer layers_;
-  int batch_layers_ = -1;  // float accumulation layers (0: RGBA32F planes, drawn directly)
+  int batch_layers_ = -1;  // float accumulation layers (0: drawn directly, kLayered)
+  PlaneRaster raster_ = PlaneRaster::kLayered;  // as drawn (g2lf_fitting_options)
+  // What the planes were allocated for (the options asked, before any fallback).
+  struct PlaneRequest {
+    PlaneFormat format;
+    PlaneRaster raster;
+    int chunks, width, height;
+    size_t accumulation_budget, budget;
+    bool operator==(const PlaneRequest&) const = default;
+  };
+  std::optional<PlaneRequest> request_;
   GlG2lfStats stats_;
 };
 

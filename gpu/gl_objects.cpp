@@ -47,6 +47,7 @@ void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 void delete_program(GLuint id) { glDeleteProgram(id); }
 void delete_query(GLuint id) { glDeleteQueries(1, &id); }
+void delete_sampler(GLuint id) { glDeleteSamplers(1, &id); }
 
 size_t gpu_bytes_allocated() { return g_bytes.load(); }
 size_t gpu_bytes_peak() { return g_peak.load(); }
@@ -191,6 +192,12 @@ void Framebuffer::finish(int count) const {
   const GLenum status = glCheckNamedFramebufferStatus(id(), GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
     throw std::runtime_error(fmt::format("framebuffer incomplete (0x{:x})", status));
+}
+
+Sampler::Sampler() {
+  GLuint id = 0;
+  glCreateSamplers(1, &id);
+  name_ = GlName<delete_sampler>(id);
 }
 
 VertexArray::VertexArray() {

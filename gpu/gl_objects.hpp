@@ -48,6 +48,7 @@ void delete_framebuffer(GLuint id);
 void delete_vertex_array(GLuint id);
 void delete_program(GLuint id);
 void delete_query(GLuint id);
+void delete_sampler(GLuint id);
 
 // A buffer object of fixed size (glNamedBufferStorage, dynamic storage so it can be updated).
 // Sizes are counted in gpu_bytes_allocated() for the memory figures of the benchmark.
@@ -123,6 +124,16 @@ class Framebuffer {
 
  private:
   GlName<delete_framebuffer> name_;
+};
+
+// A sampler object: filtering and wrapping for texture(), set once (glSamplerParameter*).
+class Sampler {
+ public:
+  Sampler();
+  GLuint id() const { return name_.id(); }
+
+ private:
+  GlName<delete_sampler> name_;
 };
 
 class VertexArray {

@@ -18,8 +18,13 @@ constexpr size_t kAccumulationTexel = 16;             // RGBA32F
 }  // namespace
 
 Program plane_convert_program(const char* format, bool quantize_u8) {
-  return Program(std::string("planes: convert to ") + format, {{GL_COMPUTE_SHADER, g2lf_plane_convert_comp_glsl}},
+  return Program(std::string("planes: convert to ") + format,
+                 {{GL_COMPUTE_SHADER, plane_table_source(g2lf_plane_convert_comp_glsl, int(kPlaneTable)).c_str()}},
                  {std::string("PLANE_FORMAT ") + format, std::string("QUANTIZE_U8 ") + (quantize_u8 ? "1" : "0")});
+}
+
+const char* plane_raster_name(PlaneRaster raster) {
+  return raster == PlaneRaster::kLayered ? "layered" : "batched";
 }
 
 int plane_batch_layers(PlaneFormat format, int max_planes, int width, int height, size_t budget_bytes) {
@@ -35,7 +40,8 @@ size_t plane_raster_bytes(PlaneFormat format, int batch_layers, int width, int h
 }
 
 GlPlaneRaster::GlPlaneRaster()
-    : batches_("g2lf planes: batches", {{GL_COMPUTE_SHADER, g2lf_plane_batches_comp_glsl}}),
+    : batches_("g2lf planes: batches",
+               {{GL_COMPUTE_SHADER, plane_table_source(g2lf_plane_batches_comp_glsl, int(kPlaneTable)).c_str()}}),
       copy_("g2lf planes: batch copy", {{GL_COMPUTE_SHADER, g2lf_plane_copy_comp_glsl}}),
       convert_u8_(plane_convert_program("rgba8", true)),
       convert_f16_(plane_convert_program("rgba16f", false)),
@@ -48,7 +54,10 @@ size_t GlPlaneRaster::bytes() const {
 
 void GlPlaneRaster::ensure(const GlPlanes& planes, int batch_layers, size_t gaussians) {
   if (batch_layers == 0) {
-    accumulation_ = Texture();
+    accumulation_ = Texture();  // nothing of the batched path is held while drawing directly
+    batch_commands_ = Buffer();
+    batch_ids_ = Buffer();
+    batch_layers_ = Buffer();
     // Attached every frame: a reallocated plane array may reuse the old texture's name.
     direct_framebuffer_.attach(0, planes.texels);  // every layer: layered rendering
     if (!direct_ready_) direct_framebuffer_.finish(1);
@@ -73,14 +82,15 @@ void GlPlaneRaster::ensure(const GlPlanes& planes, int batch_layers, size_t gaus
 
 void GlPlaneRaster::run(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
                         const Buffer& draw, size_t gaussians, int batch_layers, GlPlanes& planes) {
-  if ((batch_layers == 0) != (planes.format == PlaneFormat::kRgba32f))
-    throw std::logic_error("GlPlaneRaster: RGBA32F planes are drawn directly, others in batches");
+  if (batch_layers > 0 && planes.format == PlaneFormat::kRgba32f)
+    throw std::logic_error("GlPlaneRaster: RGBA32F planes are drawn directly, not in batches");
   ensure(planes, batch_layers, gaussians);
   SplatRasterTarget target;
   target.image_size = {planes.width, planes.height};
 
   if (batch_layers == 0) {
-    // Every layer to (C, T) = (0, 0, 0, 1), then all chunks in one draw.
+    // Every layer to (C, T) = (0, 0, 0, 1), then all chunks in one draw, blended in the planes'
+    // own format (GL keeps the primitive order per pixel: each plane's splats front to back).
     const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     glClearTexImage(planes.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
     target.framebuffer = direct_framebuffer_.id();

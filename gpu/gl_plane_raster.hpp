@@ -3,15 +3,20 @@
 // every chunk rasterised from the reference camera into its plane, with GlSplatRaster's layered
 // draw (gl_Layer = the splat's plane), zero background, so each layer holds (C_k, T_k).
 //
-// The CPU blends in float and rounds a plane to 8 bits once; blending straight into an RGBA8
-// (or RGBA16F) layer would round every blend step (measured: 42-58 dB against the CPU's u8
-// planes instead of ~100). So only RGBA32F planes are drawn into directly, in one instanced
-// draw. Other formats go through an RGBA32F accumulation array of `batch_layers` layers: per
-// batch of planes, a compute pass copies the batch's splats (a contiguous run of the sorted list,
-// found on the GPU from the plane table) and writes its indirect draw, one layered draw blends
-// them in float, and a convert pass rounds each layer into its plane as the CPU does
-// (round(clamp(v, 0, 1) 255) for RGBA8) and resets the accumulation layer. The batch count
-// follows from N_chunk on the CPU; batches beyond the frame's planes draw nothing.
+// Two ways (GlG2lfOptions::plane_raster; docs/gpu.md "Planes"):
+//   kLayered  one instanced indirect draw blends every chunk straight into the plane array in
+//             its own format (the paper's way): RGBA32F, RGBA16F, or RGBA8 (which rounds C and
+//             T at every blend step). No accumulation, no conversion, no per-batch barriers.
+//   kBatched  the fallback for RGBA8 planes when RGBA16F planes exceed the memory budget: an
+//             RGBA32F accumulation array of `batch_layers` layers; per batch of planes, a
+//             compute pass copies the batch's splats (a contiguous run of the sorted list, found
+//             on the GPU from the plane table) and writes its indirect draw, one layered draw
+//             blends them in float, and a convert pass rounds each layer into its plane as the
+//             CPU does (round(clamp(v, 0, 1) 255) for RGBA8) and resets the accumulation layer.
+//             The batch count follows from N_chunk on the CPU; batches beyond the frame's planes
+//             draw nothing.
+// Both blend the splats of a plane in the sorted list's order, front to back, with the same
+// blend equation: only the precision of the target differs.
 #include <cstddef>
 
 #include "gpu/gl_objects.hpp"
@@ -26,6 +31,9 @@ constexpr GLuint kPlaneBatches = 11;
 constexpr GLuint kPlaneBatchDraw = 12;
 constexpr GLuint kPlaneBatchIds = 13;
 constexpr GLuint kPlaneBatchLayers = 14;
+
+enum class PlaneRaster { kLayered, kBatched };
+const char* plane_raster_name(PlaneRaster raster);  // "layered", "batched"
 
 // Accumulation layers for `format` planes of `width` x `height` within `budget_bytes` (at least
 // one, at most `max_planes`); 0 for RGBA32F (drawn into directly).
@@ -44,7 +52,8 @@ class GlPlaneRaster {
 
   // Rasterises the binned splats into `planes`: `records` (GlSplatPreprocess from the reference
   // camera), `sorted_ids` and `layers` (GlDepthBinning) and `draw` (its instance count = the
-  // binned count) for `gaussians` Gaussians. `batch_layers`: plane_batch_layers(...).
+  // binned count) for `gaussians` Gaussians. `batch_layers`: 0 draws straight into the planes
+  // (kLayered, any format), else plane_batch_layers(...) (kBatched, RGBA8 or RGBA16F planes).
   void run(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
            size_t gaussians, int batch_layers, GlPlanes& planes);
 

@@ -3,7 +3,13 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "gpu/shaders/plane_table.glsl.hpp"
+
 namespace lfd::gpu {
+
+std::string plane_table_source(const char* shader, int binding) {
+  return "#define PLANE_TABLE_BINDING " + std::to_string(binding) + "\n" + plane_table_glsl + shader;
+}
 
 GLenum gl_internal_format(PlaneFormat format) {
   switch (format) {

@@ -7,6 +7,7 @@
 // possible plane (N_chunk); which are used is known only on the GPU, so no frame waits for it.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gpu/gl_objects.hpp"
@@ -60,6 +61,10 @@ struct GlPlanes {
   GlPlanes() = default;
   GlPlanes(PlaneFormat format, int max_planes, int width, int height);
 };
+
+// `shader` with the plane table's declaration (gpu/shaders/plane_table.glsl, read-only, at
+// storage-buffer `binding`) before it: the one GLSL definition of the table's layout.
+std::string plane_table_source(const char* shader, int binding);
 
 // The texels `planes` needs for `max_planes` layers of `width` x `height` in `format`.
 size_t plane_texture_bytes(PlaneFormat format, int max_planes, int width, int height);

@@ -20,6 +20,10 @@ void GlSweepingPlanes::set_swizzle_views(int views_per_invocation) {
   if (swizzle_.views_per_invocation() != views_per_invocation) swizzle_ = GlSwizzle(views_per_invocation);
 }
 
+void GlSweepingPlanes::set_swizzle(const SwizzleOptions& options) {
+  if (!(swizzle_.options() == options)) swizzle_ = GlSwizzle(options);
+}
+
 size_t GlSweepingPlanes::bytes() const { return planes_.texels.bytes() + planes_.table.buffer.bytes(); }
 
 void GlSweepingPlanes::stamp(Stamp at) {

@@ -54,6 +54,8 @@ class GlSweepingPlanes {
   void allocate_planes(PlaneFormat format, int max_planes, int width, int height);
   // Views per invocation of the swizzle (gpu/gl_swizzle.hpp; the benchmark compares them).
   void set_swizzle_views(int views_per_invocation);
+  // All of the swizzle's options (its views per invocation, factor table, hardware bilinear).
+  void set_swizzle(const SwizzleOptions& options);
 
   // One frame into `quilt` (checked by the caller: check_quilt_target): the reference camera of
   // `options`, the stages, the quilt cleared to 0 outside the tiles as the CPU's, the swizzle

@@ -1,10 +1,12 @@
 #include "gpu/gl_swizzle.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "gpu/shaders/swizzle.comp.glsl.hpp"
+#include "gpu/shaders/swizzle_table.comp.glsl.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -20,9 +22,24 @@ const char* image_format_qualifier(GLenum format) {
 
 }  // namespace
 
-GlSwizzle::GlSwizzle(int views_per_invocation) : views_per_invocation_(views_per_invocation) {
-  if (views_per_invocation_ < 1 || views_per_invocation_ > 64)
+GlSwizzle::GlSwizzle(int views_per_invocation)
+    : GlSwizzle(SwizzleOptions{views_per_invocation, SwizzleOptions{}.factor_table, SwizzleOptions{}.hardware_bilinear}) {}
+
+GlSwizzle::GlSwizzle(const SwizzleOptions& options) : options_(options) {
+  if (options_.views_per_invocation < 1 || options_.views_per_invocation > 64)
     throw std::invalid_argument("GlSwizzle: views per invocation must be 1..64");
+  if (options_.factor_table)
+    table_ = Program("g2lf swizzle: views x planes table",
+                     {{GL_COMPUTE_SHADER, plane_table_source(swizzle_table_comp_glsl, 0).c_str()}});
+  if (options_.hardware_bilinear) {
+    // The CPU's plane reads empty (0, 0, 0, 1) outside: the border colour.
+    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameterfv(linear_.id(), GL_TEXTURE_BORDER_COLOR, empty);
+  }
 }
 
 const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_format) {
@@ -31,13 +48,40 @@ const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_forma
   if (it == programs_.end()) {
     const bool bilinear = filter == render::PlaneFilter::kBilinear;
     Program p(std::string("g2lf swizzle (") + (bilinear ? "bilinear" : "nearest") + ")",
-              {{GL_COMPUTE_SHADER, swizzle_comp_glsl}},
+              {{GL_COMPUTE_SHADER, plane_table_source(swizzle_comp_glsl, 0).c_str()}},
               {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
+               std::string("HW_BILINEAR ") + (options_.hardware_bilinear ? "1" : "0"),
+               std::string("TABLE ") + (options_.factor_table ? "1" : "0"),
                std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format),
-               "VIEWS " + std::to_string(views_per_invocation_)});
+               "VIEWS " + std::to_string(options_.views_per_invocation)});
     it = programs_.emplace(key, std::move(p)).first;
   }
   return it->second;
+}
+
+void GlSwizzle::write_table(const GlPlanes& planes, const render::QuiltGeometry& geometry,
+                            const render::ReferenceCamera& ref) {
+  const int V = geometry.views;
+  plane_factors_.ensure(size_t(std::max(planes.max_planes, 1)) * 2 * sizeof(float));
+  view_plane_columns_.ensure(size_t(std::max(planes.max_planes, 1)) * size_t(V) * sizeof(float));
+  const Program& p = table_;
+  p.use();
+  planes.table.buffer.bind_storage(0);
+  view_offsets_.bind_storage(1);
+  plane_factors_.bind_storage(2);
+  view_plane_columns_.bind_storage(3);
+  glUniform2i(p.uniform("view_size"), geometry.base.width, geometry.base.height);
+  glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
+  glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
+  glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
+  glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
+  glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
+  glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
+  glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  glUniform1i(p.uniform("view_count"), V);
+  // Every possible plane (the count is on the GPU); those past it return at once.
+  glDispatchCompute(GLuint((V + 63) / 64), GLuint(std::max(planes.max_planes, 1)), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometry,
@@ -52,13 +96,20 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   for (int j = 0; j < V; ++j) offsets[size_t(j)] = geometry.view_offset(j);
   view_offsets_.ensure(offsets.size() * sizeof(float));
   view_offsets_.upload(offsets.data(), offsets.size() * sizeof(float));
+  if (options_.factor_table) write_table(planes, geometry, ref);
 
   const Program& p = program(filter, quilt.internal_format());
   p.use();
   glBindTextureUnit(0, planes.texels.id());
+  const bool sampled = options_.hardware_bilinear && filter == render::PlaneFilter::kBilinear;
+  glBindSampler(0, sampled ? linear_.id() : 0);
   glBindImageTexture(0, quilt.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, quilt.internal_format());
   planes.table.buffer.bind_storage(0);
   view_offsets_.bind_storage(1);
+  if (options_.factor_table) {
+    plane_factors_.bind_storage(2);
+    view_plane_columns_.bind_storage(3);
+  }
   const int W = geometry.base.width, H = geometry.base.height;
   glUniform2i(p.uniform("view_size"), W, H);
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
@@ -71,8 +122,9 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
   glUniform3f(p.uniform("background"), background.x, background.y, background.z);
   glUniform1i(p.uniform("view_count"), V);
-  const int view_groups = (V + views_per_invocation_ - 1) / views_per_invocation_;
+  const int view_groups = (V + options_.views_per_invocation - 1) / options_.views_per_invocation;
   glDispatchCompute(GLuint((W + 15) / 16), GLuint((H + 7) / 8), GLuint(view_groups));
+  glBindSampler(0, 0);
   // The quilt is read next by texture fetches (interlacing) or a read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -24,10 +24,25 @@ namespace lfd::gpu {
 // read; docs/gpu.md "Swizzle"). 1 is one invocation per view pixel, as before.
 inline constexpr int kSwizzleViewsPerInvocation = 8;
 
+struct SwizzleOptions {
+  int views_per_invocation = kSwizzleViewsPerInvocation;  // 1-64
+  // The sample positions from a views x planes table a compute pass writes each frame from
+  // the plane depths on the GPU (gpu/shaders/swizzle_table.comp.glsl: the same floats), instead
+  // of per pixel and plane.
+  bool factor_table = true;
+  // Bilinear planes sampled by the texture unit (its own weights, one fetch) instead of four
+  // texelFetches with the CPU's weights: within the tests' tolerance of the CPU's filter, not
+  // bit for bit (docs/gpu.md "Swizzle"; 134-144 dB on llvmpipe, swizzle 2.5x faster there).
+  bool hardware_bilinear = true;
+  bool operator==(const SwizzleOptions&) const = default;
+};
+
 class GlSwizzle {
  public:
   explicit GlSwizzle(int views_per_invocation = kSwizzleViewsPerInvocation);
-  int views_per_invocation() const { return views_per_invocation_; }
+  explicit GlSwizzle(const SwizzleOptions& options);
+  int views_per_invocation() const { return options_.views_per_invocation; }
+  const SwizzleOptions& options() const { return options_; }
 
   // Writes every view of `geometry` into `quilt` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F; the
   // layout's size). Enqueues GPU work only.
@@ -37,9 +52,12 @@ class GlSwizzle {
 
  private:
   const Program& program(render::PlaneFilter filter, GLenum quilt_format);
-  int views_per_invocation_;
+  void write_table(const GlPlanes& planes, const render::QuiltGeometry& geometry, const render::ReferenceCamera& ref);
+  SwizzleOptions options_;
   std::map<std::pair<int, GLenum>, Program> programs_;
-  Buffer view_offsets_;
+  Program table_;
+  Sampler linear_;  // hardware_bilinear's
+  Buffer view_offsets_, plane_factors_, view_plane_columns_;
 };
 
 // A quilt texture of the layout's size, cleared to 0 (as the CPU's quilt image).

@@ -118,8 +118,9 @@ lightfield::QuiltStats LightFieldFrame::render_g2lf(lightfield::GlLightFieldRend
   try {
     return renderer.render_quilt_into(plan_.geometry, plan_.layout, quilt_);
   } catch (const InputError& refused) {
-    // The memory check runs before anything is allocated or drawn: RGBA8 planes (a quarter of
-    // the bytes, plus a bounded float accumulation array) may fit where RGBA32F ones do not.
+    // The memory check runs before anything is allocated or drawn: u8 planes (RGBA16F, half the
+    // bytes, or RGBA8 with a bounded float accumulation array when those do not fit either;
+    // docs/gpu.md "Planes") may fit where RGBA32F ones do not.
     if (options.planes.precision == render::PlanePrecision::kU8) throw;
     options.planes.precision = render::PlanePrecision::kU8;
     renderer.set_options(options);
@@ -129,7 +130,7 @@ lightfield::QuiltStats LightFieldFrame::render_g2lf(lightfield::GlLightFieldRend
     } catch (const InputError&) {
       throw refused;
     }
-    plane_fit_notice_ = fmt::format("RGBA32F planes do not fit, so RGBA8 planes are shown ({})", refused.what());
+    plane_fit_notice_ = fmt::format("RGBA32F planes do not fit, so u8 planes (RGBA16F, else RGBA8) are shown ({})", refused.what());
     return stats;
   }
 }

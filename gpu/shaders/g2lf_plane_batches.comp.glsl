@@ -5,16 +5,7 @@
 // (at least one group, so the copy always writes the batch's draw command).
 layout(local_size_x = 64) in;
 
-struct PlaneEntry {
-  float depth;
-  uint begin;
-};
-layout(std430, binding = 9) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
+// PlaneTable (plane_table.glsl, prepended at binding 9): plane_count, splats_binned, plane[k].
 struct Batch {
   uint groups_x, groups_y, groups_z;  // DispatchIndirectCommand of the copy pass
   uint first;                         // first sorted splat of the batch

@@ -8,10 +8,7 @@ layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 
 layout(rgba32f, binding = 0) uniform image2DArray accumulation;
 layout(PLANE_FORMAT, binding = 1) uniform writeonly image2DArray planes;
-layout(std430, binding = 9) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-};
+// PlaneTable (plane_table.glsl, prepended at binding 9): plane_count, splats_binned, plane[k].
 
 uniform uint batch;
 uniform uint batch_layers;

@@ -10,25 +10,25 @@
 // (row 0 = top); plane and quilt textures store them bottom-up (GL). A view's pixel stops once
 // T < 0.5/255, as the CPU, and the invocation once all of its views have. Arithmetic follows the
 // CPU's order of operations and is `precise` (no fused multiply-add), so sample positions, and
-// with them the nearest texel, agree with the CPU's.
-// Defines: BILINEAR 0|1, QUILT_FORMAT (rgba8 | rgba16f | rgba32f), VIEWS (views per invocation).
+// with them the nearest texel, agree with the CPU's. With TABLE the per-plane factors and the
+// per-view-and-plane columns come from the table swizzle_table.comp.glsl wrote this frame (the
+// same expressions, so the same floats). With HW_BILINEAR (and BILINEAR) a plane is sampled by
+// the texture unit (a sampler with GL_LINEAR and a (0, 0, 0, 1) border), one fetch instead of
+// four, whose weights are the unit's own (8 bits of fraction on NVIDIA), not the CPU's.
+// Defines: BILINEAR 0|1, HW_BILINEAR 0|1, TABLE 0|1, QUILT_FORMAT (rgba8 | rgba16f | rgba32f),
+// VIEWS (views per invocation).
 layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 
 layout(binding = 0) uniform sampler2DArray planes;
 layout(QUILT_FORMAT, binding = 0) uniform writeonly image2D quilt;
 
-// The plane table (gpu/gl_planes.hpp): header, then d_k and the first splat per plane.
-struct PlaneEntry {
-  float depth;
-  uint begin;
-};
-layout(std430, binding = 0) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
+// PlaneTable (plane_table.glsl, prepended at binding 0): plane_count, splats_binned, plane[k].
+#if TABLE
+layout(std430, binding = 2) readonly buffer PlaneFactors { vec2 plane_factors[]; };  // scale_y, beta
+layout(std430, binding = 3) readonly buffer ViewPlaneColumns { float view_plane_column[]; };  // [k V + j]
+#else
 layout(std430, binding = 1) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
+#endif
 
 uniform ivec2 view_size;   // W, H of a view
 uniform ivec2 plane_size;  // Wp, Hp
@@ -48,7 +48,11 @@ vec4 fetch(int x, int row, int layer) {
 }
 
 vec4 sample_plane(float px, float py, int layer) {
-#if BILINEAR
+#if BILINEAR && HW_BILINEAR
+  // Texel centres at (i + 0.5) / size; row py of the CPU's plane is texel row Hp - 1 - py.
+  const vec2 size = vec2(plane_size);
+  return textureLod(planes, vec3((px + 0.5) / size.x, (size.y - 0.5 - py) / size.y, float(layer)), 0.0);
+#elif BILINEAR
   const int row0 = int(floor(py)), col0 = int(floor(px));
   precise const float fy = py - float(row0), fx = px - float(col0);
   const vec4 a = fetch(col0, row0, layer), b = fetch(col0 + 1, row0, layer);
@@ -80,20 +84,29 @@ void main() {
   const uint count = plane_count;
   bool open = true;  // some view's pixel still lets light through
   for (uint k = 0u; k < count && open; ++k) {
+#if TABLE
+    const vec2 factors = plane_factors[k];
+    const float scale_y = factors.x, beta = factors.y;
+#else
     const float d = plane[k].depth;
     precise const float depth_ref = d - d_forward_eff;
     precise const float parallax = (focal_distance - d) / focal_distance / (depth_ref * tan_rx);
     precise const float scale_x = d * tan_x / (depth_ref * tan_rx);
     precise const float scale_y = d * tan_y / (depth_ref * tan_ry);
-    precise const float py = ((scale_y * v_ndc + 1.0) * Hp - 1.0) * 0.5;
     precise const float step = 2.0 * scale_x / W;
     precise const float beta = step * Wp * 0.5;
+#endif
+    precise const float py = ((scale_y * v_ndc + 1.0) * Hp - 1.0) * 0.5;
     const int layer = int(k);
     open = false;
     for (int i = 0; i < VIEWS; ++i) {
       if (t[i] < kMinTransmittance) continue;
+#if TABLE
+      const float alpha = view_plane_column[k * uint(view_count) + uint(j0 + i)];
+#else
       precise const float u_left = view_offset[j0 + i] * parallax - scale_x;
       precise const float alpha = ((u_left + 0.5 * step + 1.0) * Wp - 1.0) * 0.5;
+#endif
       precise const float px = alpha + beta * float(x);
       const vec4 s = sample_plane(px, py, layer);
       C[i] += t[i] * s.rgb;

@@ -20,22 +20,36 @@ TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
   o.swizzle_views = {1, 3};
   o.voxel_level = 0;  // no V2LF rows: the next test's
   const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
-  ASSERT_EQ(rows.size(), 7u);  // G2LF: 2 swizzle variants + timers read late; per view: 4
+  // G2LF: 2 swizzle variants, 3 plane rasters, table off/on, bilinear by hand/unit, timers read
+  // late; per view: 4.
+  ASSERT_EQ(rows.size(), 14u);
   for (const GpuFrameRow& r : rows) {
     EXPECT_GT(r.frame_s, 0.0) << r.method << ", " << r.variant;
     EXPECT_EQ(r.runs, 2);
   }
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < 10; ++i) {
     EXPECT_EQ(rows[size_t(i)].method, "G2LF N=8");
     EXPECT_GT(rows[size_t(i)].swizzle_s, 0.0);
     EXPECT_EQ(rows[size_t(i)].raster_s, 0.0);
   }
-  for (int i = 3; i < 7; ++i) {
+  for (int i = 10; i < 14; ++i) {
     EXPECT_EQ(rows[size_t(i)].method, "per view");
     EXPECT_GT(rows[size_t(i)].raster_s, 0.0);
   }
-  EXPECT_NE(gpu_frame_table(rows).find("swizzle 3 views/invocation"), std::string::npos);
-  EXPECT_EQ(gpu_frame_json(rows).size(), 7u);
+  const std::string table = gpu_frame_table(rows);
+  EXPECT_NE(table.find("swizzle 3 views/invocation"), std::string::npos);
+  // Each plane raster row names the planes as drawn.
+  EXPECT_NE(table.find("--planes batched; planes batched u8"), std::string::npos) << table;
+  EXPECT_NE(table.find("--planes layered; planes layered f16"), std::string::npos) << table;
+  EXPECT_NE(table.find("--planes layered-rgba8; planes layered u8"), std::string::npos) << table;
+  EXPECT_NE(table.find("bilinear by the texture unit"), std::string::npos) << table;
+  EXPECT_EQ(gpu_frame_json(rows).size(), 14u);
+  o.per_view = false;
+  o.planes = {"layered"};
+  o.swizzle_table = {true};
+  o.hardware_bilinear = {true};
+  o.swizzle_views = {8};
+  EXPECT_EQ(run_gpu_frame(scene, o, context.info()).size(), 5u) << "G2LF rows only";
 }
 
 // --sort-only: G2LF's binning sort over all N and over the binned Gaussians, then per view five
@@ -73,18 +87,22 @@ TEST(GpuFrameBenchmark, ComparesV2lfBinnedOnTheCpuAndOnTheGpu) {
   o.warmup = 1;
   o.batch = 2;
   o.swizzle_views = {1};
+  o.planes = {"layered"};
+  o.swizzle_table = {true};
+  o.hardware_bilinear = {true};
   o.voxel_level = 4;
   const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
-  ASSERT_EQ(rows.size(), 8u);  // G2LF 2, per view 4, V2LF 2
-  for (size_t i = 6; i < 8; ++i) {
+  // G2LF 5 (swizzle 1, planes layered, table on, unit bilinear, timers read late), per view 4, V2LF 2
+  ASSERT_EQ(rows.size(), 11u);
+  for (size_t i = 9; i < 11; ++i) {
     EXPECT_EQ(rows[i].method, "V2LF N=8");
     EXPECT_EQ(rows[i].runs, 2);
     EXPECT_GT(rows[i].frame_s, 0.0);
     EXPECT_GT(rows[i].planes_s, 0.0);
     EXPECT_GT(rows[i].swizzle_s, 0.0);
   }
-  EXPECT_NE(rows[6].variant.find("binning on the CPU"), std::string::npos);
-  EXPECT_NE(rows[7].variant.find("binning on the GPU"), std::string::npos);
+  EXPECT_NE(rows[9].variant.find("binning on the CPU"), std::string::npos);
+  EXPECT_NE(rows[10].variant.find("binning on the GPU"), std::string::npos);
 }
 
 }  // namespace

@@ -86,8 +86,8 @@ TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   ViewerSettings s = small_settings();
   s.g2lf.precision = render::PlanePrecision::kF32;
   const FramePlan plan = plan_frame(test_display(), render::frame_scene(scene), s);
-  // RGBA8 planes add a float accumulation array: one layer here (on a real frame the 64 MiB
-  // budget caps it), so RGBA8 needs less than RGBA32F.
+  // u8 planes drawn layered are RGBA16F (half of RGBA32F; RGBA8 with a float accumulation
+  // array of one layer here when those do not fit), so u8 needs less than RGBA32F.
   gpu::GlG2lfOptions f32, u8;
   f32.g2lf = u8.g2lf = s.g2lf;
   f32.accumulation_budget_bytes = u8.accumulation_budget_bytes = 1;
@@ -102,9 +102,13 @@ TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   LightFieldFrame frame(scene, test_display(), context.info(), options);
   frame.render(render::frame_scene(scene), s);
   EXPECT_NE(frame.plane_fit_notice().find("RGBA8"), std::string::npos) << frame.plane_fit_notice();
-  // Below the RGBA8 planes too: the RGBA32F refusal, naming the options that lower it.
+  // Below the RGBA16F planes, u8 planes fall back to batched RGBA8 (gpu::g2lf_fitting_options);
+  // below those too: the RGBA32F refusal, naming the options that lower it.
+  gpu::GlG2lfOptions u8_batched = u8;
+  u8_batched.plane_raster = gpu::PlaneRaster::kBatched;
+  ASSERT_LT(need(u8_batched), need(u8));
   FrameOptions tight;
-  tight.g2lf_memory_budget_bytes = need(u8) - 1;
+  tight.g2lf_memory_budget_bytes = need(u8_batched) - 1;
   tight.g2lf_accumulation_budget_bytes = 1;
   LightFieldFrame refused(scene, test_display(), context.info(), tight);
   try {
