@@ -30,6 +30,7 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
     std::vector<render::PlaneRay> row_rays;
     std::vector<int> row_x;
     std::vector<float> values;
+    render::PlaneRays::Scratch scratch;
 #pragma omp for schedule(dynamic, 8)
     for (int row = 0; row < cal.screen_h; ++row) {
       row_rays.clear();
@@ -48,7 +49,7 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
       if (row_rays.empty()) continue;
       // Base-camera NDC of the view row, top-down as the planes' rows ((2 y + 1) / H - 1 at tile
       // row y, v = 1 - (y + 1/2) / H).
-      rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values);
+      rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values, scratch);
       const double gain = fringe_gain(cal, row);
       for (size_t i = 0; i < row_rays.size(); ++i) panel.at(row_x[i], row, row_rays[i].channel) = float(values[i] * gain);
     }
