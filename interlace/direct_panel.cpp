@@ -25,6 +25,8 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
   const double view_aspect = double(geometry.base.width) / double(geometry.base.height);
   // Fractions lie in [0, 1]: offsets within the cone's edges s = +-1/2.
   const float max_abs_dx = std::abs(geometry.view_offset_at(0.5f));
+  // view_offset_at is linear in the position: its slope once, not a tan() per subpixel.
+  const float offset_per_position = geometry.view_offset_at(1.0f);
 #pragma omp parallel
   {
     std::vector<render::PlaneRay> row_rays;
@@ -42,7 +44,7 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
         tile_v = t.v;  // the same for every pixel of the row
         for (int c = 0; c < 3; ++c) {
           const double f = panel_view_fraction(lens, options.invert_views, x, row, c);
-          row_rays.push_back({geometry.view_offset_at(view_position_of_fraction(f)), float(2.0 * t.u - 1.0), c});
+          row_rays.push_back({offset_per_position * view_position_of_fraction(f), float(2.0 * t.u - 1.0), c});
           row_x.push_back(x);
         }
       }

@@ -23,7 +23,8 @@ constexpr float kMinTransmittance = 0.5f / 255.0f;  // the swizzle's (render/swi
 // Bins of camera offset over [-max |dx|, max |dx|]: a bin's narrow range of dx narrows the window
 // of u from which a run can be reached (the swizzle's per-view column range, for a continuum of
 // views).
-constexpr int kOffsetBins = 16;
+constexpr int kOffsetBins = 8;
+constexpr size_t kJoinSlots = 8;
 
 // Texel access for the one-ray definition (composite_ray).
 struct U8Texels {
@@ -92,27 +93,23 @@ size_t gallop(const float* u, size_t lo, size_t hi, float value) {
 }
 
 // A window of slots [i0, i1) sampling the blended row at buffer coordinate
-// px = dx ax + u au + a0. Branch-free, so the compiler can run it on vectors of rays (the
-// gathers of AVX2 / AVX-512 where the CPU has them; see kSimdClones): a ray already below
-// kMinTransmittance samples an empty texel (c = 0, T = 1), which leaves it as it is. Returns how
-// many rays fell below kMinTransmittance.
+// px = dx ax + u au + a0. Branch-free (the rays' outcomes do not predict each other): a ray
+// already below kMinTransmittance samples an empty texel (c = 0, T = 1), which leaves it as it
+// is. Returns how many rays fell below kMinTransmittance. (Vectorising it with omp simd and
+// AVX2 / AVX-512 clones was tried: GCC 12 emulates the four gathers with scalar loads at its
+// generic tuning and the windows are short, so it measured no faster and was dropped.)
 struct Window {
   const float* values;  // BlendedPlaneRow::values
   const float* trans_row;
-  int stride, length;
+  int length;
   float ax, au, a0;
   const float* dx;
   const float* u;
-  const int32_t* channel;
+  const int32_t* channel_offset;
   float* colour;
   float* trans;
 };
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define LFD_SIMD_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
-#else
-#define LFD_SIMD_CLONES
-#endif
 
 // x clamped to [0, top], NaN to 0; in selects the vectorizer turns into min / max.
 inline float clamp_to(float x, float top) {
@@ -120,20 +117,18 @@ inline float clamp_to(float x, float top) {
   return low < top ? low : top;
 }
 
-LFD_SIMD_CLONES int sample_bilinear(const Window& w, size_t i0, size_t i1) {
+int sample_bilinear(const Window& w, size_t i0, size_t i1) {
   const float* __restrict values = w.values;
   const float* __restrict trans_row = w.trans_row;
   float* __restrict colour = w.colour;
   float* __restrict trans = w.trans;
   const float* __restrict dx = w.dx;
   const float* __restrict u = w.u;
-  const int32_t* __restrict channel = w.channel;
+  const int32_t* __restrict channel_offset = w.channel_offset;
   const float ax = w.ax, au = w.au, a0 = w.a0;
-  const int stride = w.stride;
   const float top = float(w.length - 1);
   const int last0 = w.length - 2;
   int fell = 0;
-#pragma omp simd reduction(+ : fell)
   for (size_t i = i0; i < i1; ++i) {
     const float t = trans[i];
     const bool live = t >= kMinTransmittance;
@@ -142,7 +137,7 @@ LFD_SIMD_CLONES int sample_bilinear(const Window& w, size_t i0, size_t i1) {
     const int col0_raw = int(px);
     const int col0 = col0_raw < last0 ? col0_raw : last0;
     const float fx = px - float(col0);
-    const int at = channel[i] * stride + col0;
+    const int at = channel_offset[i] + col0;
     const float c0 = values[at], c1 = values[at + 1];
     const float t0 = trans_row[col0], t1 = trans_row[col0 + 1];
     const float c_sampled = c0 + fx * (c1 - c0), a_sampled = t0 + fx * (t1 - t0);
@@ -156,25 +151,23 @@ LFD_SIMD_CLONES int sample_bilinear(const Window& w, size_t i0, size_t i1) {
   return fell;
 }
 
-LFD_SIMD_CLONES int sample_nearest(const Window& w, size_t i0, size_t i1) {
+int sample_nearest(const Window& w, size_t i0, size_t i1) {
   const float* __restrict values = w.values;
   const float* __restrict trans_row = w.trans_row;
   float* __restrict colour = w.colour;
   float* __restrict trans = w.trans;
   const float* __restrict dx = w.dx;
   const float* __restrict u = w.u;
-  const int32_t* __restrict channel = w.channel;
+  const int32_t* __restrict channel_offset = w.channel_offset;
   const float ax = w.ax, au = w.au, a0 = w.a0;
-  const int stride = w.stride;
   const float top = float(w.length - 1);
   int fell = 0;
-#pragma omp simd reduction(+ : fell)
   for (size_t i = i0; i < i1; ++i) {
     const float t = trans[i];
     const bool live = t >= kMinTransmittance;
     const float px = clamp_to(dx[i] * ax + u[i] * au + a0, top);
     const int col = int(px + 0.5f);
-    const float c_sampled = values[channel[i] * stride + col], a_sampled = trans_row[col];
+    const float c_sampled = values[channel_offset[i] + col], a_sampled = trans_row[col];
     const float c = live ? c_sampled : 0.0f;
     const float a = live ? a_sampled : 1.0f;
     const float t_after = t * a;
@@ -238,6 +231,8 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
   s.dx.resize(n);
   s.u.resize(n);
   s.channel.resize(n);
+  s.channel_offset.resize(n);
+  const int stride = BlendedPlaneRow::stride_for(planes_);
   s.colour.assign(n, 0.0f);
   s.trans.assign(n, 1.0f);
   s.bin_dx_min.assign(kOffsetBins, 0.0f);
@@ -254,6 +249,7 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
     s.dx[slot] = r.dx;
     s.u[slot] = r.u_ndc;
     s.channel[slot] = r.channel;
+    s.channel_offset[slot] = r.channel * stride;
     float& lo = s.bin_dx_min[size_t(b)];
     float& hi = s.bin_dx_max[size_t(b)];
     if (s.bin_active[size_t(b)]++ == 0) lo = hi = r.dx;
@@ -271,8 +267,8 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
   const float a0 = half_w - 0.5f - float(row.first_column);
   const bool bilinear = filter_ == PlaneFilter::kBilinear;
   const size_t runs = row.runs.size();
-  const Window window{row.values.data(), row.channel(3), row.stride, row.length, ax, au, a0, s.dx.data(),
-                      s.u.data(), s.channel.data(), s.colour.data(), s.trans.data()};
+  const Window window{row.values.data(), row.channel(3), row.length, ax, au, a0, s.dx.data(),
+                      s.u.data(), s.channel_offset.data(), s.colour.data(), s.trans.data()};
   for (int b = 0; b < kOffsetBins; ++b) {
     int& bin_active = s.bin_active[size_t(b)];
     if (bin_active == 0) continue;
@@ -281,6 +277,13 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
     const float m1 = std::max(s.bin_dx_min[size_t(b)] * ax, s.bin_dx_max[size_t(b)] * ax);
     const int before = bin_active;
     size_t cursor = begin;
+    // Windows closer than kJoinSlots are sampled as one: the rays between them sample empty
+    // texels (an exact no-op), and longer windows keep the vector lanes full.
+    size_t pending0 = begin, pending1 = begin;
+    const auto flush = [&] {
+      if (pending1 > pending0)
+        bin_active -= bilinear ? sample_bilinear(window, pending0, pending1) : sample_nearest(window, pending0, pending1);
+    };
     for (size_t r = 0; r < runs && cursor < end; ++r) {
       // Runs in order of u: forwards when u' grows with u.
       const auto& run = row.runs[au >= 0.0f ? r : runs - 1 - r];
@@ -296,9 +299,16 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
       }
       const size_t i0 = gallop(s.u.data(), cursor, end, u_lo);
       const size_t i1 = gallop(s.u.data(), i0, end, std::nextafter(u_hi, 1e30f));
-      bin_active -= bilinear ? sample_bilinear(window, i0, i1) : sample_nearest(window, i0, i1);
+      if (i0 <= pending1 + kJoinSlots) {
+        pending1 = std::max(pending1, i1);
+      } else {
+        flush();
+        pending0 = i0;
+        pending1 = i1;
+      }
       cursor = i1;
     }
+    flush();
     active -= before - bin_active;
   }
 }

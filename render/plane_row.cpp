@@ -75,7 +75,7 @@ bool blend_plane_row(const SweepingPlanes& planes, int k, int row0, int row1, fl
   if (first > last) return false;
   out.first_column = first - BlendedPlaneRow::kPad;
   out.length = last - first + 1 + 2 * BlendedPlaneRow::kPad;
-  out.stride = (out.length + 15) & ~15;
+  out.stride = BlendedPlaneRow::stride_for(planes);
   if (out.values.size() < 4 * size_t(out.stride)) out.values.resize(4 * size_t(out.stride));
   for (int c = 0; c < 4; ++c)
     for (int p = 0; p < BlendedPlaneRow::kPad; ++p) {

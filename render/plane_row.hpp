@@ -18,7 +18,9 @@ struct BlendedPlaneRow {
   static constexpr int kPad = 2;
   int first_column = 0;  // plane column of array index 0 (the first non-empty one - kPad)
   int length = 0;        // texels stored per channel, pads included
-  int stride = 0;        // floats between two channels' arrays
+  int stride = 0;        // floats between two channels' arrays: stride_for(planes), every row
+  // The same for every row of the planes, so a ray's channel offset is computed once.
+  static int stride_for(const SweepingPlanes& planes) { return (planes.width + 2 * kPad + 15) & ~15; }
   std::vector<float> values;  // R, G, B (premultiplied) and T, `stride` floats each
   // Non-empty plane columns [a, b], increasing; runs closer than kMergeGap texels are merged
   // (a few empty samples cost less than another window of rays).
