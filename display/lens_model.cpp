@@ -40,18 +40,44 @@ ScreenUV LensModel::subpixel_uv(int x, int row_top_down, int channel) const {
   }
   // 2.3: the cell pattern uses bottom-up row indices (the parity differs from top-down).
   const int j = calibration_.screen_h - 1 - row_top_down;
-  int cell = 0;
-  switch (calibration_.cell_pattern_mode) {
-    case 1: cell = (x + j) % 2; break;
-    case 2: cell = x % 2; break;
-    case 3: cell = (j + 2 * (x % 2)) % 4; break;
-    case 4: cell = j % 2; break;
-    default: cell = 0; break;
-  }
-  const ScreenUV& d = cell_offsets_[size_t(cell) % cell_offsets_.size()][channel];
+  const ScreenUV& d = cell_offsets_[size_t(cell_index(x, j)) % cell_offsets_.size()][channel];
   p.u += d.u;
   p.v += d.v;
   return p;
+}
+
+int LensModel::cell_index(int x, int j) const {
+  switch (calibration_.cell_pattern_mode) {
+    case 1: return (x + j) % 2;
+    case 2: return x % 2;
+    case 3: return (j + 2 * (x % 2)) % 4;
+    case 4: return j % 2;
+    default: return 0;
+  }
+}
+
+void LensModel::row_view_fractions(int row_top_down, double* out) const {
+  const auto& c = calibration_;
+  // The same operations as subpixel_uv, phase and view_fraction, in the same order, so the
+  // results are equal bit for bit (tests/display/lens_model_test.cpp); only the parts shared
+  // along the row are hoisted.
+  const double v = pixel_uv(0, row_top_down).v;
+  if (cell_offsets_.empty()) {
+    std::array<double, 3> du;
+    for (int ch = 0; ch < 3; ++ch) du[size_t(ch)] = physical_index_[size_t(ch)] / (3.0 * c.screen_w);
+    for (int x = 0; x < c.screen_w; ++x) {
+      const double u = (x + 0.5) / c.screen_w;
+      for (int ch = 0; ch < 3; ++ch) out[3 * size_t(x) + size_t(ch)] = view_fraction(phase(ScreenUV{u + du[size_t(ch)], v}));
+    }
+    return;
+  }
+  const int j = c.screen_h - 1 - row_top_down;
+  for (int x = 0; x < c.screen_w; ++x) {
+    const double u = (x + 0.5) / c.screen_w;
+    const auto& cell = cell_offsets_[size_t(cell_index(x, j)) % cell_offsets_.size()];
+    for (int ch = 0; ch < 3; ++ch)
+      out[3 * size_t(x) + size_t(ch)] = view_fraction(phase(ScreenUV{u + cell[size_t(ch)].u, v + cell[size_t(ch)].v}));
+  }
 }
 
 double LensModel::phase(ScreenUV p) const {

@@ -221,40 +221,45 @@ float PlaneRays::composite_ray(const PlaneRay& ray, float v_ndc) const {
 
 void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Scratch& s) const {
   const size_t n = rays.size();
-  const auto bin_of = [&](float dx) {
-    return max_abs_dx > 0.0f ? std::clamp(int((dx / max_abs_dx + 1.0f) * 0.5f * kOffsetBins), 0, kOffsetBins - 1) : 0;
-  };
+  // A bin is only a grouping (its range of dx comes from its members), so its edges need not be
+  // exact: dx scaled once, no division per ray.
+  const float scale = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) / max_abs_dx : 0.0f;
+  const float centre = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) : 0.0f;
+  s.bin.resize(n);
+  s.bin_dx_min.assign(kOffsetBins, 0.0f);
+  s.bin_dx_max.assign(kOffsetBins, 0.0f);
+  s.bin_active.assign(kOffsetBins, 0);
+  for (size_t i = 0; i < n; ++i) {
+    const float dx = rays[i].dx;
+    const int b = std::clamp(int(dx * scale + centre), 0, kOffsetBins - 1);
+    s.bin[i] = uint8_t(b);
+    float& lo = s.bin_dx_min[size_t(b)];
+    float& hi = s.bin_dx_max[size_t(b)];
+    if (s.bin_active[size_t(b)]++ == 0) lo = hi = dx;
+    lo = std::min(lo, dx);
+    hi = std::max(hi, dx);
+  }
   s.bin_begin.assign(kOffsetBins + 1, 0);
-  for (const PlaneRay& r : rays) ++s.bin_begin[size_t(bin_of(r.dx)) + 1];
-  for (int b = 0; b < kOffsetBins; ++b) s.bin_begin[size_t(b) + 1] += s.bin_begin[size_t(b)];
+  for (int b = 0; b < kOffsetBins; ++b) s.bin_begin[size_t(b) + 1] = s.bin_begin[size_t(b)] + uint32_t(s.bin_active[size_t(b)]);
   s.ray.resize(n);
   s.dx.resize(n);
   s.u.resize(n);
   s.channel.resize(n);
   s.channel_offset.resize(n);
-  const int stride = BlendedPlaneRow::stride_for(planes_);
   s.colour.assign(n, 0.0f);
   s.trans.assign(n, 1.0f);
-  s.bin_dx_min.assign(kOffsetBins, 0.0f);
-  s.bin_dx_max.assign(kOffsetBins, 0.0f);
-  s.bin_active.assign(kOffsetBins, 0);
+  const int stride = BlendedPlaneRow::stride_for(planes_);
   std::array<uint32_t, kOffsetBins> next;
   for (int b = 0; b < kOffsetBins; ++b) next[size_t(b)] = s.bin_begin[size_t(b)];
   // Stable: within a bin the rays keep their order of u.
   for (size_t i = 0; i < n; ++i) {
     const PlaneRay& r = rays[i];
-    const int b = bin_of(r.dx);
-    const uint32_t slot = next[size_t(b)]++;
+    const uint32_t slot = next[s.bin[i]]++;
     s.ray[slot] = uint32_t(i);
     s.dx[slot] = r.dx;
     s.u[slot] = r.u_ndc;
     s.channel[slot] = r.channel;
     s.channel_offset[slot] = r.channel * stride;
-    float& lo = s.bin_dx_min[size_t(b)];
-    float& hi = s.bin_dx_max[size_t(b)];
-    if (s.bin_active[size_t(b)]++ == 0) lo = hi = r.dx;
-    lo = std::min(lo, r.dx);
-    hi = std::max(hi, r.dx);
   }
 }
 

@@ -39,6 +39,7 @@ class PlaneRays {
     std::vector<uint32_t> ray;  // the rays grouped by offset bin, in order of u within a bin
     std::vector<float> dx, u, colour, trans;
     std::vector<int32_t> channel, channel_offset;  // channel_offset: channel x BlendedPlaneRow::stride
+    std::vector<uint8_t> bin;  // per ray, in the order given
     std::vector<uint32_t> bin_begin;
     std::vector<float> bin_dx_min, bin_dx_max;
     std::vector<int> bin_active;

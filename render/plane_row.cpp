@@ -2,6 +2,7 @@
 #include "render/plane_row.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <cstring>
 
@@ -12,13 +13,22 @@ namespace {
 // make_sweeping_planes (render/sweeping_planes.cpp).
 struct U8Source {
   const uint8_t* data;
-  static float unit(uint8_t v) { return float(v) / 255.0f; }
+  const float* unit = units().data();
+  // v / 255 as the swizzle's table has it, without a division per channel.
+  static const std::array<float, 256>& units() {
+    static const std::array<float, 256> table = [] {
+      std::array<float, 256> t{};
+      for (int i = 0; i < 256; ++i) t[size_t(i)] = float(i) / 255.0f;
+      return t;
+    }();
+    return table;
+  }
   bool load(size_t texel, float out[4]) const {
     const uint8_t* t = data + texel * 4;
-    out[0] = unit(t[0]);
-    out[1] = unit(t[1]);
-    out[2] = unit(t[2]);
-    out[3] = unit(t[3]);
+    out[0] = unit[t[0]];
+    out[1] = unit[t[1]];
+    out[2] = unit[t[2]];
+    out[3] = unit[t[3]];
     return !(t[0] == 0 && t[1] == 0 && t[2] == 0 && t[3] == 255);
   }
 };
