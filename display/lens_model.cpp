@@ -71,18 +71,23 @@ void LensModel::row_view_fractions(int row_top_down, double* out) const {
     }
     return;
   }
+  // Every cell pattern depends on x through its parity only: the row's two cells once.
   const int j = c.screen_h - 1 - row_top_down;
+  const std::array<ScreenUV, 3>* cells[2] = {&cell_offsets_[size_t(cell_index(0, j)) % cell_offsets_.size()],
+                                             &cell_offsets_[size_t(cell_index(1, j)) % cell_offsets_.size()]};
   for (int x = 0; x < c.screen_w; ++x) {
     const double u = (x + 0.5) / c.screen_w;
-    const auto& cell = cell_offsets_[size_t(cell_index(x, j)) % cell_offsets_.size()];
+    const auto& cell = *cells[x & 1];
     for (int ch = 0; ch < 3; ++ch)
       out[3 * size_t(x) + size_t(ch)] = view_fraction(phase(ScreenUV{u + cell[size_t(ch)].u, v + cell[size_t(ch)].v}));
   }
 }
 
 double LensModel::phase(ScreenUV p) const {
-  return (p.u + p.v * tilt_) * pitch_periods_ - calibration_.center_periods +
-         correction_(p.u, p.v);
+  const double a = (p.u + p.v * tilt_) * pitch_periods_ - calibration_.center_periods;
+  // Without a field w = 0: no call per subpixel (a + 0.0 would be a, up to the sign of a zero,
+  // which no fraction sees).
+  return correction_.empty() ? a : a + correction_(p.u, p.v);
 }
 
 double LensModel::view_fraction(double a) const {

@@ -226,19 +226,21 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
   const float scale = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) / max_abs_dx : 0.0f;
   const float centre = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) : 0.0f;
   s.bin.resize(n);
-  s.bin_dx_min.assign(kOffsetBins, 0.0f);
-  s.bin_dx_max.assign(kOffsetBins, 0.0f);
-  s.bin_active.assign(kOffsetBins, 0);
+  std::array<float, kOffsetBins> lo, hi;
+  std::array<int, kOffsetBins> count{};
+  lo.fill(1e30f);
+  hi.fill(-1e30f);
   for (size_t i = 0; i < n; ++i) {
     const float dx = rays[i].dx;
     const int b = std::clamp(int(dx * scale + centre), 0, kOffsetBins - 1);
     s.bin[i] = uint8_t(b);
-    float& lo = s.bin_dx_min[size_t(b)];
-    float& hi = s.bin_dx_max[size_t(b)];
-    if (s.bin_active[size_t(b)]++ == 0) lo = hi = dx;
-    lo = std::min(lo, dx);
-    hi = std::max(hi, dx);
+    ++count[size_t(b)];
+    lo[size_t(b)] = std::min(lo[size_t(b)], dx);
+    hi[size_t(b)] = std::max(hi[size_t(b)], dx);
   }
+  s.bin_dx_min.assign(lo.begin(), lo.end());
+  s.bin_dx_max.assign(hi.begin(), hi.end());
+  s.bin_active.assign(count.begin(), count.end());
   s.bin_begin.assign(kOffsetBins + 1, 0);
   for (int b = 0; b < kOffsetBins; ++b) s.bin_begin[size_t(b) + 1] = s.bin_begin[size_t(b)] + uint32_t(s.bin_active[size_t(b)]);
   s.ray.resize(n);
