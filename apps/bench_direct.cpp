@@ -11,6 +11,7 @@
 #include "render/g2lf.hpp"
 #include "util/atomic_file.hpp"
 #include "util/data_dir.hpp"
+#include "util/error.hpp"
 
 namespace lfd::apps {
 
@@ -25,7 +26,8 @@ int RunBenchDirect(int argc, char** argv) {
       "\nExamples:\n"
       "  lfd bench direct --quick\n"
       "  lfd bench direct --chunks 16,64,256 --json direct.json\n"
-      "  lfd bench direct --scene ../shared/data/scenes/guitar.compressed.ply --generated 0 --reference-views 0",
+      "  lfd bench direct --scene ../shared/data/scenes/guitar.compressed.ply --generated 0 --reference-views 0\n"
+      "  lfd bench direct --method v2lf --voxel-level 8 --reference-views 0",
       "direct"};
   bench::DirectBenchOptions o;
   std::string backend = "cpu", json_path;
@@ -35,6 +37,15 @@ int RunBenchDirect(int argc, char** argv) {
   o.calibrations = {(displays / "portrait.visual.json").string(), (displays / "16in-landscape-gen3.visual.json").string(),
                     (displays / "go.visual.json").string()};
   bool quick = false;
+  std::string method = "g2lf";
+  std::vector<int> voxel_levels = {8};
+  app.add_option("--method", method,
+                 "the planes: g2lf (Gaussian scenes) or v2lf (voxel scenes: --scene files are voxel scenes, "
+                 "--voxel-level the generated ones)")
+      ->check(CLI::IsMember({"g2lf", "v2lf"}))->capture_default_str();
+  app.add_option("--voxel-level", voxel_levels,
+                 "with --method v2lf: finest levels of generated voxel tabletops, comma-separated (0: none)")
+      ->delimiter(',')->capture_default_str();
   std::string direct_filter = "bilinear";
   app.add_option("--direct-filter", direct_filter,
                  "the direct pass's plane sampling, nearest or bilinear (the quilt path: nearest, then the "
@@ -54,23 +65,34 @@ int RunBenchDirect(int argc, char** argv) {
                  "views of the continuous reference (per-view renders; 0: no PSNR)")->capture_default_str();
   app.add_option("--view-height", o.view_height, "view height in pixels (width: the display's aspect)")
       ->capture_default_str();
-  app.add_flag("--quick", quick, "a short run: the Go only, 20k Gaussians, 64 reference views, 2 runs");
+  app.add_flag("--quick", quick,
+               "a short run: the Go only, 20k Gaussians (v2lf: voxel level 7), 64 reference views, 2 runs");
   app.add_option("--json", json_path, "write the figures as JSON to this file");
   if (auto code = parse(app, argc, argv)) return *code;
   o.direct_filter = render::parse_plane_filter(direct_filter);
+  const bool voxels = method == "v2lf";
+  if (voxels && app.count("--generated")) throw_input_error("bench direct: --generated: applies to --method g2lf only");
+  if (!voxels && app.count("--voxel-level")) throw_input_error("bench direct: --voxel-level: applies to --method v2lf only");
+  o.kind = voxels ? lightfield::SceneKind::kVoxels : lightfield::SceneKind::kGaussians;
   if (quick) {
     if (!app.count("--calibration")) o.calibrations = {(displays / "go.visual.json").string()};
     if (!app.count("--generated")) generated = scene_files.empty() ? std::vector<size_t>{20000} : std::vector<size_t>{};
+    if (!app.count("--voxel-level")) voxel_levels = scene_files.empty() ? std::vector<int>{7} : std::vector<int>{};
     if (!app.count("--reference-views")) o.reference_views = 64;
     if (!app.count("--runs")) o.runs = 2;
   }
   for (const std::string& f : scene_files) o.scenes.push_back({f, 0});
-  for (size_t n : generated)
-    if (n > 0) o.scenes.push_back({"", n});
+  if (voxels) {
+    for (int level : voxel_levels)
+      if (level > 0) o.scenes.push_back({"", size_t(level)});
+  } else {
+    for (size_t n : generated)
+      if (n > 0) o.scenes.push_back({"", n});
+  }
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
-  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, o.kind);
   const nlohmann::ordered_json result = bench::run_direct_benchmark(
       *renderers.sweeping, o.reference_views > 0 ? renderers.per_view.get() : nullptr, o);
   if (!json_path.empty()) {

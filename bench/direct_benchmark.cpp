@@ -23,6 +23,8 @@
 #include "render/scene_generator.hpp"
 #include "render/scene_io.hpp"
 #include "util/error.hpp"
+#include "voxel/voxel_generator.hpp"
+#include "voxel/voxel_io.hpp"
 
 namespace lfd::bench {
 namespace {
@@ -156,8 +158,7 @@ class Runner {
         std::printf("\nskipped %s: not found\n", source.path.c_str());
         continue;
       }
-      const lightfield::LightFieldScene scene(source.path.empty() ? generated(source.generated)
-                                                                  : render::load_scene(source.path));
+      const lightfield::LightFieldScene scene = load(source);
       sweeping_.set_scene(scene);
       if (per_view_) per_view_->set_scene(scene);
       for (const std::string& calibration : options_.calibrations)
@@ -167,10 +168,22 @@ class Runner {
   }
 
  private:
-  static render::GaussianScene generated(size_t gaussians) {
+  lightfield::LightFieldScene load(const SceneSource& source) const {
+    if (options_.kind == lightfield::SceneKind::kVoxels) {
+      if (!source.path.empty()) return lightfield::LightFieldScene(voxel::load_voxel_scene(source.path));
+      voxel::VoxelGeneratorOptions g;
+      g.detail_level = int(source.generated);
+      return lightfield::LightFieldScene(voxel::generate_voxel_scene(g));
+    }
+    if (!source.path.empty()) return lightfield::LightFieldScene(render::load_scene(source.path));
     render::SceneGeneratorOptions g;
-    g.count = gaussians;
-    return render::generate_scene(g);
+    g.count = source.generated;
+    return lightfield::LightFieldScene(render::generate_scene(g));
+  }
+  std::string label(const SceneSource& source) const {
+    if (options_.kind == lightfield::SceneKind::kVoxels && source.path.empty())
+      return fmt::format("generated voxel tabletop (level {})", source.generated);
+    return source.label();
   }
 
   nlohmann::ordered_json run_table(const SceneSource& source, const lightfield::LightFieldScene& scene,
@@ -178,7 +191,7 @@ class Runner {
     const display::LensModel lens(f.calibration.display, f.calibration.correction);
     const auto& cal = f.calibration.display;
     std::printf("\n#### %s on %s (%dx%d panel): %zu %s, %d views of %dx%d (%dx%d quilt), view cone %.0f deg\n\n",
-                source.label().c_str(), f.display_name.c_str(), cal.screen_w, cal.screen_h, scene.size(),
+                label(source).c_str(), f.display_name.c_str(), cal.screen_w, cal.screen_h, scene.size(),
                 scene.primitives(), f.geometry.views, f.geometry.base.width, f.geometry.base.height,
                 f.layout.width, f.layout.height, f.quilt.view_cone_deg);
     std::optional<ImageF> reference;
@@ -191,7 +204,8 @@ class Runner {
                 "| frame: quilt [s] | frame: direct [s] | speed-up | quilt [MB] | PSNR direct [dB] "
                 "| PSNR quilt nearest [dB] | PSNR quilt linear [dB] |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
-    nlohmann::ordered_json table = {{"scene", source.label()},
+    nlohmann::ordered_json table = {{"scene", label(source)},
+                                    {"method", options_.kind == lightfield::SceneKind::kVoxels ? "V2LF" : "G2LF"},
                                     {"primitives", scene.size()},
                                     {"display", f.display_name},
                                     {"panel", {cal.screen_w, cal.screen_h}},
@@ -289,6 +303,13 @@ void DirectBenchOptions::check() const {
   if (reference_views != 0 && (reference_views < 2 || reference_views > 4096))
     fail("reference_views", fmt::format("{} is outside 2..4096 (0: none)", reference_views));
   if (view_height < 16 || view_height > 4096) fail("view_height", fmt::format("{} is outside 16..4096", view_height));
+  if (kind == lightfield::SceneKind::kVoxels)
+    for (const SceneSource& s : scenes)
+      if (s.path.empty()) {
+        voxel::VoxelGeneratorOptions g;
+        g.detail_level = int(s.generated);
+        g.check();
+      }
 }
 
 nlohmann::ordered_json run_direct_benchmark(lightfield::LightFieldRenderer& sweeping,

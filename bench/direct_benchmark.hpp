@@ -30,6 +30,10 @@ struct DirectBenchOptions {
   // The direct pass's plane sampling (the quilt path keeps the renderer's): bilinear stands in
   // for the interlacer's bilinear lookup in the quilt, which the direct pass does not have.
   render::PlaneFilter direct_filter = render::PlaneFilter::kBilinear;
+  // kGaussians: G2LF planes of Gaussian scenes (SceneSource::generated = Gaussians of a generated
+  // tabletop); kVoxels: V2LF planes of voxel scenes (generated = the generated voxel tabletop's
+  // finest level, voxel/voxel_generator.hpp). The renderers must be of this kind.
+  lightfield::SceneKind kind = lightfield::SceneKind::kGaussians;
 
 
   // InputError "direct benchmark: <field>: ..." for a value out of range.

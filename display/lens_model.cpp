@@ -40,23 +40,54 @@ ScreenUV LensModel::subpixel_uv(int x, int row_top_down, int channel) const {
   }
   // 2.3: the cell pattern uses bottom-up row indices (the parity differs from top-down).
   const int j = calibration_.screen_h - 1 - row_top_down;
-  int cell = 0;
-  switch (calibration_.cell_pattern_mode) {
-    case 1: cell = (x + j) % 2; break;
-    case 2: cell = x % 2; break;
-    case 3: cell = (j + 2 * (x % 2)) % 4; break;
-    case 4: cell = j % 2; break;
-    default: cell = 0; break;
-  }
-  const ScreenUV& d = cell_offsets_[size_t(cell) % cell_offsets_.size()][channel];
+  const ScreenUV& d = cell_offsets_[size_t(cell_index(x, j)) % cell_offsets_.size()][channel];
   p.u += d.u;
   p.v += d.v;
   return p;
 }
 
+int LensModel::cell_index(int x, int j) const {
+  switch (calibration_.cell_pattern_mode) {
+    case 1: return (x + j) % 2;
+    case 2: return x % 2;
+    case 3: return (j + 2 * (x % 2)) % 4;
+    case 4: return j % 2;
+    default: return 0;
+  }
+}
+
+void LensModel::row_view_fractions(int row_top_down, double* out) const {
+  const auto& c = calibration_;
+  // The same operations as subpixel_uv, phase and view_fraction, in the same order, so the
+  // results are equal bit for bit (tests/display/lens_model_test.cpp); only the parts shared
+  // along the row are hoisted.
+  const double v = pixel_uv(0, row_top_down).v;
+  if (cell_offsets_.empty()) {
+    std::array<double, 3> du;
+    for (int ch = 0; ch < 3; ++ch) du[size_t(ch)] = physical_index_[size_t(ch)] / (3.0 * c.screen_w);
+    for (int x = 0; x < c.screen_w; ++x) {
+      const double u = (x + 0.5) / c.screen_w;
+      for (int ch = 0; ch < 3; ++ch) out[3 * size_t(x) + size_t(ch)] = view_fraction(phase(ScreenUV{u + du[size_t(ch)], v}));
+    }
+    return;
+  }
+  // Every cell pattern depends on x through its parity only: the row's two cells once.
+  const int j = c.screen_h - 1 - row_top_down;
+  const std::array<ScreenUV, 3>* cells[2] = {&cell_offsets_[size_t(cell_index(0, j)) % cell_offsets_.size()],
+                                             &cell_offsets_[size_t(cell_index(1, j)) % cell_offsets_.size()]};
+  for (int x = 0; x < c.screen_w; ++x) {
+    const double u = (x + 0.5) / c.screen_w;
+    const auto& cell = *cells[x & 1];
+    for (int ch = 0; ch < 3; ++ch)
+      out[3 * size_t(x) + size_t(ch)] = view_fraction(phase(ScreenUV{u + cell[size_t(ch)].u, v + cell[size_t(ch)].v}));
+  }
+}
+
 double LensModel::phase(ScreenUV p) const {
-  return (p.u + p.v * tilt_) * pitch_periods_ - calibration_.center_periods +
-         correction_(p.u, p.v);
+  const double a = (p.u + p.v * tilt_) * pitch_periods_ - calibration_.center_periods;
+  // Without a field w = 0: no call per subpixel (a + 0.0 would be a, up to the sign of a zero,
+  // which no fraction sees).
+  return correction_.empty() ? a : a + correction_(p.u, p.v);
 }
 
 double LensModel::view_fraction(double a) const {

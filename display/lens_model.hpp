@@ -52,6 +52,11 @@ class LensModel {
   double subpixel_view_fraction(int x, int row_top_down, int channel) const {
     return view_fraction(phase(subpixel_uv(x, row_top_down, channel)));
   }
+  // subpixel_view_fraction of every subpixel of panel row `row_top_down`, bit for bit:
+  // out[3 x + c] for x < screen_w, with the row's and each column's part of subpixel_uv computed
+  // once (the direct panel pass and the interlacer go a row at a time; docs/performance.md
+  // "Where the direct pass's time went"). `out` holds 3 screen_w values.
+  void row_view_fractions(int row_top_down, double* out) const;
   // The phase within lens m that shows view fraction f (inverse of view_fraction).
   double phase_for_fraction(double f, double lens_index) const;
   // floor(f * views), clamped to [0, views - 1].
@@ -62,6 +67,9 @@ class LensModel {
   CorrectionField correction_;
   double pitch_periods_ = 0;
   double tilt_ = 0;
+  // The Gen3 cell of pixel x in bottom-up row j (reference/looking-glass.md 2.3).
+  int cell_index(int x, int j) const;
+
   std::array<int, 3> physical_index_{0, 1, 2};  // flipSubp: R and B swap positions
   std::vector<std::array<ScreenUV, 3>> cell_offsets_;  // Gen3 cells, normalised once
 };

@@ -22,33 +22,41 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
   const auto& cal = lens.calibration();
   ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
   const render::PlaneRays rays(planes, geometry, ref, options.filter, options.background);
-  const double view_aspect = double(geometry.base.width) / double(geometry.base.height);
+  const AspectFit fit =
+      aspect_fit(cal, double(geometry.base.width) / double(geometry.base.height), options.overscan);
   // Fractions lie in [0, 1]: offsets within the cone's edges s = +-1/2.
   const float max_abs_dx = std::abs(geometry.view_offset_at(0.5f));
+  // view_offset_at is linear in the position: its slope once, not a tan() per subpixel.
+  const float offset_per_position = geometry.view_offset_at(1.0f);
 #pragma omp parallel
   {
     std::vector<render::PlaneRay> row_rays;
     std::vector<int> row_x;
     std::vector<float> values;
+    std::vector<double> fractions(3 * size_t(cal.screen_w));
+    render::PlaneRays::Scratch scratch;
 #pragma omp for schedule(dynamic, 8)
     for (int row = 0; row < cal.screen_h; ++row) {
       row_rays.clear();
       row_x.clear();
       double tile_v = 0;
+      lens.row_view_fractions(row, fractions.data());
       for (int x = 0; x < cal.screen_w; ++x) {
-        const TilePoint t = tile_point(lens, view_aspect, options.overscan, x, row);
+        const TilePoint t = tile_point(lens, fit, x, row);
         if (!t.inside) continue;
         tile_v = t.v;  // the same for every pixel of the row
         for (int c = 0; c < 3; ++c) {
-          const double f = panel_view_fraction(lens, options.invert_views, x, row, c);
-          row_rays.push_back({geometry.view_offset_at(view_position_of_fraction(f)), float(2.0 * t.u - 1.0), c});
+          // panel_view_fraction, from the row's fractions.
+          const double lens_f = fractions[3 * size_t(x) + size_t(c)];
+          const double f = options.invert_views ? 1.0 - lens_f : lens_f;
+          row_rays.push_back({offset_per_position * view_position_of_fraction(f), float(2.0 * t.u - 1.0), c});
           row_x.push_back(x);
         }
       }
       if (row_rays.empty()) continue;
       // Base-camera NDC of the view row, top-down as the planes' rows ((2 y + 1) / H - 1 at tile
       // row y, v = 1 - (y + 1/2) / H).
-      rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values);
+      rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values, scratch);
       const double gain = fringe_gain(cal, row);
       for (size_t i = 0; i < row_rays.size(); ++i) panel.at(row_x[i], row, row_rays[i].channel) = float(values[i] * gain);
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "util/error.hpp"
 
@@ -21,6 +22,7 @@ Interlacer::Interlacer(const display::LensModel& lens, const render::QuiltLayout
                        InterlaceOptions options)
     : lens_(lens), layout_(layout), options_(options) {
   layout_.check("quilt");
+  fit_ = aspect_fit(lens.calibration(), layout_.aspect, options_.overscan);
 }
 
 AspectFit aspect_fit(const display::DisplayCalibration& cal, double view_aspect, bool overscan) {
@@ -30,8 +32,11 @@ AspectFit aspect_fit(const display::DisplayCalibration& cal, double view_aspect,
 }
 
 TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row) {
+  return tile_point(lens, aspect_fit(lens.calibration(), view_aspect, overscan), x, row);
+}
+
+TilePoint tile_point(const display::LensModel& lens, const AspectFit& fit, int x, int row) {
   const display::ScreenUV p = lens.pixel_uv(x, row);
-  const AspectFit fit = aspect_fit(lens.calibration(), view_aspect, overscan);
   TilePoint t{true, (p.u - 0.5) * fit.scale_u + 0.5, (p.v - 0.5) * fit.scale_v + 0.5};
   t.inside = !(t.u < 0 || t.u > 1 || t.v < 0 || t.v > 1);
   return t;
@@ -43,8 +48,12 @@ double fringe_gain(const display::DisplayCalibration& cal, int row) {
 }
 
 SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
+  const TilePoint point = tile_point(lens_, fit_, x, row);
+  return sample_at(point, point.inside ? lens_.subpixel_view_fraction(x, row, channel) : 0.0);
+}
+
+SubpixelSample Interlacer::sample_at(const TilePoint& point, double lens_fraction) const {
   SubpixelSample s;
-  const TilePoint point = tile_point(lens_, layout_.aspect, options_.overscan, x, row);
   s.tile_u = point.u;
   s.tile_v = point.v;
   if (!point.inside) {
@@ -53,7 +62,7 @@ SubpixelSample Interlacer::sample_for(int x, int row, int channel) const {
   }
 
   const int views = layout_.views;
-  double f = lens_.subpixel_view_fraction(x, row, channel);
+  double f = lens_fraction;
   if (options_.invert_views) f = 1.0 - f;
   if (options_.blend == ViewBlend::kNearest) {
     s.view_a = s.view_b = display::LensModel::view_index(f, views);
@@ -92,13 +101,18 @@ ImageF Interlacer::interlace(const ImageF& quilt) const {
   const auto& cal = lens_.calibration();
   ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
   const int channels = quilt.channels;
-#pragma omp parallel for schedule(dynamic, 8)
+#pragma omp parallel
+  {
+    std::vector<double> fractions(3 * size_t(cal.screen_w));
+#pragma omp for schedule(dynamic, 8)
   for (int row = 0; row < cal.screen_h; ++row) {
     const double row_gain = fringe_gain(cal, row);
+    lens_.row_view_fractions(row, fractions.data());
     for (int x = 0; x < cal.screen_w; ++x) {
+      const TilePoint point = tile_point(lens_, fit_, x, row);
+      if (!point.inside) continue;
       for (int c = 0; c < 3; ++c) {
-        const SubpixelSample s = sample_for(x, row, c);
-        if (!s.inside) continue;
+        const SubpixelSample s = sample_at(point, fractions[3 * size_t(x) + size_t(c)]);
         const int qc = channels >= 3 ? c : 0;
         float value = sample_tile(quilt, s.view_a, s.tile_u, s.tile_v, qc);
         if (s.weight_b > 0) {
@@ -108,6 +122,7 @@ ImageF Interlacer::interlace(const ImageF& quilt) const {
         panel.at(x, row, c) = float(value * row_gain);
       }
     }
+  }
   }
   return panel;
 }

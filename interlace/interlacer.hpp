@@ -52,6 +52,8 @@ struct TilePoint {
   double u = 0, v = 0;
 };
 TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row_top_down);
+// The same with the aspect fit computed once (per panel, not per pixel).
+TilePoint tile_point(const display::LensModel& lens, const AspectFit& fit, int x, int row_top_down);
 
 // The fringe correction (looking-glass.md 3.11): the gain of panel row `row_top_down`, every
 // other row darkened by |fringe|.
@@ -66,6 +68,9 @@ class Interlacer {
   ImageF interlace(const ImageF& quilt) const;
 
   SubpixelSample sample_for(int x, int row_top_down, int channel) const;
+  // The same from the subpixel's tile point and its lens view fraction (before invert_views):
+  // interlace() takes both a row at a time (LensModel::row_view_fractions).
+  SubpixelSample sample_at(const TilePoint& point, double lens_fraction) const;
   // Bilinear lookup of channel c of view `view` at tile coordinates (u, v), clamped inside
   // the tile so no neighbouring view bleeds in.
   float sample_tile(const ImageF& quilt, int view, double u, double v, int channel) const;
@@ -74,6 +79,7 @@ class Interlacer {
   const display::LensModel& lens_;
   render::QuiltLayout layout_;
   InterlaceOptions options_;
+  AspectFit fit_;
 };
 
 // Convenience: interlace a quilt image for a display.

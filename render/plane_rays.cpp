@@ -1,8 +1,13 @@
-// Single rays through the sweeping planes (render/plane_rays.hpp). A row of rays goes through
-// the planes front to back as the swizzle's rows do: per plane the plane row it reads and that
-// row's non-empty columns once, then, per bin of camera offsets, only the rays whose sample can
-// reach those columns (a window of the bin's u-sorted rays), each stopping below the swizzle's
-// transmittance.
+// Single rays through the sweeping planes (render/plane_rays.hpp; docs/performance.md "Where the
+// direct pass's time went"). A row of rays goes through the planes front to back, plane by plane
+// as the swizzle's rows do, every ray's colour and transmittance at hand:
+// - the rays are grouped once per row into bins of camera offset, in order of u within a bin
+//   (a counting sort; they arrive in order of u), their fields in arrays of their own;
+// - per plane the two plane rows the row reads are blended once (render/plane_row.hpp) and
+//   their non-empty runs listed;
+// - per bin and run, the rays whose sample can reach the run form a window of the bin's u
+//   (Eq. (u_prime) is affine in dx and u), found by a galloping search from the previous
+//   window's end; only those are sampled, each stopping below the swizzle's transmittance.
 #include "render/plane_rays.hpp"
 
 #include <algorithm>
@@ -15,26 +20,26 @@ namespace {
 
 constexpr float kMinTransmittance = 0.5f / 255.0f;  // the swizzle's (render/swizzle_blend.cpp)
 
+// Bins of camera offset over [-max |dx|, max |dx|]: a bin's narrow range of dx narrows the window
+// of u from which a run can be reached (the swizzle's per-view column range, for a continuum of
+// views).
+constexpr int kOffsetBins = 8;
+constexpr size_t kJoinSlots = 8;
+
+// Texel access for the one-ray definition (composite_ray).
 struct U8Texels {
   const uint8_t* data;
-  std::array<float, 256> lut;
-  float at(size_t texel, int ch) const { return lut[data[texel * 4 + size_t(ch)]]; }
+  float at(size_t texel, int ch) const { return float(data[texel * 4 + size_t(ch)]) / 255.0f; }
 };
 struct F32Texels {
   const float* data;
   float at(size_t texel, int ch) const { return data[texel * 4 + size_t(ch)]; }
 };
 
-// Rays of one row whose offsets lie in [dx_min, dx_max], in order of u.
-struct OffsetBin {
-  float dx_min = 0, dx_max = 0;
-  std::vector<uint32_t> rays;
-};
-
 // Channel `ch` and transmittance of texel (x, row) of the plane at `base`; outside the plane:
 // empty (0, T = 1), as the swizzle's clamp-to-border.
 template <typename Texels>
-inline void fetch(const Texels& tex, size_t base, int w, int h, int x, int row, int ch, float& c, float& t) {
+void fetch(const Texels& tex, size_t base, int w, int h, int x, int row, int ch, float& c, float& t) {
   if (x < 0 || x >= w || row < 0 || row >= h) {
     c = 0.0f;
     t = 1.0f;
@@ -45,43 +50,132 @@ inline void fetch(const Texels& tex, size_t base, int w, int h, int x, int row, 
   t = tex.at(texel, 3);
 }
 
-// Channel `ch` and transmittance of a plane at (px, the rows of py): nearest, or bilinear with
-// the swizzle's weights.
-template <typename Texels, bool kBilinear>
-inline void sample_plane(const Texels& tex, size_t base, int wp, int hp, int row0, int row1, float fy, float px,
-                         int ch, float& c, float& a) {
-  if constexpr (kBilinear) {
-    const int col0 = int(std::floor(px));
-    const float fx = px - float(col0);
-    float c00, t00, c10, t10, c01, t01, c11, t11;
-    fetch(tex, base, wp, hp, col0, row0, ch, c00, t00);
-    fetch(tex, base, wp, hp, col0 + 1, row0, ch, c10, t10);
-    fetch(tex, base, wp, hp, col0, row1, ch, c01, t01);
-    fetch(tex, base, wp, hp, col0 + 1, row1, ch, c11, t11);
-    c = (1.0f - fy) * ((1.0f - fx) * c00 + fx * c10) + fy * ((1.0f - fx) * c01 + fx * c11);
-    a = (1.0f - fy) * ((1.0f - fx) * t00 + fx * t10) + fy * ((1.0f - fx) * t01 + fx * t11);
-  } else {
-    fetch(tex, base, wp, hp, int(std::floor(px + 0.5f)), row0, ch, c, a);
+// One ray's colour and transmittance after every plane.
+template <typename Texels>
+std::array<float, 2> composite_one(const Texels& tex, const SweepingPlanes& planes, int k_count, const auto& rows_of,
+                    const auto& column_of, int ch, bool bilinear) {
+  const int wp = planes.width, hp = planes.height;
+  float colour = 0.0f, trans = 1.0f;
+  for (int k = 0; k < k_count && trans >= kMinTransmittance; ++k) {
+    const auto rows = rows_of(k);
+    const float px = column_of(k);
+    const size_t base = size_t(k) * size_t(wp) * size_t(hp);
+    float c, a;
+    if (bilinear) {
+      const int col0 = int(std::floor(px));
+      const float fx = px - float(col0), fy = rows.fy;
+      float c00, t00, c10, t10, c01, t01, c11, t11;
+      fetch(tex, base, wp, hp, col0, rows.row0, ch, c00, t00);
+      fetch(tex, base, wp, hp, col0 + 1, rows.row0, ch, c10, t10);
+      fetch(tex, base, wp, hp, col0, rows.row1, ch, c01, t01);
+      fetch(tex, base, wp, hp, col0 + 1, rows.row1, ch, c11, t11);
+      c = (1.0f - fy) * ((1.0f - fx) * c00 + fx * c10) + fy * ((1.0f - fx) * c01 + fx * c11);
+      a = (1.0f - fy) * ((1.0f - fx) * t00 + fx * t10) + fy * ((1.0f - fx) * t01 + fx * t11);
+    } else {
+      fetch(tex, base, wp, hp, int(std::floor(px + 0.5f)), rows.row0, ch, c, a);
+    }
+    colour += trans * c;
+    trans *= a;
   }
+  return {colour, trans};
 }
 
-// The rays binned by their camera offset: a bin's narrow range of dx narrows the window of u from
-// which a plane's non-empty span can be reached (the swizzle's per-view column range, for a
-// continuum of views).
-constexpr int kOffsetBins = 16;
-std::array<OffsetBin, kOffsetBins> bin_by_offset(const std::vector<PlaneRay>& rays, float max_abs_dx) {
-  std::array<OffsetBin, kOffsetBins> bins;
-  for (size_t i = 0; i < rays.size(); ++i) {
-    const float dx = rays[i].dx;
-    const int b =
-        max_abs_dx > 0.0f ? std::clamp(int((dx / max_abs_dx + 1.0f) * 0.5f * kOffsetBins), 0, kOffsetBins - 1) : 0;
-    OffsetBin& bin = bins[size_t(b)];
-    if (bin.rays.empty()) bin.dx_min = bin.dx_max = dx;
-    bin.dx_min = std::min(bin.dx_min, dx);
-    bin.dx_max = std::max(bin.dx_max, dx);
-    bin.rays.push_back(uint32_t(i));
+// The first index in [lo, hi) whose u is >= value, searching from lo in growing steps (the
+// windows of one bin move forward through it).
+size_t gallop(const float* u, size_t lo, size_t hi, float value) {
+  size_t step = 1, probe = lo;
+  while (probe < hi && u[probe] < value) {
+    lo = probe + 1;
+    probe += step;
+    step *= 2;
   }
-  return bins;
+  return size_t(std::lower_bound(u + lo, u + std::min(probe, hi), value) - u);
+}
+
+// A window of slots [i0, i1) sampling the blended row at buffer coordinate
+// px = dx ax + u au + a0. Branch-free (the rays' outcomes do not predict each other): a ray
+// already below kMinTransmittance samples an empty texel (c = 0, T = 1), which leaves it as it
+// is. Returns how many rays fell below kMinTransmittance. (Vectorising it with omp simd and
+// AVX2 / AVX-512 clones was tried: GCC 12 emulates the four gathers with scalar loads at its
+// generic tuning and the windows are short, so it measured no faster and was dropped.)
+struct Window {
+  const float* values;  // BlendedPlaneRow::values
+  const float* trans_row;
+  int length;
+  float ax, au, a0;
+  const float* dx;
+  const float* u;
+  const int32_t* channel_offset;
+  float* colour;
+  float* trans;
+};
+
+
+// x clamped to [0, top], NaN to 0; in selects the vectorizer turns into min / max.
+inline float clamp_to(float x, float top) {
+  const float low = x > 0.0f ? x : 0.0f;
+  return low < top ? low : top;
+}
+
+int sample_bilinear(const Window& w, size_t i0, size_t i1) {
+  const float* __restrict values = w.values;
+  const float* __restrict trans_row = w.trans_row;
+  float* __restrict colour = w.colour;
+  float* __restrict trans = w.trans;
+  const float* __restrict dx = w.dx;
+  const float* __restrict u = w.u;
+  const int32_t* __restrict channel_offset = w.channel_offset;
+  const float ax = w.ax, au = w.au, a0 = w.a0;
+  const float top = float(w.length - 1);
+  const int last0 = w.length - 2;
+  int fell = 0;
+  for (size_t i = i0; i < i1; ++i) {
+    const float t = trans[i];
+    const bool live = t >= kMinTransmittance;
+    // Clamping keeps a sample on the padding (empty) when rounding put it a hair outside.
+    const float px = clamp_to(dx[i] * ax + u[i] * au + a0, top);
+    const int col0_raw = int(px);
+    const int col0 = col0_raw < last0 ? col0_raw : last0;
+    const float fx = px - float(col0);
+    const int at = channel_offset[i] + col0;
+    const float c0 = values[at], c1 = values[at + 1];
+    const float t0 = trans_row[col0], t1 = trans_row[col0 + 1];
+    const float c_sampled = c0 + fx * (c1 - c0), a_sampled = t0 + fx * (t1 - t0);
+    const float c = live ? c_sampled : 0.0f;
+    const float a = live ? a_sampled : 1.0f;
+    const float t_after = t * a;
+    colour[i] += t * c;
+    trans[i] = t_after;
+    fell += int(live) & int(t_after < kMinTransmittance);
+  }
+  return fell;
+}
+
+int sample_nearest(const Window& w, size_t i0, size_t i1) {
+  const float* __restrict values = w.values;
+  const float* __restrict trans_row = w.trans_row;
+  float* __restrict colour = w.colour;
+  float* __restrict trans = w.trans;
+  const float* __restrict dx = w.dx;
+  const float* __restrict u = w.u;
+  const int32_t* __restrict channel_offset = w.channel_offset;
+  const float ax = w.ax, au = w.au, a0 = w.a0;
+  const float top = float(w.length - 1);
+  int fell = 0;
+  for (size_t i = i0; i < i1; ++i) {
+    const float t = trans[i];
+    const bool live = t >= kMinTransmittance;
+    const float px = clamp_to(dx[i] * ax + u[i] * au + a0, top);
+    const int col = int(px + 0.5f);
+    const float c_sampled = values[channel_offset[i] + col], a_sampled = trans_row[col];
+    const float c = live ? c_sampled : 0.0f;
+    const float a = live ? a_sampled : 1.0f;
+    const float t_after = t * a;
+    colour[i] += t * c;
+    trans[i] = t_after;
+    fell += int(live) & int(t_after < kMinTransmittance);
+  }
+  return fell;
 }
 
 }  // namespace
@@ -98,75 +192,148 @@ PlaneRays::PlaneRays(const SweepingPlanes& planes, const QuiltGeometry& geometry
   }
 }
 
-template <typename Texels, bool kBilinear>
-void PlaneRays::composite(const Texels& tex, float v_ndc, float max_abs_dx, const std::vector<PlaneRay>& rays,
-                          std::vector<float>& out) const {
-  const int wp = planes_.width, hp = planes_.height;
-  const size_t plane_texels = size_t(wp) * size_t(hp);
-  const size_t n = rays.size();
-  // Front to back with every ray's transmittance at hand, plane by plane as the swizzle does, so
-  // each plane touches only the rays whose sample can reach its non-empty columns.
-  std::vector<float> colour(n, 0.0f), trans(n, 1.0f);
-  size_t active = n;
-  const std::array<OffsetBin, kOffsetBins> bins = bin_by_offset(rays, max_abs_dx);
-  for (int k = 0; k < planes_.count && active > 0; ++k) {
-    const PlaneMap& m = maps_[size_t(k)];
-    const float py = ((m.scale_y * v_ndc + 1.0f) * float(hp) - 1.0f) * 0.5f;
-    const int row0 = kBilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
-    const int row1 = kBilinear ? row0 + 1 : row0;
-    const float fy = py - float(row0);
-    int first = wp, last = -1;
-    for (int r : {row0, row1})
-      if (r >= 0 && r < hp) {
-        first = std::min(first, planes_.row_first[size_t(k) * size_t(hp) + size_t(r)]);
-        last = std::max(last, planes_.row_last[size_t(k) * size_t(hp) + size_t(r)]);
-      }
-    if (first > last) continue;
-    // px = ((dx parallax + u scale_x + 1) wp - 1) / 2 must reach [first - 1.5, last + 1.5], i.e.
-    // dx parallax + u scale_x in [lo, hi]; per bin of offsets that bounds u, and each bin's rays
-    // are sorted by u.
-    const float lo = (2.0f * (float(first) - 1.5f) + 1.0f) / float(wp) - 1.0f;
-    const float hi = (2.0f * (float(last) + 1.5f) + 1.0f) / float(wp) - 1.0f;
-    const size_t base = size_t(k) * plane_texels;
-    for (const OffsetBin& bin : bins) {
-      if (bin.rays.empty()) continue;
-      const float m0 = std::min(bin.dx_min * m.parallax, bin.dx_max * m.parallax);
-      const float m1 = std::max(bin.dx_min * m.parallax, bin.dx_max * m.parallax);
-      const float ua = (lo - m1) / m.scale_x, ub = (hi - m0) / m.scale_x;
-      const float u_lo = std::min(ua, ub) - 1e-4f, u_hi = std::max(ua, ub) + 1e-4f;
-      const auto begin = std::lower_bound(bin.rays.begin(), bin.rays.end(), u_lo,
-                                          [&](uint32_t r, float u) { return rays[r].u_ndc < u; });
-      for (auto it = begin; it != bin.rays.end() && rays[*it].u_ndc <= u_hi; ++it) {
-        float& t = trans[*it];
-        if (t < kMinTransmittance) continue;
-        const PlaneRay& ray = rays[*it];
-        const float px = ((ray.dx * m.parallax + ray.u_ndc * m.scale_x + 1.0f) * float(wp) - 1.0f) * 0.5f;
-        if (!(px >= float(first) - 1.5f && px <= float(last) + 1.5f)) continue;  // empty there
-        float c, a;
-        sample_plane<Texels, kBilinear>(tex, base, wp, hp, row0, row1, fy, px, ray.channel, c, a);
-        colour[*it] += t * c;
-        t *= a;
-        if (t < kMinTransmittance) --active;
-      }
-    }
-  }
-  out.resize(n);
-  for (size_t i = 0; i < n; ++i) out[i] = colour[i] + trans[i] * background_[rays[i].channel];
+PlaneRays::PlaneRows PlaneRays::plane_rows(int k, float v_ndc) const {
+  const bool bilinear = filter_ == PlaneFilter::kBilinear;
+  const float py = ((maps_[size_t(k)].scale_y * v_ndc + 1.0f) * float(planes_.height) - 1.0f) * 0.5f;
+  PlaneRows r;
+  r.row0 = bilinear ? int(std::floor(py)) : int(std::floor(py + 0.5f));
+  r.row1 = bilinear ? r.row0 + 1 : r.row0;
+  r.fy = py - float(r.row0);
+  return r;
 }
 
-void PlaneRays::composite_row(float v_ndc_top_down, float max_abs_dx, const std::vector<PlaneRay>& rays,
-                              std::vector<float>& out) const {
+float PlaneRays::composite_ray(const PlaneRay& ray, float v_ndc) const {
+  const int wp = planes_.width;
+  const auto rows_of = [&](int k) { return plane_rows(k, v_ndc); };
+  const auto column_of = [&](int k) {
+    const PlaneMap& m = maps_[size_t(k)];
+    return ((ray.dx * m.parallax + ray.u_ndc * m.scale_x + 1.0f) * float(wp) - 1.0f) * 0.5f;
+  };
   const bool bilinear = filter_ == PlaneFilter::kBilinear;
-  if (planes_.precision == PlanePrecision::kU8) {
-    U8Texels tex{planes_.texels_u8.data(), {}};
-    for (int i = 0; i < 256; ++i) tex.lut[size_t(i)] = float(i) / 255.0f;
-    if (bilinear) composite<U8Texels, true>(tex, v_ndc_top_down, max_abs_dx, rays, out);
-    else composite<U8Texels, false>(tex, v_ndc_top_down, max_abs_dx, rays, out);
-  } else {
-    const F32Texels tex{planes_.texels_f32.data()};
-    if (bilinear) composite<F32Texels, true>(tex, v_ndc_top_down, max_abs_dx, rays, out);
-    else composite<F32Texels, false>(tex, v_ndc_top_down, max_abs_dx, rays, out);
+  const std::array<float, 2> ct =
+      planes_.precision == PlanePrecision::kU8
+          ? composite_one(U8Texels{planes_.texels_u8.data()}, planes_, planes_.count, rows_of, column_of, ray.channel,
+                          bilinear)
+          : composite_one(F32Texels{planes_.texels_f32.data()}, planes_, planes_.count, rows_of, column_of,
+                          ray.channel, bilinear);
+  return ct[0] + ct[1] * background_[ray.channel];
+}
+
+void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Scratch& s) const {
+  const size_t n = rays.size();
+  // A bin is only a grouping (its range of dx comes from its members), so its edges need not be
+  // exact: dx scaled once, no division per ray.
+  const float scale = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) / max_abs_dx : 0.0f;
+  const float centre = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) : 0.0f;
+  s.bin.resize(n);
+  std::array<float, kOffsetBins> lo, hi;
+  std::array<int, kOffsetBins> count{};
+  lo.fill(1e30f);
+  hi.fill(-1e30f);
+  for (size_t i = 0; i < n; ++i) {
+    const float dx = rays[i].dx;
+    const int b = std::clamp(int(dx * scale + centre), 0, kOffsetBins - 1);
+    s.bin[i] = uint8_t(b);
+    ++count[size_t(b)];
+    lo[size_t(b)] = std::min(lo[size_t(b)], dx);
+    hi[size_t(b)] = std::max(hi[size_t(b)], dx);
   }
+  s.bin_dx_min.assign(lo.begin(), lo.end());
+  s.bin_dx_max.assign(hi.begin(), hi.end());
+  s.bin_active.assign(count.begin(), count.end());
+  s.bin_begin.assign(kOffsetBins + 1, 0);
+  for (int b = 0; b < kOffsetBins; ++b) s.bin_begin[size_t(b) + 1] = s.bin_begin[size_t(b)] + uint32_t(s.bin_active[size_t(b)]);
+  s.ray.resize(n);
+  s.dx.resize(n);
+  s.u.resize(n);
+  s.channel.resize(n);
+  s.channel_offset.resize(n);
+  s.colour.assign(n, 0.0f);
+  s.trans.assign(n, 1.0f);
+  const int stride = BlendedPlaneRow::stride_for(planes_);
+  std::array<uint32_t, kOffsetBins> next;
+  for (int b = 0; b < kOffsetBins; ++b) next[size_t(b)] = s.bin_begin[size_t(b)];
+  // Stable: within a bin the rays keep their order of u.
+  for (size_t i = 0; i < n; ++i) {
+    const PlaneRay& r = rays[i];
+    const uint32_t slot = next[s.bin[i]]++;
+    s.ray[slot] = uint32_t(i);
+    s.dx[slot] = r.dx;
+    s.u[slot] = r.u_ndc;
+    s.channel[slot] = r.channel;
+    s.channel_offset[slot] = r.channel * stride;
+  }
+}
+
+void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
+  const PlaneMap& m = maps_[size_t(k)];
+  const BlendedPlaneRow& row = s.row;
+  const float half_w = 0.5f * float(planes_.width);
+  // px (plane column) = ((dx parallax + u scale_x + 1) wp - 1) / 2, shifted to the buffer.
+  const float ax = m.parallax * half_w, au = m.scale_x * half_w;
+  const float a0 = half_w - 0.5f - float(row.first_column);
+  const bool bilinear = filter_ == PlaneFilter::kBilinear;
+  const size_t runs = row.runs.size();
+  const Window window{row.values.data(), row.channel(3), row.length, ax, au, a0, s.dx.data(),
+                      s.u.data(), s.channel_offset.data(), s.colour.data(), s.trans.data()};
+  for (int b = 0; b < kOffsetBins; ++b) {
+    int& bin_active = s.bin_active[size_t(b)];
+    if (bin_active == 0) continue;
+    const size_t begin = s.bin_begin[size_t(b)], end = s.bin_begin[size_t(b) + 1];
+    const float m0 = std::min(s.bin_dx_min[size_t(b)] * ax, s.bin_dx_max[size_t(b)] * ax);
+    const float m1 = std::max(s.bin_dx_min[size_t(b)] * ax, s.bin_dx_max[size_t(b)] * ax);
+    const int before = bin_active;
+    size_t cursor = begin;
+    // Windows closer than kJoinSlots are sampled as one: the rays between them sample empty
+    // texels (an exact no-op), and longer windows keep the vector lanes full.
+    size_t pending0 = begin, pending1 = begin;
+    const auto flush = [&] {
+      if (pending1 > pending0)
+        bin_active -= bilinear ? sample_bilinear(window, pending0, pending1) : sample_nearest(window, pending0, pending1);
+    };
+    for (size_t r = 0; r < runs && cursor < end; ++r) {
+      // Runs in order of u: forwards when u' grows with u.
+      const auto& run = row.runs[au >= 0.0f ? r : runs - 1 - r];
+      // Samples that can touch columns [a, b] lie in [a - 1.5, b + 1.5] (bilinear reads
+      // floor(px) and the next column, nearest round(px)).
+      const float lo = float(run[0] - row.first_column) - 1.5f - a0;
+      const float hi = float(run[1] - row.first_column) + 1.5f - a0;
+      float u_lo = -1e30f, u_hi = 1e30f;
+      if (au != 0.0f) {
+        const float ua = (lo - m1) / au, ub = (hi - m0) / au;
+        u_lo = std::min(ua, ub) - 1e-4f;
+        u_hi = std::max(ua, ub) + 1e-4f;
+      }
+      const size_t i0 = gallop(s.u.data(), cursor, end, u_lo);
+      const size_t i1 = gallop(s.u.data(), i0, end, std::nextafter(u_hi, 1e30f));
+      if (i0 <= pending1 + kJoinSlots) {
+        pending1 = std::max(pending1, i1);
+      } else {
+        flush();
+        pending0 = i0;
+        pending1 = i1;
+      }
+      cursor = i1;
+    }
+    flush();
+    active -= before - bin_active;
+  }
+}
+
+void PlaneRays::composite_row(float v_ndc, float max_abs_dx, const std::vector<PlaneRay>& rays,
+                              std::vector<float>& out, Scratch& s) const {
+  const size_t n = rays.size();
+  bin_rays(rays, max_abs_dx, s);
+  int active = int(n);
+  const bool bilinear = filter_ == PlaneFilter::kBilinear;
+  for (int k = 0; k < planes_.count && active > 0; ++k) {
+    const PlaneRows rows = plane_rows(k, v_ndc);
+    if (!blend_plane_row(planes_, k, rows.row0, rows.row1, rows.fy, bilinear, s.row)) continue;
+    composite_plane(k, s, active);
+  }
+  out.resize(n);
+  for (size_t slot = 0; slot < n; ++slot)
+    out[s.ray[slot]] = s.colour[slot] + s.trans[slot] * background_[s.channel[slot]];
 }
 
 }  // namespace lfd::render

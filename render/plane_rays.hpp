@@ -7,10 +7,12 @@
 // plane_coordinate_x_at / plane_coordinate_y (render/quilt_geometry.hpp), the sampling and the
 // front-to-back blend those of the swizzle (nearest or bilinear, empty outside the plane, a ray
 // stops below half an 8-bit step of transmittance).
+#include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "render/plane_row.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/sweeping_planes.hpp"
 #include "render/swizzle_blend.hpp"
@@ -31,20 +33,47 @@ class PlaneRays {
   PlaneRays(const SweepingPlanes& planes, const QuiltGeometry& geometry, const ReferenceCamera& ref,
             PlaneFilter filter, const glm::vec3& background);
 
-  // The largest |dx| of the rays is `max_abs_dx` (the view cone's edge).
+  // The working memory of composite_row, kept by the caller across rows (one per thread) so a
+  // row allocates nothing.
+  struct Scratch {
+    std::vector<uint32_t> ray;  // the rays grouped by offset bin, in order of u within a bin
+    std::vector<float> dx, u, colour, trans;
+    std::vector<int32_t> channel, channel_offset;  // channel_offset: channel x BlendedPlaneRow::stride
+    std::vector<uint8_t> bin;  // per ray, in the order given
+    std::vector<uint32_t> bin_begin;
+    std::vector<float> bin_dx_min, bin_dx_max;
+    std::vector<int> bin_active;
+    BlendedPlaneRow row;
+  };
+
   // The composited channel of every ray of one row of base-camera NDC v_ndc_top_down
-  // ((2 y + 1) / H - 1 for view row y, rows top-down as the planes): out[i] for rays[i].
+  // ((2 y + 1) / H - 1 for view row y, rows top-down as the planes): out[i] for rays[i]. The
+  // largest |dx| of the rays is `max_abs_dx` (the view cone's edge).
   void composite_row(float v_ndc_top_down, float max_abs_dx, const std::vector<PlaneRay>& rays,
-                     std::vector<float>& out) const;
+                     std::vector<float>& out, Scratch& scratch) const;
+  void composite_row(float v_ndc_top_down, float max_abs_dx, const std::vector<PlaneRay>& rays,
+                     std::vector<float>& out) const {
+    Scratch scratch;
+    composite_row(v_ndc_top_down, max_abs_dx, rays, out, scratch);
+  }
+
+  // One ray through every plane, the sampling and the blend spelled out as the swizzle does them
+  // (render/swizzle_blend.cpp): the definition composite_row computes faster, for the tests.
+  float composite_ray(const PlaneRay& ray, float v_ndc_top_down) const;
 
  private:
   // Per plane: Eq. (u_prime) as u' = dx parallax + u scale_x, v' = v scale_y.
   struct PlaneMap {
     float parallax, scale_x, scale_y;
   };
-  template <typename Texels, bool kBilinear>
-  void composite(const Texels& tex, float v_ndc, float max_abs_dx, const std::vector<PlaneRay>& rays,
-                 std::vector<float>& out) const;
+  // The plane rows a row of rays reads and the vertical weight.
+  struct PlaneRows {
+    int row0, row1;
+    float fy;
+  };
+  PlaneRows plane_rows(int k, float v_ndc) const;
+  void bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Scratch& s) const;
+  void composite_plane(int k, Scratch& s, int& active) const;
 
   const SweepingPlanes& planes_;
   std::vector<PlaneMap> maps_;

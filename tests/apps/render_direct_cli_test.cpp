@@ -107,5 +107,35 @@ TEST(BenchDirectCli, ATinyRunReportsBothSidesAndTheQuality) {
   EXPECT_NE(bad.output.find("direct benchmark: chunks: 0 is outside"), std::string::npos) << bad.output;
 }
 
+// `lfd bench direct --method v2lf`: the direct pass on V2LF planes of a generated voxel tabletop,
+// against the quilt path and the per-view voxel reference; the other method's scene option is
+// refused with one line and exit 2.
+TEST(BenchDirectCli, V2lfRunsOnVoxelScenes) {
+  const fs::path dir = test::temp_dir("bench_direct_v2lf");
+  const std::string json = (dir / "direct.json").string();
+  const auto r = test::run_lfd("bench direct --method v2lf --voxel-level 5 --calibration " + kDisplay +
+                               " --view-height 64 --chunks 8 --runs 1 --warmup 0 --reference-views 8 --json " + json);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("generated voxel tabletop (level 5)"), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(read_text_file(json));
+  ASSERT_EQ(j["tables"].size(), 1u);
+  EXPECT_EQ(j["tables"][0]["method"], "V2LF");
+  const auto& row = j["tables"][0]["rows"][0];
+  EXPECT_GT(row["direct_pass_seconds"]["median"].get<double>(), 0.0);
+  for (const char* psnr : {"psnr_direct_db", "psnr_quilt_nearest_db", "psnr_quilt_linear_db"})
+    EXPECT_GT(row[psnr].get<double>(), 10.0) << psnr;
+  const std::pair<std::string, std::string> cases[] = {
+      {"bench direct --voxel-level 5", "--voxel-level: applies to --method v2lf only"},
+      {"bench direct --method v2lf --generated 1000", "--generated: applies to --method g2lf only"},
+      {"bench direct --method v2lf --voxel-level 99", "voxel generator options"},
+  };
+  for (const auto& [args, says] : cases) {
+    const auto bad = test::run_lfd(args);
+    EXPECT_EQ(bad.exit_code, 2) << args << "\n" << bad.output;
+    EXPECT_NE(bad.output.find(says), std::string::npos) << args << "\n" << bad.output;
+    EXPECT_EQ(std::count(bad.output.begin(), bad.output.end(), '\n'), 1) << bad.output;
+  }
+}
+
 }  // namespace
 }  // namespace lfd

@@ -1,6 +1,9 @@
 #include "display/lens_model.hpp"
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -82,6 +85,43 @@ TEST(LensModel, CorrectionFieldShiftsThePhase) {
   for (double u : {0.0, 0.3, 1.0})
     for (double v : {0.0, 0.77, 1.0})
       EXPECT_NEAR(corrected.phase(u, v) - plain.phase(u, v), 0.125, 1e-12);
+}
+
+// The row form the direct pass and the interlacer use is subpixel_view_fraction itself, bit for
+// bit, on every subpixel of whole panels: classic RGB and BGR, every Gen3 cell pattern, a
+// correction field, invView either way.
+TEST(LensModel, RowViewFractionsEqualSubpixelViewFractionBitForBit) {
+  std::vector<std::pair<std::string, LensModel>> lenses;
+  for (const char* name : {"LKG-2K-04409.visual.json", "LKG-PORT-portrait.visual.json"}) {
+    DisplayCalibration c = load(name);
+    lenses.emplace_back(name, LensModel(c));
+    c.flip_subp = true;
+    c.inv_view = !c.inv_view;
+    lenses.emplace_back(std::string(name) + " bgr", LensModel(c));
+  }
+  for (int mode = 0; mode <= 4; ++mode) {
+    DisplayCalibration c = load("template-16in-portrait-gen3.visual.json");
+    c.cell_pattern_mode = mode;
+    lenses.emplace_back("gen3 mode " + std::to_string(mode), LensModel(c));
+  }
+  std::vector<double> coeffs(6 * 5);
+  for (size_t i = 0; i < coeffs.size(); ++i) coeffs[i] = 0.05 * std::sin(double(i));
+  lenses.emplace_back("corrected", LensModel(load("LKG-APW92011.visual.json"), CorrectionField(6, 5, coeffs)));
+  for (const auto& [what, lens] : lenses) {
+    const DisplayCalibration& c = lens.calibration();
+    std::vector<double> row(3 * size_t(c.screen_w));
+    size_t compared = 0, unequal = 0;
+    for (int r = 0; r < c.screen_h; r += (c.screen_h > 1000 ? 7 : 1)) {
+      lens.row_view_fractions(r, row.data());
+      for (int x = 0; x < c.screen_w; ++x)
+        for (int ch = 0; ch < 3; ++ch) {
+          ++compared;
+          if (row[3 * size_t(x) + size_t(ch)] != lens.subpixel_view_fraction(x, r, ch)) ++unequal;
+        }
+    }
+    EXPECT_GT(compared, 100000u) << what;
+    EXPECT_EQ(unequal, 0u) << what;
+  }
 }
 
 TEST(LensModel, PhaseForFractionInvertsViewFraction) {
