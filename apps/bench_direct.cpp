@@ -18,7 +18,8 @@ namespace lfd::apps {
 namespace {
 
 // --baseline: the per-view direct table (CPU only: the masks drive the CPU rasterizer).
-int RunDirectBaseline(const bench::DirectBenchOptions& o, const std::string& backend, const std::string& json_path) {
+int RunDirectBaseline(const bench::DirectBenchOptions& o, const std::vector<int>& views, const std::string& backend,
+                      const std::string& json_path) {
   if (backend != "cpu") throw_input_error("--baseline: the per-view direct baseline runs on --backend cpu only");
   bench::DirectBaselineOptions b;
   b.calibrations = o.calibrations;
@@ -28,6 +29,7 @@ int RunDirectBaseline(const bench::DirectBenchOptions& o, const std::string& bac
   b.warmup = o.warmup;
   b.view_height = o.view_height;
   b.direct_filter = o.direct_filter;
+  b.views = views;
   const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
   const nlohmann::ordered_json result = bench::run_direct_baseline_benchmark(*renderers.sweeping, b);
   if (!json_path.empty()) {
@@ -87,6 +89,10 @@ int RunBenchDirect(int argc, char** argv) {
                "instead: the per-view direct baseline (CPU): each view rasterised only where the panel reads "
                "it (mask from the interlacer's lookup), then interlaced, against the full views and the direct "
                "pass at the first --chunks (bench/direct_baseline_benchmark.hpp)");
+  std::vector<int> baseline_views = {0};
+  app.add_option("--baseline-views", baseline_views,
+                 "--baseline: view counts of its rows, comma-separated (0: the display's recommendation)")
+      ->delimiter(',')->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
   o.direct_filter = render::parse_plane_filter(direct_filter);
   if (quick) {
@@ -100,7 +106,7 @@ int RunBenchDirect(int argc, char** argv) {
     if (n > 0) o.scenes.push_back({"", n});
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
-  if (baseline) return RunDirectBaseline(o, backend, json_path);
+  if (baseline) return RunDirectBaseline(o, baseline_views, backend, json_path);
 
   const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
   const nlohmann::ordered_json result = bench::run_direct_benchmark(

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -34,10 +35,11 @@ struct Frame {
   render::QuiltLayout layout;
 };
 
-Frame make_frame(const std::string& path, const lightfield::LightFieldScene& scene, int view_height) {
+Frame make_frame(const std::string& path, const lightfield::LightFieldScene& scene, int view_height, int views) {
   Frame f;
   f.calibration = display::read_calibration(path);
-  const display::DisplayQuilt quilt = display::quilt_for_display(f.calibration);
+  const display::DisplayQuilt quilt =
+      display::quilt_for_display(f.calibration, views > 0 ? std::optional<int>(views) : std::nullopt);
   const display::ViewSize size = display::view_size_for_display(quilt, view_height);
   const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
   const render::Camera base = render::camera_from_spec(spec, size.width, size.height);
@@ -62,8 +64,8 @@ render::GaussianScene scene_of(const SceneSource& source) {
 
 nlohmann::ordered_json run_row(lightfield::LightFieldRenderer& sweeping, const SceneSource& source,
                                const lightfield::LightFieldScene& scene, const std::string& calibration_path,
-                               const DirectBaselineOptions& options) {
-  const Frame f = make_frame(calibration_path, scene, options.view_height);
+                               int views, const DirectBaselineOptions& options) {
+  const Frame f = make_frame(calibration_path, scene, options.view_height, views);
   const display::LensModel lens(f.calibration.display, f.calibration.correction);
   interlace::InterlaceOptions io;
   io.blend = options.blend;
@@ -133,6 +135,9 @@ void DirectBaselineOptions::check() const {
   if (runs < 1 || runs > 1000) fail("runs", fmt::format("{} is outside 1..1000", runs));
   if (warmup < 0 || warmup > 100) fail("warmup", fmt::format("{} is outside 0..100", warmup));
   if (view_height < 16 || view_height > 4096) fail("view_height", fmt::format("{} is outside 16..4096", view_height));
+  if (views.empty()) fail("views", "no view count");
+  for (int v : views)
+    if (v < 0 || v > 256) fail("views", fmt::format("{} is outside 1..256 (0: the display's)", v));
 }
 
 nlohmann::ordered_json run_direct_baseline_benchmark(lightfield::LightFieldRenderer& sweeping,
@@ -160,7 +165,8 @@ nlohmann::ordered_json run_direct_baseline_benchmark(lightfield::LightFieldRende
     const lightfield::LightFieldScene scene(scene_of(source));
     sweeping.set_scene(scene);
     for (const std::string& calibration : options.calibrations)
-      out["rows"].push_back(run_row(sweeping, source, scene, calibration, options));
+      for (int views : options.views)
+        out["rows"].push_back(run_row(sweeping, source, scene, calibration, views, options));
   }
   return out;
 }

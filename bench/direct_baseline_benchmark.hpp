@@ -26,6 +26,9 @@ struct DirectBaselineOptions {
   int runs = 2;           // timed frames per side
   int warmup = 1;         // untimed frames of each side first
   int view_height = 512;  // view height; the width follows the display's aspect
+  // View counts of the rows; 0: the display's recommendation. The more views, the fewer of each
+  // view's pixels the panel reads, and the more the mask leaves out.
+  std::vector<int> views = {0};
   interlace::ViewBlend blend = interlace::ViewBlend::kNearest;  // the interlacer's (and masks')
   render::PlaneFilter direct_filter = render::PlaneFilter::kBilinear;
 
