@@ -31,6 +31,7 @@ const std::vector<Bench>& benches() {
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},
       {"calibration", RunBenchCalibration, "calibration errors and times on synthetic units"},
       {"camera-poses", RunBenchCameraPoses, "camera calibration: focal-length error against board poses"},
+      {"direct-photos", RunBenchDirectPhotos, "photographs between two quilt views: direct vs quilt path (PSNR)"},
 #endif
   };
   return table;

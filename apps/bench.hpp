@@ -14,6 +14,7 @@ int RunBenchDirect(int argc, char** argv);  // apps/bench_direct.cpp (also rende
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp
 int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp
+int RunBenchDirectPhotos(int argc, char** argv);  // apps/bench_direct_photos.cpp
 int RunBenchPlay(int argc, char** argv);  // apps/bench_play.cpp (also renderer-only)
 
 }  // namespace lfd::apps

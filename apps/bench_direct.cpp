@@ -7,6 +7,7 @@
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/bench_renderers.hpp"
+#include "bench/direct_baseline_benchmark.hpp"
 #include "bench/direct_benchmark.hpp"
 #include "render/g2lf.hpp"
 #include "util/atomic_file.hpp"
@@ -14,6 +15,31 @@
 #include "util/error.hpp"
 
 namespace lfd::apps {
+namespace {
+
+// --baseline: the per-view direct table (CPU only: the masks drive the CPU rasterizer).
+int RunDirectBaseline(const bench::DirectBenchOptions& o, const std::vector<int>& views, const std::string& backend,
+                      const std::string& json_path) {
+  if (backend != "cpu") throw_input_error("--baseline: the per-view direct baseline runs on --backend cpu only");
+  bench::DirectBaselineOptions b;
+  b.calibrations = o.calibrations;
+  b.scenes = o.scenes;
+  b.chunks = o.chunks.front();
+  if (o.runs > 0) b.runs = o.runs;
+  b.warmup = o.warmup;
+  b.view_height = o.view_height;
+  b.direct_filter = o.direct_filter;
+  b.views = views;
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
+  const nlohmann::ordered_json result = bench::run_direct_baseline_benchmark(*renderers.sweeping, b);
+  if (!json_path.empty()) {
+    write_text_atomic(json_path, result.dump(2) + "\n");
+    std::printf("\nwrote %s\n", json_path.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
 
 int RunBenchDirect(int argc, char** argv) {
   CLI::App app{
@@ -27,7 +53,8 @@ int RunBenchDirect(int argc, char** argv) {
       "  lfd bench direct --quick\n"
       "  lfd bench direct --chunks 16,64,256 --json direct.json\n"
       "  lfd bench direct --scene ../shared/data/scenes/guitar.compressed.ply --generated 0 --reference-views 0\n"
-      "  lfd bench direct --method v2lf --voxel-level 8 --reference-views 0",
+      "  lfd bench direct --method v2lf --voxel-level 8 --reference-views 0\n"
+      "  lfd bench direct --baseline   (per-view direct: the views rasterised only where the panel reads them)",
       "direct"};
   bench::DirectBenchOptions o;
   std::string backend = "cpu", json_path;
@@ -68,6 +95,15 @@ int RunBenchDirect(int argc, char** argv) {
   app.add_flag("--quick", quick,
                "a short run: the Go only, 20k Gaussians (v2lf: voxel level 7), 64 reference views, 2 runs");
   app.add_option("--json", json_path, "write the figures as JSON to this file");
+  bool baseline = false;
+  app.add_flag("--baseline", baseline,
+               "instead: the per-view direct baseline (CPU): each view rasterised only where the panel reads "
+               "it (mask from the interlacer's lookup), then interlaced, against the full views and the direct "
+               "pass at the first --chunks (bench/direct_baseline_benchmark.hpp)");
+  std::vector<int> baseline_views = {0};
+  app.add_option("--baseline-views", baseline_views,
+                 "--baseline: view counts of its rows, comma-separated (0: the display's recommendation)")
+      ->delimiter(',')->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
   o.direct_filter = render::parse_plane_filter(direct_filter);
   const bool voxels = method == "v2lf";
@@ -91,6 +127,8 @@ int RunBenchDirect(int argc, char** argv) {
   }
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  if (baseline && voxels) throw_input_error("bench direct: --baseline: applies to --method g2lf only");
+  if (baseline) return RunDirectBaseline(o, baseline_views, backend, json_path);
 
   const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, o.kind);
   const nlohmann::ordered_json result = bench::run_direct_benchmark(

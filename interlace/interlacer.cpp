@@ -79,19 +79,29 @@ SubpixelSample Interlacer::sample_at(const TilePoint& point, double lens_fractio
 
 float Interlacer::sample_tile(const ImageF& quilt, int view, double u, double v,
                               int channel) const {
-  const int tw = layout_.tile_width(), th = layout_.tile_height();
-  // Texel centres at (i + 0.5)/tw; bottom-up texel coordinates within the tile.
-  const double tx = std::clamp(u * tw - 0.5, 0.0, double(tw - 1));
-  const double ty = std::clamp(v * th - 0.5, 0.0, double(th - 1));
-  const int x0 = int(tx), y0 = int(ty);
-  const int x1 = std::min(x0 + 1, tw - 1), y1 = std::min(y0 + 1, th - 1);
-  const float ax = float(tx - x0), ay = float(ty - y0);
+  const int th = layout_.tile_height();
+  const auto [x0, x1, y0, y1, ax, ay] = tile_texels(u, v);
   const int ox = layout_.tile_x(view);
   const int oy = layout_.tile_y_top_down(view) + th - 1;  // image row of tile texel row 0
   auto at = [&](int ix, int iy) { return quilt.at(ox + ix, oy - iy, channel); };
   const float top = at(x0, y0) * (1 - ax) + at(x1, y0) * ax;
   const float bottom = at(x0, y1) * (1 - ax) + at(x1, y1) * ax;
   return top * (1 - ay) + bottom * ay;
+}
+
+Interlacer::TileTexels Interlacer::tile_texels(double u, double v) const {
+  const int tw = layout_.tile_width(), th = layout_.tile_height();
+  // Texel centres at (i + 0.5)/tw; bottom-up texel coordinates within the tile.
+  const double tx = std::clamp(u * tw - 0.5, 0.0, double(tw - 1));
+  const double ty = std::clamp(v * th - 0.5, 0.0, double(th - 1));
+  TileTexels t;
+  t.x0 = int(tx);
+  t.y0 = int(ty);
+  t.x1 = std::min(t.x0 + 1, tw - 1);
+  t.y1 = std::min(t.y0 + 1, th - 1);
+  t.ax = float(tx - t.x0);
+  t.ay = float(ty - t.y0);
+  return t;
 }
 
 ImageF Interlacer::interlace(const ImageF& quilt) const {

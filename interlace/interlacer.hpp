@@ -74,6 +74,16 @@ class Interlacer {
   // Bilinear lookup of channel c of view `view` at tile coordinates (u, v), clamped inside
   // the tile so no neighbouring view bleeds in.
   float sample_tile(const ImageF& quilt, int view, double u, double v, int channel) const;
+  // The four texels (and weights) that lookup reads: columns x0, x1 and bottom-up rows y0, y1
+  // of the tile (the view image's rows th - 1 - y, top-down). sample_tile reads exactly these;
+  // the per-view masks (view_masks.hpp) mark them.
+  struct TileTexels {
+    int x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    float ax = 0, ay = 0;
+  };
+  TileTexels tile_texels(double u, double v) const;
+  const render::QuiltLayout& layout() const { return layout_; }
+  const display::LensModel& lens() const { return lens_; }
 
  private:
   const display::LensModel& lens_;

@@ -4,6 +4,7 @@
 // every pixel's sequence of operations unchanged.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "render/blend.hpp"
 
@@ -38,13 +39,16 @@ bool row_span(const ProjectedGaussian& g, float y, int x0, int x1, int* lo, int*
 }  // namespace
 
 RasterImage blend(const std::vector<ProjectedGaussian>& projected, const TileBins& bins, int width,
-                  int height, const glm::vec3& background) {
+                  int height, const glm::vec3& background, std::span<const uint8_t> pixel_mask) {
   RasterImage img;
   img.width = width;
   img.height = height;
   img.rgb.assign(size_t(width) * height * 3, 0.0f);
   img.transmittance.assign(size_t(width) * height, 1.0f);
   const int tiles = bins.tiles_x * bins.tiles_y;
+  const bool masked = !pixel_mask.empty();
+  if (masked && pixel_mask.size() != size_t(width) * height)
+    throw std::invalid_argument("blend: pixel mask size differs from the image's");
 
 #pragma omp parallel for schedule(dynamic, 1)
   for (int tile = 0; tile < tiles; ++tile) {
@@ -56,6 +60,15 @@ RasterImage blend(const std::vector<ProjectedGaussian>& projected, const TileBin
     std::fill(std::begin(C), std::end(C), 0.0f);
     std::fill(std::begin(done), std::end(done), false);
     int remaining = (x1 - x0 + 1) * (y1 - y0 + 1);
+    // Masked-out pixels start done: the loop below never touches them and stops once every
+    // masked-in pixel is done, as it does for all of them unmasked.
+    if (masked)
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x)
+          if (!pixel_mask[size_t(y) * width + x]) {
+            done[(y - y0) * kTileSize + (x - x0)] = true;
+            --remaining;
+          }
 
     for (uint32_t k = bins.range_begin[tile]; k < bins.range_begin[tile + 1] && remaining > 0; ++k) {
       const ProjectedGaussian& g = projected[bins.ids[k]];

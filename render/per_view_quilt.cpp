@@ -54,4 +54,21 @@ ImageF render_quilt_per_view(const GaussianScene& scene, const QuiltGeometry& ge
   return quilt;
 }
 
+ImageF render_quilt_per_view_masked(const GaussianScene& scene, const QuiltGeometry& geometry,
+                                    const QuiltLayout& layout,
+                                    const std::vector<std::vector<uint8_t>>& pixel_masks,
+                                    const RasterSettings& settings) {
+  if (pixel_masks.size() != size_t(geometry.views))
+    throw_input_error("per-view masks: {} masks for {} views", pixel_masks.size(), geometry.views);
+  ImageF quilt(layout.width, layout.height, 3, 0.0f);
+  for (int j = 0; j < geometry.views; ++j) {
+    const Camera camera = geometry.view_camera(j);
+    if (pixel_masks[size_t(j)].size() != size_t(camera.width) * camera.height)
+      throw_input_error("per-view masks: mask {} has {} pixels, the view {}x{}", j, pixel_masks[size_t(j)].size(),
+                        camera.width, camera.height);
+    place_view(quilt, layout, j, rasterize_masked(scene, camera, pixel_masks[size_t(j)], settings));
+  }
+  return quilt;
+}
+
 }  // namespace lfd::render

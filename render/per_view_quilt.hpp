@@ -1,6 +1,9 @@
 #pragma once
 // The baseline: every quilt view rendered on its own with the reference rasterizer through its
 // off-axis camera (paper: "conventional" quilt rendering, the ground truth of Table 1).
+#include <cstdint>
+#include <vector>
+
 #include "render/gaussian_scene.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -24,5 +27,13 @@ RasterImage render_view(const GaussianScene& scene, const QuiltGeometry& geometr
 
 ImageF render_quilt_per_view(const GaussianScene& scene, const QuiltGeometry& geometry,
                              const QuiltLayout& layout, const RasterSettings& settings = {});
+
+// The same with view j blended only where `pixel_masks[j]` (the view's size, row 0 = top) is
+// non-zero (interlace/view_masks.hpp: the pixels the panel shows); the rest of each tile holds
+// the background. Throws InputError when the masks do not match the views.
+ImageF render_quilt_per_view_masked(const GaussianScene& scene, const QuiltGeometry& geometry,
+                                    const QuiltLayout& layout,
+                                    const std::vector<std::vector<uint8_t>>& pixel_masks,
+                                    const RasterSettings& settings = {});
 
 }  // namespace lfd::render

@@ -17,14 +17,21 @@ float QuiltGeometry::view_offset_at(float position) const {
   return 2.0f * focal_distance * position * std::tan(0.5f * view_cone_rad);
 }
 
-float QuiltGeometry::view_shift_ndc(int view) const {
-  return 2.0f * view_position(view) * std::tan(0.5f * view_cone_rad) / base.tan_half_fov_x();
+namespace {
+// p(s) = 2 s tan(phi/2) / tan(theta_x/2): the principal-point shift of the camera at view position s.
+float shift_ndc_at(const QuiltGeometry& g, float position) {
+  return 2.0f * position * std::tan(0.5f * g.view_cone_rad) / g.base.tan_half_fov_x();
 }
+}  // namespace
 
-Camera QuiltGeometry::view_camera(int view) const {
+float QuiltGeometry::view_shift_ndc(int view) const { return shift_ndc_at(*this, view_position(view)); }
+
+Camera QuiltGeometry::view_camera(int view) const { return view_camera_at(view_position(view)); }
+
+Camera QuiltGeometry::view_camera_at(float position) const {
   Camera c = base;
-  c.position_world = base.position_world + view_offset(view) * base.right();
-  c.shift_x_ndc = base.shift_x_ndc + view_shift_ndc(view);
+  c.position_world = base.position_world + view_offset_at(position) * base.right();
+  c.shift_x_ndc = base.shift_x_ndc + shift_ndc_at(*this, position);
   return c;
 }
 

@@ -27,6 +27,9 @@ struct QuiltGeometry {
   // The off-axis camera of view j: base moved by dx_j, same orientation, shifted principal
   // point so every principal ray meets the focal-plane centre.
   Camera view_camera(int view) const;
+  // The same for a continuous view position s (view_camera(j) is this at view_position(j)): the
+  // camera of an eye between two quilt views (validate/eye_photographs.hpp).
+  Camera view_camera_at(float position) const;
 };
 
 // Geometry with D_focal = |look_at - position| when `focal_distance` <= 0.

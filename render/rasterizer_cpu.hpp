@@ -23,4 +23,9 @@ namespace lfd::render {
 RasterImage rasterize(const GaussianScene& scene, const Camera& camera,
                       const RasterSettings& settings = {}, std::span<const uint32_t> subset = {});
 
+// The same with blend()'s pixel mask (width x height, row 0 = top): only the pixels it marks
+// are blended, bit-identical to rasterize()'s; the others hold the background.
+RasterImage rasterize_masked(const GaussianScene& scene, const Camera& camera, std::span<const uint8_t> pixel_mask,
+                             const RasterSettings& settings = {});
+
 }  // namespace lfd::render
