@@ -14,6 +14,7 @@
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "interlace/view_masks.hpp"
+#include "lightfield/display_views.hpp"
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
@@ -38,14 +39,10 @@ struct Frame {
 Frame make_frame(const std::string& path, const lightfield::LightFieldScene& scene, int view_height, int views) {
   Frame f;
   f.calibration = display::read_calibration(path);
-  const display::DisplayQuilt quilt =
-      display::quilt_for_display(f.calibration, views > 0 ? std::optional<int>(views) : std::nullopt);
-  const display::ViewSize size = display::view_size_for_display(quilt, view_height);
-  const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
-  const render::Camera base = render::camera_from_spec(spec, size.width, size.height);
-  f.geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
-                                           float(quilt.view_cone_deg), quilt.views);
-  f.layout = render::make_quilt_layout(f.geometry, quilt.grid.cols, quilt.grid.rows);
+  const lightfield::DisplayViews v = lightfield::views_for_display(
+      f.calibration, scene, view_height, views > 0 ? std::optional<int>(views) : std::nullopt);
+  f.geometry = v.geometry;
+  f.layout = v.layout;
   return f;
 }
 

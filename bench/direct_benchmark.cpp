@@ -16,6 +16,7 @@
 #include "display/lens_model.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
+#include "lightfield/display_views.hpp"
 #include "lightfield/gl_renderer.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
@@ -47,13 +48,10 @@ Frame make_frame(const std::string& path, const lightfield::LightFieldScene& sce
   Frame f;
   f.display_name = fs::path(path).filename().string();
   f.calibration = display::read_calibration(path);
-  f.quilt = display::quilt_for_display(f.calibration);
-  const display::ViewSize size = display::view_size_for_display(f.quilt, view_height);
-  const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
-  const render::Camera base = render::camera_from_spec(spec, size.width, size.height);
-  f.geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
-                                           float(f.quilt.view_cone_deg), f.quilt.views);
-  f.layout = render::make_quilt_layout(f.geometry, f.quilt.grid.cols, f.quilt.grid.rows);
+  const lightfield::DisplayViews v = lightfield::views_for_display(f.calibration, scene, view_height);
+  f.quilt = v.quilt;
+  f.geometry = v.geometry;
+  f.layout = v.layout;
   return f;
 }
 

@@ -9,6 +9,7 @@
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "display/view_count.hpp"
+#include "lightfield/display_views.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
@@ -99,13 +100,10 @@ nlohmann::ordered_json compare_eye_photographs(lightfield::LightFieldRenderer& s
   const display::Calibration calibration = display::read_calibration(calibration_path);
   const display::LensModel lens(calibration.display, calibration.correction);
   // The views the display asks for around the scene's framing (as `lfd bench direct` frames them).
-  const display::DisplayQuilt quilt = display::quilt_for_display(calibration);
-  const display::ViewSize size = display::view_size_for_display(quilt, options.view_height);
-  const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
-  const render::QuiltGeometry geometry =
-      render::make_quilt_geometry(render::camera_from_spec(spec, size.width, size.height),
-                                  glm::length(spec.look_at - spec.position), float(quilt.view_cone_deg), quilt.views);
-  const render::QuiltLayout layout = render::make_quilt_layout(geometry, quilt.grid.cols, quilt.grid.rows);
+  const lightfield::DisplayViews display_views = lightfield::views_for_display(calibration, scene, options.view_height);
+  const display::ViewSize size = display_views.size;
+  const render::QuiltGeometry& geometry = display_views.geometry;
+  const render::QuiltLayout& layout = display_views.layout;
   const Panels panels = render_panels(sweeping, scene, geometry, layout, lens, options);
 
   const sim::DisplaySimulator simulator(lens);
