@@ -5,6 +5,7 @@
 
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
+#include "render/per_view_quilt.hpp"
 
 namespace lfd::lightfield {
 

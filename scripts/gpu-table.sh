@@ -30,5 +30,8 @@ nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv | tee "$out
   --png-runs 0 --json "$out/render-gl.json" | tee "$out/render-gl.md"
 "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs 10 --warmup 2 --batch 8 \
   --swizzle-views 1,4,8 --json "$out/gpu-frame.json" | tee "$out/gpu-frame.md"
+# Issue #23's sort rows: all N against the visible (binned) Gaussians, float against normalised keys.
+"$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs 10 --warmup 2 --sort-only --zoom 2 \
+  --json "$out/gpu-sort.json" | tee "$out/gpu-sort.md"
 "$run" bench voxels --backend gl --level 7 --views 45 --size 512 --runs 5 --json "$out/voxels-gl.json" \
   | tee "$out/voxels-gl.md"
