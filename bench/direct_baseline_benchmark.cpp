@@ -52,13 +52,6 @@ double max_abs_difference(const ImageF& a, const ImageF& b) {
   return worst;
 }
 
-render::GaussianScene scene_of(const SceneSource& source) {
-  if (!source.path.empty()) return render::load_scene(source.path);
-  render::SceneGeneratorOptions g;
-  g.count = source.generated;
-  return render::generate_scene(g);
-}
-
 nlohmann::ordered_json run_row(lightfield::LightFieldRenderer& sweeping, const SceneSource& source,
                                const lightfield::LightFieldScene& scene, const std::string& calibration_path,
                                int views, const DirectBaselineOptions& options) {
@@ -159,7 +152,7 @@ nlohmann::ordered_json run_direct_baseline_benchmark(lightfield::LightFieldRende
       std::printf("| %s | skipped: not found |||||||||||\n", source.path.c_str());
       continue;
     }
-    const lightfield::LightFieldScene scene(scene_of(source));
+    const lightfield::LightFieldScene scene(source.load_gaussians());
     sweeping.set_scene(scene);
     for (const std::string& calibration : options.calibrations)
       for (int views : options.views)

@@ -173,10 +173,7 @@ class Runner {
       g.detail_level = int(source.generated);
       return lightfield::LightFieldScene(voxel::generate_voxel_scene(g));
     }
-    if (!source.path.empty()) return lightfield::LightFieldScene(render::load_scene(source.path));
-    render::SceneGeneratorOptions g;
-    g.count = source.generated;
-    return lightfield::LightFieldScene(render::generate_scene(g));
+    return lightfield::LightFieldScene(source.load_gaussians());
   }
   std::string label(const SceneSource& source) const {
     if (options_.kind == lightfield::SceneKind::kVoxels && source.path.empty())

@@ -255,6 +255,13 @@ class Runner {
 
 }  // namespace
 
+render::GaussianScene SceneSource::load_gaussians() const {
+  if (!path.empty()) return render::load_scene(path);
+  render::SceneGeneratorOptions g;
+  g.count = generated;
+  return render::generate_scene(g);
+}
+
 std::string SceneSource::label() const {
   if (!path.empty()) return fs::path(path).filename().string();
   return fmt::format("generated tabletop ({})", generated);

@@ -13,28 +13,14 @@
 #include "render/per_view_quilt.hpp"
 #include "render/swizzle_blend.hpp"
 #include "tests/interlace/flat_layer_planes.hpp"
+#include "tests/interlace/small_displays.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::interlace {
 namespace {
 
-display::DisplayCalibration small_display() {
-  // A real unit's lens (LKG-2K) on a small panel so the test stays fast.
-  return display::parse_visual_json(
-      R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
-      R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
-      R"("screenW":{"value":320},"screenH":{"value":200},"fringe":{"value":0.1}})",
-      "small");
-}
-
-// The 16" portrait Gen3 template (subpixel cells) on a small panel.
-display::DisplayCalibration small_gen3_display() {
-  display::DisplayCalibration c =
-      display::read_calibration(test::fixture_calibration("template-16in-portrait-gen3.visual.json")).display;
-  c.screen_w = 216;
-  c.screen_h = 384;
-  return c;
-}
+using test_displays::small_display;
+using test_displays::small_gen3_display;
 
 struct Comparison {
   int on_view = 0;      // subpixels whose fraction lies on a view centre, in flat quilt texels

@@ -10,27 +10,14 @@
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
+#include "tests/interlace/small_displays.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::interlace {
 namespace {
 
-display::DisplayCalibration small_display() {
-  // LKG-2K's lens on a 320x200 panel (as direct_panel_test.cpp).
-  return display::parse_visual_json(
-      R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
-      R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
-      R"("screenW":{"value":320},"screenH":{"value":200},"fringe":{"value":0.1}})",
-      "small");
-}
-
-display::DisplayCalibration small_gen3_display() {
-  display::DisplayCalibration c =
-      display::read_calibration(test::fixture_calibration("template-16in-portrait-gen3.visual.json")).display;
-  c.screen_w = 216;
-  c.screen_h = 384;
-  return c;
-}
+using test_displays::small_display;
+using test_displays::small_gen3_display;
 
 struct Fixture {
   render::GaussianScene scene;
