@@ -43,12 +43,16 @@ const std::vector<Command>& commands() {
       {"scene", RunScene, "generate a procedural Gaussian scene or inspect a scene file"},
       {"render", RunRender, "render a Gaussian scene into a light-field quilt (G2LF or per view)"},
       {"view", RunView, "show a Gaussian scene on the display in real time (GL, with controls)"},
+#ifndef LFD_NO_PLAYBACK  // a renderer-only build without FFmpeg (-DLFD_WITH_PLAYBACK=OFF)
       {"play", RunPlay, "play quilt images and quilt videos on the display (playlists, keys)"},
+#endif
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
       {"rgbd-quilt", RunRgbdQuilt, "turn an RGB-D image (colour + depth side by side) into a quilt"},
+#ifndef LFD_NO_PLAYBACK
       {"serve", RunServe, "serve the display to existing Looking Glass apps (HoloPlay, Bridge)"},
+#endif
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunSimulate, "simulate a camera photograph of a display showing a panel"},
       {"validate", RunValidate, "measure crosstalk and view separation of a display"},
