@@ -1,21 +1,37 @@
 #!/usr/bin/env bash
 # The GPU table of docs/performance.md in one command, on a machine with an NVIDIA GPU and the
-# renderer-only bundle (scripts/bundle-renderer.sh) and the EGL loader packages (.gl/*.deb,
-# fetched beforehand as docs/performance.md says) carried along:
+# renderer-only bundle (LFD_BUNDLE_TESTS=1 scripts/bundle-renderer.sh) and the EGL loader
+# packages (.gl/*.deb, fetched beforehand as docs/performance.md says) carried along:
 #
-#   bash scripts/gpu-table.sh OUT_DIR
+#   bash scripts/gpu-table.sh OUT_DIR [STEP...]
 #
-# Unpacks the EGL loader when the machine has none, points libglvnd at the NVIDIA EGL vendor
-# file, and writes, each as Markdown (.md) and JSON: render-gl (per view vs G2LF at the paper's
-# sizes: 100k/1M/3M Gaussians, 45 views of 512x512), gpu-frame (the frame with timers waited for
-# vs read late, swizzle variants: 1M Gaussians, 45 views of 512x512) and voxels-gl (per view vs
-# V2LF). About 5 minutes on an H100 by estimate: no GPU was lent to the session that wrote it, so
-# it has not been run there.
-set -euo pipefail
-out=${1:?usage: scripts/gpu-table.sh OUT_DIR}
+# Unpacks the EGL loader when the machine has none, points libglvnd at the NVIDIA vendor file,
+# then runs the steps (all by default), each under its own time limit, writing OUT_DIR/STEP.md
+# (the table as printed), OUT_DIR/STEP.json where the step writes JSON, and a line per step in
+# OUT_DIR/steps.txt (exit code, seconds); a failing step does not stop the others:
+#   tests       the bundled GL test programs (the GL renderers, shaders, sort and interlacer
+#               against their CPU twins), when the bundle has them
+#   render-gl   per view vs G2LF at the paper's sizes: 100k/1M/3M Gaussians, 45 views of 512x512
+#   gpu-frame   the frame with timers waited for vs read late, swizzle variants, plane formats
+#   gpu-sort    the sort rows: all N against the visible Gaussians, float against normalised keys
+#   voxels-gl   per view vs V2LF
+#   direct-gl   the direct panel pass against swizzle + interlace on the three displays (bilinear
+#               planes filtered by the texture unit, the GL default)
+#   direct-gl-shader  the same at 1M Gaussians with the planes filtered by hand (four texelFetch)
+# LFD_GPU_TABLE_LIMIT (seconds, default 150) bounds each step; LFD_GPU_TABLE_RUNS (default 10) is
+# the timed frames per row, LFD_GPU_TABLE_SIZES (default 100000,1000000,3000000) render-gl's scenes.
+set -uo pipefail
+out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
+shift
+steps=("$@")
+[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl direct-gl direct-gl-shader)
+limit=${LFD_GPU_TABLE_LIMIT:-150}
+runs=${LFD_GPU_TABLE_RUNS:-10}
+sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
-run=bundle/lfd-renderer/run.sh
+bundle=bundle/lfd-renderer
+run=$bundle/run.sh
 [ -x "$run" ] || { echo "gpu-table: $run missing: run scripts/bundle-renderer.sh first" >&2; exit 2; }
 if ! ldconfig -p | grep -q 'libEGL.so.1 '; then
   ls .gl/*.deb >/dev/null 2>&1 || { echo "gpu-table: no libEGL and no .gl/*.deb (docs/performance.md)" >&2; exit 2; }
@@ -24,14 +40,61 @@ if ! ldconfig -p | grep -q 'libEGL.so.1 '; then
 fi
 vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
 if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; fi
+unset EGL_PLATFORM  # the EGL device platform (the GPU), not Mesa's surfaceless one
 "$run" version | tee "$out/version.txt"
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv | tee "$out/gpu.txt" || true
-"$run" bench render --backend gl --generated 100000,1000000,3000000 --views 45 --size 512 --runs 10 \
-  --png-runs 0 --json "$out/render-gl.json" | tee "$out/render-gl.md"
-"$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs 10 --warmup 2 --batch 8 \
-  --swizzle-views 1,4,8 --json "$out/gpu-frame.json" | tee "$out/gpu-frame.md"
-# Issue #23's sort rows: all N against the visible (binned) Gaussians, float against normalised keys.
-"$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs 10 --warmup 2 --sort-only --zoom 2 \
-  --json "$out/gpu-sort.json" | tee "$out/gpu-sort.md"
-"$run" bench voxels --backend gl --level 7 --views 45 --size 512 --runs 5 --json "$out/voxels-gl.json" \
-  | tee "$out/voxels-gl.md"
+
+# One step: its command under the time limit, its output in OUT/STEP.md, a line in steps.txt.
+step() {
+  local name=$1; shift
+  local start=$SECONDS
+  echo "== $name: $*" | tee -a "$out/steps.txt"
+  timeout --kill-after=10 "$limit" "$@" > "$out/$name.md" 2>&1
+  local rc=$?
+  tail -n 40 "$out/$name.md"
+  echo "== $name: exit $rc after $((SECONDS - start)) s" | tee -a "$out/steps.txt"
+}
+
+# The GL test programs have their fixtures' path compiled in (tests/test_data.hpp): link the
+# checkout they were built in to this one when it is elsewhere.
+bundled_tests() {
+  local source_dir
+  source_dir=$(cat "$bundle/tests/source_dir.txt")
+  if [ ! -e "$source_dir" ]; then mkdir -p "$(dirname "$source_dir")" && ln -s "$PWD" "$source_dir"; fi
+  local rc=0 t
+  for t in "$bundle"/tests/lfd_*_tests; do
+    # The CLI tests run the build tree's lfd, which does not travel.
+    LD_LIBRARY_PATH="$bundle/lib" "$t" --gtest_filter='-*Cli*:*CLI*' --gtest_brief=1 || rc=1
+  done
+  return $rc
+}
+export -f bundled_tests
+export bundle
+
+for s in "${steps[@]}"; do
+  case "$s" in
+    tests)
+      if [ -d "$bundle/tests" ]; then step tests bash -c bundled_tests; else echo "== tests: none in the bundle"; fi ;;
+    render-gl)
+      step render-gl "$run" bench render --backend gl --generated "$sizes" --views 45 --size 512 \
+        --runs "$runs" --png-runs 0 --json "$out/render-gl.json" ;;
+    gpu-frame)
+      step gpu-frame "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs "$runs" --warmup 2 \
+        --batch 8 --swizzle-views 1,4,8 --json "$out/gpu-frame.json" ;;
+    gpu-sort)
+      step gpu-sort "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs "$runs" --warmup 2 \
+        --sort-only --zoom 2 --json "$out/gpu-sort.json" ;;
+    voxels-gl)
+      step voxels-gl "$run" bench voxels --backend gl --level 7 --views 45 --size 512 --runs "$runs" \
+        --json "$out/voxels-gl.json" ;;
+    direct-gl)
+      step direct-gl "$run" bench direct --backend gl --generated 100000,1000000 --chunks 16,64,256 --runs "$runs" \
+        --reference-views 0 --json "$out/direct-gl.json" ;;
+    direct-gl-shader)
+      step direct-gl-shader "$run" bench direct --backend gl --generated 1000000 --chunks 16,64 --runs "$runs" \
+        --reference-views 0 --direct-sampler shader --json "$out/direct-gl-shader.json" ;;
+    *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, direct-gl," \
+         "direct-gl-shader)" >&2; exit 2 ;;
+  esac
+done
+cat "$out/steps.txt"
