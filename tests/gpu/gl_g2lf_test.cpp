@@ -163,9 +163,13 @@ INSTANTIATE_TEST_SUITE_P(
                       SwizzleCase{tabletop, 1, -1.0f, PlanePrecision::kF32, PlaneFilter::kNearest},
                       SwizzleCase{tabletop, 1, -1.0f, PlanePrecision::kF32, PlaneFilter::kBilinear}));
 
-// Several views per invocation share the per-plane factors: the quilt stays the CPU's bit for
-// bit on f32 planes whatever the grouping, a view count that is not a multiple included (the
-// cloud has 9 views), with the views x planes table and without (bilinear by hand).
+// Several views per invocation share the per-plane factors: the quilt stays the CPU's on f32
+// planes whatever the grouping, a view count that is not a multiple included (the cloud has 9
+// views), with the views x planes table and without (bilinear by hand). Bit for bit on Mesa
+// llvmpipe; NVIDIA's compiler fuses the weights' products into FMAs, which moved the last bits
+// (an H200: 1.8e-7 nearest, 3.4e-6 bilinear), so the bound is float rounding, a thousandth of
+// a u8 step: a wrong grouping (a view's factors or shift taken from its neighbour) errs by the
+// scene's contrast.
 TEST(GlG2lfSwizzleViews, EveryGroupingOfViewsGivesTheCpuQuilt) {
   for (const PlaneFilter filter : {PlaneFilter::kNearest, PlaneFilter::kBilinear})
     for (const int views : {1, 2, 4, 8, 16}) {
@@ -176,7 +180,7 @@ TEST(GlG2lfSwizzleViews, EveryGroupingOfViewsGivesTheCpuQuilt) {
         options.factor_table = table;
         options.hardware_bilinear = false;  // the CPU's weights: exact
         swizzle_psnr(SwizzleCase{cloud, 2, 1.0f, PlanePrecision::kF32, filter}, &max_error, options);
-        EXPECT_EQ(max_error, 0.0) << views << " views per invocation, "
+        EXPECT_LE(max_error, 1e-5) << views << " views per invocation, "
                                   << (filter == PlaneFilter::kNearest ? "nearest" : "bilinear")
                                   << (table ? ", views x planes table" : ", no table");
       }

@@ -40,6 +40,14 @@ GpuPreprocess run_gpu(const HeadlessContext& context, const render::GaussianScen
 
 float relative(float a, float b) { return std::abs(a - b) / std::max(1e-6f, std::max(std::abs(a), std::abs(b))); }
 
+// A conic element's error against the conic's scale (its larger diagonal element): the
+// off-diagonal element of a nearly axis-aligned footprint is close to 0, and measured against
+// itself its last bits are all there is (an H200 gave 2.4e-4 of a small one).
+float conic_error(const float (&gpu)[3], const glm::vec3& cpu, int k) {
+  const float scale = std::max({1e-6f, std::abs(cpu[0]), std::abs(cpu[2])});
+  return std::abs(gpu[k] - cpu[k]) / scale;
+}
+
 // Every Gaussian: culled alike, same radius and tile rectangle (an integer from a float: one in
 // a thousand may land on the other side of a rounding boundary, and then by one), mean, conic,
 // depth and colour to float rounding; keys and values as documented; the visible count.
@@ -75,7 +83,7 @@ void expect_matches_cpu(const HeadlessContext& context, const render::GaussianSc
     EXPECT_LT(relative(g.depth, c.depth), 1e-6f) << i;
     EXPECT_EQ(g.opacity, c.opacity) << i;
     for (int k = 0; k < 3; ++k) {
-      EXPECT_LT(relative(g.conic[k], c.conic[k]), 2e-4f) << i << " conic " << k;
+      EXPECT_LT(conic_error(g.conic, c.conic, k), 2e-4f) << i << " conic " << k;
       EXPECT_NEAR(g.color[k], c.color[k], 2e-5f) << i << " colour " << k;
     }
   }
