@@ -78,6 +78,11 @@ int RunBenchDirect(int argc, char** argv) {
                  "the direct pass's plane sampling, nearest or bilinear (the quilt path: nearest, then the "
                  "interlacer's bilinear lookup)")
       ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
+  std::string direct_sampler = "unit";
+  app.add_option("--direct-sampler", direct_sampler,
+                 "--backend gl, bilinear planes: the texture unit filters (unit: one fetch, its own weights) or "
+                 "the shader by hand (shader: four texelFetch, the CPU's weights)")
+      ->check(CLI::IsMember({"unit", "shader"}))->capture_default_str();
   app.add_option("--backend", backend, "renderer: cpu, or gl (OpenGL 4.5 through headless EGL; exit 2 without it)")
       ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
   app.add_option("--calibration", o.calibrations, "displays (visual.json or calibration.json), comma-separated")
@@ -106,6 +111,7 @@ int RunBenchDirect(int argc, char** argv) {
       ->delimiter(',')->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
   o.direct_filter = render::parse_plane_filter(direct_filter);
+  o.direct_hardware_bilinear = direct_sampler == "unit";
   const bool voxels = method == "v2lf";
   if (voxels && app.count("--generated")) throw_input_error("bench direct: --generated: applies to --method g2lf only");
   if (!voxels && app.count("--voxel-level")) throw_input_error("bench direct: --voxel-level: applies to --method v2lf only");

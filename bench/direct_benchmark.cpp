@@ -145,11 +145,19 @@ class Runner {
                                   {"device", sweeping_.device()}, {"memory", sweeping_.memory_kind()},
                                   {"runs", runs_},                {"warmup", options_.warmup},
                                   {"reference_views", options_.reference_views},
+                                  {"direct_filter", options_.direct_filter == render::PlaneFilter::kBilinear
+                                                        ? "bilinear" : "nearest"},
+                                  {"direct_hardware_bilinear", options_.direct_hardware_bilinear},
                                   {"tables", nlohmann::ordered_json::array()}};
     std::printf("lfd bench direct: backend %s (%s); per row the median of %d frames of each side after %d "
                 "warm-up, the sides alternating; 'after planes': quilt path = swizzle + interlace, direct = the "
-                "direct pass; PSNR against the panel of per-view renders at %d views (nearest view per subpixel)\n",
+                "direct pass (%s planes%s); PSNR against the panel of per-view renders at %d views (nearest view "
+                "per subpixel)\n",
                 sweeping_.name().c_str(), sweeping_.device().c_str(), runs_, options_.warmup,
+                options_.direct_filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest",
+                options_.direct_filter == render::PlaneFilter::kBilinear && sweeping_.name() == "gl"
+                    ? (options_.direct_hardware_bilinear ? ", texture unit" : ", by hand")
+                    : "",
                 options_.reference_views);
     for (const SceneSource& source : options_.scenes) {
       if (!source.path.empty() && !fs::exists(source.path)) {
@@ -220,6 +228,7 @@ class Runner {
     sweeping_.set_options(o);
     lightfield::RendererOptions direct = o;
     direct.planes.filter = options_.direct_filter;
+    direct.gl.direct_hardware_bilinear = options_.direct_hardware_bilinear;
     QuiltInterlacer nearest(sweeping_, lens, f.layout, interlace::ViewBlend::kNearest);
     std::vector<double> swizzle, interlace_s, after_quilt, direct_pass, frame_quilt, frame_direct;
     for (int i = 0; i < options_.warmup + runs_; ++i) {

@@ -30,6 +30,9 @@ struct DirectBenchOptions {
   // The direct pass's plane sampling (the quilt path keeps the renderer's): bilinear stands in
   // for the interlacer's bilinear lookup in the quilt, which the direct pass does not have.
   render::PlaneFilter direct_filter = render::PlaneFilter::kBilinear;
+  // GL: bilinear planes filtered by the texture unit (one fetch) or by hand (four texelFetch, the
+  // CPU's weights): lightfield::GlRenderOptions::direct_hardware_bilinear.
+  bool direct_hardware_bilinear = true;
   // kGaussians: G2LF planes of Gaussian scenes (SceneSource::generated = Gaussians of a generated
   // tabletop); kVoxels: V2LF planes of voxel scenes (generated = the generated voxel tabletop's
   // finest level, voxel/voxel_generator.hpp). The renderers must be of this kind.

@@ -13,11 +13,22 @@
 
 namespace lfd::gpu {
 
-GlDirectPanel::GlDirectPanel(const display::LensModel& lens)
+GlDirectPanel::GlDirectPanel(const display::LensModel& lens, bool hardware_bilinear)
     : calibration_(lens.calibration()),
       panel_width_(lens.calibration().screen_w),
       panel_height_(lens.calibration().screen_h),
-      lens_view_(lens) {}
+      hardware_bilinear_(hardware_bilinear),
+      lens_view_(lens) {
+  if (hardware_bilinear_) {
+    // The CPU's plane reads empty (0, 0, 0, 1) outside: the border colour.
+    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+    glSamplerParameterfv(linear_.id(), GL_TEXTURE_BORDER_COLOR, empty);
+  }
+}
 
 const Program& GlDirectPanel::program(render::PlaneFilter filter) {
   auto it = programs_.find(int(filter));
@@ -26,7 +37,8 @@ const Program& GlDirectPanel::program(render::PlaneFilter filter) {
     const std::string fragment = std::string(lens_view_glsl) + direct_panel_frag_glsl;
     Program p(std::string("direct panel (") + (bilinear ? "bilinear" : "nearest") + ")",
               {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, fragment.c_str()}},
-              {std::string("BILINEAR ") + (bilinear ? "1" : "0")});
+              {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
+               std::string("HW_BILINEAR ") + (hardware_bilinear_ ? "1" : "0")});
     lens_view_.set_uniforms(p);
     it = programs_.emplace(int(filter), std::move(p)).first;
   }
@@ -61,9 +73,12 @@ void GlDirectPanel::draw(const GlPlanes& planes, const render::QuiltGeometry& ge
   p.use();
   lens_view_.bind();
   glBindTextureUnit(0, planes.texels.id());
+  const bool sampled = hardware_bilinear_ && options.filter == render::PlaneFilter::kBilinear;
+  glBindSampler(0, sampled ? linear_.id() : 0);
   planes.table.buffer.bind_storage(0);
   glBindVertexArray(triangle_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindSampler(0, 0);
   check_gl("the direct panel pass");
 }
 
@@ -82,9 +97,9 @@ void GlDirectPanel::run(const GlPlanes& planes, const render::QuiltGeometry& geo
 
 ImageF direct_panel_on_gpu(const render::SweepingPlanes& planes, const render::QuiltGeometry& geometry,
                            const render::ReferenceCamera& ref, const display::LensModel& lens,
-                           const interlace::DirectPanelOptions& options) {
+                           const interlace::DirectPanelOptions& options, bool hardware_bilinear) {
   const GlPlanes gl_planes = upload_planes(planes);
-  GlDirectPanel pass(lens);
+  GlDirectPanel pass(lens, hardware_bilinear);
   Texture panel(GL_RGBA32F, lens.calibration().screen_w, lens.calibration().screen_h);
   pass.run(gl_planes, geometry, ref, options, panel);
   return image_from_texture(panel);

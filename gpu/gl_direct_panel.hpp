@@ -20,8 +20,10 @@ namespace lfd::gpu {
 
 class GlDirectPanel {
  public:
-  // Needs a current GL 4.5 context; uploads the lens model once.
-  explicit GlDirectPanel(const display::LensModel& lens);
+  // Needs a current GL 4.5 context; uploads the lens model once. hardware_bilinear: bilinear
+  // planes filtered by the texture unit (one fetch, its own weights) instead of four texelFetch
+  // with the CPU's weights (docs/gpu.md "The direct pass on a GPU").
+  explicit GlDirectPanel(const display::LensModel& lens, bool hardware_bilinear = true);
 
   // The panel of `planes` (their table on the GPU gives the count and depths) for the views of
   // `geometry` from `ref` into `panel` (screenW x screenH, colour-renderable, rows bottom-up;
@@ -33,6 +35,7 @@ class GlDirectPanel {
             const interlace::DirectPanelOptions& options);
 
   int panel_width() const { return panel_width_; }
+  bool hardware_bilinear() const { return hardware_bilinear_; }
   int panel_height() const { return panel_height_; }
 
  private:
@@ -40,7 +43,9 @@ class GlDirectPanel {
 
   display::DisplayCalibration calibration_;
   int panel_width_ = 0, panel_height_ = 0;
+  bool hardware_bilinear_ = true;
   GlLensView lens_view_;
+  Sampler linear_;  // hardware_bilinear's
   std::map<int, Program> programs_;
   VertexArray triangle_;
   Framebuffer target_;
@@ -50,6 +55,6 @@ class GlDirectPanel {
 // panel read back (float, top-down like interlace::render_direct_panel). Needs a current context.
 ImageF direct_panel_on_gpu(const render::SweepingPlanes& planes, const render::QuiltGeometry& geometry,
                            const render::ReferenceCamera& ref, const display::LensModel& lens,
-                           const interlace::DirectPanelOptions& options);
+                           const interlace::DirectPanelOptions& options, bool hardware_bilinear = false);
 
 }  // namespace lfd::gpu

@@ -35,13 +35,15 @@ class GlGaussianViews final : public GlRendererBase {
     o.timer_reads = options_.gl.timer_reads;
     o.depth_key_bits = options_.gl.depth_key_bits;
     o.normalised_depth_keys = options_.gl.normalised_depth_keys;
+    o.accumulation_format = options_.gl.per_view_accumulation_format;
     views_ = std::make_unique<gpu::GlPerViewRenderer>(*scene_, o);
   }
   void options_changed(const RendererOptions& old) override {
     if (old.gl.gpu_timers != options_.gl.gpu_timers || old.gl.timer_reads != options_.gl.timer_reads ||
         old.gl.depth_key_bits != options_.gl.depth_key_bits ||
-        old.gl.normalised_depth_keys != options_.gl.normalised_depth_keys)
-      forget_binding();  // the timers and the sort's key bits are made with it
+        old.gl.normalised_depth_keys != options_.gl.normalised_depth_keys ||
+        old.gl.per_view_accumulation_format != options_.gl.per_view_accumulation_format)
+      forget_binding();  // the timers, the sort's key bits and the blending target are made with it
   }
 
   std::shared_ptr<const gpu::GlScene> scene_;

@@ -43,9 +43,10 @@ QuiltStats GlRendererBase::render_quilt(const render::QuiltGeometry& geometry, c
 
 gpu::GlDirectPanel& GlRendererBase::direct_pass(const display::LensModel& lens) {
   // Another lens (even one at the same address) needs its own constants: compare the panel too.
+  const bool hardware_bilinear = options_.gl.direct_hardware_bilinear;
   if (!direct_ || direct_lens_ != &lens || direct_->panel_width() != lens.calibration().screen_w ||
-      direct_->panel_height() != lens.calibration().screen_h) {
-    direct_ = std::make_unique<gpu::GlDirectPanel>(lens);
+      direct_->panel_height() != lens.calibration().screen_h || direct_->hardware_bilinear() != hardware_bilinear) {
+    direct_ = std::make_unique<gpu::GlDirectPanel>(lens, hardware_bilinear);
     direct_lens_ = &lens;
   }
   return *direct_;

@@ -51,6 +51,13 @@ struct GlRenderOptions {
   // Per view: those bits spread over the view's visible depth range
   // (gpu::GlPerViewOptions::normalised_depth_keys; the viewer's 16 bits: 2 radix passes).
   bool normalised_depth_keys = false;
+  // Per view: the blending target (gpu::GlPerViewOptions::accumulation_format): RGBA32F (the
+  // CPU's to ~80 dB) or RGBA16F (half the bytes a blend: 2.5x faster on an H200 at 1M
+  // Gaussians, the viewer's; docs/performance.md "The GPU table").
+  GLenum per_view_accumulation_format = GL_RGBA32F;
+  // The direct panel pass samples bilinear planes with the texture unit (gpu::GlDirectPanel;
+  // off: four texelFetch with the CPU's weights, its exact twin).
+  bool direct_hardware_bilinear = true;
   size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
   size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
 };

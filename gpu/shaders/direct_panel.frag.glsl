@@ -7,8 +7,10 @@
 // pixel's point in the view (the interlacer's aspect fit), for that channel alone. Plane
 // coordinates are Eq. (u_prime) as plane_coordinate_x_at / plane_coordinate_y write it, sampled
 // as the CPU's (nearest, or bilinear from four texelFetches, empty (0, 0, 0, 1) outside); a ray
-// stops below 0.5/255 transmittance. No quilt.
-// Defines: BILINEAR 0|1.
+// stops below 0.5/255 transmittance. No quilt. With HW_BILINEAR (and BILINEAR) the texture unit
+// filters (a sampler with GL_LINEAR and a (0, 0, 0, 1) border, as the swizzle's): one fetch
+// instead of four, with the unit's own weights (8 bits of fraction on NVIDIA), not the CPU's.
+// Defines: BILINEAR 0|1, HW_BILINEAR 0|1.
 
 layout(binding = 0) uniform sampler2DArray planes;  // rows bottom-up (gpu/gl_planes.hpp)
 
@@ -75,7 +77,10 @@ void main() {
       if (t[c] < kMinTransmittance) continue;
       precise const float px = ((dx[c] * parallax + u_ndc * scale_x + 1.0) * Wp - 1.0) * 0.5;
       vec4 sample_k;
-#if BILINEAR
+#if BILINEAR && HW_BILINEAR
+      // Texel centres at (i + 0.5) / size; row py of the CPU's plane is texel row Hp - 1 - py.
+      sample_k = textureLod(planes, vec3((px + 0.5) / Wp, (Hp - 0.5 - py) / Hp, float(layer)), 0.0);
+#elif BILINEAR
       const int row0 = int(floor(py)), col0 = int(floor(px));
       precise const float fy = py - float(row0), fx = px - float(col0);
       const vec4 a = fetch(col0, row0, layer), b = fetch(col0 + 1, row0, layer);

@@ -82,6 +82,34 @@ TEST(GlDirectPanel, MatchesTheCpuDirectPassOnGen3Cells) {
   expect_gpu_matches_cpu("16in portrait Gen3 / 8, !invView", lens, test_planes::flat_layer_scene(135, 240, 32));
 }
 
+// The texture unit's bilinear filter (the renderers' default on the GPU: one fetch instead of
+// four) against the CPU's float weights: within the by-hand path's bars, but not exact (an
+// exact match would mean the unit's filter was not used).
+TEST(GlDirectPanel, HardwareBilinearStaysWithinTheBarsOfTheCpuFilter) {
+  HeadlessContext context;
+  display::DisplayCalibration c = display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json"));
+  c.screen_w /= 8;
+  c.screen_h /= 8;
+  const display::LensModel lens(c);
+  for (const auto precision : {render::PlanePrecision::kF32, render::PlanePrecision::kU8}) {
+    const test_planes::FlatLayerScene s = test_planes::flat_layer_scene(160, 100, 8, precision);
+    for (const bool invert : {false, true}) {
+      interlace::DirectPanelOptions o;
+      o.filter = render::PlaneFilter::kBilinear;
+      o.background = s.background;
+      o.invert_views = invert;
+      const ImageF cpu = interlace::render_direct_panel(s.planes, s.geometry, s.ref, lens, o);
+      const Agreement a = compare(direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o, true), cpu);
+      std::printf("  texture unit bilinear, %s planes%s: max |GL - CPU| %.2e  within 1/255: %.4f %%\n",
+                  precision == render::PlanePrecision::kU8 ? "u8" : "f32", invert ? ", invert" : "",
+                  a.max_difference, 100 * a.fraction_within);
+      EXPECT_GE(a.fraction_within, 0.999);
+      EXPECT_LT(a.max_difference, 0.02);
+      EXPECT_GT(a.max_difference, 0.0) << "the unit's weights are not the CPU's";
+    }
+  }
+}
+
 TEST(GlDirectPanel, APanelTextureOfTheWrongSizeIsAnInputError) {
   HeadlessContext context;
   const display::LensModel lens(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")));
