@@ -19,15 +19,7 @@ GlDirectPanel::GlDirectPanel(const display::LensModel& lens, bool hardware_bilin
       panel_height_(lens.calibration().screen_h),
       hardware_bilinear_(hardware_bilinear),
       lens_view_(lens) {
-  if (hardware_bilinear_) {
-    // The CPU's plane reads empty (0, 0, 0, 1) outside: the border colour.
-    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    glSamplerParameterfv(linear_.id(), GL_TEXTURE_BORDER_COLOR, empty);
-  }
+  if (hardware_bilinear_) set_plane_bilinear(linear_);
 }
 
 const Program& GlDirectPanel::program(render::PlaneFilter filter) {

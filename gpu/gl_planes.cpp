@@ -7,6 +7,15 @@
 
 namespace lfd::gpu {
 
+void set_plane_bilinear(const Sampler& sampler) {
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
+  glSamplerParameterfv(sampler.id(), GL_TEXTURE_BORDER_COLOR, empty);
+}
+
 std::string plane_table_source(const char* shader, int binding) {
   return "#define PLANE_TABLE_BINDING " + std::to_string(binding) + "\n" + plane_table_glsl + shader;
 }

@@ -66,6 +66,12 @@ struct GlPlanes {
 // storage-buffer `binding`) before it: the one GLSL definition of the table's layout.
 std::string plane_table_source(const char* shader, int binding);
 
+// Sets `sampler` to filter planes bilinearly in the texture unit, as the CPU's bilinear plane
+// lookup does (the swizzle's and the direct pass's hardware_bilinear): GL_LINEAR, and outside a
+// plane the CPU's empty texel (0, 0, 0, 1) as the border colour. One fetch instead of four, with
+// the unit's own weights (8 bits of fraction on NVIDIA), so within the tests' bars, not exact.
+void set_plane_bilinear(const Sampler& sampler);
+
 // The texels `planes` needs for `max_planes` layers of `width` x `height` in `format`.
 size_t plane_texture_bytes(PlaneFormat format, int max_planes, int width, int height);
 

@@ -31,15 +31,7 @@ GlSwizzle::GlSwizzle(const SwizzleOptions& options) : options_(options) {
   if (options_.factor_table)
     table_ = Program("g2lf swizzle: views x planes table",
                      {{GL_COMPUTE_SHADER, plane_table_source(swizzle_table_comp_glsl, 0).c_str()}});
-  if (options_.hardware_bilinear) {
-    // The CPU's plane reads empty (0, 0, 0, 1) outside: the border colour.
-    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
-    glSamplerParameteri(linear_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
-    glSamplerParameterfv(linear_.id(), GL_TEXTURE_BORDER_COLOR, empty);
-  }
+  if (options_.hardware_bilinear) set_plane_bilinear(linear_);
 }
 
 const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_format) {
