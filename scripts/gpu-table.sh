@@ -18,6 +18,7 @@
 #   direct-gl   the direct panel pass against swizzle + interlace on the three displays (bilinear
 #               planes filtered by the texture unit, the GL default)
 #   direct-gl-shader  the same at 1M Gaussians with the planes filtered by hand (four texelFetch)
+# The script's mechanics are tested without a GPU on a stub bundle (tests/scripts/gpu_table_test.sh).
 # LFD_GPU_TABLE_LIMIT (seconds, default 150) bounds each step; LFD_GPU_TABLE_RUNS (default 10) is
 # the timed frames per row, LFD_GPU_TABLE_SIZES (default 100000,1000000,3000000) render-gl's scenes.
 set -uo pipefail
@@ -30,7 +31,7 @@ runs=${LFD_GPU_TABLE_RUNS:-10}
 sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
-bundle=bundle/lfd-renderer
+bundle=${LFD_BUNDLE_DIR:-bundle/lfd-renderer}  # another bundle folder (tests/scripts: a stub)
 run=$bundle/run.sh
 [ -x "$run" ] || { echo "gpu-table: $run missing: run scripts/bundle-renderer.sh first" >&2; exit 2; }
 if ! ldconfig -p | grep -q 'libEGL.so.1 '; then

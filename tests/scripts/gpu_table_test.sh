@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# scripts/gpu-table.sh's mechanics without a GPU (docs/performance.md "The GPU table"): a stub
+# bundle whose lfd prints its arguments, writes the --json file it is given, fails on one step and
+# outlasts the limit on another. Every step must still run, each under the limit, with its exit
+# code in steps.txt; the options reach the commands; an unknown step is one line and exit 2.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+bundle=$work/bundle
+mkdir -p "$bundle/tests" "$bundle/lib"
+cat > "$bundle/run.sh" <<'EOF'
+#!/usr/bin/env bash
+echo "stub lfd $*"
+previous=""
+for a in "$@"; do
+  [ "$previous" = --json ] && echo '{}' > "$a"
+  previous=$a
+done
+case "$*" in
+  *--sort-only*) sleep 30 ;;     # outlasts the limit
+  "bench voxels"*) exit 3 ;;     # fails
+esac
+exit 0
+EOF
+cat > "$bundle/tests/lfd_stub_tests" <<'EOF'
+#!/usr/bin/env bash
+echo "stub tests $*"
+echo "[  PASSED  ] 1 test."
+EOF
+chmod +x "$bundle/run.sh" "$bundle/tests/lfd_stub_tests"
+echo "$root" > "$bundle/tests/source_dir.txt"
+
+fail() { echo "gpu_table_test: $*" >&2; exit 1; }
+out=$work/out
+LFD_BUNDLE_DIR=$bundle LFD_GPU_TABLE_LIMIT=2 LFD_GPU_TABLE_RUNS=3 bash "$root/scripts/gpu-table.sh" "$out" > "$work/log" 2>&1 \
+  || fail "the table exited $? (a failing step must not stop it): $(tail -3 "$work/log")"
+for expected in "tests: exit 0" "render-gl: exit 0" "gpu-frame: exit 0" "gpu-sort: exit 124" "voxels-gl: exit 3" \
+                "direct-gl: exit 0" "direct-gl-shader: exit 0"; do
+  grep -q "== $expected after" "$out/steps.txt" || fail "steps.txt lacks '$expected': $(cat "$out/steps.txt")"
+done
+grep -q -- "--gtest_filter=-\*Cli\*" "$out/tests.md" || fail "the bundled tests ran without the CLI filter"
+grep -q -- "bench render --backend gl --generated 100000,1000000,3000000 .*--runs 3" "$out/render-gl.md" \
+  || fail "render-gl did not get the sizes and LFD_GPU_TABLE_RUNS: $(head -1 "$out/render-gl.md")"
+grep -q -- "--direct-sampler shader" "$out/direct-gl-shader.md" || fail "direct-gl-shader did not filter by hand"
+for json in render-gl gpu-frame gpu-sort voxels-gl direct-gl direct-gl-shader; do
+  [ -s "$out/$json.json" ] || fail "$json.json was not written"
+done
+grep -q "stub lfd version" "$out/version.txt" || fail "version.txt: $(cat "$out/version.txt")"
+
+# Named steps run alone; an unknown one is refused with one line and exit 2.
+rm -rf "$out"
+LFD_BUNDLE_DIR=$bundle bash "$root/scripts/gpu-table.sh" "$out" direct-gl > "$work/log" 2>&1 || fail "direct-gl alone failed"
+[ "$(grep -c '^== .*: exit' "$out/steps.txt")" = 1 ] || fail "more than the named step ran: $(cat "$out/steps.txt")"
+set +e
+LFD_BUNDLE_DIR=$bundle bash "$root/scripts/gpu-table.sh" "$out" no-such-step > "$work/log" 2> "$work/err"
+rc=$?
+set -e
+[ "$rc" = 2 ] || fail "an unknown step exited $rc, not 2"
+grep -q "unknown step 'no-such-step'" "$work/err" || fail "no one-line reason: $(cat "$work/err")"
+# No bundle: one line, exit 2.
+set +e
+LFD_BUNDLE_DIR=$work/none bash "$root/scripts/gpu-table.sh" "$out" > /dev/null 2> "$work/err"
+rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "missing" "$work/err" || fail "a missing bundle exited $rc: $(cat "$work/err")"
+echo "gpu_table_test: every step ran under its limit (exit codes 0, 124, 3 as planted), named and unknown steps, no bundle"
