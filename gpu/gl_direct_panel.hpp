@@ -35,8 +35,8 @@ class GlDirectPanel {
             const interlace::DirectPanelOptions& options);
 
   int panel_width() const { return panel_width_; }
-  bool hardware_bilinear() const { return hardware_bilinear_; }
   int panel_height() const { return panel_height_; }
+  bool hardware_bilinear() const { return hardware_bilinear_; }
 
  private:
   const Program& program(render::PlaneFilter filter);

@@ -178,7 +178,7 @@ TEST(GlG2lfSwizzleViews, EveryGroupingOfViewsGivesTheCpuQuilt) {
         SwizzleOptions options;
         options.views_per_invocation = views;
         options.factor_table = table;
-        options.hardware_bilinear = false;  // the CPU's weights: exact
+        options.hardware_bilinear = false;  // the CPU's weights
         swizzle_psnr(SwizzleCase{cloud, 2, 1.0f, PlanePrecision::kF32, filter}, &max_error, options);
         EXPECT_LE(max_error, 1e-5) << views << " views per invocation, "
                                   << (filter == PlaneFilter::kNearest ? "nearest" : "bilinear")
