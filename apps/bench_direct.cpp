@@ -83,6 +83,11 @@ int RunBenchDirect(int argc, char** argv) {
                  "--backend gl, bilinear planes: the texture unit filters (unit: one fetch, its own weights) or "
                  "the shader by hand (shader: four texelFetch, the CPU's weights)")
       ->check(CLI::IsMember({"unit", "shader"}))->capture_default_str();
+  std::string direct_kernel = render::sample_kernel_name(render::sample_window_kernel());
+  app.add_option("--direct-kernel", direct_kernel,
+                 "--backend cpu: the direct pass's sampling loop, scalar or avx2 (eight rays a step with "
+                 "gathers; the default where the CPU has AVX2)")
+      ->check(CLI::IsMember({"scalar", "avx2"}))->capture_default_str();
   app.add_option("--backend", backend, "renderer: cpu, or gl (OpenGL 4.5 through headless EGL; exit 2 without it)")
       ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
   app.add_option("--calibration", o.calibrations, "displays (visual.json or calibration.json), comma-separated")
@@ -112,6 +117,9 @@ int RunBenchDirect(int argc, char** argv) {
   if (auto code = parse(app, argc, argv)) return *code;
   o.direct_filter = render::parse_plane_filter(direct_filter);
   o.direct_hardware_bilinear = direct_sampler == "unit";
+  o.direct_kernel = render::parse_sample_kernel(direct_kernel);
+  if (!render::sample_kernel_available(o.direct_kernel))
+    throw_input_error("bench direct: --direct-kernel avx2: this CPU has no AVX2");
   const bool voxels = method == "v2lf";
   if (voxels && app.count("--generated")) throw_input_error("bench direct: --generated: applies to --method g2lf only");
   if (!voxels && app.count("--voxel-level")) throw_input_error("bench direct: --voxel-level: applies to --method v2lf only");

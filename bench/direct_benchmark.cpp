@@ -148,15 +148,19 @@ class Runner {
                                   {"direct_filter", options_.direct_filter == render::PlaneFilter::kBilinear
                                                         ? "bilinear" : "nearest"},
                                   {"direct_hardware_bilinear", options_.direct_hardware_bilinear},
+                                  {"direct_kernel", render::sample_kernel_name(options_.direct_kernel)},
                                   {"tables", nlohmann::ordered_json::array()}};
     std::printf("lfd bench direct: backend %s (%s); per row the median of %d frames of each side after %d "
                 "warm-up, the sides alternating; 'after planes': quilt path = swizzle + interlace, direct = the "
-                "direct pass (%s planes%s); PSNR against the panel of per-view renders at %d views (nearest view "
+                "direct pass (%s planes%s%s); PSNR against the panel of per-view renders at %d views (nearest view "
                 "per subpixel)\n",
                 sweeping_.name().c_str(), sweeping_.device().c_str(), runs_, options_.warmup,
                 options_.direct_filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest",
                 options_.direct_filter == render::PlaneFilter::kBilinear && sweeping_.name() == "gl"
                     ? (options_.direct_hardware_bilinear ? ", texture unit" : ", by hand")
+                    : "",
+                sweeping_.name() == "cpu"
+                    ? (options_.direct_kernel == render::SampleKernel::kAvx2 ? ", AVX2 kernel" : ", scalar kernel")
                     : "",
                 options_.reference_views);
     for (const SceneSource& source : options_.scenes) {
@@ -229,6 +233,7 @@ class Runner {
     lightfield::RendererOptions direct = o;
     direct.planes.filter = options_.direct_filter;
     direct.gl.direct_hardware_bilinear = options_.direct_hardware_bilinear;
+    direct.direct_kernel = options_.direct_kernel;
     QuiltInterlacer nearest(sweeping_, lens, f.layout, interlace::ViewBlend::kNearest);
     std::vector<double> swizzle, interlace_s, after_quilt, direct_pass, frame_quilt, frame_direct;
     for (int i = 0; i < options_.warmup + runs_; ++i) {

@@ -33,6 +33,8 @@ struct DirectBenchOptions {
   // GL: bilinear planes filtered by the texture unit (one fetch) or by hand (four texelFetch, the
   // CPU's weights): lightfield::GlRenderOptions::direct_hardware_bilinear.
   bool direct_hardware_bilinear = true;
+  // CPU: the direct pass's sampling loop (render/plane_samples.hpp).
+  render::SampleKernel direct_kernel = render::sample_window_kernel();
   // kGaussians: G2LF planes of Gaussian scenes (SceneSource::generated = Gaussians of a generated
   // tabletop); kVoxels: V2LF planes of voxel scenes (generated = the generated voxel tabletop's
   // finest level, voxel/voxel_generator.hpp). The renderers must be of this kind.

@@ -21,7 +21,7 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
                            const DirectPanelOptions& options) {
   const auto& cal = lens.calibration();
   ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
-  const render::PlaneRays rays(planes, geometry, ref, options.filter, options.background);
+  const render::PlaneRays rays(planes, geometry, ref, options.filter, options.background, options.kernel);
   const AspectFit fit =
       aspect_fit(cal, double(geometry.base.width) / double(geometry.base.height), options.overscan);
   // Fractions lie in [0, 1]: offsets within the cone's edges s = +-1/2.

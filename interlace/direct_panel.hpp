@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "display/lens_model.hpp"
+#include "render/plane_samples.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/sweeping_planes.hpp"
 #include "render/swizzle_blend.hpp"
@@ -23,6 +24,8 @@ struct DirectPanelOptions {
   glm::vec3 background{0.0f};
   bool overscan = false;      // InterlaceOptions::overscan
   bool invert_views = false;  // InterlaceOptions::invert_views
+  // The sampling loop (render/plane_samples.hpp): the fastest this CPU has unless told.
+  render::SampleKernel kernel = render::sample_window_kernel();
 };
 
 // The continuous view position a view fraction stands for: s = f - 1/2 (QuiltGeometry's

@@ -56,6 +56,7 @@ class CpuRenderer : public LightFieldRenderer {
     o.background = background;
     o.overscan = panel.overscan;
     o.invert_views = panel.invert_views;
+    o.kernel = options_.direct_kernel;
     return [this, &geometry, &lens, o](const render::SweepingPlanes& planes, const render::ReferenceCamera& ref) {
       panel_ = interlace::render_direct_panel(planes, geometry, ref, lens, o);
     };

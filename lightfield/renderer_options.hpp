@@ -15,6 +15,7 @@
 #include "gpu/gl_v2lf.hpp"
 #include "lightfield/light_field_scene.hpp"
 #include "render/g2lf.hpp"
+#include "render/plane_samples.hpp"
 #include "render/preprocess.hpp"
 #include "voxel/v2lf.hpp"
 #include "voxel/voxel_rasterizer.hpp"
@@ -72,6 +73,8 @@ struct RendererOptions {
   // Unset: black behind Gaussians, the scene's own background behind voxels.
   std::optional<glm::vec3> background;
   GlRenderOptions gl;
+  // The CPU direct pass's sampling loop (interlace::DirectPanelOptions::kernel).
+  render::SampleKernel direct_kernel = render::sample_window_kernel();
 
   // planes.check() and InputError "renderer options: plane_format: ..." for RGBA16F planes on
   // the CPU.

@@ -7,7 +7,8 @@
 //   their non-empty runs listed;
 // - per bin and run, the rays whose sample can reach the run form a window of the bin's u
 //   (Eq. (u_prime) is affine in dx and u), found by a galloping search from the previous
-//   window's end; only those are sampled, each stopping below the swizzle's transmittance.
+//   window's end; only those are sampled (render/plane_samples.hpp), each stopping below the
+//   swizzle's transmittance.
 #include "render/plane_rays.hpp"
 
 #include <algorithm>
@@ -15,16 +16,22 @@
 #include <cmath>
 #include <cstdint>
 
+#include "util/error.hpp"
+
 namespace lfd::render {
 namespace {
 
-constexpr float kMinTransmittance = 0.5f / 255.0f;  // the swizzle's (render/swizzle_blend.cpp)
+constexpr float kMinTransmittance = kPlaneRayMinTransmittance;
 
 // Bins of camera offset over [-max |dx|, max |dx|]: a bin's narrow range of dx narrows the window
 // of u from which a run can be reached (the swizzle's per-view column range, for a continuum of
 // views).
 constexpr int kOffsetBins = 8;
 constexpr size_t kJoinSlots = 8;
+// A bin closes up over its stopped rays once 1 / kCompactWhenStopped of it has stopped, if it
+// has kCompactFrom rays or more.
+constexpr size_t kCompactWhenStopped = 16;
+constexpr size_t kCompactFrom = 32;
 
 // Texel access for the one-ray definition (composite_ray).
 struct U8Texels {
@@ -92,97 +99,12 @@ size_t gallop(const float* u, size_t lo, size_t hi, float value) {
   return size_t(std::lower_bound(u + lo, u + std::min(probe, hi), value) - u);
 }
 
-// A window of slots [i0, i1) sampling the blended row at buffer coordinate
-// px = dx ax + u au + a0. Branch-free (the rays' outcomes do not predict each other): a ray
-// already below kMinTransmittance samples an empty texel (c = 0, T = 1), which leaves it as it
-// is. Returns how many rays fell below kMinTransmittance. (Vectorising it with omp simd and
-// AVX2 / AVX-512 clones was tried: GCC 12 emulates the four gathers with scalar loads at its
-// generic tuning and the windows are short, so it measured no faster and was dropped.)
-struct Window {
-  const float* values;  // BlendedPlaneRow::values
-  const float* trans_row;
-  int length;
-  float ax, au, a0;
-  const float* dx;
-  const float* u;
-  const int32_t* channel_offset;
-  float* colour;
-  float* trans;
-};
-
-
-// x clamped to [0, top], NaN to 0; in selects the vectorizer turns into min / max.
-inline float clamp_to(float x, float top) {
-  const float low = x > 0.0f ? x : 0.0f;
-  return low < top ? low : top;
-}
-
-int sample_bilinear(const Window& w, size_t i0, size_t i1) {
-  const float* __restrict values = w.values;
-  const float* __restrict trans_row = w.trans_row;
-  float* __restrict colour = w.colour;
-  float* __restrict trans = w.trans;
-  const float* __restrict dx = w.dx;
-  const float* __restrict u = w.u;
-  const int32_t* __restrict channel_offset = w.channel_offset;
-  const float ax = w.ax, au = w.au, a0 = w.a0;
-  const float top = float(w.length - 1);
-  const int last0 = w.length - 2;
-  int fell = 0;
-  for (size_t i = i0; i < i1; ++i) {
-    const float t = trans[i];
-    const bool live = t >= kMinTransmittance;
-    // Clamping keeps a sample on the padding (empty) when rounding put it a hair outside.
-    const float px = clamp_to(dx[i] * ax + u[i] * au + a0, top);
-    const int col0_raw = int(px);
-    const int col0 = col0_raw < last0 ? col0_raw : last0;
-    const float fx = px - float(col0);
-    const int at = channel_offset[i] + col0;
-    const float c0 = values[at], c1 = values[at + 1];
-    const float t0 = trans_row[col0], t1 = trans_row[col0 + 1];
-    const float c_sampled = c0 + fx * (c1 - c0), a_sampled = t0 + fx * (t1 - t0);
-    const float c = live ? c_sampled : 0.0f;
-    const float a = live ? a_sampled : 1.0f;
-    const float t_after = t * a;
-    colour[i] += t * c;
-    trans[i] = t_after;
-    fell += int(live) & int(t_after < kMinTransmittance);
-  }
-  return fell;
-}
-
-int sample_nearest(const Window& w, size_t i0, size_t i1) {
-  const float* __restrict values = w.values;
-  const float* __restrict trans_row = w.trans_row;
-  float* __restrict colour = w.colour;
-  float* __restrict trans = w.trans;
-  const float* __restrict dx = w.dx;
-  const float* __restrict u = w.u;
-  const int32_t* __restrict channel_offset = w.channel_offset;
-  const float ax = w.ax, au = w.au, a0 = w.a0;
-  const float top = float(w.length - 1);
-  int fell = 0;
-  for (size_t i = i0; i < i1; ++i) {
-    const float t = trans[i];
-    const bool live = t >= kMinTransmittance;
-    const float px = clamp_to(dx[i] * ax + u[i] * au + a0, top);
-    const int col = int(px + 0.5f);
-    const float c_sampled = values[channel_offset[i] + col], a_sampled = trans_row[col];
-    const float c = live ? c_sampled : 0.0f;
-    const float a = live ? a_sampled : 1.0f;
-    const float t_after = t * a;
-    colour[i] += t * c;
-    trans[i] = t_after;
-    fell += int(live) & int(t_after < kMinTransmittance);
-  }
-  return fell;
-}
-
 }  // namespace
 
 PlaneRays::PlaneRays(const SweepingPlanes& planes, const QuiltGeometry& geometry, const ReferenceCamera& ref,
-                     PlaneFilter filter, const glm::vec3& background)
-    : planes_(planes), filter_(filter), background_(background) {
+                     PlaneFilter filter, const glm::vec3& background, SampleKernel kernel)
+    : planes_(planes), filter_(filter), background_(background), kernel_(kernel) {
+  if (!sample_kernel_available(kernel)) throw_input_error("direct pass: this CPU has no AVX2 for the avx2 sampling kernel");
   // Eq. (u_prime) is affine in dx and u: its two slopes from the one definition.
   maps_.reserve(size_t(planes.count));
   for (int k = 0; k < planes.count; ++k) {
@@ -243,13 +165,18 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
   s.bin_active.assign(count.begin(), count.end());
   s.bin_begin.assign(kOffsetBins + 1, 0);
   for (int b = 0; b < kOffsetBins; ++b) s.bin_begin[size_t(b) + 1] = s.bin_begin[size_t(b)] + uint32_t(s.bin_active[size_t(b)]);
+  s.bin_end.assign(s.bin_begin.begin() + 1, s.bin_begin.end());
   s.ray.resize(n);
-  s.dx.resize(n);
-  s.u.resize(n);
   s.channel.resize(n);
-  s.channel_offset.resize(n);
-  s.colour.assign(n, 0.0f);
-  s.trans.assign(n, 1.0f);
+  // The slots past n that the vector kernel reads: rays at the plane's centre, stopped, on
+  // channel 0 (render/plane_samples.hpp).
+  const size_t padded = n + kSampleWindowOverread;
+  s.dx.assign(padded, 0.0f);
+  s.u.assign(padded, 0.0f);
+  s.channel_offset.assign(padded, 0);
+  s.colour.assign(padded, 0.0f);
+  s.trans.assign(padded, 1.0f);
+  std::fill(s.trans.begin() + std::ptrdiff_t(n), s.trans.end(), 0.0f);
   const int stride = BlendedPlaneRow::stride_for(planes_);
   std::array<uint32_t, kOffsetBins> next;
   for (int b = 0; b < kOffsetBins; ++b) next[size_t(b)] = s.bin_begin[size_t(b)];
@@ -265,7 +192,7 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
   }
 }
 
-void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
+void PlaneRays::composite_plane(int k, Scratch& s, int& active, float* out) const {
   const PlaneMap& m = maps_[size_t(k)];
   const BlendedPlaneRow& row = s.row;
   const float half_w = 0.5f * float(planes_.width);
@@ -274,12 +201,12 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
   const float a0 = half_w - 0.5f - float(row.first_column);
   const bool bilinear = filter_ == PlaneFilter::kBilinear;
   const size_t runs = row.runs.size();
-  const Window window{row.values.data(), row.channel(3), row.length, ax, au, a0, s.dx.data(),
+  const SampleWindow window{row.values.data(), row.channel(3), row.length, ax, au, a0, s.dx.data(),
                       s.u.data(), s.channel_offset.data(), s.colour.data(), s.trans.data()};
   for (int b = 0; b < kOffsetBins; ++b) {
     int& bin_active = s.bin_active[size_t(b)];
     if (bin_active == 0) continue;
-    const size_t begin = s.bin_begin[size_t(b)], end = s.bin_begin[size_t(b) + 1];
+    const size_t begin = s.bin_begin[size_t(b)], end = s.bin_end[size_t(b)];
     const float m0 = std::min(s.bin_dx_min[size_t(b)] * ax, s.bin_dx_max[size_t(b)] * ax);
     const float m1 = std::max(s.bin_dx_min[size_t(b)] * ax, s.bin_dx_max[size_t(b)] * ax);
     const int before = bin_active;
@@ -289,7 +216,7 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
     size_t pending0 = begin, pending1 = begin;
     const auto flush = [&] {
       if (pending1 > pending0)
-        bin_active -= bilinear ? sample_bilinear(window, pending0, pending1) : sample_nearest(window, pending0, pending1);
+        bin_active -= sample_window_with(kernel_, window, pending0, pending1, bilinear);
     };
     for (size_t r = 0; r < runs && cursor < end; ++r) {
       // Runs in order of u: forwards when u' grows with u.
@@ -317,23 +244,51 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active) const {
     }
     flush();
     active -= before - bin_active;
+    // A stopped ray still takes a vector lane in every window that covers it, and the windows
+    // gather where rays stop (a bin's rays that miss the scene never do): once a sixteenth of
+    // the bin has stopped, its stopped rays are finished and the bin closes up (a quarter left
+    // most stopped rays in the windows).
+    const size_t size = end - begin;
+    if (size >= kCompactFrom && kCompactWhenStopped * (size - size_t(bin_active)) > size) compact_bin(b, s, out);
   }
+}
+
+void PlaneRays::compact_bin(int b, Scratch& s, float* out) const {
+  const size_t begin = s.bin_begin[size_t(b)], end = s.bin_end[size_t(b)];
+  size_t kept = begin;
+  for (size_t i = begin; i < end; ++i) {
+    if (s.trans[i] < kMinTransmittance) {
+      out[s.ray[i]] = finished(s, i);
+      continue;
+    }
+    // Stable: the kept rays stay in order of u.
+    s.ray[kept] = s.ray[i];
+    s.dx[kept] = s.dx[i];
+    s.u[kept] = s.u[i];
+    s.channel[kept] = s.channel[i];
+    s.channel_offset[kept] = s.channel_offset[i];
+    s.colour[kept] = s.colour[i];
+    s.trans[kept] = s.trans[i];
+    ++kept;
+  }
+  s.bin_end[size_t(b)] = uint32_t(kept);
 }
 
 void PlaneRays::composite_row(float v_ndc, float max_abs_dx, const std::vector<PlaneRay>& rays,
                               std::vector<float>& out, Scratch& s) const {
   const size_t n = rays.size();
+  out.resize(n);
   bin_rays(rays, max_abs_dx, s);
   int active = int(n);
   const bool bilinear = filter_ == PlaneFilter::kBilinear;
   for (int k = 0; k < planes_.count && active > 0; ++k) {
     const PlaneRows rows = plane_rows(k, v_ndc);
     if (!blend_plane_row(planes_, k, rows.row0, rows.row1, rows.fy, bilinear, s.row)) continue;
-    composite_plane(k, s, active);
+    composite_plane(k, s, active, out.data());
   }
-  out.resize(n);
-  for (size_t slot = 0; slot < n; ++slot)
-    out[s.ray[slot]] = s.colour[slot] + s.trans[slot] * background_[s.channel[slot]];
+  // The rays no compaction finished.
+  for (int b = 0; b < kOffsetBins; ++b)
+    for (size_t slot = s.bin_begin[size_t(b)]; slot < s.bin_end[size_t(b)]; ++slot) out[s.ray[slot]] = finished(s, slot);
 }
 
 }  // namespace lfd::render

@@ -13,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "render/plane_row.hpp"
+#include "render/plane_samples.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/sweeping_planes.hpp"
 #include "render/swizzle_blend.hpp"
@@ -29,9 +30,10 @@ struct PlaneRay {
 
 class PlaneRays {
  public:
-  // The planes must outlive this object.
+  // The planes must outlive this object. `kernel`: the sampling loop (render/plane_samples.hpp),
+  // by default the fastest this CPU has; one it lacks throws.
   PlaneRays(const SweepingPlanes& planes, const QuiltGeometry& geometry, const ReferenceCamera& ref,
-            PlaneFilter filter, const glm::vec3& background);
+            PlaneFilter filter, const glm::vec3& background, SampleKernel kernel = sample_window_kernel());
 
   // The working memory of composite_row, kept by the caller across rows (one per thread) so a
   // row allocates nothing.
@@ -40,7 +42,8 @@ class PlaneRays {
     std::vector<float> dx, u, colour, trans;
     std::vector<int32_t> channel, channel_offset;  // channel_offset: channel x BlendedPlaneRow::stride
     std::vector<uint8_t> bin;  // per ray, in the order given
-    std::vector<uint32_t> bin_begin;
+    std::vector<uint32_t> bin_begin;  // kOffsetBins + 1 starts
+    std::vector<uint32_t> bin_end;    // per bin, the end of its unfinished rays
     std::vector<float> bin_dx_min, bin_dx_max;
     std::vector<int> bin_active;
     BlendedPlaneRow row;
@@ -73,12 +76,20 @@ class PlaneRays {
   };
   PlaneRows plane_rows(int k, float v_ndc) const;
   void bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Scratch& s) const;
-  void composite_plane(int k, Scratch& s, int& active) const;
+  // `out`: where rays finished early (compact_bin) put their value.
+  void composite_plane(int k, Scratch& s, int& active, float* out) const;
+  // Finishes the bin's stopped rays into `out` and closes up the rest, in order.
+  void compact_bin(int b, Scratch& s, float* out) const;
+  // A ray's value after its last plane: its colour over the background.
+  float finished(const Scratch& s, size_t slot) const {
+    return s.colour[slot] + s.trans[slot] * background_[s.channel[slot]];
+  }
 
   const SweepingPlanes& planes_;
   std::vector<PlaneMap> maps_;
   PlaneFilter filter_;
   glm::vec3 background_;
+  SampleKernel kernel_;
 };
 
 }  // namespace lfd::render

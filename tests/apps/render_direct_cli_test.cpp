@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -105,6 +106,32 @@ TEST(BenchDirectCli, ATinyRunReportsBothSidesAndTheQuality) {
   const auto bad = test::run_lfd("bench direct --calibration " + kDisplay + " --chunks 0");
   EXPECT_EQ(bad.exit_code, 2) << bad.output;
   EXPECT_NE(bad.output.find("direct benchmark: chunks: 0 is outside"), std::string::npos) << bad.output;
+}
+
+// `lfd bench direct --direct-kernel`: the scalar and the AVX2 sampling loops give the same panel
+// (render/plane_samples.hpp), so the same PSNR to the last digit; a kernel name it does not know
+// is refused with one line and exit 2.
+TEST(BenchDirectCli, BothSamplingKernelsGiveTheSamePanel) {
+  const fs::path dir = test::temp_dir("bench_direct_kernel");
+  std::map<std::string, double> psnr;
+  for (const std::string kernel : {"scalar", "avx2"}) {
+    const std::string json = (dir / (kernel + ".json")).string();
+    const auto r = test::run_lfd("bench direct --calibration " + kDisplay +
+                                 " --generated 2000 --view-height 64 --chunks 16 --runs 1 --warmup 0 "
+                                 "--reference-views 8 --direct-kernel " + kernel + " --json " + json);
+    if (kernel == "avx2" && r.exit_code == 2 && r.output.find("this CPU has no AVX2") != std::string::npos) continue;
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(read_text_file(json));
+    EXPECT_EQ(j["direct_kernel"], kernel);
+    psnr[kernel] = j["tables"][0]["rows"][0]["psnr_direct_db"].get<double>();
+  }
+  ASSERT_TRUE(psnr.count("scalar"));
+  if (psnr.count("avx2")) {
+    EXPECT_EQ(psnr["scalar"], psnr["avx2"]);
+  }
+  const auto bad = test::run_lfd("bench direct --calibration " + kDisplay + " --direct-kernel sse9");
+  EXPECT_EQ(bad.exit_code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--direct-kernel"), std::string::npos) << bad.output;
 }
 
 // `lfd bench direct --method v2lf`: the direct pass on V2LF planes of a generated voxel tabletop,
