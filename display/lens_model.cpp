@@ -27,11 +27,6 @@ double LensModel::slant_deg() const {
   return slant_deg_of_slope(calibration_.slope);
 }
 
-ScreenUV LensModel::pixel_uv(int x, int row_top_down) const {
-  const auto& c = calibration_;
-  return {(x + 0.5) / c.screen_w, 1.0 - (row_top_down + 0.5) / c.screen_h};
-}
-
 ScreenUV LensModel::subpixel_uv(int x, int row_top_down, int channel) const {
   ScreenUV p = pixel_uv(x, row_top_down);
   if (cell_offsets_.empty()) {

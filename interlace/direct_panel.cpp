@@ -31,26 +31,28 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
 #pragma omp parallel
   {
     std::vector<render::PlaneRay> row_rays;
-    std::vector<int> row_x;
     std::vector<float> values;
     std::vector<double> fractions(3 * size_t(cal.screen_w));
     render::PlaneRays::Scratch scratch;
 #pragma omp for schedule(dynamic, 8)
     for (int row = 0; row < cal.screen_h; ++row) {
       row_rays.clear();
-      row_x.clear();
+      // The fitted view covers one run of the row's pixels (the fit is affine in x): its rays
+      // in order, three per pixel, so ray i is subpixel 3 x_first + i of the row.
+      int x_first = -1;
       double tile_v = 0;
       lens.row_view_fractions(row, fractions.data());
       for (int x = 0; x < cal.screen_w; ++x) {
         const TilePoint t = tile_point(lens, fit, x, row);
         if (!t.inside) continue;
+        if (x_first < 0) x_first = x;
         tile_v = t.v;  // the same for every pixel of the row
+        const float u_ndc = float(2.0 * t.u - 1.0);
         for (int c = 0; c < 3; ++c) {
           // panel_view_fraction, from the row's fractions.
           const double lens_f = fractions[3 * size_t(x) + size_t(c)];
           const double f = options.invert_views ? 1.0 - lens_f : lens_f;
-          row_rays.push_back({offset_per_position * view_position_of_fraction(f), float(2.0 * t.u - 1.0), c});
-          row_x.push_back(x);
+          row_rays.push_back({offset_per_position * view_position_of_fraction(f), u_ndc, c});
         }
       }
       if (row_rays.empty()) continue;
@@ -58,7 +60,8 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
       // row y, v = 1 - (y + 1/2) / H).
       rays.composite_row(float(1.0 - 2.0 * tile_v), max_abs_dx, row_rays, values, scratch);
       const double gain = fringe_gain(cal, row);
-      for (size_t i = 0; i < row_rays.size(); ++i) panel.at(row_x[i], row, row_rays[i].channel) = float(values[i] * gain);
+      float* out = &panel.at(x_first, row, 0);
+      for (size_t i = 0; i < row_rays.size(); ++i) out[i] = float(values[i] * gain);
     }
   }
   return panel;

@@ -35,13 +35,6 @@ TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool ov
   return tile_point(lens, aspect_fit(lens.calibration(), view_aspect, overscan), x, row);
 }
 
-TilePoint tile_point(const display::LensModel& lens, const AspectFit& fit, int x, int row) {
-  const display::ScreenUV p = lens.pixel_uv(x, row);
-  TilePoint t{true, (p.u - 0.5) * fit.scale_u + 0.5, (p.v - 0.5) * fit.scale_v + 0.5};
-  t.inside = !(t.u < 0 || t.u > 1 || t.v < 0 || t.v > 1);
-  return t;
-}
-
 double fringe_gain(const display::DisplayCalibration& cal, int row) {
   const int j = cal.screen_h - 1 - row;
   return 1.0 - std::abs(cal.fringe) * std::floor(std::fmod(j + 0.5 + std::ceil(cal.fringe / 2), 2.0));

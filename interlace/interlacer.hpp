@@ -52,8 +52,14 @@ struct TilePoint {
   double u = 0, v = 0;
 };
 TilePoint tile_point(const display::LensModel& lens, double view_aspect, bool overscan, int x, int row_top_down);
-// The same with the aspect fit computed once (per panel, not per pixel).
-TilePoint tile_point(const display::LensModel& lens, const AspectFit& fit, int x, int row_top_down);
+// The same with the aspect fit computed once (per panel, not per pixel); inline, as it is called
+// per pixel.
+inline TilePoint tile_point(const display::LensModel& lens, const AspectFit& fit, int x, int row_top_down) {
+  const display::ScreenUV p = lens.pixel_uv(x, row_top_down);
+  TilePoint t{true, (p.u - 0.5) * fit.scale_u + 0.5, (p.v - 0.5) * fit.scale_v + 0.5};
+  t.inside = !(t.u < 0 || t.u > 1 || t.v < 0 || t.v > 1);
+  return t;
+}
 
 // The fringe correction (looking-glass.md 3.11): the gain of panel row `row_top_down`, every
 // other row darkened by |fringe|.
