@@ -29,8 +29,10 @@ constexpr float kMinTransmittance = kPlaneRayMinTransmittance;
 constexpr int kOffsetBins = 8;
 constexpr size_t kJoinSlots = 8;
 // A bin closes up over its stopped rays once 1 / kCompactWhenStopped of it has stopped, if it
-// has kCompactFrom rays or more.
+// has kCompactFrom rays or more and enough planes are still to come (kCompactCost: what closing
+// up costs per ray of the bin, in sampled lanes; composite_plane).
 constexpr size_t kCompactWhenStopped = 16;
+constexpr size_t kCompactCost = 4;
 constexpr size_t kCompactFrom = 32;
 
 // Texel access for the one-ray definition (composite_ray).
@@ -158,32 +160,27 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
   const float scale = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) / max_abs_dx : 0.0f;
   const float centre = max_abs_dx > 0.0f ? 0.5f * float(kOffsetBins) : 0.0f;
   s.bin.resize(n);
-  std::array<float, kOffsetBins> lo, hi;
   std::array<int, kOffsetBins> count{};
-  lo.fill(1e30f);
-  hi.fill(-1e30f);
   for (size_t i = 0; i < n; ++i) {
-    const float dx = rays[i].dx;
-    const int b = std::clamp(int(dx * scale + centre), 0, kOffsetBins - 1);
+    const int b = std::clamp(int(rays[i].dx * scale + centre), 0, kOffsetBins - 1);
     s.bin[i] = uint8_t(b);
     ++count[size_t(b)];
-    lo[size_t(b)] = std::min(lo[size_t(b)], dx);
-    hi[size_t(b)] = std::max(hi[size_t(b)], dx);
   }
-  s.bin_dx_min.assign(lo.begin(), lo.end());
-  s.bin_dx_max.assign(hi.begin(), hi.end());
   s.bin_active.assign(count.begin(), count.end());
   s.bin_begin.assign(kOffsetBins + 1, 0);
   for (int b = 0; b < kOffsetBins; ++b) s.bin_begin[size_t(b) + 1] = s.bin_begin[size_t(b)] + uint32_t(s.bin_active[size_t(b)]);
   s.bin_end.assign(s.bin_begin.begin() + 1, s.bin_begin.end());
   s.ray.resize(n);
   s.channel.resize(n);
-  // The slots past n that the vector kernel reads: rays at the plane's centre, stopped, on
-  // channel 0 (render/plane_samples.hpp).
+  // [0, n) is written below; the slots past n that the vector kernel reads are rays at the
+  // plane's centre, stopped, on channel 0 (render/plane_samples.hpp).
   const size_t padded = n + kSampleWindowOverread;
-  s.dx.assign(padded, 0.0f);
-  s.u.assign(padded, 0.0f);
-  s.channel_offset.assign(padded, 0);
+  s.dx.resize(padded);
+  s.u.resize(padded);
+  s.channel_offset.resize(padded);
+  std::fill(s.dx.begin() + std::ptrdiff_t(n), s.dx.end(), 0.0f);
+  std::fill(s.u.begin() + std::ptrdiff_t(n), s.u.end(), 0.0f);
+  std::fill(s.channel_offset.begin() + std::ptrdiff_t(n), s.channel_offset.end(), 0);
   s.colour.assign(padded, 0.0f);
   s.trans.assign(padded, 1.0f);
   std::fill(s.trans.begin() + std::ptrdiff_t(n), s.trans.end(), 0.0f);
@@ -199,6 +196,29 @@ void PlaneRays::bin_rays(const std::vector<PlaneRay>& rays, float max_abs_dx, Sc
     s.u[slot] = r.u_ndc;
     s.channel[slot] = r.channel;
     s.channel_offset[slot] = r.channel * stride;
+  }
+  // Each bin's range of dx from its members, now side by side.
+  s.bin_dx_min.assign(kOffsetBins, 0.0f);
+  s.bin_dx_max.assign(kOffsetBins, 0.0f);
+  for (int b = 0; b < kOffsetBins; ++b) {
+    const size_t begin = s.bin_begin[size_t(b)], end = s.bin_begin[size_t(b) + 1];
+    if (begin == end) continue;
+    // Four running extremes side by side (one chain would wait on each min in turn).
+    std::array<float, 4> lo, hi;
+    lo.fill(s.dx[begin]);
+    hi.fill(s.dx[begin]);
+    size_t i = begin;
+    for (; i + 4 <= end; i += 4)
+      for (size_t j = 0; j < 4; ++j) {
+        lo[j] = std::min(lo[j], s.dx[i + j]);
+        hi[j] = std::max(hi[j], s.dx[i + j]);
+      }
+    for (; i < end; ++i) {
+      lo[0] = std::min(lo[0], s.dx[i]);
+      hi[0] = std::max(hi[0], s.dx[i]);
+    }
+    s.bin_dx_min[size_t(b)] = std::min(std::min(lo[0], lo[1]), std::min(lo[2], lo[3]));
+    s.bin_dx_max[size_t(b)] = std::max(std::max(hi[0], hi[1]), std::max(hi[2], hi[3]));
   }
 }
 
@@ -259,7 +279,11 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active, float* out) cons
     // the bin has stopped, its stopped rays are finished and the bin closes up (a quarter left
     // most stopped rays in the windows).
     const size_t size = end - begin;
-    if (size >= kCompactFrom && kCompactWhenStopped * (size - size_t(bin_active)) > size) compact_bin(b, s, out);
+    // Near the last plane there is nothing left to save: a stopped ray costs at most one lane
+    // per plane still to come, closing up costs about kCompactCost lanes per ray of the bin.
+    const size_t stopped = size - size_t(bin_active), planes_left = size_t(planes_.count - 1 - k);
+    if (size >= kCompactFrom && kCompactWhenStopped * stopped > size && stopped * planes_left > kCompactCost * size)
+      compact_bin(b, s, out);
   }
 }
 
