@@ -21,8 +21,6 @@
 namespace lfd::render {
 namespace {
 
-constexpr float kMinTransmittance = kPlaneRayMinTransmittance;
-
 // Bins of camera offset over [-max |dx|, max |dx|]: a bin's narrow range of dx narrows the window
 // of u from which a run can be reached (the swizzle's per-view column range, for a continuum of
 // views).
@@ -65,7 +63,7 @@ std::array<float, 2> composite_one(const Texels& tex, const SweepingPlanes& plan
                     const auto& column_of, int ch, bool bilinear) {
   const int wp = planes.width, hp = planes.height;
   float colour = 0.0f, trans = 1.0f;
-  for (int k = 0; k < k_count && trans >= kMinTransmittance; ++k) {
+  for (int k = 0; k < k_count && trans >= kPlaneRayMinTransmittance; ++k) {
     const auto rows = rows_of(k);
     const float px = column_of(k);
     const size_t base = size_t(k) * size_t(wp) * size_t(hp);
@@ -246,7 +244,7 @@ void PlaneRays::composite_plane(int k, Scratch& s, int& active, float* out) cons
     size_t pending0 = begin, pending1 = begin;
     const auto flush = [&] {
       if (pending1 > pending0)
-        bin_active -= sample_window_with(kernel_, window, pending0, pending1, bilinear);
+        bin_active -= sample_window(kernel_, window, pending0, pending1, bilinear);
     };
     for (size_t r = 0; r < runs && cursor < end; ++r) {
       // Runs in order of u: forwards when u' grows with u.
@@ -291,7 +289,7 @@ void PlaneRays::compact_bin(int b, Scratch& s, float* out) const {
   const size_t begin = s.bin_begin[size_t(b)], end = s.bin_end[size_t(b)];
   size_t kept = begin;
   for (size_t i = begin; i < end; ++i) {
-    if (s.trans[i] < kMinTransmittance) {
+    if (s.trans[i] < kPlaneRayMinTransmittance) {
       out[s.ray[i]] = finished(s, i);
       continue;
     }

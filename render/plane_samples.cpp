@@ -142,16 +142,12 @@ bool sample_kernel_available(SampleKernel kernel) {
   return kernel == SampleKernel::kScalar || sample_window_kernel() == SampleKernel::kAvx2;
 }
 
-int sample_window_with(SampleKernel kernel, const SampleWindow& w, size_t i0, size_t i1, bool bilinear) {
+int sample_window(SampleKernel kernel, const SampleWindow& w, size_t i0, size_t i1, bool bilinear) {
 #ifdef LFD_PLANE_SAMPLES_AVX2
   if (kernel == SampleKernel::kAvx2) return bilinear ? sample_avx2<true>(w, i0, i1) : sample_avx2<false>(w, i0, i1);
 #endif
   (void)kernel;
   return bilinear ? sample_scalar<true>(w, i0, i1) : sample_scalar<false>(w, i0, i1);
-}
-
-int sample_window(const SampleWindow& w, size_t i0, size_t i1, bool bilinear) {
-  return sample_window_with(sample_window_kernel(), w, i0, i1, bilinear);
 }
 
 }  // namespace lfd::render

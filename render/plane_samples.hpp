@@ -3,8 +3,8 @@
 // direct pass's time went"): a window of rays, consecutive slots of the row's arrays, each
 // sampling one blended plane row (render/plane_row.hpp) at its own column and compositing the
 // sample front to back. Two kernels compute it bit for bit alike: a scalar one, and on x86-64
-// CPUs with AVX2 one that does eight rays at a time with gathers. sample_window picks the AVX2
-// one where the CPU has it.
+// CPUs with AVX2 one that does eight rays at a time with gathers. sample_window_kernel() is the
+// AVX2 one where the CPU has it.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -38,15 +38,14 @@ enum class SampleKernel { kScalar, kAvx2 };
 const char* sample_kernel_name(SampleKernel kernel);
 SampleKernel parse_sample_kernel(const std::string& name);
 
-// The kernel sample_window uses on this CPU.
+// The fastest kernel this CPU has (render::PlaneRays' default).
 SampleKernel sample_window_kernel();
 // Whether this CPU can run `kernel`.
 bool sample_kernel_available(SampleKernel kernel);
 
-// Samples and composites the window; returns how many rays fell below the stopping
-// transmittance. `bilinear`: linear between the two columns around px; else the nearest column.
-int sample_window(const SampleWindow& w, size_t i0, size_t i1, bool bilinear);
-// The same with a chosen kernel (it must be available), for the tests.
-int sample_window_with(SampleKernel kernel, const SampleWindow& w, size_t i0, size_t i1, bool bilinear);
+// Samples and composites the window with `kernel` (it must be available); returns how many rays
+// fell below the stopping transmittance. `bilinear`: linear between the two columns around px;
+// else the nearest column.
+int sample_window(SampleKernel kernel, const SampleWindow& w, size_t i0, size_t i1, bool bilinear);
 
 }  // namespace lfd::render

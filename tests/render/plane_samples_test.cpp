@@ -87,9 +87,9 @@ TEST(PlaneSamples, VectorKernelEqualsTheScalarOneBitForBit) {
     for (bool bilinear : {true, false}) {
       Slots scalar = start, vector = start;
       const int fell_scalar =
-          sample_window_with(SampleKernel::kScalar, window_over(row, scalar, ax, au, a0), i0, i1, bilinear);
+          sample_window(SampleKernel::kScalar, window_over(row, scalar, ax, au, a0), i0, i1, bilinear);
       const int fell_vector =
-          sample_window_with(SampleKernel::kAvx2, window_over(row, vector, ax, au, a0), i0, i1, bilinear);
+          sample_window(SampleKernel::kAvx2, window_over(row, vector, ax, au, a0), i0, i1, bilinear);
       EXPECT_EQ(fell_scalar, fell_vector) << "trial " << trial;
       EXPECT_TRUE(same_bits(scalar.colour, vector.colour)) << "trial " << trial;
       EXPECT_TRUE(same_bits(scalar.trans, vector.trans)) << "trial " << trial;
@@ -111,7 +111,7 @@ TEST(PlaneSamples, StoppedRaysAndSlotsOutsideTheWindowStayAsTheyWere) {
       Slots s = random_slots(rng, n, row.stride);
       const Slots before = s;
       const size_t i0 = 5, i1 = 29;
-      const int fell = sample_window_with(kernel, window_over(row, s, 3.0f, 30.0f, 32.0f), i0, i1, bilinear);
+      const int fell = sample_window(kernel, window_over(row, s, 3.0f, 30.0f, 32.0f), i0, i1, bilinear);
       int fell_counted = 0;
       for (size_t i = 0; i < s.trans.size(); ++i) {
         const bool inside = i >= i0 && i < i1;
