@@ -30,7 +30,7 @@ int RunDirectBaseline(const bench::DirectBenchOptions& o, const std::vector<int>
   b.view_height = o.view_height;
   b.direct_filter = o.direct_filter;
   b.views = views;
-  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kGaussians);
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, scene::SceneKind::kGaussians);
   const nlohmann::ordered_json result = bench::run_direct_baseline_benchmark(*renderers.sweeping, b);
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");
@@ -123,7 +123,7 @@ int RunBenchDirect(int argc, char** argv) {
   const bool voxels = method == "v2lf";
   if (voxels && app.count("--generated")) throw_input_error("bench direct: --generated: applies to --method g2lf only");
   if (!voxels && app.count("--voxel-level")) throw_input_error("bench direct: --voxel-level: applies to --method v2lf only");
-  o.kind = voxels ? lightfield::SceneKind::kVoxels : lightfield::SceneKind::kGaussians;
+  o.kind = voxels ? scene::SceneKind::kVoxels : scene::SceneKind::kGaussians;
   if (quick) {
     if (!app.count("--calibration")) o.calibrations = {(displays / "go.visual.json").string()};
     if (!app.count("--generated")) generated = scene_files.empty() ? std::vector<size_t>{20000} : std::vector<size_t>{};

@@ -11,7 +11,7 @@
 #include "pipeline/eye_photo_comparison.hpp"
 #include "render/g2lf.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/atomic_file.hpp"
 #include "util/data_dir.hpp"
 
@@ -58,7 +58,7 @@ int RunBenchDirectPhotos(int argc, char** argv) {
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
 
-  const bench::BenchRenderers renderers = bench::make_bench_renderers("cpu", lightfield::SceneKind::kGaussians);
+  const bench::BenchRenderers renderers = bench::make_bench_renderers("cpu", scene::SceneKind::kGaussians);
   nlohmann::ordered_json out = {{"benchmark", "direct-photos"}, {"tables", nlohmann::ordered_json::array()}};
   pipeline::print_eye_photo_table_header(o);
   std::vector<std::pair<std::string, std::string>> scenes;  // label, file ("" generated)
@@ -69,15 +69,15 @@ int RunBenchDirectPhotos(int argc, char** argv) {
   for (size_t n : generated)
     if (n > 0) scenes.push_back({"generated " + std::to_string(n), ""});
   for (const auto& [label, file] : scenes) {
-    render::GaussianScene gaussians;
+    scene::GaussianScene gaussians;
     if (!file.empty()) {
-      gaussians = render::load_scene(file);
+      gaussians = scene::load_gaussian_scene(file);
     } else {
       render::SceneGeneratorOptions g;
       g.count = std::stoul(label.substr(label.find(' ') + 1));
       gaussians = render::generate_scene(g);
     }
-    const lightfield::LightFieldScene scene(std::move(gaussians));
+    const scene::Scene scene(std::move(gaussians));
     renderers.sweeping->set_scene(scene);
     for (const std::string& calibration : calibrations)
       out["tables"].push_back(pipeline::compare_eye_photographs(*renderers.sweeping, scene, label, calibration, o));

@@ -53,7 +53,7 @@ int RunBenchVoxels(int argc, char** argv) {
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
-  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, lightfield::SceneKind::kVoxels);
+  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, scene::SceneKind::kVoxels);
   const nlohmann::ordered_json result = bench::run_voxel_benchmark(*renderers.per_view, *renderers.sweeping, o);
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");

@@ -26,11 +26,10 @@
 #include "display/lens_model.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
-#include "lightfield/light_field_scene.hpp"
+#include "scene/scene.hpp"
 #include "lightfield/renderer_factory.hpp"
+#include "lightfield/view_plan.hpp"
 #include "render/camera_json.hpp"
-#include "render/default_camera.hpp"
-#include "render/per_view_quilt.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/default_display.hpp"
 #include "util/error.hpp"
@@ -162,17 +161,16 @@ void check_output_flags(RenderFlags& f) {
   if (f.view >= 0 && !f.panel_path.empty()) throw_input_error("--panel: needs a whole quilt; leave out --view");
   const auto bg = parse_numbers(f.background_text, ',', 3, "--background");
   f.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
+  if (f.views_opt && (*f.views_opt < 1 || *f.views_opt > 256))
+    throw_input_error("--views: {} is outside 1..256", *f.views_opt);
   if (f.view_cone_opt && !(*f.view_cone_opt > 0.0f && *f.view_cone_opt < 170.0f))
     throw_input_error("--view-cone: {} must lie in (0, 170) degrees", *f.view_cone_opt);
 }
 
-// The display decides the quilt when there is one; the user's options override it.
+// The display when one is given (--calibration or --device).
 struct DisplayChoice {
   std::optional<display::Calibration> calibration;
-  std::optional<display::DisplayQuilt> quilt;
   std::string path;
-  int views = kDefaultViewCount;
-  float view_cone_deg = float(kDefaultViewConeDeg);
 };
 
 DisplayChoice choose_display(RenderFlags& f) {
@@ -180,17 +178,13 @@ DisplayChoice choose_display(RenderFlags& f) {
   if (f.display_source.given()) {
     d.calibration = f.display_source.load();
     d.path = f.display_source.name();
-    d.quilt = display::quilt_for_display(*d.calibration, f.views_opt);
   }
-  d.views = d.quilt ? d.quilt->views : f.views_opt.value_or(kDefaultViewCount);
-  if (d.views < 1 || d.views > 256) throw_input_error("--views: {} is outside 1..256", d.views);
-  d.view_cone_deg = d.quilt ? float(d.quilt->view_cone_deg) : f.view_cone_opt.value_or(float(kDefaultViewConeDeg));
   return d;
 }
 
 // --method for a scene of `kind`: g2lf names V2LF for voxels when it is only the default.
-lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, lightfield::SceneKind kind) {
-  const bool voxels = kind == lightfield::SceneKind::kVoxels;
+lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, scene::SceneKind kind) {
+  const bool voxels = kind == scene::SceneKind::kVoxels;
   if (voxels && f.method == "g2lf" && app.count("--method"))
     throw_input_error("--method: g2lf is for Gaussian scenes; {} is a voxel scene (per-view or v2lf)", f.scene_path);
   if (!voxels && f.method == "v2lf")
@@ -201,50 +195,47 @@ lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, l
   return f.method == "per-view" ? lightfield::Method::kPerView : lightfield::Method::kSweepingPlanes;
 }
 
-// The views' cameras: cam.json or the scene's framing, the size asked for or the display's.
-render::QuiltGeometry quilt_geometry(const RenderFlags& f, const DisplayChoice& display,
-                                     const lightfield::LightFieldScene& scene) {
-  render::CameraSpec spec = !f.camera_path.empty() ? render::read_camera_json(f.camera_path) : render::CameraSpec{};
-  std::optional<int> width, height;
+// The flags' request of the view plan (lightfield/view_plan.hpp decides what is not given).
+lightfield::ViewRequest view_request(const RenderFlags& f, const DisplayChoice& display) {
+  lightfield::ViewRequest r;
+  if (display.calibration) r.display = &*display.calibration;
+  r.views = f.views_opt;
+  if (f.view_cone_opt) r.view_cone_deg = *f.view_cone_opt;
+  if (!f.camera_path.empty()) r.camera = render::read_camera_json(f.camera_path);
+  r.orbit_deg = f.orbit_deg;
   if (!f.size_text.empty()) {
     const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
     if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
       throw_input_error("--size: '{}' must be two integers in [1, 16384]", f.size_text);
-    width = int(wh[0]);
-    height = int(wh[1]);
-  } else if (display.quilt && !spec.width && !spec.height) {
-    const display::ViewSize size = display::view_size_for_display(*display.quilt);
-    width = size.width;
-    height = size.height;
+    r.size = display::ViewSize{int(wh[0]), int(wh[1])};
   }
-  // The default camera frames the content for the views' aspect (square unless a size is known).
-  if (f.camera_path.empty())
-    spec = scene.framing(render::kDefaultFovYDeg, f.orbit_deg, width && height ? float(*width) / float(*height) : 1.0f);
-  const render::Camera base = render::camera_from_spec(spec, width, height);
-  const float focal_distance = f.focal_distance > 0.0f ? f.focal_distance : glm::length(spec.look_at - spec.position);
-  return render::make_quilt_geometry(base, focal_distance, display.view_cone_deg, display.views);
+  if (f.focal_distance > 0.0f) r.focal_distance = f.focal_distance;
+  if (f.cols_opt) r.grid = display::QuiltGrid{*f.cols_opt, *f.rows_opt};
+  return r;
 }
 
-void print_display(const DisplayChoice& display, const render::Camera& base) {
-  if (!display.quilt) return;
-  std::cout << fmt::format("display {}: {}\n", display.path, display.quilt->describe());
+// The plan, with the grid's refusal named by the flags that chose it.
+lightfield::ViewPlan plan_render_views(const RenderFlags& f, const DisplayChoice& display, const scene::Scene& scene) {
+  const lightfield::ViewRequest request = view_request(f, display);
+  try {
+    return lightfield::plan_views(request, &scene);
+  } catch (const InputError& e) {
+    // The plan names its field ("grid: ..."); the user gave it as --cols/--rows.
+    const std::string why = e.what();
+    if (f.cols_opt && why.starts_with("grid: ")) throw_input_error("--cols/--rows: {}", why.substr(6));
+    throw;
+  }
+}
+
+void print_display(const DisplayChoice& display, const lightfield::ViewPlan& plan) {
+  if (!plan.display_quilt) return;
+  const render::Camera& base = plan.geometry.base;
+  std::cout << fmt::format("display {}: {}\n", display.path, plan.display_quilt->describe());
   const double aspect = double(base.width) / base.height;
-  if (std::abs(aspect / display.quilt->view_aspect - 1.0) > 0.01)
+  if (std::abs(aspect / plan.display_quilt->view_aspect - 1.0) > 0.01)
     std::cerr << fmt::format("notice: views of {}x{} (aspect {:.4g}) on a display of aspect {:.4g}: "
                              "the interlacer fits them with black bars (leave out --size to match)\n",
-                             base.width, base.height, aspect, display.quilt->view_aspect);
-}
-
-// The quilt's tiles: the display's grid, the user's, or one chosen for the views.
-render::QuiltLayout quilt_layout(const RenderFlags& f, const DisplayChoice& display,
-                                 const render::QuiltGeometry& geometry) {
-  const render::Camera& base = geometry.base;
-  display::QuiltGrid grid = display.quilt ? display.quilt->grid
-                                        : display::quilt_grid_for_views(display.views, double(base.width) / base.height);
-  if (f.cols_opt) grid = {*f.cols_opt, *f.rows_opt};
-  if (grid.cols < 1 || grid.rows < 1 || grid.cols * grid.rows < display.views)
-    throw_input_error("--cols/--rows: {}x{} tiles cannot hold {} views", grid.cols, grid.rows, display.views);
-  return render::make_quilt_layout(geometry, grid.cols, grid.rows);
+                             base.width, base.height, aspect, plan.display_quilt->view_aspect);
 }
 
 // Interlaces the quilt as written (8 bits, and the tile aspect as its name rounds it), so the
@@ -268,11 +259,11 @@ void write_panel(const RenderFlags& f, const DisplayChoice& display, const Image
 
 // --direct: the panel from the renderer's direct pass; returns the file.
 std::string render_direct_panel(const RenderFlags& f, const DisplayChoice& display,
-                                lightfield::LightFieldRenderer& renderer, const render::QuiltGeometry& geometry) {
+                                lightfield::LightFieldRenderer& renderer, const lightfield::ViewPlan& plan) {
   const display::LensModel lens(display.calibration->display, display.calibration->correction);
   lightfield::PanelOptions options;
   options.overscan = f.overscan;
-  renderer.render_panel(geometry, lens, options);
+  renderer.render_panel(plan.geometry, lens, options);
   const ImageF& panel = renderer.read_panel();
   write_png(f.panel_path, to_uint8(panel));
   std::cout << fmt::format("wrote {} ({}x{} panel, direct: no quilt)\n", f.panel_path, panel.width, panel.height);
@@ -281,15 +272,15 @@ std::string render_direct_panel(const RenderFlags& f, const DisplayChoice& displ
 
 // One view into --out, or the quilt into its suffixed name (and the panel); returns the file.
 std::string render_and_write(const RenderFlags& f, const DisplayChoice& display,
-                             lightfield::LightFieldRenderer& renderer, const render::QuiltGeometry& geometry) {
+                             lightfield::LightFieldRenderer& renderer, const lightfield::ViewPlan& plan) {
   if (f.view >= 0) {
-    if (f.view >= display.views) throw_input_error("--view: {} is outside 0..{}", f.view, display.views - 1);
-    write_png(f.out, to_uint8(renderer.render_view(geometry, f.view)));
+    if (f.view >= plan.views) throw_input_error("--view: {} is outside 0..{}", f.view, plan.views - 1);
+    write_png(f.out, to_uint8(renderer.render_view(plan.geometry, f.view)));
     return f.out;
   }
-  const render::QuiltLayout layout = quilt_layout(f, display, geometry);
+  const render::QuiltLayout& layout = plan.layout;
   const std::string written = quilt_file_name(f.out, layout);
-  renderer.render_quilt(geometry, layout);
+  renderer.render_quilt(plan.geometry, layout);
   const Image8 quilt8 = to_uint8(renderer.read_quilt());
   write_png(written, quilt8);
   if (!f.panel_path.empty()) write_panel(f, display, quilt8, written, layout, renderer.options().backend);
@@ -320,7 +311,7 @@ int RunRender(int argc, char** argv) {
   check_direct_flags(f, app);
   check_output_flags(f);
   const DisplayChoice display = choose_display(f);
-  const lightfield::SceneKind kind = lightfield::scene_kind_of_file(f.scene_path);
+  const scene::SceneKind kind = scene::scene_kind_of_file(f.scene_path);
   options.method = method_for_scene(f, app, kind);
   options.split_levels = f.split_levels;
   options.planes.adaptive_filter = !f.no_plane_lowpass;
@@ -332,20 +323,20 @@ int RunRender(int argc, char** argv) {
     throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
 
   const auto t0 = std::chrono::steady_clock::now();
-  const lightfield::LightFieldScene scene = lightfield::load_light_field_scene(f.scene_path);
-  const render::QuiltGeometry geometry = quilt_geometry(f, display, scene);
-  print_display(display, geometry.base);
+  const scene::Scene scene = scene::load_scene(f.scene_path);
+  const lightfield::ViewPlan plan = plan_render_views(f, display, scene);
+  print_display(display, plan);
   const std::unique_ptr<lightfield::LightFieldRenderer> renderer = lightfield::make_renderer(options, kind, device);
   renderer->set_scene(scene);
   const std::string written =
-      f.direct ? render_direct_panel(f, display, *renderer, geometry) : render_and_write(f, display, *renderer, geometry);
+      f.direct ? render_direct_panel(f, display, *renderer, plan) : render_and_write(f, display, *renderer, plan);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cout << fmt::format("wrote {} ({} {}, {} on the {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
                            written, scene.size(), scene.primitives(),
                            f.view >= 0 ? fmt::format("view {}", f.view)
                            : lightfield::method_name(options.method, kind) + (f.direct ? " direct" : ""),
-                           lightfield::processor_name(options.backend), f.view >= 0 ? 1 : display.views,
-                           geometry.base.width, geometry.base.height, display.view_cone_deg, seconds);
+                           lightfield::processor_name(options.backend), f.view >= 0 ? 1 : plan.views,
+                           plan.geometry.base.width, plan.geometry.base.height, plan.view_cone_deg, seconds);
   return 0;
 }
 

@@ -10,11 +10,11 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "render/scene_bounds.hpp"
+#include "scene/scene_bounds.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "voxel/voxel_generator.hpp"
-#include "voxel/voxel_io.hpp"
+#include "scene/voxel_io.hpp"
 #include "voxel/voxelize.hpp"
 
 namespace lfd::apps {
@@ -22,26 +22,26 @@ namespace lfd::apps {
 namespace {
 
 int generate(const render::SceneGeneratorOptions& options, const std::string& out) {
-  const render::GaussianScene scene = render::generate_scene(options);
-  render::save_ply(out, scene);
+  const scene::GaussianScene scene = render::generate_scene(options);
+  scene::save_ply(out, scene);
   std::cout << fmt::format("wrote {} ({} Gaussians, kind {}, seed {}, SH degree {})\n", out,
                            scene.size(), options.kind, options.seed, scene.sh_degree);
   return 0;
 }
 
 int generate_voxels(const voxel::VoxelGeneratorOptions& options, const std::string& out) {
-  const voxel::VoxelScene scene = voxel::generate_voxel_scene(options);
-  voxel::save_voxel_scene(out, scene);
+  const scene::VoxelScene scene = voxel::generate_voxel_scene(options);
+  scene::save_voxel_scene(out, scene);
   std::cout << fmt::format("wrote {} ({} voxels, levels up to {}, seed {}, SH degree {})\n", out, scene.size(),
                            options.detail_level, options.seed, scene.sh_degree);
   return 0;
 }
 
 int voxelize(const std::string& in, const voxel::VoxelizeOptions& options, const std::string& out) {
-  const render::GaussianScene gaussians = render::load_scene(in);
+  const scene::GaussianScene gaussians = scene::load_gaussian_scene(in);
   voxel::VoxelizeReport report;
-  const voxel::VoxelScene scene = voxel::voxelize(gaussians, options, &report);
-  voxel::save_voxel_scene(out, scene);
+  const scene::VoxelScene scene = voxel::voxelize(gaussians, options, &report);
+  scene::save_voxel_scene(out, scene);
   std::cout << fmt::format("wrote {} ({} voxels from {} Gaussians, levels up to {}, {} grid points, SH degree {}, "
                            "root {:.3f} units = inside cube * 2^{}; {} Gaussian centres outside it)\n",
                            out, scene.size(), gaussians.size(), report.finest_level, report.grid_points,
@@ -50,17 +50,17 @@ int voxelize(const std::string& in, const voxel::VoxelizeOptions& options, const
 }
 
 int convert(const std::string& in, const std::string& out) {
-  const render::GaussianScene scene = render::load_scene(in);
-  render::save_scene(out, scene);  // nothing is written when the input is bad (atomic)
+  const scene::GaussianScene scene = scene::load_gaussian_scene(in);
+  scene::save_gaussian_scene(out, scene);  // nothing is written when the input is bad (atomic)
   std::cout << fmt::format("wrote {} ({} Gaussians, SH degree {}) from {}\n", out, scene.size(),
                            scene.sh_degree, in);
   return 0;
 }
 
 int info(const std::string& path, bool json) {
-  const render::GaussianScene scene = render::load_scene(path);
-  const render::SceneBounds robust = render::robust_bounds(scene);
-  const render::SceneBounds full = render::exact_bounds(scene);
+  const scene::GaussianScene scene = scene::load_gaussian_scene(path);
+  const scene::SceneBounds robust = scene::robust_bounds(scene);
+  const scene::SceneBounds full = scene::exact_bounds(scene);
   if (json) {
     nlohmann::json j;
     j["file"] = path;

@@ -5,7 +5,7 @@
 
 namespace lfd::bench {
 
-BenchRenderers make_bench_renderers(const std::string& backend, lightfield::SceneKind kind) {
+BenchRenderers make_bench_renderers(const std::string& backend, scene::SceneKind kind) {
   lightfield::RendererOptions options;
   if (backend == "gl")
     options.backend = lightfield::Backend::kGl;
@@ -14,7 +14,7 @@ BenchRenderers make_bench_renderers(const std::string& backend, lightfield::Scen
   options.gl.quilt_format = GL_RGBA8;
   // V2LF bins on the GPU: its plane and binned counts (the table's figures) come with timed
   // frames, read when the frame ends (gpu::GlV2lfStats).
-  options.gl.gpu_timers = kind == lightfield::SceneKind::kVoxels;
+  options.gl.gpu_timers = kind == scene::SceneKind::kVoxels;
   const std::shared_ptr<lightfield::GlDevice> device = lightfield::open_device(options.backend);
   BenchRenderers renderers;
   options.method = lightfield::Method::kPerView;

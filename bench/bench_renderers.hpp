@@ -16,6 +16,6 @@ struct BenchRenderers {
 };
 
 // `backend`: "cpu" or "gl" (InputError for another; gpu::GlUnavailable, exit 2, without GL).
-BenchRenderers make_bench_renderers(const std::string& backend, lightfield::SceneKind kind);
+BenchRenderers make_bench_renderers(const std::string& backend, scene::SceneKind kind);
 
 }  // namespace lfd::bench

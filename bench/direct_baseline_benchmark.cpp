@@ -14,11 +14,11 @@
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "interlace/view_masks.hpp"
-#include "lightfield/display_views.hpp"
+#include "lightfield/view_plan.hpp"
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/error.hpp"
 
 namespace lfd::bench {
@@ -36,11 +36,12 @@ struct Frame {
   render::QuiltLayout layout;
 };
 
-Frame make_frame(const std::string& path, const lightfield::LightFieldScene& scene, int view_height, int views) {
+Frame make_frame(const std::string& path, const scene::Scene& scene, int view_height, int views) {
   Frame f;
   f.calibration = display::read_calibration(path);
-  const lightfield::DisplayViews v = lightfield::views_for_display(
-      f.calibration, scene, view_height, views > 0 ? std::optional<int>(views) : std::nullopt);
+  lightfield::ViewRequest request = lightfield::display_views_request(f.calibration, view_height);
+  if (views > 0) request.views = views;
+  const lightfield::ViewPlan v = lightfield::plan_views(request, &scene);
   f.geometry = v.geometry;
   f.layout = v.layout;
   return f;
@@ -53,7 +54,7 @@ double max_abs_difference(const ImageF& a, const ImageF& b) {
 }
 
 nlohmann::ordered_json run_row(lightfield::LightFieldRenderer& sweeping, const SceneSource& source,
-                               const lightfield::LightFieldScene& scene, const std::string& calibration_path,
+                               const scene::Scene& scene, const std::string& calibration_path,
                                int views, const DirectBaselineOptions& options) {
   const Frame f = make_frame(calibration_path, scene, options.view_height, views);
   const display::LensModel lens(f.calibration.display, f.calibration.correction);
@@ -69,7 +70,7 @@ nlohmann::ordered_json run_row(lightfield::LightFieldRenderer& sweeping, const S
   direct.planes.chunks = options.chunks;
   direct.planes.filter = options.direct_filter;
   sweeping.set_options(direct);
-  const render::GaussianScene& gaussians = scene.gaussians();
+  const scene::GaussianScene& gaussians = scene.gaussians();
   std::vector<double> full_s, masked_s, direct_s;
   ImageF full_panel, masked_panel;
   for (int i = 0; i < options.warmup + options.runs; ++i) {
@@ -152,7 +153,7 @@ nlohmann::ordered_json run_direct_baseline_benchmark(lightfield::LightFieldRende
       std::printf("| %s | skipped: not found |||||||||||\n", source.path.c_str());
       continue;
     }
-    const lightfield::LightFieldScene scene(source.load_gaussians());
+    const scene::Scene scene(source.load_gaussians());
     sweeping.set_scene(scene);
     for (const std::string& calibration : options.calibrations)
       for (int views : options.views)

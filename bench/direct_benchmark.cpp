@@ -16,16 +16,16 @@
 #include "display/lens_model.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
-#include "lightfield/display_views.hpp"
+#include "lightfield/view_plan.hpp"
 #include "lightfield/gl_renderer.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/error.hpp"
 #include "voxel/voxel_generator.hpp"
-#include "voxel/voxel_io.hpp"
+#include "scene/voxel_io.hpp"
 
 namespace lfd::bench {
 namespace {
@@ -44,12 +44,12 @@ struct Frame {
   render::QuiltLayout layout;
 };
 
-Frame make_frame(const std::string& path, const lightfield::LightFieldScene& scene, int view_height) {
+Frame make_frame(const std::string& path, const scene::Scene& scene, int view_height) {
   Frame f;
   f.display_name = fs::path(path).filename().string();
   f.calibration = display::read_calibration(path);
-  const lightfield::DisplayViews v = lightfield::views_for_display(f.calibration, scene, view_height);
-  f.quilt = v.quilt;
+  const lightfield::ViewPlan v = lightfield::plan_views(lightfield::display_views_request(f.calibration, view_height), &scene);
+  f.quilt = *v.display_quilt;
   f.geometry = v.geometry;
   f.layout = v.layout;
   return f;
@@ -168,7 +168,7 @@ class Runner {
         std::printf("\nskipped %s: not found\n", source.path.c_str());
         continue;
       }
-      const lightfield::LightFieldScene scene = load(source);
+      const scene::Scene scene = load(source);
       sweeping_.set_scene(scene);
       if (per_view_) per_view_->set_scene(scene);
       for (const std::string& calibration : options_.calibrations)
@@ -178,22 +178,22 @@ class Runner {
   }
 
  private:
-  lightfield::LightFieldScene load(const SceneSource& source) const {
-    if (options_.kind == lightfield::SceneKind::kVoxels) {
-      if (!source.path.empty()) return lightfield::LightFieldScene(voxel::load_voxel_scene(source.path));
+  scene::Scene load(const SceneSource& source) const {
+    if (options_.kind == scene::SceneKind::kVoxels) {
+      if (!source.path.empty()) return scene::Scene(scene::load_voxel_scene(source.path));
       voxel::VoxelGeneratorOptions g;
       g.detail_level = int(source.generated);
-      return lightfield::LightFieldScene(voxel::generate_voxel_scene(g));
+      return scene::Scene(voxel::generate_voxel_scene(g));
     }
-    return lightfield::LightFieldScene(source.load_gaussians());
+    return scene::Scene(source.load_gaussians());
   }
   std::string label(const SceneSource& source) const {
-    if (options_.kind == lightfield::SceneKind::kVoxels && source.path.empty())
+    if (options_.kind == scene::SceneKind::kVoxels && source.path.empty())
       return fmt::format("generated voxel tabletop (level {})", source.generated);
     return source.label();
   }
 
-  nlohmann::ordered_json run_table(const SceneSource& source, const lightfield::LightFieldScene& scene,
+  nlohmann::ordered_json run_table(const SceneSource& source, const scene::Scene& scene,
                                    const Frame& f) {
     const display::LensModel lens(f.calibration.display, f.calibration.correction);
     const auto& cal = f.calibration.display;
@@ -212,7 +212,7 @@ class Runner {
                 "| PSNR quilt nearest [dB] | PSNR quilt linear [dB] |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     nlohmann::ordered_json table = {{"scene", label(source)},
-                                    {"method", options_.kind == lightfield::SceneKind::kVoxels ? "V2LF" : "G2LF"},
+                                    {"method", options_.kind == scene::SceneKind::kVoxels ? "V2LF" : "G2LF"},
                                     {"primitives", scene.size()},
                                     {"display", f.display_name},
                                     {"panel", {cal.screen_w, cal.screen_h}},
@@ -312,7 +312,7 @@ void DirectBenchOptions::check() const {
   if (reference_views != 0 && (reference_views < 2 || reference_views > 4096))
     fail("reference_views", fmt::format("{} is outside 2..4096 (0: none)", reference_views));
   if (view_height < 16 || view_height > 4096) fail("view_height", fmt::format("{} is outside 16..4096", view_height));
-  if (kind == lightfield::SceneKind::kVoxels)
+  if (kind == scene::SceneKind::kVoxels)
     for (const SceneSource& s : scenes)
       if (s.path.empty()) {
         voxel::VoxelGeneratorOptions g;

@@ -38,7 +38,7 @@ struct DirectBenchOptions {
   // kGaussians: G2LF planes of Gaussian scenes (SceneSource::generated = Gaussians of a generated
   // tabletop); kVoxels: V2LF planes of voxel scenes (generated = the generated voxel tabletop's
   // finest level, voxel/voxel_generator.hpp). The renderers must be of this kind.
-  lightfield::SceneKind kind = lightfield::SceneKind::kGaussians;
+  scene::SceneKind kind = scene::SceneKind::kGaussians;
 
 
   // InputError "direct benchmark: <field>: ..." for a value out of range.

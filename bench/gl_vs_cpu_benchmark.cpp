@@ -15,7 +15,7 @@
 #include "render/per_view_quilt.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/default_display.hpp"
 
 namespace lfd::bench {
@@ -37,7 +37,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 GlVsCpuScene gl_vs_cpu_scene_file(const std::string& path, int size) {
   GlVsCpuScene s;
-  s.scene = render::load_scene(path);
+  s.scene = scene::load_gaussian_scene(path);
   s.name = fmt::format("{} ({})", path, s.scene.size());
   const render::CameraSpec spec = render::frame_scene(s.scene);
   s.base = render::camera_from_spec(spec, size, size);

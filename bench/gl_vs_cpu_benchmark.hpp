@@ -12,13 +12,13 @@
 #include "gpu/gl_context.hpp"
 #include "render/camera.hpp"
 #include "render/g2lf.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::bench {
 
 struct GlVsCpuScene {
   std::string name;
-  render::GaussianScene scene;
+  scene::GaussianScene scene;
   render::Camera base;
   float focal_distance = 0;
 };

@@ -10,6 +10,7 @@
 
 #include "bench/timing_stats.hpp"
 #include "gpu/gl_g2lf.hpp"
+#include "lightfield/view_plan.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_swizzle.hpp"
@@ -272,12 +273,16 @@ void append_v2lf_rows(const GpuFrameOptions& o, const render::Camera& gaussian_b
                       std::vector<GpuFrameRow>& rows) {
   voxel::VoxelGeneratorOptions generator;
   generator.detail_level = o.voxel_level;
-  const voxel::VoxelScene scene = voxel::generate_voxel_scene(generator);
+  const scene::VoxelScene scene = voxel::generate_voxel_scene(generator);
   const render::CameraSpec spec = voxel::frame_voxel_scene(scene);
-  const render::Camera base = render::camera_from_spec(spec, gaussian_base.width, gaussian_base.height);
-  const auto geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
-                                                    float(kDefaultViewConeDeg), o.views);
-  const auto layout = render::make_quilt_layout(geometry, o.views, 1);
+  lightfield::ViewRequest request;  // the Gaussian rows' views: their size, one row of tiles
+  request.camera = spec;
+  request.size = display::ViewSize{gaussian_base.width, gaussian_base.height};
+  request.views = o.views;
+  request.grid = display::QuiltGrid{o.views, 1};
+  const lightfield::ViewPlan plan = lightfield::plan_views(request);
+  const render::QuiltGeometry& geometry = plan.geometry;
+  const render::QuiltLayout& layout = plan.layout;
   const gpu::GlVoxelScene gl_scene(scene, info);
   const gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA8);
   gpu::GlV2lfOptions options;

@@ -11,13 +11,14 @@
 
 #include "bench/frame_timing.hpp"
 #include "bench/render_configs.hpp"
+#include "lightfield/view_plan.hpp"
 #include "bench/timing_stats.hpp"
 #include "display/display_quilt.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/error.hpp"
 
 namespace lfd::bench {
@@ -76,8 +77,8 @@ class Runner {
                 std::min(options_.png_runs, runs_), g2lf_.memory_kind().c_str());
     for (const SceneSource& source : options_.scenes) {
       const auto t0 = Clock::now();
-      const lightfield::LightFieldScene scene(source.path.empty() ? generated_scene(source.generated)
-                                                                  : render::load_scene(source.path));
+      const scene::Scene scene(source.path.empty() ? generated_scene(source.generated)
+                                                                  : scene::load_gaussian_scene(source.path));
       const double load_seconds = seconds_since(t0);
       per_view_.set_scene(scene);
       g2lf_.set_scene(scene);
@@ -88,7 +89,7 @@ class Runner {
   }
 
  private:
-  static render::GaussianScene generated_scene(size_t gaussians) {
+  static scene::GaussianScene generated_scene(size_t gaussians) {
     render::SceneGeneratorOptions g;
     g.count = gaussians;
     return render::generate_scene(g);
@@ -110,22 +111,21 @@ class Runner {
     std::string label;
   };
 
-  TableSetup setup_table(const SceneSource& source, const render::GaussianScene& scene, int views) const {
+  TableSetup setup_table(const SceneSource& source, const scene::GaussianScene& scene, int views) const {
     const bool tabletop = source.path.empty() && options_.tabletop_camera;
     const render::CameraSpec spec = tabletop ? tabletop_camera() : render::frame_scene(scene);
-    const render::Camera base = render::camera_from_spec(spec, options_.size, options_.size);
+    const lightfield::ViewPlan plan = lightfield::plan_views(lightfield::square_views(spec, options_.size, options_.view_cone_deg, views));
     TableSetup t;
-    t.geometry = render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
-                                             options_.view_cone_deg, views);
-    t.grid = display::quilt_grid_for_views(views, 1.0);
-    t.layout = render::make_quilt_layout(t.geometry, t.grid.cols, t.grid.rows);
+    t.geometry = plan.geometry;
+    t.grid = {plan.layout.cols, plan.layout.rows};
+    t.layout = plan.layout;
     t.d_forward = render::forward_distance(t.geometry);
     t.d_shift = options_.shift_fraction * t.d_forward;
     t.label = source.label() + (tabletop ? ", tabletop camera" : "");
     return t;
   }
 
-  void print_table_head(const SceneSource& source, const render::GaussianScene& scene, double load_seconds,
+  void print_table_head(const SceneSource& source, const scene::GaussianScene& scene, double load_seconds,
                         const TableSetup& t) const {
     std::printf("\n#### %s: %s Gaussians, %d views of %dx%d (%dx%d quilt), view cone %.0f deg, "
                 "D_focal %.2f, D_shift %.2f (D_forward %.2f)%s\n\n",
@@ -138,7 +138,7 @@ class Runner {
     std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   }
 
-  nlohmann::ordered_json run_table(const SceneSource& source, const render::GaussianScene& scene,
+  nlohmann::ordered_json run_table(const SceneSource& source, const scene::GaussianScene& scene,
                                    double load_seconds, int views) {
     const TableSetup t = setup_table(source, scene, views);
     print_table_head(source, scene, load_seconds, t);
@@ -255,8 +255,8 @@ class Runner {
 
 }  // namespace
 
-render::GaussianScene SceneSource::load_gaussians() const {
-  if (!path.empty()) return render::load_scene(path);
+scene::GaussianScene SceneSource::load_gaussians() const {
+  if (!path.empty()) return scene::load_gaussian_scene(path);
   render::SceneGeneratorOptions g;
   g.count = generated;
   return render::generate_scene(g);

@@ -14,7 +14,7 @@
 
 #include "util/default_display.hpp"
 #include "lightfield/light_field_renderer.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::bench {
 
@@ -25,7 +25,7 @@ struct SceneSource {
   size_t generated = 0;
   std::string label() const;
   // The file's Gaussians, or the generated tabletop of `generated`.
-  render::GaussianScene load_gaussians() const;
+  scene::GaussianScene load_gaussians() const;
 };
 
 struct RenderBenchOptions {

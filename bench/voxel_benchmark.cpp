@@ -11,6 +11,7 @@
 #include "bench/render_configs.hpp"
 #include "bench/timing_stats.hpp"
 #include "display/display_quilt.hpp"
+#include "lightfield/view_plan.hpp"
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
@@ -18,7 +19,7 @@
 #include "util/error.hpp"
 #include "voxel/v2lf.hpp"
 #include "voxel/voxel_generator.hpp"
-#include "voxel/voxel_io.hpp"
+#include "scene/voxel_io.hpp"
 
 namespace lfd::bench {
 namespace {
@@ -83,7 +84,7 @@ void VoxelBenchOptions::check() const {
 namespace {
 
 struct LoadedScene {
-  lightfield::LightFieldScene scene;
+  scene::Scene scene;
   std::string label;
   double load_seconds = 0;
 };
@@ -91,13 +92,13 @@ struct LoadedScene {
 LoadedScene load_scene(const VoxelBenchOptions& options) {
   const auto t_load = Clock::now();
   if (!options.scene_path.empty()) {
-    lightfield::LightFieldScene scene(voxel::load_voxel_scene(options.scene_path));
+    scene::Scene scene(scene::load_voxel_scene(options.scene_path));
     return {std::move(scene), std::filesystem::path(options.scene_path).filename().string(),
             std::chrono::duration<double>(Clock::now() - t_load).count()};
   }
   voxel::VoxelGeneratorOptions g;
   g.detail_level = options.generated_level;
-  lightfield::LightFieldScene scene(voxel::generate_voxel_scene(g));
+  scene::Scene scene(voxel::generate_voxel_scene(g));
   return {std::move(scene), fmt::format("generated tabletop (level {})", options.generated_level),
           std::chrono::duration<double>(Clock::now() - t_load).count()};
 }
@@ -145,7 +146,7 @@ class VoxelRunner {
 
   nlohmann::ordered_json run() {
     const LoadedScene loaded = load_scene(options_);
-    const voxel::VoxelScene& scene = loaded.scene.voxels();
+    const scene::VoxelScene& scene = loaded.scene.voxels();
     per_view_.set_scene(loaded.scene);
     v2lf_.set_scene(loaded.scene);
     const render::CameraSpec spec = !options_.camera_path.empty() ? render::read_camera_json(options_.camera_path)
@@ -170,20 +171,19 @@ class VoxelRunner {
     std::printf("lfd bench voxels: %s (%s); median of %d frames after %d warm-up; peak memory: %s; PSNR/SSIM "
                 "against the per-view quilt of the same backend\n",
                 v2lf_.name().c_str(), v2lf_.device().c_str(), runs_, options_.warmup, v2lf_.memory_kind().c_str());
-    const render::Camera base = render::camera_from_spec(spec, options_.size, options_.size);
     for (int views : options_.views)
       out["tables"].push_back(
-          run_table(loaded.label, scene, render::make_quilt_geometry(base, glm::length(spec.look_at - spec.position),
-                                                                     options_.view_cone_deg, views)));
+          run_table(loaded.label, scene, lightfield::plan_views(lightfield::square_views(spec, options_.size, options_.view_cone_deg, views))));
     return out;
   }
 
  private:
-  nlohmann::ordered_json run_table(const std::string& label, const voxel::VoxelScene& scene,
-                                   const render::QuiltGeometry& geometry) {
+  nlohmann::ordered_json run_table(const std::string& label, const scene::VoxelScene& scene,
+                                   const lightfield::ViewPlan& plan) {
+    const render::QuiltGeometry& geometry = plan.geometry;
     const int views = geometry.views;
-    const display::QuiltGrid grid = display::quilt_grid_for_views(views, 1.0);
-    const render::QuiltLayout layout = render::make_quilt_layout(geometry, grid.cols, grid.rows);
+    const display::QuiltGrid grid{plan.layout.cols, plan.layout.rows};
+    const render::QuiltLayout& layout = plan.layout;
     // V2LF's default D_shift: the reference camera at the base camera.
     const float d_forward = render::forward_distance(geometry);
     std::printf("\n#### %s: %zu voxels (ss %.2g, K %d), %d views of %dx%d (%dx%d quilt), view cone %.0f deg, "

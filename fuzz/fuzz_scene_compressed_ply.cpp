@@ -5,13 +5,13 @@
 #include <cstdint>
 #include <string_view>
 
-#include "render/scene_parsers.hpp"
+#include "scene/scene_parsers.hpp"
 #include "util/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   try {
-    lfd::render::read_compressed_ply(bytes, "fuzz.compressed.ply");
+    lfd::scene::read_compressed_ply(bytes, "fuzz.compressed.ply");
   } catch (const lfd::InputError&) {
   }
   return 0;

@@ -4,13 +4,13 @@
 #include <cstdint>
 #include <string_view>
 
-#include "render/scene_parsers.hpp"
+#include "scene/scene_parsers.hpp"
 #include "util/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   try {
-    lfd::render::read_ksplat(bytes, "fuzz.ksplat");
+    lfd::scene::read_ksplat(bytes, "fuzz.ksplat");
   } catch (const lfd::InputError&) {
   }
   return 0;

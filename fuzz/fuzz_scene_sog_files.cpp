@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "render/sog_files.hpp"
+#include "scene/sog_files.hpp"
 #include "util/error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -29,13 +29,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   const auto meta = files.find("meta.json");
   if (meta == files.end()) return 0;
-  const lfd::render::SogFileSource source = [&](const std::string& file) {
+  const lfd::scene::SogFileSource source = [&](const std::string& file) {
     const auto it = files.find(file);
     if (it == files.end()) lfd::throw_input_error("fuzz: no file '{}'", file);
     return it->second;
   };
   try {
-    lfd::render::read_sog_files(source, meta->second, "fuzz/meta.json");
+    lfd::scene::read_sog_files(source, meta->second, "fuzz/meta.json");
   } catch (const lfd::InputError&) {
   }
   return 0;

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "tests/render/gzip_for_tests.hpp"
-#include "render/scene_parsers.hpp"
+#include "scene/scene_parsers.hpp"
 #include "util/error.hpp"
 
 namespace {
@@ -21,7 +21,7 @@ std::string gzip(std::string_view data) { return lfd::test::gzip(data, 1); }
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string compressed = gzip({reinterpret_cast<const char*>(data), size});
   try {
-    lfd::render::read_spz(compressed, "fuzz.spz");
+    lfd::scene::read_spz(compressed, "fuzz.spz");
   } catch (const lfd::InputError&) {
   }
   return 0;

@@ -6,12 +6,12 @@
 #include <string_view>
 
 #include "util/error.hpp"
-#include "voxel/voxel_io.hpp"
+#include "scene/voxel_io.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   try {
-    lfd::voxel::read_voxel_scene_bytes(bytes, "fuzz.voxels");
+    lfd::scene::read_voxel_scene_bytes(bytes, "fuzz.voxels");
   } catch (const lfd::InputError&) {
   }
   return 0;

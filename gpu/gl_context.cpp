@@ -1,5 +1,8 @@
 #include "gpu/gl_context.hpp"
 
+#include "gpu/gl_debug.hpp"
+#include "gpu/gl_program.hpp"
+
 #include <cstdlib>
 #include <cstring>
 #include <vector>
@@ -65,9 +68,12 @@ EGLContext create_core_context(EGLDisplay display, std::string& why, const std::
     why += fmt::format("{}{}: no OpenGL config", why.empty() ? "" : "; ", platform);
     return EGL_NO_CONTEXT;
   }
+  // A debug context under strict checks (the tests), so the driver reports misuse (gl_debug.hpp).
   const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
                                        EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                       EGL_CONTEXT_OPENGL_DEBUG, strict_gl_checks() ? EGL_TRUE : EGL_FALSE,
+                                       EGL_NONE};
   EGLContext context = eglCreateContext(display, no_config ? EGL_NO_CONFIG_KHR : config,
                                         EGL_NO_CONTEXT, context_attributes);
   if (context == EGL_NO_CONTEXT) {
@@ -81,6 +87,7 @@ EGLContext create_core_context(EGLDisplay display, std::string& why, const std::
     eglDestroyContext(display, context);
     return EGL_NO_CONTEXT;
   }
+  enable_gl_debug_output();
   return context;
 }
 

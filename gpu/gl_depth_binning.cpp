@@ -10,15 +10,13 @@
 #include "gpu/shaders/binning_cuts.comp.glsl.hpp"
 #include "gpu/shaders/binning_keys.comp.glsl.hpp"
 #include "gpu/shaders/binning_layers.comp.glsl.hpp"
-#include "gpu/shaders/depth_key.glsl.hpp"
 
 namespace lfd::gpu {
 namespace {
 
 // A pass that reads depths from sorted keys: depth_key.glsl with the keys' encoding first.
 Program depth_pass(const char* label, const char* source, DepthKeys keys) {
-  const std::string text = std::string(depth_key_glsl) + source;
-  return Program(label, {{GL_COMPUTE_SHADER, text.c_str()}},
+  return Program(label, {{GL_COMPUTE_SHADER, source}},
                  {keys == DepthKeys::kSigned ? "SIGNED_DEPTH_KEYS 1" : "SIGNED_DEPTH_KEYS 0"});
 }
 

@@ -7,7 +7,6 @@
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/shaders/direct_panel.frag.glsl.hpp"
 #include "gpu/shaders/interlace.vert.glsl.hpp"
-#include "gpu/shaders/lens_view.glsl.hpp"
 #include "interlace/interlacer.hpp"
 #include "util/error.hpp"
 
@@ -26,9 +25,8 @@ const Program& GlDirectPanel::program(render::PlaneFilter filter) {
   auto it = programs_.find(int(filter));
   if (it == programs_.end()) {
     const bool bilinear = filter == render::PlaneFilter::kBilinear;
-    const std::string fragment = std::string(lens_view_glsl) + direct_panel_frag_glsl;
     Program p(std::string("direct panel (") + (bilinear ? "bilinear" : "nearest") + ")",
-              {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, fragment.c_str()}},
+              {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, direct_panel_frag_glsl}},
               {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
                std::string("HW_BILINEAR ") + (hardware_bilinear_ ? "1" : "0")});
     lens_view_.set_uniforms(p);

@@ -218,7 +218,7 @@ void GlG2lfRenderer::render_panel(const render::QuiltGeometry& geometry, const G
   record_stats(options.gpu_timers, options.timer_reads);
 }
 
-ImageF render_quilt_g2lf_gl(const render::GaussianScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_g2lf_gl(const scene::GaussianScene& scene, const render::QuiltGeometry& geometry,
                             const render::QuiltLayout& layout, const GlG2lfOptions& options,
                             const render::RasterSettings& settings, GlG2lfStats* stats) {
   options.g2lf.check(geometry);

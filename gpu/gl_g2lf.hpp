@@ -165,7 +165,7 @@ class GlG2lfRenderer {
 
 // render::render_quilt_g2lf on the GPU of the current context, for one-off renders: uploads the
 // scene, renders into an RGBA32F quilt and reads it back (RGB, rows top-down, not clamped).
-ImageF render_quilt_g2lf_gl(const render::GaussianScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_g2lf_gl(const scene::GaussianScene& scene, const render::QuiltGeometry& geometry,
                             const render::QuiltLayout& layout, const GlG2lfOptions& options,
                             const render::RasterSettings& settings = {}, GlG2lfStats* stats = nullptr);
 

@@ -9,7 +9,6 @@
 
 #include "gpu/shaders/interlace.frag.glsl.hpp"
 #include "gpu/shaders/interlace.vert.glsl.hpp"
-#include "gpu/shaders/lens_view.glsl.hpp"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
@@ -20,7 +19,7 @@ GlInterlacer::GlInterlacer(const display::LensModel& lens, const render::QuiltLa
       panel_width_(lens.calibration().screen_w),
       panel_height_(lens.calibration().screen_h),
       program_("interlace", {{GL_VERTEX_SHADER, interlace_vert_glsl},
-                             {GL_FRAGMENT_SHADER, (std::string(lens_view_glsl) + interlace_frag_glsl).c_str()}}),
+                             {GL_FRAGMENT_SHADER, interlace_frag_glsl}}),
       lens_view_(lens) {
   layout_.check("quilt");
   const auto& cal = lens.calibration();

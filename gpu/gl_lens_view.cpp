@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "gpu/shaders/interlace.vert.glsl.hpp"
-#include "gpu/shaders/lens_view.glsl.hpp"
 #include "gpu/shaders/lens_view_probe.frag.glsl.hpp"
 #include "util/error.hpp"
 
@@ -152,7 +151,7 @@ ImageF view_fractions_on_gpu(const display::LensModel& lens, int first_row, int 
                       cal.screen_h);
   const GlLensView view(lens);
   const Program program("lens view probe", {{GL_VERTEX_SHADER, interlace_vert_glsl},
-                                            {GL_FRAGMENT_SHADER, (std::string(lens_view_glsl) + lens_view_probe_frag_glsl).c_str()}});
+                                            {GL_FRAGMENT_SHADER, lens_view_probe_frag_glsl}});
   view.set_uniforms(program);
   // The band's lowest row bottom-up: top-down rows first_row .. first_row + rows - 1.
   glProgramUniform1i(program.id(), program.uniform("first_j"), cal.screen_h - first_row - rows);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "gpu/gl_debug.hpp"
+
 namespace lfd::gpu {
 namespace {
 
@@ -35,6 +37,12 @@ const char* gl_error_name(GLenum e) {
 
 void check_gl(const char* what) {
   const GLenum e = glGetError();
+  // Under strict checks the debug output may have seen an error glGetError no longer holds.
+  if (const std::string debug = take_gl_debug_error(); !debug.empty()) {
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    throw std::runtime_error(fmt::format("GL error after {}: {}", what, debug));
+  }
   if (e == GL_NO_ERROR) return;
   while (glGetError() != GL_NO_ERROR) {
   }
@@ -204,84 +212,6 @@ VertexArray::VertexArray() {
   GLuint id = 0;
   glCreateVertexArrays(1, &id);
   name_ = GlName<delete_vertex_array>(id);
-}
-
-// ---- Program ----
-
-Program::Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
-                 const std::vector<std::string>& defines)
-    : label_(label) {
-  std::string header = "#version 450 core\n";
-  for (const std::string& d : defines) header += "#define " + d + "\n";
-  header += "#line 1\n";
-  const GLuint program = glCreateProgram();
-  name_ = GlName<delete_program>(program);
-  std::vector<GLuint> shaders;
-  for (const auto& [type, source] : stages) {
-    const GLuint shader = glCreateShader(type);
-    const char* parts[] = {header.c_str(), source};
-    glShaderSource(shader, 2, parts, nullptr);
-    glCompileShader(shader);
-    GLint ok = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-      GLint length = 0;
-      glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-      std::string log(size_t(std::max(length, 1)), '\0');
-      glGetShaderInfoLog(shader, length, nullptr, log.data());
-      glDeleteShader(shader);
-      for (GLuint s : shaders) glDeleteShader(s);
-      throw std::runtime_error(fmt::format("shader '{}' does not compile: {}", label, log.c_str()));
-    }
-    glAttachShader(program, shader);
-    shaders.push_back(shader);
-  }
-  glLinkProgram(program);
-  for (GLuint s : shaders) glDeleteShader(s);
-  GLint ok = 0;
-  glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(size_t(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program, length, nullptr, log.data());
-    throw std::runtime_error(fmt::format("program '{}' does not link: {}", label, log.c_str()));
-  }
-  list_uniforms();
-}
-
-void Program::list_uniforms() {
-  GLint count = 0, longest = 0;
-  glGetProgramiv(id(), GL_ACTIVE_UNIFORMS, &count);
-  glGetProgramiv(id(), GL_ACTIVE_UNIFORM_MAX_LENGTH, &longest);
-  std::string name(size_t(std::max(longest, 1)), '\0');
-  for (GLint i = 0; i < count; ++i) {
-    GLsizei length = 0;
-    glGetActiveUniformName(id(), GLuint(i), GLsizei(name.size()), &length, name.data());
-    std::string n(name.data(), size_t(length));
-    const GLint location = glGetUniformLocation(id(), n.c_str());
-    if (location < 0) continue;  // in a uniform block: no location
-    // An array is listed as "name[0]"; GLSL also accepts "name".
-    if (n.size() > 3 && n.compare(n.size() - 3, 3, "[0]") == 0) uniforms_.emplace_back(n.substr(0, n.size() - 3), location);
-    uniforms_.emplace_back(std::move(n), location);
-  }
-}
-
-void Program::use() const { glUseProgram(id()); }
-
-GLint Program::uniform(const char* name) const {
-  for (const auto& [n, location] : uniforms_)
-    if (n == name) return location;
-  return -1;
-}
-
-void Program::dispatch_1d(size_t items, int local_size) const {
-  const size_t groups = (items + size_t(local_size) - 1) / size_t(local_size);
-  if (groups == 0) return;
-  // Beyond the 65535-group limit of one dimension, spread over y (shaders use gl_NumWorkGroups).
-  const GLuint x = GLuint(std::min<size_t>(groups, 65535));
-  const GLuint y = GLuint((groups + 65534) / 65535);
-  glDispatchCompute(x, y, 1);
 }
 
 }  // namespace lfd::gpu

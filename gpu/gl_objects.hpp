@@ -9,46 +9,10 @@
 
 #include <epoxy/gl.h>
 
+#include "gpu/gl_name.hpp"
+#include "gpu/gl_program.hpp"  // Program: shader programs, beside the wrappers of GL objects
+
 namespace lfd::gpu {
-
-// Throws std::runtime_error("GL error <name> after <what>") if the context has an error set.
-void check_gl(const char* what);
-
-// A moveable owner of one GL name; `Deleter` frees it.
-template <void (*Deleter)(GLuint)>
-class GlName {
- public:
-  GlName() = default;
-  explicit GlName(GLuint id) : id_(id) {}
-  ~GlName() { reset(); }
-  GlName(GlName&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
-  GlName& operator=(GlName&& o) noexcept {
-    if (this != &o) {
-      reset();
-      id_ = std::exchange(o.id_, 0);
-    }
-    return *this;
-  }
-  GlName(const GlName&) = delete;
-  GlName& operator=(const GlName&) = delete;
-  GLuint id() const { return id_; }
-  explicit operator bool() const { return id_ != 0; }
-  void reset() {
-    if (id_) Deleter(id_);
-    id_ = 0;
-  }
-
- private:
-  GLuint id_ = 0;
-};
-
-void delete_buffer(GLuint id);
-void delete_texture(GLuint id);
-void delete_framebuffer(GLuint id);
-void delete_vertex_array(GLuint id);
-void delete_program(GLuint id);
-void delete_query(GLuint id);
-void delete_sampler(GLuint id);
 
 // A buffer object of fixed size (glNamedBufferStorage, dynamic storage so it can be updated).
 // Sizes are counted in gpu_bytes_allocated() for the memory figures of the benchmark.
@@ -143,30 +107,6 @@ class VertexArray {
 
  private:
   GlName<delete_vertex_array> name_;
-};
-
-// A linked program. Stages are given as (GL_*_SHADER, source); sources get the version line and
-// `defines` ("NAME VALUE" lines) prepended, so one file serves several variants. Compile and link
-// errors throw std::runtime_error naming `label` with the driver's log.
-class Program {
- public:
-  Program() = default;
-  Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
-          const std::vector<std::string>& defines = {});
-  GLuint id() const { return name_.id(); }
-  void use() const;
-  // -1 when optimised away. Looked up in a table made at link time (no glGetUniformLocation,
-  // a driver round trip, per frame; docs/gpu.md "A frame that never waits").
-  GLint uniform(const char* name) const;
-  // Dispatches ceil(n / local_size) groups of the compute program (1D).
-  void dispatch_1d(size_t items, int local_size) const;
-
- private:
-  void list_uniforms();  // fills uniforms_ after the link
-
-  GlName<delete_program> name_;
-  std::string label_;
-  std::vector<std::pair<std::string, GLint>> uniforms_;  // active uniforms and their locations
 };
 
 // The 2D image of a texture (level 0; one layer of an array), RGBA float, rows bottom-up.

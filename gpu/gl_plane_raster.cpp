@@ -19,7 +19,7 @@ constexpr size_t kAccumulationTexel = 16;             // RGBA32F
 
 Program plane_convert_program(const char* format, bool quantize_u8) {
   return Program(std::string("planes: convert to ") + format,
-                 {{GL_COMPUTE_SHADER, plane_table_source(g2lf_plane_convert_comp_glsl, int(kPlaneTable)).c_str()}},
+                 {{GL_COMPUTE_SHADER, g2lf_plane_convert_comp_glsl}},
                  {std::string("PLANE_FORMAT ") + format, std::string("QUANTIZE_U8 ") + (quantize_u8 ? "1" : "0")});
 }
 
@@ -41,7 +41,7 @@ size_t plane_raster_bytes(PlaneFormat format, int batch_layers, int width, int h
 
 GlPlaneRaster::GlPlaneRaster()
     : batches_("g2lf planes: batches",
-               {{GL_COMPUTE_SHADER, plane_table_source(g2lf_plane_batches_comp_glsl, int(kPlaneTable)).c_str()}}),
+               {{GL_COMPUTE_SHADER, g2lf_plane_batches_comp_glsl}}),
       copy_("g2lf planes: batch copy", {{GL_COMPUTE_SHADER, g2lf_plane_copy_comp_glsl}}),
       convert_u8_(plane_convert_program("rgba8", true)),
       convert_f16_(plane_convert_program("rgba16f", false)),

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "gpu/shaders/plane_table.glsl.hpp"
 
 namespace lfd::gpu {
 
@@ -14,10 +13,6 @@ void set_plane_bilinear(const Sampler& sampler) {
   glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_BORDER);
   glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_BORDER);
   glSamplerParameterfv(sampler.id(), GL_TEXTURE_BORDER_COLOR, empty);
-}
-
-std::string plane_table_source(const char* shader, int binding) {
-  return "#define PLANE_TABLE_BINDING " + std::to_string(binding) + "\n" + plane_table_glsl + shader;
 }
 
 GLenum gl_internal_format(PlaneFormat format) {

@@ -62,9 +62,6 @@ struct GlPlanes {
   GlPlanes(PlaneFormat format, int max_planes, int width, int height);
 };
 
-// `shader` with the plane table's declaration (gpu/shaders/plane_table.glsl, read-only, at
-// storage-buffer `binding`) before it: the one GLSL definition of the table's layout.
-std::string plane_table_source(const char* shader, int binding);
 
 // Sets `sampler` to filter planes bilinearly in the texture unit, as the CPU's bilinear plane
 // lookup does (the swizzle's and the direct pass's hardware_bilinear): GL_LINEAR, and outside a

@@ -4,7 +4,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "gpu/shaders/radix_common.glsl.hpp"
 #include "gpu/shaders/radix_histogram.comp.glsl.hpp"
 #include "gpu/shaders/radix_scan.comp.glsl.hpp"
 #include "gpu/shaders/radix_scatter.comp.glsl.hpp"
@@ -18,10 +17,7 @@ constexpr uint32_t kTargetBlocks = 1024;  // enough work groups to fill a large 
 constexpr uint32_t kMaxTilesPerBlock = 64;
 constexpr GLintptr kParamsGroupsOffset = 16;  // SortParams.param_groups_x (radix_common.glsl)
 
-Program pass_program(const char* label, const char* source) {
-  const std::string text = std::string(radix_common_glsl) + source;
-  return Program(label, {{GL_COMPUTE_SHADER, text.c_str()}});
-}
+Program pass_program(const char* label, const char* source) { return Program(label, {{GL_COMPUTE_SHADER, source}}); }
 
 struct BlockLayout {
   uint32_t items = 0, blocks = 0;

@@ -79,7 +79,7 @@ int fitting_sh_degree(size_t gaussians, int scene_degree, const GlInfo& info) {
   return 0;
 }
 
-GlScene::GlScene(const render::GaussianScene& scene, const GlInfo& info, const GlSceneOptions& options)
+GlScene::GlScene(const scene::GaussianScene& scene, const GlInfo& info, const GlSceneOptions& options)
     : count_(scene.size()),
       sh_degree_(options.max_sh_degree < 0 ? scene.sh_degree
                                            : std::min(options.max_sh_degree, scene.sh_degree)) {

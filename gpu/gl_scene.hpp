@@ -17,7 +17,7 @@
 
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_objects.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::gpu {
 
@@ -56,7 +56,7 @@ struct GlSceneOptions {
 class GlScene {
  public:
   // Needs a current context; `info` its limits (HeadlessContext::info() or query_gl_info).
-  GlScene(const render::GaussianScene& scene, const GlInfo& info, const GlSceneOptions& options = {});
+  GlScene(const scene::GaussianScene& scene, const GlInfo& info, const GlSceneOptions& options = {});
 
   size_t size() const { return count_; }
   int sh_degree() const { return sh_degree_; }  // the uploaded degree

@@ -6,8 +6,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/shaders/splat_preprocess.comp.glsl.hpp"
-#include "gpu/shaders/sh_color.glsl.hpp"
-#include "gpu/shaders/splat_record.glsl.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -34,8 +32,7 @@ void SplatBuffers::bind() const {
 }
 
 GlSplatPreprocess::GlSplatPreprocess() {
-  const std::string source = std::string(splat_record_glsl) + sh_color_glsl + splat_preprocess_comp_glsl;
-  program_ = Program("splat preprocess", {{GL_COMPUTE_SHADER, source.c_str()}});
+  program_ = Program("splat preprocess", {{GL_COMPUTE_SHADER, splat_preprocess_comp_glsl}});
 }
 
 void GlSplatPreprocess::run(const GlScene& scene, const render::Camera& camera,

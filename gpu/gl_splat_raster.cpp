@@ -10,18 +10,13 @@
 #include "gpu/shaders/splat_composite.vert.glsl.hpp"
 #include "gpu/shaders/splat_raster.frag.glsl.hpp"
 #include "gpu/shaders/splat_raster.vert.glsl.hpp"
-#include "gpu/shaders/splat_record.glsl.hpp"
 
 namespace lfd::gpu {
 namespace {
 
 Program splat_program(bool layered) {
-  // #extension must precede every declaration, so it goes before the prepended record.
-  const std::string vertex =
-      std::string(layered ? "#extension GL_ARB_shader_viewport_layer_array : require\n" : "") +
-      splat_record_glsl + splat_raster_vert_glsl;
   return Program(layered ? "splat raster (layered)" : "splat raster",
-                 {{GL_VERTEX_SHADER, vertex.c_str()}, {GL_FRAGMENT_SHADER, splat_raster_frag_glsl}},
+                 {{GL_VERTEX_SHADER, splat_raster_vert_glsl}, {GL_FRAGMENT_SHADER, splat_raster_frag_glsl}},
                  layered ? std::vector<std::string>{"LAYERED 1"} : std::vector<std::string>{});
 }
 

@@ -30,7 +30,7 @@ GlSwizzle::GlSwizzle(const SwizzleOptions& options) : options_(options) {
     throw std::invalid_argument("GlSwizzle: views per invocation must be 1..64");
   if (options_.factor_table)
     table_ = Program("g2lf swizzle: views x planes table",
-                     {{GL_COMPUTE_SHADER, plane_table_source(swizzle_table_comp_glsl, 0).c_str()}});
+                     {{GL_COMPUTE_SHADER, swizzle_table_comp_glsl}});
   if (options_.hardware_bilinear) set_plane_bilinear(linear_);
 }
 
@@ -40,7 +40,7 @@ const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_forma
   if (it == programs_.end()) {
     const bool bilinear = filter == render::PlaneFilter::kBilinear;
     Program p(std::string("g2lf swizzle (") + (bilinear ? "bilinear" : "nearest") + ")",
-              {{GL_COMPUTE_SHADER, plane_table_source(swizzle_comp_glsl, 0).c_str()}},
+              {{GL_COMPUTE_SHADER, swizzle_comp_glsl}},
               {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
                std::string("HW_BILINEAR ") + (options_.hardware_bilinear ? "1" : "0"),
                std::string("TABLE ") + (options_.factor_table ? "1" : "0"),

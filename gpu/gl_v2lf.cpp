@@ -307,7 +307,7 @@ void GlV2lfRenderer::record_stats(const GlV2lfOptions& options) {
   stats_.frames_late = fresh ? r->frames_late : last.frames_late;
 }
 
-ImageF render_quilt_v2lf_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_v2lf_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                             const render::QuiltLayout& layout, const GlV2lfOptions& options,
                             const glm::vec3& background, GlV2lfStats* stats) {
   options.v2lf.check(geometry);

@@ -132,7 +132,7 @@ class GlV2lfRenderer {
 };
 
 // One-off: uploads the scene, renders into an RGBA32F quilt and reads it back (RGB, top-down).
-ImageF render_quilt_v2lf_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_v2lf_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                             const render::QuiltLayout& layout, const GlV2lfOptions& options,
                             const glm::vec3& background, GlV2lfStats* stats = nullptr);
 

@@ -6,7 +6,6 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/gl_splat_preprocess.hpp"
-#include "gpu/shaders/depth_key.glsl.hpp"
 #include "gpu/shaders/voxel_binning_chunk_of.comp.glsl.hpp"
 #include "gpu/shaders/voxel_binning_draws.comp.glsl.hpp"
 #include "gpu/shaders/voxel_binning_keys.comp.glsl.hpp"
@@ -18,8 +17,7 @@ namespace {
 constexpr GLuint kVoxelChunkOf = 11;
 
 Program keys_program() {
-  const std::string text = std::string(depth_key_glsl) + voxel_binning_keys_comp_glsl;
-  return Program("v2lf binning: keys", {{GL_COMPUTE_SHADER, text.c_str()}}, {"SIGNED_DEPTH_KEYS 1"});
+  return Program("v2lf binning: keys", {{GL_COMPUTE_SHADER, voxel_binning_keys_comp_glsl}}, {"SIGNED_DEPTH_KEYS 1"});
 }
 
 }  // namespace

@@ -4,7 +4,6 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "gpu/shaders/sh_color.glsl.hpp"
 #include "gpu/shaders/voxel_raster.frag.glsl.hpp"
 #include "gpu/shaders/voxel_raster.vert.glsl.hpp"
 #include "util/error.hpp"
@@ -13,8 +12,7 @@ namespace lfd::gpu {
 namespace {
 
 Program voxel_program() {
-  const std::string vertex = std::string(sh_color_glsl) + voxel_raster_vert_glsl;
-  return Program("voxel raster", {{GL_VERTEX_SHADER, vertex.c_str()}, {GL_FRAGMENT_SHADER, voxel_raster_frag_glsl}});
+  return Program("voxel raster", {{GL_VERTEX_SHADER, voxel_raster_vert_glsl}, {GL_FRAGMENT_SHADER, voxel_raster_frag_glsl}});
 }
 
 }  // namespace

@@ -35,7 +35,7 @@ void check_voxel_scene_fits(size_t voxels, int sh_degree, const GlInfo& info) {
                       mib(total), mib(double(*info.free_memory_bytes)));
 }
 
-GlVoxelScene::GlVoxelScene(const voxel::VoxelScene& scene, const GlInfo& info) : scene_(scene) {
+GlVoxelScene::GlVoxelScene(const scene::VoxelScene& scene, const GlInfo& info) : scene_(scene) {
   const size_t n = scene_.size();
   check_voxel_scene_fits(n, scene_.sh_degree, info);
   std::vector<glm::vec4> boxes(std::max<size_t>(n, 1));

@@ -19,7 +19,7 @@
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_objects.hpp"
 #include "render/camera.hpp"
-#include "voxel/voxel_scene.hpp"
+#include "scene/voxel_scene.hpp"
 
 namespace lfd::gpu {
 
@@ -38,9 +38,9 @@ void check_voxel_scene_fits(size_t voxels, int sh_degree, const GlInfo& info);
 class GlVoxelScene {
  public:
   // Needs a current context; `scene` is copied (the GPU buffers and the CPU-side orders).
-  GlVoxelScene(const voxel::VoxelScene& scene, const GlInfo& info);
+  GlVoxelScene(const scene::VoxelScene& scene, const GlInfo& info);
 
-  const voxel::VoxelScene& scene() const { return scene_; }
+  const scene::VoxelScene& scene() const { return scene_; }
   size_t size() const { return scene_.size(); }
   size_t bytes() const;
   // Octant o's front-to-back order (voxel indices), as uploaded.
@@ -50,7 +50,7 @@ class GlVoxelScene {
   void bind() const;
 
  private:
-  voxel::VoxelScene scene_;
+  scene::VoxelScene scene_;
   std::array<std::vector<uint32_t>, 8> orders_;
   Buffer boxes_, densities_, sh_, order_;
 };

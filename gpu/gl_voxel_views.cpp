@@ -21,7 +21,7 @@ Program downsample_program(const char* format) {
 }
 
 // voxel::rasterize_voxels' supersampling: the scene's ss unless the settings say.
-float supersampling_of(const voxel::VoxelScene& scene, const voxel::VoxelRenderSettings& settings) {
+float supersampling_of(const scene::VoxelScene& scene, const voxel::VoxelRenderSettings& settings) {
   const float ss = settings.supersampling.value_or(scene.supersampling);
   if (!(ss >= 1.0f && ss <= 4.0f)) throw_input_error("voxel rasterizer: supersampling {} must lie in [1, 4]", ss);
   return ss;
@@ -47,7 +47,7 @@ const Program& GlVoxelViews::downsample(GLenum format) {
 void GlVoxelViews::render_into(const render::Camera& camera, const voxel::VoxelRenderSettings& settings,
                                const Texture& target, glm::ivec2 view_origin, glm::ivec4 write_region,
                                bool keep_transmittance) {
-  const voxel::VoxelScene& scene = scene_.scene();
+  const scene::VoxelScene& scene = scene_.scene();
   const float ss = supersampling_of(scene, settings);
   render::Camera big = camera;  // the same frustum: fov and principal-point shift are in NDC
   big.width = std::max(1, int(std::lround(ss * float(camera.width))));
@@ -118,7 +118,7 @@ render::RasterImage GlVoxelViews::render_view(const render::Camera& camera, cons
   return out;
 }
 
-ImageF render_voxel_quilt_per_view_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_voxel_quilt_per_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                       const render::QuiltLayout& layout, const voxel::VoxelRenderSettings& settings) {
   const GlVoxelScene gl_scene(scene, query_gl_info("current context"));
   GlVoxelViews views(gl_scene);
@@ -127,7 +127,7 @@ ImageF render_voxel_quilt_per_view_gl(const voxel::VoxelScene& scene, const rend
   return read_image_top_down(quilt, 3);
 }
 
-render::RasterImage render_voxel_view_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
+render::RasterImage render_voxel_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                          int view, const voxel::VoxelRenderSettings& settings) {
   if (view < 0 || view >= geometry.views) throw_input_error("view {} is outside 0..{}", view, geometry.views - 1);
   const GlVoxelScene gl_scene(scene, query_gl_info("current context"));

@@ -48,10 +48,10 @@ class GlVoxelViews {
 
 // One-off renders on the GPU of the current context (upload, render, read back): the CPU's
 // render_voxel_quilt_per_view (RGB, rows top-down) and render_voxel_view.
-ImageF render_voxel_quilt_per_view_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_voxel_quilt_per_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                       const render::QuiltLayout& layout,
                                       const voxel::VoxelRenderSettings& settings = {});
-render::RasterImage render_voxel_view_gl(const voxel::VoxelScene& scene, const render::QuiltGeometry& geometry,
+render::RasterImage render_voxel_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                          int view, const voxel::VoxelRenderSettings& settings = {});
 
 }  // namespace lfd::gpu

@@ -21,7 +21,7 @@ namespace {
 // What the four CPU renderers share: the scene by reference, the quilt in memory, peak RSS.
 class CpuRenderer : public LightFieldRenderer {
  public:
-  CpuRenderer(const RendererOptions& options, SceneKind kind) : options_(options), kind_(kind) {}
+  CpuRenderer(const RendererOptions& options, scene::SceneKind kind) : options_(options), kind_(kind) {}
 
   std::string name() const override { return "cpu"; }
   std::string device() const override { return fmt::format("CPU, {} OpenMP threads", omp_get_max_threads()); }
@@ -31,7 +31,7 @@ class CpuRenderer : public LightFieldRenderer {
     check_same_renderer(options_, options);
     options_ = options;
   }
-  void set_scene(const LightFieldScene& scene) override {
+  void set_scene(const scene::Scene& scene) override {
     check_scene_kind(kind_, scene);
     scene_ = &scene;
   }
@@ -43,7 +43,7 @@ class CpuRenderer : public LightFieldRenderer {
   size_t peak_memory_bytes() const override { return peak_rss_bytes(); }
 
  protected:
-  const LightFieldScene& scene() const {
+  const scene::Scene& scene() const {
     if (!scene_) throw std::logic_error("LightFieldRenderer: set_scene before rendering");
     return *scene_;
   }
@@ -67,13 +67,13 @@ class CpuRenderer : public LightFieldRenderer {
   ImageF panel_;
 
  private:
-  SceneKind kind_;
-  const LightFieldScene* scene_ = nullptr;
+  scene::SceneKind kind_;
+  const scene::Scene* scene_ = nullptr;
 };
 
 class CpuGaussianRenderer : public CpuRenderer {
  public:
-  explicit CpuGaussianRenderer(const RendererOptions& options) : CpuRenderer(options, SceneKind::kGaussians) {}
+  explicit CpuGaussianRenderer(const RendererOptions& options) : CpuRenderer(options, scene::SceneKind::kGaussians) {}
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     return rgb_image(render::render_view(scene().gaussians(), geometry, view, options_.raster_settings()));
   }
@@ -113,7 +113,7 @@ class CpuG2lf final : public CpuGaussianRenderer {
 
 class CpuVoxelRenderer : public CpuRenderer {
  public:
-  explicit CpuVoxelRenderer(const RendererOptions& options) : CpuRenderer(options, SceneKind::kVoxels) {}
+  explicit CpuVoxelRenderer(const RendererOptions& options) : CpuRenderer(options, scene::SceneKind::kVoxels) {}
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     return rgb_image(voxel::render_voxel_view(scene().voxels(), geometry, view, options_.voxel_settings()));
   }
@@ -132,7 +132,7 @@ class CpuV2lf final : public CpuVoxelRenderer {
  public:
   using CpuVoxelRenderer::CpuVoxelRenderer;
   QuiltStats render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout) override {
-    const voxel::VoxelScene& voxels = scene().voxels();
+    const scene::VoxelScene& voxels = scene().voxels();
     voxel::V2lfStats s;
     quilt_ = voxel::render_quilt_v2lf(voxels, geometry, layout, options_.v2lf(),
                                       options_.background.value_or(voxels.background), &s);
@@ -142,7 +142,7 @@ class CpuV2lf final : public CpuVoxelRenderer {
   }
   QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
                           const PanelOptions& panel) override {
-    const voxel::VoxelScene& voxels = scene().voxels();
+    const scene::VoxelScene& voxels = scene().voxels();
     voxel::V2lfStats s;
     voxel::render_planes_v2lf(voxels, geometry, options_.v2lf(),
                               direct_pass(geometry, lens, panel, options_.background.value_or(voxels.background)), &s);

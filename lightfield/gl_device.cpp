@@ -29,21 +29,21 @@ void GlDevice::drop_scene() {
   ++generation_;
 }
 
-void GlDevice::upload(const LightFieldScene& scene) {
+void GlDevice::upload(const scene::Scene& scene) {
   if (scene.id() == uploaded_id_) return;
-  if (scene.kind() == SceneKind::kVoxels)
+  if (scene.kind() == scene::SceneKind::kVoxels)
     upload(scene.voxels());
   else
     upload(scene.gaussians(), {});
   uploaded_id_ = scene.id();
 }
 
-void GlDevice::upload(const render::GaussianScene& scene, const gpu::GlSceneOptions& options) {
+void GlDevice::upload(const scene::GaussianScene& scene, const gpu::GlSceneOptions& options) {
   drop_scene();
   gaussians_ = std::make_shared<const gpu::GlScene>(scene, info_, options);
 }
 
-void GlDevice::upload(const voxel::VoxelScene& scene) {
+void GlDevice::upload(const scene::VoxelScene& scene) {
   drop_scene();
   voxels_ = std::make_shared<const gpu::GlVoxelScene>(scene, info_);
 }

@@ -15,7 +15,7 @@
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_voxel_scene.hpp"
-#include "lightfield/light_field_scene.hpp"
+#include "scene/scene.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
 
@@ -36,13 +36,13 @@ class GlDevice {
 
   const gpu::GlInfo& info() const { return info_; }
 
-  // The scene its renderers render: uploaded unless it is the one uploaded (LightFieldScene::id).
+  // The scene its renderers render: uploaded unless it is the one uploaded (scene::Scene::id).
   // The device lets go of the old scene before uploading (a lower peak); renderers still bound
   // to it keep it until they bind again.
-  void upload(const LightFieldScene& scene);
+  void upload(const scene::Scene& scene);
   // A Gaussian scene uploaded with `options` (the viewer's: a fitting SH degree, progress).
-  void upload(const render::GaussianScene& scene, const gpu::GlSceneOptions& options);
-  void upload(const voxel::VoxelScene& scene);
+  void upload(const scene::GaussianScene& scene, const gpu::GlSceneOptions& options);
+  void upload(const scene::VoxelScene& scene);
   // The uploaded scene of that kind (null if the device holds the other kind or none), and a
   // count that changes with every upload (renderers bind again when it does).
   std::shared_ptr<const gpu::GlScene> gaussians() const { return gaussians_; }
@@ -66,7 +66,7 @@ class GlDevice {
   gpu::GlInfo info_;
   std::shared_ptr<const gpu::GlScene> gaussians_;
   std::shared_ptr<const gpu::GlVoxelScene> voxels_;
-  uint64_t uploaded_id_ = 0;  // LightFieldScene::id of the upload; 0: none or another source
+  uint64_t uploaded_id_ = 0;  // scene::Scene::id of the upload; 0: none or another source
   uint64_t generation_ = 0;
   gpu::Texture quilt_;
   ImageF image_;

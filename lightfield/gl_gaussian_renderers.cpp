@@ -12,7 +12,7 @@ namespace {
 class GlGaussianViews final : public GlRendererBase {
  public:
   GlGaussianViews(const RendererOptions& options, std::shared_ptr<GlDevice> device)
-      : GlRendererBase(options, SceneKind::kGaussians, std::move(device)) {}
+      : GlRendererBase(options, scene::SceneKind::kGaussians, std::move(device)) {}
 
   QuiltStats render_quilt_into(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                gpu::Texture& quilt) override {
@@ -53,7 +53,7 @@ class GlGaussianViews final : public GlRendererBase {
 class GlG2lf final : public GlRendererBase {
  public:
   GlG2lf(const RendererOptions& options, std::shared_ptr<GlDevice> device)
-      : GlRendererBase(options, SceneKind::kGaussians, std::move(device)) {}
+      : GlRendererBase(options, scene::SceneKind::kGaussians, std::move(device)) {}
 
   QuiltStats render_quilt_into(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                gpu::Texture& quilt) override {

@@ -9,7 +9,7 @@
 
 namespace lfd::lightfield {
 
-GlRendererBase::GlRendererBase(const RendererOptions& options, SceneKind kind, std::shared_ptr<GlDevice> device)
+GlRendererBase::GlRendererBase(const RendererOptions& options, scene::SceneKind kind, std::shared_ptr<GlDevice> device)
     : device_(std::move(device)), options_(options), kind_(kind) {
   if (!device_) throw std::logic_error("a GL renderer needs a GL device");
 }
@@ -21,7 +21,7 @@ void GlRendererBase::set_options(const RendererOptions& options) {
   options_changed(old);
 }
 
-void GlRendererBase::set_scene(const LightFieldScene& scene) {
+void GlRendererBase::set_scene(const scene::Scene& scene) {
   check_scene_kind(kind_, scene);
   device_->upload(scene);
   ensure_bound();
@@ -29,7 +29,7 @@ void GlRendererBase::set_scene(const LightFieldScene& scene) {
 
 void GlRendererBase::ensure_bound() {
   if (bound_generation_ == device_->scene_generation()) return;
-  const bool uploaded = kind_ == SceneKind::kVoxels ? device_->voxels() != nullptr : device_->gaussians() != nullptr;
+  const bool uploaded = kind_ == scene::SceneKind::kVoxels ? device_->voxels() != nullptr : device_->gaussians() != nullptr;
   if (!uploaded) throw std::logic_error("LightFieldRenderer: set_scene before rendering");
   bind();
   bound_generation_ = device_->scene_generation();

@@ -12,14 +12,14 @@ namespace lfd::lightfield {
 
 class GlRendererBase : public GlLightFieldRenderer {
  public:
-  GlRendererBase(const RendererOptions& options, SceneKind kind, std::shared_ptr<GlDevice> device);
+  GlRendererBase(const RendererOptions& options, scene::SceneKind kind, std::shared_ptr<GlDevice> device);
 
   std::string name() const override { return "gl"; }
   std::string device() const override { return device_->info().summary(); }
   int default_runs() const override { return 10; }
   const RendererOptions& options() const override { return options_; }
   void set_options(const RendererOptions& options) override;
-  void set_scene(const LightFieldScene& scene) override;
+  void set_scene(const scene::Scene& scene) override;
   QuiltStats render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout) override;
   const ImageF& read_quilt() override { return device_->read_quilt(); }
   std::string memory_kind() const override { return GlDevice::memory_kind(); }
@@ -51,7 +51,7 @@ class GlRendererBase : public GlLightFieldRenderer {
   RendererOptions options_;
 
  private:
-  SceneKind kind_;
+  scene::SceneKind kind_;
   uint64_t bound_generation_ = UINT64_MAX;
   std::unique_ptr<gpu::GlDirectPanel> direct_;
   const display::LensModel* direct_lens_ = nullptr;

@@ -20,7 +20,7 @@ ImageF render_voxel_view(gpu::GlVoxelViews& views, const render::QuiltGeometry& 
 class GlVoxelViewsRenderer final : public GlRendererBase {
  public:
   GlVoxelViewsRenderer(const RendererOptions& options, std::shared_ptr<GlDevice> device)
-      : GlRendererBase(options, SceneKind::kVoxels, std::move(device)) {}
+      : GlRendererBase(options, scene::SceneKind::kVoxels, std::move(device)) {}
 
   QuiltStats render_quilt_into(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                gpu::Texture& quilt) override {
@@ -54,7 +54,7 @@ QuiltStats v2lf_quilt_stats(const gpu::GlV2lfStats& s) {
 class GlV2lf final : public GlRendererBase {
  public:
   GlV2lf(const RendererOptions& options, std::shared_ptr<GlDevice> device)
-      : GlRendererBase(options, SceneKind::kVoxels, std::move(device)) {}
+      : GlRendererBase(options, scene::SceneKind::kVoxels, std::move(device)) {}
 
   QuiltStats render_quilt_into(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                gpu::Texture& quilt) override {

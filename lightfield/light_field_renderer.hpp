@@ -9,7 +9,7 @@
 #include <string>
 
 #include "display/lens_model.hpp"
-#include "lightfield/light_field_scene.hpp"
+#include "scene/scene.hpp"
 #include "lightfield/renderer_options.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -54,7 +54,7 @@ class LightFieldRenderer {
   // The scene of the following frames, of the renderer's kind (std::logic_error otherwise);
   // untimed (a GL renderer uploads it here, unless its device holds it already). The scene
   // outlives the frames.
-  virtual void set_scene(const LightFieldScene& scene) = 0;
+  virtual void set_scene(const scene::Scene& scene) = 0;
 
   // One whole quilt (checks the options against `geometry` first: InputError).
   virtual QuiltStats render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout) = 0;

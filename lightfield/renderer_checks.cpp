@@ -9,7 +9,7 @@ void check_same_renderer(const RendererOptions& mine, const RendererOptions& ask
     throw std::logic_error("LightFieldRenderer::set_options: the backend and the method are the renderer's own");
 }
 
-void check_scene_kind(SceneKind mine, const LightFieldScene& scene) {
+void check_scene_kind(scene::SceneKind mine, const scene::Scene& scene) {
   if (scene.kind() != mine)
     throw std::logic_error(std::string("LightFieldRenderer::set_scene: this renderer does not render ") +
                            scene.primitives());

@@ -13,10 +13,10 @@ namespace lfd::lightfield {
 // A GL renderer renders on `device`, or on a headless device of its own when it is null
 // (gpu::GlUnavailable without one); the CPU ones need none. Renderers made on one device share
 // its scene upload and quilt.
-std::unique_ptr<LightFieldRenderer> make_renderer(const RendererOptions& options, SceneKind kind,
+std::unique_ptr<LightFieldRenderer> make_renderer(const RendererOptions& options, scene::SceneKind kind,
                                                   std::shared_ptr<GlDevice> device = nullptr);
 // The same for options.backend == kGl, with the GL extension (std::logic_error for the CPU).
-std::unique_ptr<GlLightFieldRenderer> make_gl_renderer(const RendererOptions& options, SceneKind kind,
+std::unique_ptr<GlLightFieldRenderer> make_gl_renderer(const RendererOptions& options, scene::SceneKind kind,
                                                        std::shared_ptr<GlDevice> device);
 
 // The device renderers of `backend` share: a headless one for GL (gpu::GlUnavailable without

@@ -6,9 +6,9 @@ namespace lfd::lightfield {
 
 const char* processor_name(Backend backend) { return backend == Backend::kGl ? "GPU" : "CPU"; }
 
-std::string method_name(Method method, SceneKind kind) {
+std::string method_name(Method method, scene::SceneKind kind) {
   if (method == Method::kPerView) return "per-view";
-  return kind == SceneKind::kVoxels ? "v2lf" : "g2lf";
+  return kind == scene::SceneKind::kVoxels ? "v2lf" : "g2lf";
 }
 
 void RendererOptions::check() const {

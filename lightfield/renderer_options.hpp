@@ -13,7 +13,7 @@
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_v2lf.hpp"
-#include "lightfield/light_field_scene.hpp"
+#include "scene/scene.hpp"
 #include "render/g2lf.hpp"
 #include "render/plane_samples.hpp"
 #include "render/preprocess.hpp"
@@ -30,7 +30,7 @@ const char* processor_name(Backend backend);
 
 // The method's name as `lfd render --method` spells it: "per-view", "g2lf" (Gaussians' sweeping
 // planes) or "v2lf" (voxels').
-std::string method_name(Method method, SceneKind kind);
+std::string method_name(Method method, scene::SceneKind kind);
 
 // What only the GL renderers read.
 struct GlRenderOptions {

@@ -20,11 +20,12 @@
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "lightfield/renderer_factory.hpp"
+#include "lightfield/view_plan.hpp"
 #include "pipeline/numbered_quilt.hpp"
 #include "render/default_camera.hpp"
 #include "render/g2lf.hpp"
 #include "render/per_view_quilt.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/atomic_file.hpp"
 #include "util/data_dir.hpp"
 #include "util/image.hpp"
@@ -149,7 +150,6 @@ void open_gpu(DemoRun& run) {
 void render_quilts(DemoRun& run) {
   const DemoOptions& o = run.o;
   const auto& gl = run.gl;
-  const display::DisplayQuilt& display_quilt = run.display_quilt;
   const auto& out = run.out;
   auto& layout = run.layout;
   auto& scene_quilt = run.scene_quilt;
@@ -159,21 +159,23 @@ void render_quilts(DemoRun& run) {
   {
     Step step(o.verbose, gl ? "rendering the scene with G2LF on the GPU (" + gl->info().renderer + ")"
                             : std::string("rendering the scene with G2LF on the CPU"));
-    const lightfield::LightFieldScene light_field_scene(render::load_scene(run.scene_path));
-    const render::GaussianScene& scene = light_field_scene.gaussians();
-    const render::CameraSpec spec = render::frame_scene(scene, render::kDefaultFovYDeg, 0.0f, float(aspect));
-    const render::Camera base = render::camera_from_spec(spec, o.tile_width, tile_h);
-    const float focal = glm::length(spec.look_at - spec.position);
-    const render::QuiltGeometry geometry =
-        render::make_quilt_geometry(base, focal, float(display_quilt.view_cone_deg), display_quilt.views);
-    layout = render::make_quilt_layout(geometry, display_quilt.grid.cols, display_quilt.grid.rows);
+    const scene::Scene light_field_scene(scene::load_gaussian_scene(run.scene_path));
+    const scene::GaussianScene& scene = light_field_scene.gaussians();
+    // The recovered calibration's views, tiles o.tile_width wide at the panel's aspect.
+    lightfield::ViewRequest request;
+    request.display = &run.recovered;
+    request.size = display::ViewSize{o.tile_width, tile_h};
+    request.framing_aspect = float(aspect);
+    const lightfield::ViewPlan plan = lightfield::plan_views(request, &light_field_scene);
+    const render::QuiltGeometry& geometry = plan.geometry;
+    layout = plan.layout;
     lightfield::RendererOptions options;
     options.planes.chunks = 64;
     options.planes.plane_scale = 2;
     options.planes.filter = render::PlaneFilter::kBilinear;
     const auto device = gl ? lightfield::GlDevice::on_current_context(gl->info()) : nullptr;
     options.backend = lightfield::backend_for(device);
-    const auto renderer = lightfield::make_renderer(options, lightfield::SceneKind::kGaussians, device);
+    const auto renderer = lightfield::make_renderer(options, scene::SceneKind::kGaussians, device);
     renderer->set_scene(light_field_scene);
     renderer->render_quilt(geometry, layout);
     scene_quilt = renderer->read_quilt();

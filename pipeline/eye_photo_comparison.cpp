@@ -9,7 +9,7 @@
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "display/view_count.hpp"
-#include "lightfield/display_views.hpp"
+#include "lightfield/view_plan.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
@@ -27,7 +27,7 @@ struct Panels {
   ImageF direct, nearest, linear, per_view_nearest, per_view_linear;
 };
 
-Panels render_panels(lightfield::LightFieldRenderer& sweeping, const lightfield::LightFieldScene& scene,
+Panels render_panels(lightfield::LightFieldRenderer& sweeping, const scene::Scene& scene,
                      const render::QuiltGeometry& geometry,
                      const render::QuiltLayout& layout, const display::LensModel& lens,
                      const EyePhotoOptions& options) {
@@ -54,7 +54,7 @@ Panels render_panels(lightfield::LightFieldRenderer& sweeping, const lightfield:
 }
 
 // The per-view render at the eye's continuous view position (the exact 3DGS pass).
-ImageF view_at(const render::GaussianScene& scene, const render::QuiltGeometry& geometry, double position_s) {
+ImageF view_at(const scene::GaussianScene& scene, const render::QuiltGeometry& geometry, double position_s) {
   const render::RasterImage r = render::rasterize(scene, geometry.view_camera_at(float(position_s)));
   ImageF view(r.width, r.height, 3);
   std::copy(r.rgb.begin(), r.rgb.end(), view.pixels.begin());
@@ -92,7 +92,7 @@ void print_eye_photo_table_header(const EyePhotoOptions& options) {
 }
 
 nlohmann::ordered_json compare_eye_photographs(lightfield::LightFieldRenderer& sweeping,
-                                               const lightfield::LightFieldScene& scene,
+                                               const scene::Scene& scene,
                                                const std::string& scene_label,
                                                const std::string& calibration_path,
                                                const EyePhotoOptions& options) {
@@ -100,10 +100,10 @@ nlohmann::ordered_json compare_eye_photographs(lightfield::LightFieldRenderer& s
   const display::Calibration calibration = display::read_calibration(calibration_path);
   const display::LensModel lens(calibration.display, calibration.correction);
   // The views the display asks for around the scene's framing (as `lfd bench direct` frames them).
-  const lightfield::DisplayViews display_views = lightfield::views_for_display(calibration, scene, options.view_height);
-  const display::ViewSize size = display_views.size;
-  const render::QuiltGeometry& geometry = display_views.geometry;
-  const render::QuiltLayout& layout = display_views.layout;
+  const lightfield::ViewPlan plan = lightfield::plan_views(lightfield::display_views_request(calibration, options.view_height), &scene);
+  const display::ViewSize size{plan.geometry.base.width, plan.geometry.base.height};
+  const render::QuiltGeometry& geometry = plan.geometry;
+  const render::QuiltLayout& layout = plan.layout;
   const Panels panels = render_panels(sweeping, scene, geometry, layout, lens, options);
 
   const sim::DisplaySimulator simulator(lens);

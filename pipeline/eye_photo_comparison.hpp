@@ -32,7 +32,7 @@ struct EyePhotoOptions {
 
 // `sweeping`: a G2LF renderer with the scene set. `scene_label` names the scene in the table.
 nlohmann::ordered_json compare_eye_photographs(lightfield::LightFieldRenderer& sweeping,
-                                               const lightfield::LightFieldScene& scene,
+                                               const scene::Scene& scene,
                                                const std::string& scene_label,
                                                const std::string& calibration_path,
                                                const EyePhotoOptions& options);

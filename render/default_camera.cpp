@@ -4,13 +4,13 @@
 #include <cmath>
 #include <vector>
 
-#include "render/scene_bounds.hpp"
+#include "scene/scene_bounds.hpp"
 
 namespace lfd::render {
 namespace {
 
 // The q-quantile of the centres' distances from `center` (deterministic subsample).
-float distance_quantile(const GaussianScene& scene, const glm::vec3& center, double q) {
+float distance_quantile(const scene::GaussianScene& scene, const glm::vec3& center, double q) {
   const size_t step = std::max<size_t>(1, scene.size() / 200000);
   std::vector<float> d;
   d.reserve(scene.size() / step + 1);
@@ -28,14 +28,14 @@ float distance_quantile(const GaussianScene& scene, const glm::vec3& center, dou
 // kFramedOpacity of the content's opacity project inside the view's tangents `tan_x`, `tan_y`:
 // each Gaussian needs D >= |x| / tan_x - depth (and likewise for y), where depth is measured
 // from the centre along the view; the distance is the opacity-weighted quantile of those needs.
-float fitting_distance(const GaussianScene& scene, const glm::vec3& center,
+float fitting_distance(const scene::GaussianScene& scene, const glm::vec3& center,
                        const glm::vec3& forward, const glm::vec3& right, const glm::vec3& up,
                        float tan_x, float tan_y) {
   const size_t step = std::max<size_t>(1, scene.size() / 200000);
   std::vector<std::pair<float, float>> needs;  // (distance, opacity)
   double total = 0;
   for (size_t i = 0; i < scene.size(); i += step) {
-    const float opacity = i < scene.opacities.size() ? scene.opacities[i] : 1.0f;  // as content_bounds
+    const float opacity = i < scene.opacities.size() ? scene.opacities[i] : 1.0f;  // as scene::content_bounds
     if (opacity < kContentMinOpacity) continue;
     const auto& p = scene.positions[i];
     const glm::vec3 d = glm::vec3(p[0], p[1], p[2]) - center;
@@ -55,9 +55,9 @@ float fitting_distance(const GaussianScene& scene, const glm::vec3& center,
 
 }  // namespace
 
-CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg, float orbit_deg, float aspect) {
-  SceneBounds box = content_bounds(scene, 0.05, 0.95, kContentMinOpacity);
-  if (box.radius() <= 0.0f) box = robust_bounds(scene);  // no Gaussian carries opacity
+CameraSpec frame_scene(const scene::GaussianScene& scene, float fov_y_deg, float orbit_deg, float aspect) {
+  scene::SceneBounds box = scene::content_bounds(scene, 0.05, 0.95, kContentMinOpacity);
+  if (box.radius() <= 0.0f) box = scene::robust_bounds(scene);  // no Gaussian carries opacity
   const auto c = box.center();
   const glm::vec3 center(c[0], c[1], c[2]);
   const glm::vec3 up(0.0f, -1.0f, 0.0f);  // COLMAP / 3DGS: y points down

@@ -1,6 +1,6 @@
 #pragma once
 // A camera that frames a scene's content when the user gives none (docs/rendering.md,
-// "Default camera"). The content is content_bounds(): the box of the Gaussians that carry the
+// "Default camera"). The content is scene::content_bounds(): the box of the Gaussians that carry the
 // opacity (opacity-weighted 5-95% per axis). The camera uses the 3DGS/COLMAP convention of
 // trained captures, y down and z forward: up is -y, and it looks along +z, raised by
 // kDefaultElevationDeg so that a ground or table top is seen from above rather than edge-on.
@@ -11,7 +11,7 @@
 // enclosing background shell (the 99% distance of the centres far beyond the content) it stays
 // inside the shell. `orbit_deg` turns the camera about the up axis.
 #include "render/camera_json.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::render {
 
@@ -26,7 +26,7 @@ inline constexpr float kFrameMargin = 0.08f;
 inline constexpr double kFramedOpacity = 0.97;
 inline constexpr float kContentMinOpacity = 0.1f;
 
-CameraSpec frame_scene(const GaussianScene& scene, float fov_y_deg = kDefaultFovYDeg,
+CameraSpec frame_scene(const scene::GaussianScene& scene, float fov_y_deg = kDefaultFovYDeg,
                        float orbit_deg = 0.0f, float aspect = 1.0f);
 
 }  // namespace lfd::render

@@ -11,7 +11,7 @@
 
 namespace lfd::render {
 
-DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geometry,
+DepthChunks bin_by_depth(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                          const ReferenceCamera& ref, int chunks, ChunkBinning binning) {
   const Camera& cam = ref.camera;
   const float lim_x = 1.3f * cam.tan_half_fov_x(), lim_y = 1.3f * cam.tan_half_fov_y();

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/quilt_geometry.hpp"
 
 namespace lfd::render {
@@ -34,7 +34,7 @@ struct DepthChunks {
 // rasterizer's guard band), sorted by reference depth and split into at most `chunks` runs
 // (kQuantile: of equal size; kMixed: see ChunkBinning); each plane sits at the median depth of
 // its chunk. Members keep scene order inside a chunk.
-DepthChunks bin_by_depth(const GaussianScene& scene, const QuiltGeometry& geometry,
+DepthChunks bin_by_depth(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                          const ReferenceCamera& ref, int chunks,
                          ChunkBinning binning = ChunkBinning::kQuantile);
 

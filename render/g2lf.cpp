@@ -45,7 +45,7 @@ ChunkBinning parse_chunk_binning(const std::string& name) {
   throw_input_error("G2LF options: binning: '{}' is not quantile or mixed", name);
 }
 
-void render_planes_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry, const G2lfOptions& options,
+void render_planes_g2lf(const scene::GaussianScene& scene, const QuiltGeometry& geometry, const G2lfOptions& options,
                         const RasterSettings& settings, const PlaneConsumer& consume, G2lfStats* stats) {
   options.check(geometry);
   DepthChunks chunks;
@@ -69,7 +69,7 @@ void render_planes_g2lf(const GaussianScene& scene, const QuiltGeometry& geometr
   }
 }
 
-ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
+ImageF render_quilt_g2lf(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                          const QuiltLayout& layout, const G2lfOptions& options,
                          const RasterSettings& settings, G2lfStats* stats) {
   ImageF quilt;

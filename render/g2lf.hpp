@@ -14,7 +14,7 @@
 #include <string>
 
 #include "render/depth_binning.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
 #include "render/rasterizer_cpu.hpp"
@@ -62,13 +62,13 @@ struct G2lfStats {
 // Alg. 1 end to end. `settings.background` is the background; SH colours are evaluated from the
 // base camera centre (the planes are shared by all views: paper, view-dependent trade-off).
 // Checks `options` against `geometry` first (G2lfOptions::check).
-ImageF render_quilt_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry,
+ImageF render_quilt_g2lf(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                          const QuiltLayout& layout, const G2lfOptions& options,
                          const RasterSettings& settings = {}, G2lfStats* stats = nullptr);
 
 // Alg. 1 lines 1-5 (binning and planes) with the same options, then `consume` with the planes
 // (the direct panel pass, interlace/direct_panel.hpp); stats->seconds_swizzle is its time.
-void render_planes_g2lf(const GaussianScene& scene, const QuiltGeometry& geometry, const G2lfOptions& options,
+void render_planes_g2lf(const scene::GaussianScene& scene, const QuiltGeometry& geometry, const G2lfOptions& options,
                         const RasterSettings& settings, const PlaneConsumer& consume, G2lfStats* stats = nullptr);
 
 }  // namespace lfd::render

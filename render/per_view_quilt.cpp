@@ -35,14 +35,14 @@ ImageF extract_view(const ImageF& quilt, const QuiltLayout& layout, int view) {
   return out;
 }
 
-RasterImage render_view(const GaussianScene& scene, const QuiltGeometry& geometry, int view,
+RasterImage render_view(const scene::GaussianScene& scene, const QuiltGeometry& geometry, int view,
                         const RasterSettings& settings) {
   if (view < 0 || view >= geometry.views)
     throw_input_error("view {} is outside 0..{}", view, geometry.views - 1);
   return rasterize(scene, geometry.view_camera(view), settings);
 }
 
-ImageF render_quilt_per_view(const GaussianScene& scene, const QuiltGeometry& geometry,
+ImageF render_quilt_per_view(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                              const QuiltLayout& layout, const RasterSettings& settings) {
   ImageF quilt(layout.width, layout.height, 3, 0.0f);
   Progress progress("per-view quilt", geometry.views);
@@ -54,7 +54,7 @@ ImageF render_quilt_per_view(const GaussianScene& scene, const QuiltGeometry& ge
   return quilt;
 }
 
-ImageF render_quilt_per_view_masked(const GaussianScene& scene, const QuiltGeometry& geometry,
+ImageF render_quilt_per_view_masked(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                                     const QuiltLayout& layout,
                                     const std::vector<std::vector<uint8_t>>& pixel_masks,
                                     const RasterSettings& settings) {

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
 #include "render/rasterizer_cpu.hpp"
@@ -22,16 +22,16 @@ void place_view(ImageF& quilt, const QuiltLayout& layout, int view, const Raster
 ImageF extract_view(const ImageF& quilt, const QuiltLayout& layout, int view);
 
 // Renders view `view` alone (what `lfd render --view J` writes).
-RasterImage render_view(const GaussianScene& scene, const QuiltGeometry& geometry, int view,
+RasterImage render_view(const scene::GaussianScene& scene, const QuiltGeometry& geometry, int view,
                         const RasterSettings& settings = {});
 
-ImageF render_quilt_per_view(const GaussianScene& scene, const QuiltGeometry& geometry,
+ImageF render_quilt_per_view(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                              const QuiltLayout& layout, const RasterSettings& settings = {});
 
 // The same with view j blended only where `pixel_masks[j]` (the view's size, row 0 = top) is
 // non-zero (interlace/view_masks.hpp: the pixels the panel shows); the rest of each tile holds
 // the background. Throws InputError when the masks do not match the views.
-ImageF render_quilt_per_view_masked(const GaussianScene& scene, const QuiltGeometry& geometry,
+ImageF render_quilt_per_view_masked(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                                     const QuiltLayout& layout,
                                     const std::vector<std::vector<uint8_t>>& pixel_masks,
                                     const RasterSettings& settings = {});

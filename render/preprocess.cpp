@@ -55,7 +55,7 @@ glm::vec3 covariance_2d(const glm::vec3& t_in, const Camera& cam, const glm::mat
 
 }  // namespace
 
-std::vector<ProjectedGaussian> preprocess(const GaussianScene& scene, const Camera& camera,
+std::vector<ProjectedGaussian> preprocess(const scene::GaussianScene& scene, const Camera& camera,
                                           const RasterSettings& settings,
                                           std::span<const uint32_t> subset) {
   const size_t n = subset.empty() ? scene.size() : subset.size();

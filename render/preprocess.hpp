@@ -13,7 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "render/camera.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::render {
 
@@ -47,7 +47,7 @@ glm::mat3 covariance_3d(const std::array<float, 3>& scale, float modifier, const
 
 // `subset`: indices into the scene (empty: all). Output has one entry per input index, culled
 // Gaussians with radius_px = 0, so indices stay aligned with the input.
-std::vector<ProjectedGaussian> preprocess(const GaussianScene& scene, const Camera& camera,
+std::vector<ProjectedGaussian> preprocess(const scene::GaussianScene& scene, const Camera& camera,
                                           const RasterSettings& settings,
                                           std::span<const uint32_t> subset = {});
 

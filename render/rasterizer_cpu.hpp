@@ -13,19 +13,19 @@
 
 #include "render/blend.hpp"
 #include "render/camera.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/preprocess.hpp"
 #include "render/tile_binning.hpp"
 
 namespace lfd::render {
 
 // All three stages: preprocess -> bin_and_sort -> blend.
-RasterImage rasterize(const GaussianScene& scene, const Camera& camera,
+RasterImage rasterize(const scene::GaussianScene& scene, const Camera& camera,
                       const RasterSettings& settings = {}, std::span<const uint32_t> subset = {});
 
 // The same with blend()'s pixel mask (width x height, row 0 = top): only the pixels it marks
 // are blended, bit-identical to rasterize()'s; the others hold the background.
-RasterImage rasterize_masked(const GaussianScene& scene, const Camera& camera, std::span<const uint8_t> pixel_mask,
+RasterImage rasterize_masked(const scene::GaussianScene& scene, const Camera& camera, std::span<const uint8_t> pixel_mask,
                              const RasterSettings& settings = {});
 
 }  // namespace lfd::render

@@ -17,7 +17,7 @@
 #include <numbers>
 #include <random>
 
-#include "render/scene_checks.hpp"
+#include "scene/scene_checks.hpp"
 #include "render/spherical_harmonics.hpp"
 #include "util/error.hpp"
 
@@ -275,7 +275,7 @@ std::vector<Component> corridor(std::mt19937_64& rng) {
 
 // Splits `total` Gaussians over the components: ground/walls and objects by area, the far
 // dome a fixed 2% (a smooth backdrop of large splats needs little detail). Keeping it under
-// the 1% tails per side of robust_bounds() lets the default framing follow the objects.
+// the 1% tails per side of scene::robust_bounds() lets the default framing follow the objects.
 void assign_counts(std::vector<Component>& comps, size_t total) {
   const bool has_dome =
       std::any_of(comps.begin(), comps.end(), [](const auto& c) { return c.shape == Shape::Dome; });
@@ -309,7 +309,7 @@ uint64_t splitmix64(uint64_t x) {
   return x ^ (x >> 31);
 }
 
-void fill_gaussian(GaussianScene& scene, size_t i, const Component& c, std::mt19937_64& rng) {
+void fill_gaussian(scene::GaussianScene& scene, size_t i, const Component& c, std::mt19937_64& rng) {
   std::uniform_real_distribution<float> U(0.0f, 1.0f);
   std::normal_distribution<float> N(0.0f, 1.0f);
   Sample s = sample(c, rng);
@@ -337,7 +337,7 @@ void fill_gaussian(GaussianScene& scene, size_t i, const Component& c, std::mt19
   float* sh = scene.sh.data() + i * size_t(scene.sh_coeffs()) * 3;
   for (int ch = 0; ch < 3; ++ch) {
     const float v = std::clamp(rgb[ch] + 0.03f * N(rng), 0.0f, 1.0f);
-    sh[ch] = color_to_sh_dc(v);
+    sh[ch] = scene::color_to_sh_dc(v);
   }
   if (scene.sh_degree >= 1) {
     // Degree 1 adds -C1 y sh1 + C1 z sh2 - C1 x sh3, (x, y, z) the direction from the camera
@@ -368,15 +368,15 @@ void SceneGeneratorOptions::check() const {
 
 std::vector<std::string> generator_kinds() { return {"tabletop", "corridor"}; }
 
-GaussianScene generate_scene(const SceneGeneratorOptions& options) {
+scene::GaussianScene generate_scene(const SceneGeneratorOptions& options) {
   options.check();
   std::mt19937_64 layout_rng(splitmix64(options.seed));
   std::vector<Component> comps =
       options.kind == "corridor" ? corridor(layout_rng) : tabletop(layout_rng);
   assign_counts(comps, options.count);
 
-  GaussianScene scene;
-  resize_scene(scene, options.count, options.sh_degree);
+  scene::GaussianScene scene;
+  scene::resize_scene(scene, options.count, options.sh_degree);
   const size_t blocks = (options.count + kBlock - 1) / kBlock;
 #pragma omp parallel for schedule(dynamic)
   for (long long b = 0; b < (long long)blocks; ++b) {

@@ -4,11 +4,11 @@
 // Frame: that of trained 3DGS scenes (COLMAP): y down, so the ground is the plane y = +1 and
 // "up" is -y; objects lie within ~3 units of the origin (tabletop: rows at z = -1.5, 0.5, 2.5;
 // corridor: from z = -3 to the end wall at z = +12). A look-at camera at (0, -1, -5) aimed at the
-// origin with up = (0, -1, 0) frames the tabletop; robust_bounds() frames either kind.
+// origin with up = (0, -1, 0) frames the tabletop; scene::robust_bounds() frames either kind.
 #include <cstdint>
 #include <string>
 
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::render {
 
@@ -21,6 +21,6 @@ struct SceneGeneratorOptions {
 };
 
 std::vector<std::string> generator_kinds();
-GaussianScene generate_scene(const SceneGeneratorOptions& options);
+scene::GaussianScene generate_scene(const SceneGeneratorOptions& options);
 
 }  // namespace lfd::render

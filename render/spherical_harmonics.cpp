@@ -14,7 +14,7 @@ constexpr float kC3[] = {-0.5900435899266435f, 2.890611442640554f, -0.4570457994
 
 glm::vec3 eval_sh_color(int degree, const float* sh_raw, const glm::vec3& dir) {
   const auto sh = [sh_raw](int k) { return glm::vec3(sh_raw[3 * k], sh_raw[3 * k + 1], sh_raw[3 * k + 2]); };
-  glm::vec3 result = kShC0 * sh(0);
+  glm::vec3 result = scene::kShC0 * sh(0);
   if (degree > 0) {
     const float x = dir.x, y = dir.y, z = dir.z;
     result = result - kC1 * y * sh(1) + kC1 * z * sh(2) - kC1 * x * sh(3);

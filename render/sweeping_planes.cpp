@@ -27,7 +27,7 @@ namespace {
 // can cost several near ones, and started last it runs alone on one core while the others
 // idle (14 % of the planes' time in one chunk on a 150k tabletop). Estimate: per member one
 // unit plus the pixels of its 3-sigma square, at most the image.
-std::vector<int> largest_first(const GaussianScene& scene, const Camera& camera, const DepthChunks& chunks) {
+std::vector<int> largest_first(const scene::GaussianScene& scene, const Camera& camera, const DepthChunks& chunks) {
   const int count = int(chunks.members.size());
   const double image_px = double(camera.width) * camera.height;
   const double focal_px = std::max(camera.focal_x_px(), camera.focal_y_px());
@@ -52,7 +52,7 @@ std::vector<int> largest_first(const GaussianScene& scene, const Camera& camera,
 
 }  // namespace
 
-SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
+SweepingPlanes render_sweeping_planes(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                                       const ReferenceCamera& ref, const DepthChunks& chunks,
                                       PlanePrecision precision, const RasterSettings& settings) {
   RasterSettings chunk_settings = settings;

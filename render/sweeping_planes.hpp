@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "render/depth_binning.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/blend.hpp"
 #include "render/preprocess.hpp"
 #include "render/quilt_geometry.hpp"
@@ -38,7 +38,7 @@ struct SweepingPlanes {
 // One plane per chunk, at the reference camera's resolution. `settings` are the rasterizer's
 // (its dilation_px2 is the plane filter: G2LF passes the adaptive one of Eq. gs_prefilter_fix);
 // the background is replaced by 0 and the SH origin by the base camera centre.
-SweepingPlanes render_sweeping_planes(const GaussianScene& scene, const QuiltGeometry& geometry,
+SweepingPlanes render_sweeping_planes(const scene::GaussianScene& scene, const QuiltGeometry& geometry,
                                       const ReferenceCamera& ref, const DepthChunks& chunks,
                                       PlanePrecision precision, const RasterSettings& settings);
 

@@ -9,7 +9,6 @@
 #include "gpu/gl_quilt_target.hpp"
 #include "rgbd/rgbd_frame.hpp"
 #include "rgbd/rgbd_view_model.hpp"
-#include "rgbd/shaders/rgbd_depth.glsl.hpp"
 #include "rgbd/shaders/rgbd_fill.frag.glsl.hpp"
 #include "rgbd/shaders/rgbd_fullscreen.vert.glsl.hpp"
 #include "rgbd/shaders/rgbd_resample.frag.glsl.hpp"
@@ -50,7 +49,7 @@ void set_rect(GLint location, const PixelRect& r) {
 }  // namespace
 
 GlRgbdViews::GlRgbdViews()
-    : resample_(make_pass("rgbd resample", std::string(rgbd_depth_glsl) + rgbd_resample_frag_glsl)),
+    : resample_(make_pass("rgbd resample", rgbd_resample_frag_glsl)),
       warp_(make_pass("rgbd warp", rgbd_warp_frag_glsl)),
       fill_(make_pass("rgbd fill", rgbd_fill_frag_glsl)) {
   glCreateSamplers(1, &sampler_);

@@ -27,20 +27,20 @@ std::string limit_text(const gpu::GlInfo& info) {
 
 }  // namespace
 
-FramePlan plan_frame(const display::Calibration& calibration, const render::CameraSpec& camera,
-                     const ViewerSettings& s) {
-  FramePlan plan;
-  plan.display_quilt = display::quilt_for_display(
-      calibration, s.views > 0 ? std::optional<int>(s.views) : std::nullopt);
-  const display::ViewSize size = display::view_size_for_display(plan.display_quilt, s.view_height_px);
-  const render::Camera base = render::camera_from_spec(camera, size.width, size.height);
-  const float distance = glm::length(camera.look_at - camera.position);
-  const double cone = (s.view_cone_deg > 0 ? s.view_cone_deg : plan.display_quilt.view_cone_deg) * s.depthiness;
-  plan.geometry = render::make_quilt_geometry(base, s.focal_fraction * distance, float(cone),
-                                              plan.display_quilt.views);
-  plan.layout = render::make_quilt_layout(plan.geometry, plan.display_quilt.grid.cols,
-                                          plan.display_quilt.grid.rows);
-  return plan;
+lightfield::ViewPlan plan_frame(const display::Calibration& calibration, const render::CameraSpec& camera,
+                                const ViewerSettings& s) {
+  lightfield::ViewRequest request;
+  request.display = &calibration;
+  if (s.views > 0) request.views = s.views;
+  if (s.view_cone_deg > 0) request.view_cone_deg = s.view_cone_deg;
+  request.cone_scale = s.depthiness;
+  // The display always sizes the viewer's views, whatever size a loaded cam.json names.
+  request.camera = camera;
+  request.camera->width.reset();
+  request.camera->height.reset();
+  request.view_height = s.view_height_px;
+  request.focal_scale = s.focal_fraction;
+  return lightfield::plan_views(request);
 }
 
 LightFieldFrame::LightFieldFrame(const display::Calibration& calibration, const gpu::GlInfo& info,
@@ -53,19 +53,19 @@ LightFieldFrame::LightFieldFrame(const display::Calibration& calibration, const 
   panel_ = gpu::Texture(GL_RGBA8, calibration.display.screen_w, calibration.display.screen_h);
 }
 
-LightFieldFrame::LightFieldFrame(const render::GaussianScene& scene, const display::Calibration& calibration,
+LightFieldFrame::LightFieldFrame(const scene::GaussianScene& scene, const display::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
     : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
 }
 
-LightFieldFrame::LightFieldFrame(const voxel::VoxelScene& scene, const display::Calibration& calibration,
+LightFieldFrame::LightFieldFrame(const scene::VoxelScene& scene, const display::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
     : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
 }
 
-LightFieldFrame::LightFieldFrame(const ViewerScene& scene, const display::Calibration& calibration,
+LightFieldFrame::LightFieldFrame(const scene::Scene& scene, const display::Calibration& calibration,
                                  const gpu::GlInfo& info, FrameOptions options)
     : LightFieldFrame(calibration, info, std::move(options)) {
   replace_scene(scene);
@@ -83,21 +83,21 @@ void LightFieldFrame::drop_renderers() {
   per_view_.reset();
 }
 
-void LightFieldFrame::replace_scene(const ViewerScene& scene) {
-  if (scene.voxels())
-    replace_scene(scene.voxel_scene());
+void LightFieldFrame::replace_scene(const scene::Scene& scene) {
+  if (scene.kind() == scene::SceneKind::kVoxels)
+    replace_scene(scene.voxels());
   else
     replace_scene(scene.gaussians());
 }
 
-void LightFieldFrame::replace_scene(const voxel::VoxelScene& scene) {
+void LightFieldFrame::replace_scene(const scene::VoxelScene& scene) {
   gpu::check_voxel_scene_fits(scene.size(), scene.sh_degree, info_);  // refuses: the old scene kept
   drop_renderers();
   scene_fit_notice_.clear();
   device_->upload(scene);  // the old buffers go before the new ones are allocated: a lower peak
 }
 
-void LightFieldFrame::replace_scene(const render::GaussianScene& scene) {
+void LightFieldFrame::replace_scene(const scene::GaussianScene& scene) {
   drop_renderers();
   gpu::GlSceneOptions o;
   o.max_sh_degree = gpu::fitting_sh_degree(scene.size(), scene.sh_degree, info_);  // refuses: old scene kept
@@ -157,7 +157,7 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
   o.gl.per_view_accumulation_format = GL_RGBA16F;
   o.gl.memory_budget_bytes = options_.g2lf_memory_budget_bytes;
   o.gl.accumulation_budget_bytes = options_.g2lf_accumulation_budget_bytes;
-  const lightfield::SceneKind kind = shows_voxels() ? lightfield::SceneKind::kVoxels : lightfield::SceneKind::kGaussians;
+  const scene::SceneKind kind = shows_voxels() ? scene::SceneKind::kVoxels : scene::SceneKind::kGaussians;
   std::unique_ptr<lightfield::GlLightFieldRenderer>& renderer = sweeping ? sweeping_ : per_view_;
   if (!renderer)
     renderer = lightfield::make_gl_renderer(o, kind, device_);
@@ -165,7 +165,7 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
     renderer->set_options(o);
   if (settings.method == Method::kG2lfDirect)  // the panel straight from the planes: no quilt
     return renderer->render_panel_into(plan_.geometry, lens_, {}, panel_);
-  if (sweeping && kind == lightfield::SceneKind::kGaussians) return render_g2lf(*renderer, o);
+  if (sweeping && kind == scene::SceneKind::kGaussians) return render_g2lf(*renderer, o);
   return renderer->render_quilt_into(plan_.geometry, plan_.layout, quilt_);
 }
 

@@ -19,22 +19,18 @@
 #include "gpu/gl_objects.hpp"
 #include "lightfield/gl_device.hpp"
 #include "lightfield/gl_renderer.hpp"
+#include "lightfield/view_plan.hpp"
 #include "render/camera_json.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
 #include "viewer/control_window.hpp"
-#include "viewer/viewer_scene.hpp"
 #include "viewer/viewer_settings.hpp"
 
 namespace lfd::viewer {
 
-// The quilt one frame renders for a display, camera and settings (pure; no GL).
-struct FramePlan {
-  display::DisplayQuilt display_quilt;
-  render::QuiltGeometry geometry;
-  render::QuiltLayout layout;
-};
-FramePlan plan_frame(const display::Calibration& calibration, const render::CameraSpec& camera,
+// The views one frame renders for a display, camera and settings: the settings as a request of
+// the view plan (lightfield/view_plan.hpp; pure, no GL).
+lightfield::ViewPlan plan_frame(const display::Calibration& calibration, const render::CameraSpec& camera,
                      const ViewerSettings& settings);
 
 // The scene goes to the GPU in pieces of this many Gaussians (progress four times a million).
@@ -54,13 +50,13 @@ class LightFieldFrame {
  public:
   // Needs a current GL 4.5 context (`info` describes it, its limits included). Uploads the scene
   // once, at the largest SH degree that fits (gpu::fitting_sh_degree).
-  LightFieldFrame(const render::GaussianScene& scene, const display::Calibration& calibration,
+  LightFieldFrame(const scene::GaussianScene& scene, const display::Calibration& calibration,
                   const gpu::GlInfo& info, FrameOptions options = {});
   // A voxel scene: the settings' G2LF method renders it with V2LF (the same plane options, no
   // voxel splitting: interactive frames), per view with the exact voxel raster.
-  LightFieldFrame(const voxel::VoxelScene& scene, const display::Calibration& calibration,
+  LightFieldFrame(const scene::VoxelScene& scene, const display::Calibration& calibration,
                   const gpu::GlInfo& info, FrameOptions options = {});
-  LightFieldFrame(const ViewerScene& scene, const display::Calibration& calibration, const gpu::GlInfo& info,
+  LightFieldFrame(const scene::Scene& scene, const display::Calibration& calibration, const gpu::GlInfo& info,
                   FrameOptions options = {});
   ~LightFieldFrame();
 
@@ -69,9 +65,9 @@ class LightFieldFrame {
   // (gpu/gl_frame_ring.hpp; a few frames late).
   // RGBA32F planes that do not fit fall back to RGBA8 when those fit (fit_notice() says so).
   void render(const render::CameraSpec& camera, const ViewerSettings& settings, FrameReport* report = nullptr);
-  void replace_scene(const render::GaussianScene& scene);
-  void replace_scene(const voxel::VoxelScene& scene);
-  void replace_scene(const ViewerScene& scene);
+  void replace_scene(const scene::GaussianScene& scene);
+  void replace_scene(const scene::VoxelScene& scene);
+  void replace_scene(const scene::Scene& scene);
   bool shows_voxels() const { return device_->voxels() != nullptr; }
 
   // The SH degree the scene was uploaded at, and what was lowered to fit (empty: nothing).
@@ -84,7 +80,7 @@ class LightFieldFrame {
   const gpu::Texture& quilt() const { return quilt_; }
   const gpu::Texture& panel() const { return panel_; }
   const render::QuiltLayout& layout() const { return plan_.layout; }
-  const FramePlan& plan() const { return plan_; }
+  const lightfield::ViewPlan& plan() const { return plan_; }
 
  private:
   // The members every scene kind shares (the lens, the panel); the public constructors add the scene.
@@ -105,7 +101,7 @@ class LightFieldFrame {
   std::unique_ptr<lightfield::GlLightFieldRenderer> per_view_, sweeping_;  // made on first use
   std::unique_ptr<gpu::GlInterlacer> interlacer_;
   std::optional<render::QuiltLayout> interlacer_layout_;
-  FramePlan plan_;
+  lightfield::ViewPlan plan_;
   gpu::Texture quilt_, panel_;
   gpu::GlFrameRing interlace_timer_{2, 0};  // the interlacing pass's start and end
 };

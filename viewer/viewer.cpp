@@ -12,8 +12,9 @@
 
 #include "gpu/gl_context.hpp"
 #include "gpu/glfw_session.hpp"
+#include "lightfield/scene_framing.hpp"
 #include "render/default_camera.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
@@ -197,7 +198,7 @@ struct FrameLoop {
   const ViewerOptions& options;
   const std::filesystem::path& settings_path;
   ViewerSettings& settings;
-  ViewerScene& scene;
+  scene::Scene& scene;
   OrbitCamera& camera;
   DisplayWindow& display;
   std::optional<ControlWindow>& controls;
@@ -243,12 +244,12 @@ void reload_dropped_scene(FrameLoop& loop) {
   InputCollector& input = loop.input;
   if (!input.dropped) return;
   try {
-    loop.scene = load_viewer_scene(*input.dropped);
+    loop.scene = scene::load_scene(*input.dropped);
     loop.display.make_current();
     loop.frame.replace_scene(loop.scene);
     report_fit(loop.frame.scene_fit_notice());
-    loop.camera = OrbitCamera(loop.scene.framing());
-    std::cout << fmt::format("loaded {} ({})\n", *input.dropped, loop.scene.describe());
+    loop.camera = OrbitCamera(lightfield::scene_framing(loop.scene));
+    std::cout << fmt::format("loaded {} ({})\n", *input.dropped, fmt::format("{} {}", loop.scene.size(), loop.scene.primitives()));
   } catch (const InputError& e) {
     std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
   }
@@ -321,13 +322,13 @@ void write_final_outputs(const ViewerOptions& options, const LightFieldFrame& fr
 
 int run_viewer(const ViewerOptions& options) {
   const auto& d = options.calibration.display;
-  ViewerScene scene = load_viewer_scene(options.scene_path);
+  scene::Scene scene = scene::load_scene(options.scene_path);
   const std::filesystem::path settings_path =
       options.settings_path.value_or(settings_path_for_display(options.display_name));
   ViewerSettings settings = load_settings(settings_path, ViewerSettings{});
   if (options.method) settings.method = *options.method;
   const render::CameraSpec start =
-      options.camera_path ? render::read_camera_json(*options.camera_path) : scene.framing();
+      options.camera_path ? render::read_camera_json(*options.camera_path) : lightfield::scene_framing(scene);
   OrbitCamera camera(start);
 
   const gpu::GlfwSession session("lfd view needs a desktop session (X11 or Wayland) to open its windows");

@@ -1,7 +1,7 @@
 #pragma once
 // Shared corner densities fitted to per-voxel targets (lfd scene voxelize). SVRaster samples a
 // voxel at the midpoint of the ray's chord (K = 1) and interpolates raw densities, which
-// exp_linear_11 activates exponentially below 1.1: a voxel whose corners hold the field's point
+// scene::exp_linear_11 activates exponentially below 1.1: a voxel whose corners hold the field's point
 // values (one dense, seven clear) sees their geometric, not arithmetic, mean and loses most of
 // its optical depth (a disk of alpha 0.95 came out at 0.83). So the raw corner values are fitted,
 // by sparse linear least squares (Eigen's LSCG), to make each voxel's mean raw value (its

@@ -19,7 +19,7 @@ float gaussian_optical_depth(float opacity) {
   return -std::log(1.0f - std::clamp(opacity, 0.0f, 0.99f));
 }
 
-GaussianDensityField::GaussianDensityField(const render::GaussianScene& scene, float cell_size)
+GaussianDensityField::GaussianDensityField(const scene::GaussianScene& scene, float cell_size)
     : cell_size_(cell_size) {
   const size_t n = scene.size();
   means_.resize(n);

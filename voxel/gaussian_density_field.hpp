@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 
 namespace lfd::voxel {
 
@@ -24,7 +24,7 @@ class GaussianDensityField {
  public:
   // `cell_size`: edge of the hash grid that finds the Gaussians near a point (about the
   // finest voxel size). Gaussians whose 3-sigma box is huge go to a list searched always.
-  GaussianDensityField(const render::GaussianScene& scene, float cell_size);
+  GaussianDensityField(const scene::GaussianScene& scene, float cell_size);
 
   size_t size() const { return means_.size(); }
   float mass(size_t g) const { return mass_[g]; }
@@ -35,7 +35,7 @@ class GaussianDensityField {
   // Half the edge of Gaussian g's axis-aligned 3-sigma box.
   const glm::vec3& support(size_t g) const { return support_[g]; }
 
-  // The density at x smoothed by a trilinear hat of half-width `smoothing` (a voxel's edge):
+  // The density at x smoothed by a scene::trilinear hat of half-width `smoothing` (a voxel's edge):
   // the hat is replaced by the Gaussian of its variance, smoothing^2 / 6 per axis, so each
   // Gaussian's covariance grows by that and its mass is kept.
   float density(const glm::vec3& x, float smoothing) const;

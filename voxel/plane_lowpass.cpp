@@ -6,11 +6,11 @@
 
 namespace lfd::voxel {
 
-float view_antialias_variance(const VoxelScene& scene) {
+float view_antialias_variance(const scene::VoxelScene& scene) {
   return scene.supersampling > 1.0f ? 1.0f / 6.0f : 0.0f;
 }
 
-float plane_lowpass_variance(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+float plane_lowpass_variance(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                              const render::ReferenceCamera& ref, int plane_scale) {
   return render::adaptive_filter_variance(geometry, ref, plane_scale, view_antialias_variance(scene));
 }

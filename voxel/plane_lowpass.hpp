@@ -11,15 +11,15 @@
 
 #include "render/blend.hpp"
 #include "render/quilt_geometry.hpp"
-#include "voxel/voxel_scene.hpp"
+#include "scene/voxel_scene.hpp"
 
 namespace lfd::voxel {
 
 // Variance of the supersampled view's downsampling filter, in view pixels^2 (0 for ss = 1).
-float view_antialias_variance(const VoxelScene& scene);
+float view_antialias_variance(const scene::VoxelScene& scene);
 
 // The Gaussian's variance in reference-camera texels^2 for planes at scale `plane_scale`.
-float plane_lowpass_variance(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+float plane_lowpass_variance(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                              const render::ReferenceCamera& ref, int plane_scale);
 
 // Separable Gaussian (cut at 3 sigma, edges clamped) on the premultiplied colour and the

@@ -16,18 +16,18 @@ uint64_t padded_path(const glm::u32vec3& index, int level) {
     const uint64_t child = ((index.x >> l) & 1u) << 2 | ((index.y >> l) & 1u) << 1 | ((index.z >> l) & 1u);
     path = path << 3 | child;
   }
-  return path << (3 * (kMaxOctreeLevel - level));
+  return path << (3 * (scene::kMaxOctreeLevel - level));
 }
 
 }  // namespace
 
-RayOrder::RayOrder(const VoxelScene& scene) : path_(scene.size()), level_(scene.level) {
+RayOrder::RayOrder(const scene::VoxelScene& scene) : path_(scene.size()), level_(scene.level) {
   for (size_t i = 0; i < scene.size(); ++i) path_[i] = padded_path(scene.octree_index[i], scene.level[i]);
-  for (int level = 0; level <= kMaxOctreeLevel; ++level)
+  for (int level = 0; level <= scene::kMaxOctreeLevel; ++level)
     for (int octant = 0; octant < 8; ++octant) {
       uint64_t mask = 0;
       for (int l = 0; l < level; ++l) mask = mask << 3 | uint64_t(octant);
-      level_octant_mask_[size_t(level)][size_t(octant)] = mask << (3 * (kMaxOctreeLevel - level));
+      level_octant_mask_[size_t(level)][size_t(octant)] = mask << (3 * (scene::kMaxOctreeLevel - level));
     }
 }
 

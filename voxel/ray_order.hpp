@@ -11,7 +11,7 @@
 
 #include <glm/glm.hpp>
 
-#include "voxel/voxel_scene.hpp"
+#include "scene/voxel_scene.hpp"
 
 namespace lfd::voxel {
 
@@ -20,16 +20,16 @@ int direction_octant(const glm::vec3& direction);
 
 class RayOrder {
  public:
-  explicit RayOrder(const VoxelScene& scene);
+  explicit RayOrder(const scene::VoxelScene& scene);
   // Sorting by this key (ascending) is front to back for a ray of octant `octant`.
   uint64_t key(uint32_t voxel, int octant) const {
     return path_[voxel] ^ level_octant_mask_[level_[voxel]][size_t(octant)];
   }
 
  private:
-  std::vector<uint64_t> path_;  // octree path padded to kMaxOctreeLevel levels (3 bits each)
+  std::vector<uint64_t> path_;  // octree path padded to scene::kMaxOctreeLevel levels (3 bits each)
   std::vector<uint8_t> level_;
-  std::array<std::array<uint64_t, 8>, kMaxOctreeLevel + 1> level_octant_mask_{};
+  std::array<std::array<uint64_t, 8>, scene::kMaxOctreeLevel + 1> level_octant_mask_{};
 };
 
 }  // namespace lfd::voxel

@@ -25,7 +25,7 @@ struct DepthSpan {
   float centre, half;
 };
 
-DepthSpan depth_span(const VoxelScene& scene, size_t i, const render::Camera& camera) {
+DepthSpan depth_span(const scene::VoxelScene& scene, size_t i, const render::Camera& camera) {
   const glm::vec3 f = glm::abs(camera.forward());
   return {camera.to_camera(scene.voxel_center(i)).z, 0.5f * scene.voxel_size(i) * (f.x + f.y + f.z)};
 }
@@ -51,7 +51,7 @@ class Boundaries {
 
 }  // namespace
 
-VoxelChunks bin_voxels_by_depth(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+VoxelChunks bin_voxels_by_depth(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                 const render::ReferenceCamera& ref, int chunks,
                                 render::ChunkBinning binning, int split_levels) {
   (void)geometry;
@@ -78,13 +78,13 @@ VoxelChunks bin_voxels_by_depth(const VoxelScene& scene, const render::QuiltGeom
   const Boundaries boundaries(std::move(starts));
 
   out.scene = scene;
-  VoxelScene& s = out.scene;
+  scene::VoxelScene& s = out.scene;
   const size_t input_size = scene.size();
   // Replace a straddling voxel by its children, recursively; each ends in its centre's chunk.
   const auto place = [&](auto&& self, size_t i, int extra) -> void {
     const DepthSpan span = depth_span(s, i, ref.camera);
     if (!in_front(span)) return;
-    if (extra < split_levels && s.level[i] < kMaxOctreeLevel && boundaries.straddles(span)) {
+    if (extra < split_levels && s.level[i] < scene::kMaxOctreeLevel && boundaries.straddles(span)) {
       if (i < input_size) ++out.voxels_split;
       const size_t first = append_children(s, i, s);
       for (size_t c = 0; c < 8; ++c) self(self, first + c, extra + 1);
@@ -121,7 +121,7 @@ namespace {
 // Alg. 1 lines 4-5 for voxels: every chunk through the exact voxel rasterizer from the reference
 // camera (zero background, SH from the base camera), low-pass filtered in place of
 // supersampling. `lowpass_scene` is the input scene (the filter's voxel sizes).
-render::SweepingPlanes render_voxel_planes(const VoxelChunks& binned, const VoxelScene& lowpass_scene,
+render::SweepingPlanes render_voxel_planes(const VoxelChunks& binned, const scene::VoxelScene& lowpass_scene,
                                            const render::QuiltGeometry& geometry,
                                            const render::ReferenceCamera& ref, const render::G2lfOptions& o) {
   const float lowpass = o.adaptive_filter ? plane_lowpass_variance(lowpass_scene, geometry, ref, o.plane_scale) : 0.0f;
@@ -137,7 +137,7 @@ render::SweepingPlanes render_voxel_planes(const VoxelChunks& binned, const Voxe
 
 }  // namespace
 
-void render_planes_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+void render_planes_v2lf(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                         const V2lfOptions& options, const render::PlaneConsumer& consume, V2lfStats* stats) {
   options.check(geometry);
   const render::G2lfOptions& o = options.planes;
@@ -159,7 +159,7 @@ void render_planes_v2lf(const VoxelScene& scene, const render::QuiltGeometry& ge
   }
 }
 
-ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_v2lf(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, const V2lfOptions& options,
                          const glm::vec3& background, V2lfStats* stats) {
   ImageF quilt;
@@ -173,7 +173,7 @@ ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& g
   return quilt;
 }
 
-ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_v2lf(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, const render::G2lfOptions& options,
                          const glm::vec3& background) {
   V2lfOptions o;

@@ -11,7 +11,7 @@
 #include <cstddef>
 
 #include "render/g2lf.hpp"
-#include "voxel/voxel_scene.hpp"
+#include "scene/voxel_scene.hpp"
 
 namespace lfd::voxel {
 
@@ -36,7 +36,7 @@ struct V2lfOptions {
 // The voxels that V2LF renders, binned: `scene` is the input with the split voxels' children
 // appended (a split parent stays in it but in no chunk); chunk members index it.
 struct VoxelChunks {
-  VoxelScene scene;
+  scene::VoxelScene scene;
   render::DepthChunks chunks;
   size_t voxels_split = 0;  // input voxels replaced by descendants
   size_t children = 0;      // descendants in the chunks
@@ -53,24 +53,24 @@ struct V2lfStats {
 // Voxels with a corner in front of the reference camera, binned by centre depth (options.binning,
 // options.chunks), straddling ones split up to `split_levels` deeper. Chunk boundaries are the
 // centre depths where a chunk begins; plane depths are those of the binning before splitting.
-VoxelChunks bin_voxels_by_depth(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+VoxelChunks bin_voxels_by_depth(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                 const render::ReferenceCamera& ref, int chunks,
                                 render::ChunkBinning binning = render::ChunkBinning::kQuantile,
                                 int split_levels = 0);
 
 // The quilt; checks `options` first.
-ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_v2lf(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, const V2lfOptions& options,
                          const glm::vec3& background, V2lfStats* stats = nullptr);
 
 // Binning and planes with the same options, then `consume` with the planes (the direct panel
 // pass, interlace/direct_panel.hpp); checks `options` first.
-void render_planes_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+void render_planes_v2lf(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                         const V2lfOptions& options, const render::PlaneConsumer& consume,
                         V2lfStats* stats = nullptr);
 
 // The same without splitting.
-ImageF render_quilt_v2lf(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_quilt_v2lf(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                          const render::QuiltLayout& layout, const render::G2lfOptions& options,
                          const glm::vec3& background);
 

@@ -8,7 +8,7 @@
 #include <random>
 
 #include "render/default_camera.hpp"
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/spherical_harmonics.hpp"
 #include "util/error.hpp"
 
@@ -104,7 +104,7 @@ int target_level(const glm::vec3& center, float size, int detail_level, Part::Ki
 struct Carver {
   const std::vector<Part>& parts;
   const VoxelGeneratorOptions& options;
-  VoxelScene& scene;
+  scene::VoxelScene& scene;
 
   void visit(glm::u32vec3 index, int level) {
     const float size = std::ldexp(kRootExtent, -level);
@@ -129,7 +129,7 @@ struct Carver {
     }
     const glm::vec3 rgb = n.part->paint(center);
     float* sh = scene.voxel_sh(i);
-    for (int c = 0; c < 3; ++c) sh[c] = render::color_to_sh_dc(rgb[c]);
+    for (int c = 0; c < 3; ++c) sh[c] = scene::color_to_sh_dc(rgb[c]);
     // A view-dependent sheen for degree >= 1 (3DGS signs: -y and -x multiply these terms).
     if (scene.sh_degree >= 1)
       for (int c = 0; c < 3; ++c) {
@@ -148,30 +148,30 @@ void VoxelGeneratorOptions::check() const {
     throw_input_error("voxel generator options: sh_degree: {} is not 0-3", sh_degree);
 }
 
-VoxelScene generate_voxel_scene(const VoxelGeneratorOptions& options) {
+scene::VoxelScene generate_voxel_scene(const VoxelGeneratorOptions& options) {
   options.check();
-  VoxelScene scene;
+  scene::VoxelScene scene;
   scene.scene_center = glm::vec3(0.0f);
   scene.scene_extent = kRootExtent;
   scene.sh_degree = options.sh_degree;
   const std::vector<Part> parts = tabletop(options.seed);
   Carver{parts, options, scene}.visit({0, 0, 0}, 0);
-  check_voxel_scene(scene, "generated voxel scene");
+  scene::check_voxel_scene(scene, "generated voxel scene");
   return scene;
 }
 
-render::CameraSpec frame_voxel_scene(const VoxelScene& scene, float fov_y_deg, float orbit_deg) {
+render::CameraSpec frame_voxel_scene(const scene::VoxelScene& scene, float fov_y_deg, float orbit_deg) {
   // Framed on the fine voxels (the content; SVRaster's background is coarse), kept inside the
   // outer shell: at most 85% of the distance within which 99% of all voxel centres lie, less the
   // largest voxel's edge (a coarse shell voxel's density reaches that far).
   const int finest = scene.size() ? *std::max_element(scene.level.begin(), scene.level.end()) : 0;
   const int coarsest = scene.size() ? *std::min_element(scene.level.begin(), scene.level.end()) : 0;
-  render::GaussianScene content;
+  scene::GaussianScene content;
   for (size_t i = 0; i < scene.size(); ++i)
     if (scene.level[i] + 2 >= finest) {
       const glm::vec3 c = scene.voxel_center(i);
       content.positions.push_back({c.x, c.y, c.z});
-      content.opacities.push_back(1.0f);  // every content voxel counts (render::content_bounds)
+      content.opacities.push_back(1.0f);  // every content voxel counts (scene::content_bounds)
     }
   render::CameraSpec spec = render::frame_scene(content, fov_y_deg, orbit_deg);
   std::vector<float> distance(scene.size());

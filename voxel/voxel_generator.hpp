@@ -9,7 +9,7 @@
 
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
-#include "voxel/voxel_scene.hpp"
+#include "scene/voxel_scene.hpp"
 
 namespace lfd::voxel {
 
@@ -20,11 +20,11 @@ struct VoxelGeneratorOptions {
   void check() const;    // InputError "voxel generator options: <field>: ..."
 };
 
-VoxelScene generate_voxel_scene(const VoxelGeneratorOptions& options);
+scene::VoxelScene generate_voxel_scene(const VoxelGeneratorOptions& options);
 
 // The default camera: render::frame_scene's rule on the fine (content) voxels, then moved
 // toward the target until the camera and the cone's outermost views sit in empty space with no
 // coarsest-level (background shell) voxel between them and the target (docs/voxels.md).
-render::CameraSpec frame_voxel_scene(const VoxelScene& scene, float fov_y_deg = render::kDefaultFovYDeg, float orbit_deg = 0.0f);
+render::CameraSpec frame_voxel_scene(const scene::VoxelScene& scene, float fov_y_deg = render::kDefaultFovYDeg, float orbit_deg = 0.0f);
 
 }  // namespace lfd::voxel

@@ -5,14 +5,14 @@
 
 namespace lfd::voxel {
 
-render::RasterImage render_voxel_view(const VoxelScene& scene, const render::QuiltGeometry& geometry, int view,
+render::RasterImage render_voxel_view(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry, int view,
                                       const VoxelRenderSettings& settings) {
   if (view < 0 || view >= geometry.views)
     throw_input_error("view {} is outside 0..{}", view, geometry.views - 1);
   return rasterize_voxels(scene, geometry.view_camera(view), settings);
 }
 
-ImageF render_voxel_quilt_per_view(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_voxel_quilt_per_view(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                    const render::QuiltLayout& layout, const VoxelRenderSettings& settings) {
   ImageF quilt(layout.width, layout.height, 3, 0.0f);
   Progress progress("per-view voxel quilt", geometry.views);

@@ -7,10 +7,10 @@
 
 namespace lfd::voxel {
 
-render::RasterImage render_voxel_view(const VoxelScene& scene, const render::QuiltGeometry& geometry, int view,
+render::RasterImage render_voxel_view(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry, int view,
                                       const VoxelRenderSettings& settings = {});
 
-ImageF render_voxel_quilt_per_view(const VoxelScene& scene, const render::QuiltGeometry& geometry,
+ImageF render_voxel_quilt_per_view(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                    const render::QuiltLayout& layout, const VoxelRenderSettings& settings = {});
 
 }  // namespace lfd::voxel

@@ -21,7 +21,7 @@ struct TileRect {
 
 // Stage 1 (per voxel): the tiles its projected box may cover. A box reaching behind the camera
 // plane covers the whole image (the slab test sorts out the rays), one wholly behind none.
-TileRect tile_rect(const VoxelScene& scene, size_t i, const render::Camera& camera, int tiles_x, int tiles_y) {
+TileRect tile_rect(const scene::VoxelScene& scene, size_t i, const render::Camera& camera, int tiles_x, int tiles_y) {
   const glm::vec3 lo = scene.voxel_min(i);
   const float size = scene.voxel_size(i);
   glm::vec2 pmin(INFINITY), pmax(-INFINITY);
@@ -62,7 +62,7 @@ glm::vec3 pixel_ray(const render::Camera& camera, int x, int y) {
 namespace {
 
 // tau of one voxel along a ray: K midpoint samples over the slab test's chord.
-float voxel_tau(const VoxelScene& scene, size_t i, const glm::vec3& o, const glm::vec3& d) {
+float voxel_tau(const scene::VoxelScene& scene, size_t i, const glm::vec3& o, const glm::vec3& d) {
   const glm::vec3 lo = scene.voxel_min(i);
   const float size = scene.voxel_size(i);
   const glm::vec3 inv = 1.0f / d;
@@ -77,7 +77,7 @@ float voxel_tau(const VoxelScene& scene, size_t i, const glm::vec3& o, const glm
   for (int s = 0; s < k; ++s) {
     const glm::vec3 p = o + (t_in + (float(s) + 0.5f) * dt) * d;
     const glm::vec3 local = glm::clamp((p - lo) / size, 0.0f, 1.0f);
-    tau += kStepScale * dt * exp_linear_11(trilinear(scene.corner_density[i], local));
+    tau += kStepScale * dt * scene::exp_linear_11(scene::trilinear(scene.corner_density[i], local));
   }
   return tau;
 }
@@ -86,17 +86,17 @@ float alpha_of_tau(float tau) { return std::min(kMaxAlpha, 1.0f - std::exp(-tau)
 
 }  // namespace
 
-float voxel_alpha(const VoxelScene& scene, size_t voxel, const glm::vec3& origin, const glm::vec3& unit_direction) {
+float voxel_alpha(const scene::VoxelScene& scene, size_t voxel, const glm::vec3& origin, const glm::vec3& unit_direction) {
   return alpha_of_tau(voxel_tau(scene, voxel, origin, unit_direction));
 }
 
-render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const render::Camera& camera,
+render::RasterImage rasterize_voxels_exact(const scene::VoxelScene& scene, const render::Camera& camera,
                                            const glm::vec3& background, const std::vector<uint32_t>& subset,
                                            std::optional<glm::vec3> sh_origin) {
   return rasterize_voxels_exact(scene, RayOrder(scene), camera, background, subset, sh_origin);
 }
 
-render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const RayOrder& order, const render::Camera& camera,
+render::RasterImage rasterize_voxels_exact(const scene::VoxelScene& scene, const RayOrder& order, const render::Camera& camera,
                                            const glm::vec3& background, const std::vector<uint32_t>& subset,
                                            std::optional<glm::vec3> sh_origin) {
   const int width = camera.width, height = camera.height;
@@ -171,7 +171,7 @@ render::RasterImage rasterize_voxels_exact(const VoxelScene& scene, const RayOrd
   return image;
 }
 
-render::RasterImage rasterize_voxels(const VoxelScene& scene, const render::Camera& camera,
+render::RasterImage rasterize_voxels(const scene::VoxelScene& scene, const render::Camera& camera,
                                      const VoxelRenderSettings& settings) {
   const glm::vec3 background = settings.background.value_or(scene.background);
   const float ss = settings.supersampling.value_or(scene.supersampling);

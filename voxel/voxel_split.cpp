@@ -5,8 +5,8 @@
 
 namespace lfd::voxel {
 
-size_t append_children(const VoxelScene& scene, size_t i, VoxelScene& out) {
-  if (scene.level[i] >= kMaxOctreeLevel) throw std::logic_error("append_children: voxel at the deepest level");
+size_t append_children(const scene::VoxelScene& scene, size_t i, scene::VoxelScene& out) {
+  if (scene.level[i] >= scene::kMaxOctreeLevel) throw std::logic_error("append_children: voxel at the deepest level");
   // Copies first: `out` may be `scene`, whose arrays resize() reallocates.
   const glm::u32vec3 index = scene.octree_index[i];
   const uint8_t level = scene.level[i];
@@ -23,16 +23,16 @@ size_t append_children(const VoxelScene& scene, size_t i, VoxelScene& out) {
     // Child corner k lies at (bit + corner bit of k) / 2 in the parent's local coordinates.
     for (uint32_t k = 0; k < 8; ++k) {
       const glm::vec3 corner(float((k >> 2) & 1u), float((k >> 1) & 1u), float(k & 1u));
-      out.corner_density[j][k] = trilinear(parent, 0.5f * (glm::vec3(bit) + corner));
+      out.corner_density[j][k] = scene::trilinear(parent, 0.5f * (glm::vec3(bit) + corner));
     }
     std::copy(sh.begin(), sh.end(), out.voxel_sh(j));
   }
   return first;
 }
 
-float raw_density_at(const VoxelScene& scene, size_t i, const glm::vec3& p) {
+float raw_density_at(const scene::VoxelScene& scene, size_t i, const glm::vec3& p) {
   const glm::vec3 t = glm::clamp((p - scene.voxel_min(i)) / scene.voxel_size(i), 0.0f, 1.0f);
-  return trilinear(scene.corner_density[i], t);
+  return scene::trilinear(scene.corner_density[i], t);
 }
 
 }  // namespace lfd::voxel

@@ -7,7 +7,7 @@
 #include <numeric>
 #include <unordered_map>
 
-#include "render/scene_bounds.hpp"
+#include "scene/scene_bounds.hpp"
 #include "util/error.hpp"
 #include "voxel/corner_density_fit.hpp"
 #include "voxel/gaussian_density_field.hpp"
@@ -40,14 +40,14 @@ struct Root {
 // (at most kMaxOutsideLevels times), so a background (a sky dome, distant walls) gets the
 // coarser outer levels.
 constexpr int kMaxOutsideLevels = 4;
-Root root_cube(const render::GaussianScene& scene) {
-  const render::SceneBounds b = render::robust_bounds(scene, 0.005, 0.995);
+Root root_cube(const scene::GaussianScene& scene) {
+  const scene::SceneBounds b = scene::robust_bounds(scene, 0.005, 0.995);
   const auto e = b.extent();
   const auto c = b.center();
   const glm::vec3 center(c[0], c[1], c[2]);
   Root root;
   root.extent = std::max(1.1f * std::max({e[0], e[1], e[2]}), 1e-3f);
-  const render::SceneBounds all = render::exact_bounds(scene);
+  const scene::SceneBounds all = scene::exact_bounds(scene);
   float reach = 0.0f;  // largest distance of a centre from the inside cube's centre, per axis
   for (int a = 0; a < 3; ++a) reach = std::max({reach, center[a] - all.min[a], all.max[a] - center[a]});
   while (root.outside_levels < kMaxOutsideLevels && 0.5f * root.extent < reach) {
@@ -159,12 +159,12 @@ std::vector<Leaf> build_octree(const Root& root, const GaussianDensityField& fie
 
 // A grid point's key: its integer position at the deepest level (17 bits per axis).
 uint64_t grid_key(const Leaf& leaf, int corner) {
-  const int shift = kMaxOctreeLevel - leaf.level;
+  const int shift = scene::kMaxOctreeLevel - leaf.level;
   const glm::u32vec3 p = (leaf.index + glm::u32vec3(corner >> 2 & 1, corner >> 1 & 1, corner & 1)) << uint32_t(shift);
   return uint64_t(p.x) | uint64_t(p.y) << 17 | uint64_t(p.z) << 34;
 }
 
-void fill_densities(VoxelScene& out, const std::vector<Leaf>& leaves, const Root& root,
+void fill_densities(scene::VoxelScene& out, const std::vector<Leaf>& leaves, const Root& root,
                     const GaussianDensityField& field, VoxelizeReport& report) {
   // One entry per grid point, smoothed at the finest leaf touching it: neighbours share it.
   std::unordered_map<uint64_t, uint32_t> slot;
@@ -184,14 +184,14 @@ void fill_densities(VoxelScene& out, const std::vector<Leaf>& leaves, const Root
     }
   report.grid_points = keys.size();
   std::vector<float> raw(keys.size());
-  const float unit = std::ldexp(root.extent, -kMaxOctreeLevel);
+  const float unit = std::ldexp(root.extent, -scene::kMaxOctreeLevel);
 #pragma omp parallel for schedule(dynamic, 256)
   for (ptrdiff_t p = 0; p < ptrdiff_t(keys.size()); ++p) {
     const uint64_t k = keys[size_t(p)];
     const glm::vec3 x = root.min + unit * glm::vec3(float(k & 0x1FFFF), float(k >> 17 & 0x1FFFF), float(k >> 34 & 0x1FFFF));
     // SVRaster's tau = 100 dt sigma: its sigma is the extinction per scene unit over 100.
     const float sigma = field.density(x, std::ldexp(root.extent, -finest[size_t(p)])) / kStepScale;
-    raw[size_t(p)] = sigma > 0.0f ? std::max(inverse_exp_linear_11(sigma), kMinRawDensity) : kMinRawDensity;
+    raw[size_t(p)] = sigma > 0.0f ? std::max(scene::inverse_exp_linear_11(sigma), kMinRawDensity) : kMinRawDensity;
   }
   // Each voxel's target: the raw value of its mean density (mass over volume), which its centre
   // sample should see (corner_density_fit.hpp says why the point values alone fall short).
@@ -199,14 +199,14 @@ void fill_densities(VoxelScene& out, const std::vector<Leaf>& leaves, const Root
   for (size_t i = 0; i < leaves.size(); ++i) {
     const float size = std::ldexp(root.extent, -leaves[i].level);
     const float sigma = leaves[i].mass / (size * size * size) / kStepScale;
-    target[i] = sigma > 0.0f ? std::max(inverse_exp_linear_11(sigma), kMinRawDensity) : kMinRawDensity;
+    target[i] = sigma > 0.0f ? std::max(scene::inverse_exp_linear_11(sigma), kMinRawDensity) : kMinRawDensity;
   }
   const std::vector<float> fitted = fit_corner_densities(corner_slot, target, raw);
   for (size_t i = 0; i < leaves.size(); ++i)
     for (size_t c = 0; c < 8; ++c) out.corner_density[i][c] = fitted[corner_slot[i][c]];
 }
 
-void fill_colours(VoxelScene& out, const render::GaussianScene& scene, const GaussianDensityField& field) {
+void fill_colours(scene::VoxelScene& out, const scene::GaussianScene& scene, const GaussianDensityField& field) {
   const int in_coeffs = scene.sh_coeffs(), out_coeffs = out.sh_coeffs();
   const int shared = std::min(in_coeffs, out_coeffs) * 3;
 #pragma omp parallel for schedule(dynamic, 256)
@@ -232,14 +232,14 @@ void fill_colours(VoxelScene& out, const render::GaussianScene& scene, const Gau
 }  // namespace
 
 void VoxelizeOptions::check() const {
-  if (max_level < 1 || max_level > kMaxOctreeLevel)
-    throw_input_error("voxelize options: level: {} is outside 1..{}", max_level, kMaxOctreeLevel);
+  if (max_level < 1 || max_level > scene::kMaxOctreeLevel)
+    throw_input_error("voxelize options: level: {} is outside 1..{}", max_level, scene::kMaxOctreeLevel);
   if (sh_degree < -1 || sh_degree > 3) throw_input_error("voxelize options: sh_degree: {} is not 0-3", sh_degree);
   if (!(split_optical_depth > 0.0f) || !(keep_optical_depth >= 0.0f))
     throw_input_error("voxelize options: optical depth thresholds must be positive");
 }
 
-VoxelScene voxelize(const render::GaussianScene& scene, const VoxelizeOptions& options, VoxelizeReport* report_out) {
+scene::VoxelScene voxelize(const scene::GaussianScene& scene, const VoxelizeOptions& options, VoxelizeReport* report_out) {
   options.check();
   if (scene.size() == 0) throw_input_error("voxelize: the scene has no Gaussians");
   const Root root = root_cube(scene);
@@ -252,12 +252,12 @@ VoxelScene voxelize(const render::GaussianScene& scene, const VoxelizeOptions& o
   // Hash cells of two finest voxels: a query spans a few, a small Gaussian sits in one.
   // --level counts inside the inside cube; the outer levels come on top.
   VoxelizeOptions octree = options;
-  octree.max_level = std::min(options.max_level + root.outside_levels, kMaxOctreeLevel);
+  octree.max_level = std::min(options.max_level + root.outside_levels, scene::kMaxOctreeLevel);
   report.outside_levels = root.outside_levels;
   const GaussianDensityField field(scene, 2.0f * std::ldexp(root.extent, -std::min(octree.max_level, 12)));
   const std::vector<Leaf> leaves = build_octree(root, field, octree);
 
-  VoxelScene out;
+  scene::VoxelScene out;
   out.scene_center = root.min + 0.5f * root.extent;
   out.scene_extent = root.extent;
   out.sh_degree = options.sh_degree < 0 ? scene.sh_degree : options.sh_degree;
@@ -269,7 +269,7 @@ VoxelScene voxelize(const render::GaussianScene& scene, const VoxelizeOptions& o
   }
   fill_densities(out, leaves, root, field, report);
   fill_colours(out, scene, field);
-  check_voxel_scene(out, "voxelized scene");
+  scene::check_voxel_scene(out, "voxelized scene");
   if (report_out) *report_out = report;
   return out;
 }

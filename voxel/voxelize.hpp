@@ -10,7 +10,7 @@
 //     is below `keep_optical_depth` are empty space and dropped.
 //   - Densities: the field (voxel/gaussian_density_field.hpp) at every grid point, smoothed at
 //     the size of the finest leaf that has the point as a corner, divided by SVRaster's step
-//     scale and stored through the inverse of exp_linear_11. One value per grid point, so
+//     scale and stored through the inverse of scene::exp_linear_11. One value per grid point, so
 //     neighbours agree on the corners they share.
 //   - Colour: the least-squares SH of the Gaussians' colours seen through the voxel, each
 //     weighted by its density at the voxel centre. SH bases are orthonormal on the sphere, so
@@ -18,8 +18,8 @@
 //     degree): no system to solve.
 #include <cstddef>
 
-#include "render/gaussian_scene.hpp"
-#include "voxel/voxel_scene.hpp"
+#include "scene/gaussian_scene.hpp"
+#include "scene/voxel_scene.hpp"
 
 namespace lfd::voxel {
 
@@ -39,7 +39,7 @@ struct VoxelizeReport {
   int finest_level = 0;
 };
 
-VoxelScene voxelize(const render::GaussianScene& scene, const VoxelizeOptions& options,
+scene::VoxelScene voxelize(const scene::GaussianScene& scene, const VoxelizeOptions& options,
                     VoxelizeReport* report = nullptr);
 
 }  // namespace lfd::voxel

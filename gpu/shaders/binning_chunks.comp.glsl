@@ -6,6 +6,8 @@
 // depth of its members + D_forward_eff (base-camera depth, Eq. u_prime). Also sets the
 // indirect draw's instance count to the binned count (the layered raster draws those). Needs
 // depth_key.glsl prepended.
+#include "gpu/shaders/depth_key.glsl"
+
 layout(local_size_x = 256) in;
 
 const uint kThreads = 256u;

@@ -5,6 +5,8 @@
 //                              disparity is the m/M step from the nearest to the farthest
 //                              binned Gaussian (M = disparity_chunks), in double as the CPU.
 // Both runs are non-decreasing; the chunk pass merges them. Needs depth_key.glsl prepended.
+#include "gpu/shaders/depth_key.glsl"
+
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 5) readonly buffer Keys { uint keys[]; };  // sorted

@@ -11,6 +11,7 @@
 // filters (a sampler with GL_LINEAR and a (0, 0, 0, 1) border, as the swizzle's): one fetch
 // instead of four, with the unit's own weights (8 bits of fraction on NVIDIA), not the CPU's.
 // Defines: BILINEAR 0|1, HW_BILINEAR 0|1.
+#include "gpu/shaders/lens_view.glsl"
 
 layout(binding = 0) uniform sampler2DArray planes;  // rows bottom-up (gpu/gl_planes.hpp)
 

@@ -3,6 +3,9 @@
 // its first plane to the first splat past its last plane (plane_count's entry holds the binned
 // count, so the last batch ends there). Writes the run and the copy pass's indirect dispatch
 // (at least one group, so the copy always writes the batch's draw command).
+#define PLANE_TABLE_BINDING 9
+#include "gpu/shaders/plane_table.glsl"
+
 layout(local_size_x = 64) in;
 
 // PlaneTable (plane_table.glsl, prepended at binding 9): plane_count, splats_binned, plane[k].

@@ -4,6 +4,9 @@
 // conversion's rounding), and the accumulation texel reset to empty (C = 0, T = 1) for the next
 // batch. Layers past the frame's plane count were not drawn into and are left alone.
 // Defines: PLANE_FORMAT (rgba8 | rgba16f), QUANTIZE_U8 0|1.
+#define PLANE_TABLE_BINDING 9
+#include "gpu/shaders/plane_table.glsl"
+
 layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 
 layout(rgba32f, binding = 0) uniform image2DArray accumulation;

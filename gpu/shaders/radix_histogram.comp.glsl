@@ -1,5 +1,6 @@
 // Radix sort pass 1 (gpu/gl_radix_sort.hpp): the digit counts of one block of keys.
-// Needs radix_common.glsl prepended.
+#include "gpu/shaders/radix_common.glsl"
+
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 0) readonly buffer Keys { uint keys[]; };

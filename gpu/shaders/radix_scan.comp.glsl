@@ -1,5 +1,7 @@
 // Radix sort pass 2 (gpu/gl_radix_sort.hpp): one work group per digit turns its row of block
 // counts into exclusive offsets and writes the digit's total. Needs radix_common.glsl prepended.
+#include "gpu/shaders/radix_common.glsl"
+
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 1) buffer BlockCounts { uint block_counts[]; };

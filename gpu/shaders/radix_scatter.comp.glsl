@@ -3,6 +3,8 @@
 // The rank within a 256-element tile comes from a bit mask per digit in shared memory (each
 // thread sets its bit, then counts the bits of lower threads), which does what a subgroup
 // match/ballot would without needing the extension. Needs radix_common.glsl prepended.
+#include "gpu/shaders/radix_common.glsl"
+
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 0) readonly buffer KeysIn { uint keys_in[]; };

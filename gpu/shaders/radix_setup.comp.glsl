@@ -1,7 +1,8 @@
 // Radix sort, after the first pass of a sort that drops keys (gpu/gl_radix_sort.hpp): the kept
 // count (the sum of the first pass's digit totals), its block layout as GlRadixSort::sort
 // chooses one on the CPU, and the later passes' work-group count, into SortParams.
-// Needs radix_common.glsl prepended.
+#include "gpu/shaders/radix_common.glsl"
+
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 2) readonly buffer DigitTotals { uint digit_totals[]; };

@@ -2,7 +2,9 @@
 // reference/gaussian-splatting.md section 3). Written operation for operation as the CPU code so
 // the two agree to rounding; `precise` keeps the compiler from fusing multiply-adds where an
 // integer (radius, tile rectangle) is derived from the result.
-// Needs splat_record.glsl and sh_color.glsl prepended.
+#include "gpu/shaders/splat_record.glsl"
+#include "gpu/shaders/sh_color.glsl"
+
 layout(local_size_x = 128) in;
 
 layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity

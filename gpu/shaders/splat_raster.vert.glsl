@@ -9,6 +9,11 @@
 // rounding, intersected with the tile rectangle and the image: every pixel the reference blends
 // is covered (exact), and the quad is smaller than both the tile rectangle (up to 15 px wider per
 // side) and the 3-sigma square (o < 0.99 shrinks it; per-axis extents instead of lambda_max).
+#ifdef LAYERED
+#extension GL_ARB_shader_viewport_layer_array : require
+#endif
+#include "gpu/shaders/splat_record.glsl"
+
 layout(std430, binding = 4) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = 6) readonly buffer SortedIds { uint sorted_ids[]; };
 #ifdef LAYERED

@@ -17,6 +17,9 @@
 // four, whose weights are the unit's own (8 bits of fraction on NVIDIA), not the CPU's.
 // Defines: BILINEAR 0|1, HW_BILINEAR 0|1, TABLE 0|1, QUILT_FORMAT (rgba8 | rgba16f | rgba32f),
 // VIEWS (views per invocation).
+#define PLANE_TABLE_BINDING 0
+#include "gpu/shaders/plane_table.glsl"
+
 layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
 
 layout(binding = 0) uniform sampler2DArray planes;

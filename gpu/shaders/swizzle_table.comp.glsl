@@ -5,6 +5,9 @@
 // (view, plane); planes past the frame's plane count are skipped. The expressions and their
 // order are the swizzle's own (`precise`: no fused multiply-add), so the swizzle samples the
 // same positions bit for bit with or without the table.
+#define PLANE_TABLE_BINDING 0
+#include "gpu/shaders/plane_table.glsl"
+
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
 
 // PlaneTable (plane_table.glsl, prepended at binding 0): plane_count, splats_binned, plane[k].

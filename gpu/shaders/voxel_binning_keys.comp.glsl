@@ -5,7 +5,8 @@
 // indices. Binned voxels are counted in the plane table. The depths are the CPU's bit for bit:
 // the centre as VoxelScene::voxel_center (min + edge / 2), Camera::to_camera as glm evaluates it
 // (no fused multiply-add), the half extent as (edge / 2) (|f.x| + |f.y| + |f.z|).
-// Needs depth_key.glsl prepended (SIGNED_DEPTH_KEYS 1).
+#include "gpu/shaders/depth_key.glsl"
+
 layout(local_size_x = 256) in;
 
 layout(std430, binding = 0) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge

@@ -4,7 +4,8 @@
 // the whole image when a corner lies behind the camera plane (the fragment's slab test sorts
 // out the rays, as the CPU's tile rectangle does); nothing when all 8 do. The voxel's colour is
 // its SH seen from `sh_origin` towards the voxel centre, once per voxel per view.
-// Needs sh_color.glsl prepended.
+#include "gpu/shaders/sh_color.glsl"
+
 layout(std430, binding = 0) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
 layout(std430, binding = 2) readonly buffer Order { uint order[]; };
 // V2LF's indirect draws (gpu/gl_voxel_binning.hpp): count, instances, first, base instance.

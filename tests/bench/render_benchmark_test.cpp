@@ -84,7 +84,7 @@ class FakeRenderer final : public lightfield::LightFieldRenderer {
   int default_runs() const override { return 4; }
   const lightfield::RendererOptions& options() const override { return options_; }
   void set_options(const lightfield::RendererOptions& options) override { options_ = options; }
-  void set_scene(const lightfield::LightFieldScene& scene) override { counts_.scene_size = scene.size(); }
+  void set_scene(const scene::Scene& scene) override { counts_.scene_size = scene.size(); }
   lightfield::QuiltStats render_quilt(const render::QuiltGeometry&, const render::QuiltLayout& layout) override {
     if (options_.method == lightfield::Method::kPerView) {
       ++counts_.per_view_frames;

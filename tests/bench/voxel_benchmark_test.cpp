@@ -21,7 +21,7 @@ VoxelBenchOptions tiny() {
 }
 
 TEST(VoxelBenchmark, TimesPerViewAndTheTable1RowsOfOneChunkCount) {
-  const BenchRenderers cpu = make_bench_renderers("cpu", lightfield::SceneKind::kVoxels);
+  const BenchRenderers cpu = make_bench_renderers("cpu", scene::SceneKind::kVoxels);
   const nlohmann::ordered_json r = run_voxel_benchmark(*cpu.per_view, *cpu.sweeping, tiny());
   ASSERT_EQ(r["tables"].size(), 1u);
   const auto& rows = r["tables"][0]["rows"];
@@ -39,7 +39,7 @@ TEST(VoxelBenchmark, TimesPerViewAndTheTable1RowsOfOneChunkCount) {
 
 // The same table on the GL voxel path (llvmpipe here): both sides on the GPU, GPU memory.
 TEST(VoxelBenchmark, TheGlBackendTimesTheSameRows) {
-  const BenchRenderers gl = make_bench_renderers("gl", lightfield::SceneKind::kVoxels);
+  const BenchRenderers gl = make_bench_renderers("gl", scene::SceneKind::kVoxels);
   const nlohmann::ordered_json r = run_voxel_benchmark(*gl.per_view, *gl.sweeping, tiny());
   EXPECT_EQ(r["backend"], "gl");
   const auto& rows = r["tables"][0]["rows"];
@@ -53,7 +53,7 @@ TEST(VoxelBenchmark, TheGlBackendTimesTheSameRows) {
 TEST(VoxelBenchmark, RefusesAnUnknownConfigurationSet) {
   VoxelBenchOptions o = tiny();
   o.config_sets = {"table9"};
-  const BenchRenderers cpu = make_bench_renderers("cpu", lightfield::SceneKind::kVoxels);
+  const BenchRenderers cpu = make_bench_renderers("cpu", scene::SceneKind::kVoxels);
   EXPECT_THROW(run_voxel_benchmark(*cpu.per_view, *cpu.sweeping, o), InputError);
 }
 

@@ -25,7 +25,7 @@
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "../test_data.hpp"
 #include "../render/render_test_scenes.hpp"
 #include "util/error.hpp"
@@ -45,7 +45,7 @@ HeadlessContext& context() {
 // A scene seen through one quilt geometry, with its reference camera for some G2LF options.
 struct TestScene {
   std::string name;
-  render::GaussianScene scene;
+  scene::GaussianScene scene;
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
   glm::vec3 background{0.0f};
@@ -233,7 +233,7 @@ const TestScene& three_points() {
   static const TestScene s = [] {
     TestScene s;
     s.name = "three-points";
-    s.scene = render::load_scene(test::fixture_scene("three-points.ply"));
+    s.scene = scene::load_gaussian_scene(test::fixture_scene("three-points.ply"));
     const auto base = render::make_look_at_camera({0, 0, -4}, {0, 0, 0}, {0, -1, 0}, 0.7f, 32, 24);
     s.geometry = render::make_quilt_geometry(base, 4.0f, 40.0f, 5);
     s.layout = render::make_quilt_layout(s.geometry, 5, 1);
@@ -584,7 +584,7 @@ TEST(GlG2lfRenderer, BatchesOfAccumulationLayersGiveTheSamePlanes) {
 TEST(GlG2lfRenderer, NothingInTheReferenceFrustumGivesTheBackground) {
   const TestScene& s = cloud();
   HeadlessContext& ctx = context();
-  render::GaussianScene behind;  // every Gaussian behind the cameras
+  scene::GaussianScene behind;  // every Gaussian behind the cameras
   for (int i = 0; i < 50; ++i)
     render::testing::add_gaussian(behind, {0.1f * float(i % 7), 0.0f, -2.0f - 0.1f * float(i)},
                                   {0.1f, 0.1f, 0.1f}, 0.9f, {1.0f, 1.0f, 1.0f});

@@ -17,7 +17,7 @@
 #include "render/per_view_quilt.hpp"
 #include "render/rasterizer_cpu.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -32,7 +32,7 @@ ImageF to_image(const std::vector<float>& values, int width, int height, int cha
 
 ImageF rgb_of(const render::RasterImage& r) { return to_image(r.rgb, r.width, r.height, 3); }
 
-render::GaussianScene generated_scene(int sh_degree, size_t count = 4000) {
+scene::GaussianScene generated_scene(int sh_degree, size_t count = 4000) {
   render::SceneGeneratorOptions options;
   options.count = count;
   options.sh_degree = sh_degree;
@@ -46,7 +46,7 @@ render::Camera tabletop_camera(int width = 128, int height = 128) {
 
 // GL and CPU images of one view; PSNR of the colour (printed for docs/gpu.md) and the
 // transmittance.
-double compare_view(GlPerViewRenderer& renderer, const render::GaussianScene& scene,
+double compare_view(GlPerViewRenderer& renderer, const scene::GaussianScene& scene,
                     const render::Camera& camera, const render::RasterSettings& settings, const std::string& what) {
   const render::RasterImage cpu = render::rasterize(scene, camera, settings);
   const render::RasterImage gl = renderer.render_view_image(camera, settings);
@@ -85,7 +85,7 @@ TEST(GlPerView, TheFixtureAndDemoScenesMatchTheCpu) {
   HeadlessContext context;
   const auto demo = test::project_data() / "scenes" / "demo.ply";
   for (const auto& path : {test::fixture_scene("three-points.ply"), demo}) {
-    const auto scene = render::load_scene(path);
+    const auto scene = scene::load_gaussian_scene(path);
     const render::CameraSpec framing = render::frame_scene(scene);
     const auto camera = render::camera_from_spec(framing, 128, 128);
     GlScene gl_scene(scene, context.info());
@@ -126,7 +126,7 @@ TEST(GlPerView, Rgba16fAccumulationStaysAbove40Db) {
 // the option does change the image (else the sort would not have used it).
 TEST(GlPerView, TwentyFourBitDepthKeysStayCloseToTheCpu) {
   HeadlessContext context;
-  const auto scene = render::load_scene(test::project_data() / "scenes" / "demo.ply");
+  const auto scene = scene::load_gaussian_scene(test::project_data() / "scenes" / "demo.ply");
   const auto camera = render::camera_from_spec(render::frame_scene(scene), 128, 128);
   GlScene gl_scene(scene, context.info());
   GlPerViewOptions options;
@@ -147,7 +147,7 @@ TEST(GlPerView, TwentyFourBitDepthKeysStayCloseToTheCpu) {
 // the visible splats only (the default) is exact: the image equals the sort over all N.
 TEST(GlPerView, NormalisedSixteenBitKeysAndTheVisibleOnlySortStayCloseToTheCpu) {
   HeadlessContext context;
-  const auto scene = render::load_scene(test::project_data() / "scenes" / "demo.ply");
+  const auto scene = scene::load_gaussian_scene(test::project_data() / "scenes" / "demo.ply");
   const auto camera = render::camera_from_spec(render::frame_scene(scene), 128, 128);
   GlScene gl_scene(scene, context.info());
   GlPerViewOptions options;

@@ -24,7 +24,7 @@ struct GpuPreprocess {
   DrawArraysIndirect draw{};
 };
 
-GpuPreprocess run_gpu(const HeadlessContext& context, const render::GaussianScene& scene,
+GpuPreprocess run_gpu(const HeadlessContext& context, const scene::GaussianScene& scene,
                       const render::Camera& camera, const render::RasterSettings& settings) {
   GlScene gl_scene(scene, context.info());
   GlSplatPreprocess preprocess;
@@ -51,7 +51,7 @@ float conic_error(const float (&gpu)[3], const glm::vec3& cpu, int k) {
 // Every Gaussian: culled alike, same radius and tile rectangle (an integer from a float: one in
 // a thousand may land on the other side of a rounding boundary, and then by one), mean, conic,
 // depth and colour to float rounding; keys and values as documented; the visible count.
-void expect_matches_cpu(const HeadlessContext& context, const render::GaussianScene& scene,
+void expect_matches_cpu(const HeadlessContext& context, const scene::GaussianScene& scene,
                         const render::Camera& camera, const render::RasterSettings& settings) {
   const auto cpu = render::preprocess(scene, camera, settings);
   const GpuPreprocess gpu = run_gpu(context, scene, camera, settings);
@@ -126,7 +126,7 @@ TEST(GlSplatPreprocess, MatchesTheCpuPreprocessAtShDegree3OffAxisWithEverySettin
 
 TEST(GlSplatPreprocess, AnEmptySceneDrawsNothing) {
   HeadlessContext context;
-  render::GaussianScene empty;
+  scene::GaussianScene empty;
   const auto camera = render::make_look_at_camera({0, 0, 0}, {0, 0, 1}, {0, 1, 0}, 0.7f, 32, 32);
   const GpuPreprocess gpu = run_gpu(context, empty, camera, {});
   EXPECT_EQ(gpu.draw.count, 4u);

@@ -48,7 +48,7 @@ ImageF transmittance_of(const render::RasterImage& image) {
 
 // A generated scene (shell, ground, objects; SH degree 1) and a 5-view quilt of 96x72 views.
 struct Fixture {
-  voxel::VoxelScene scene;
+  scene::VoxelScene scene;
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
 };
@@ -71,7 +71,7 @@ const Fixture& fixture() {
 
 TEST(GlVoxel, OneBoxTransmitsExpOfDensityTimesChord) {
   context().make_current();
-  voxel::VoxelScene s = voxel::testing::empty_scene();
+  scene::VoxelScene s = voxel::testing::empty_scene();
   const float sigma = 0.02f;
   voxel::testing::add_voxel(s, {0, 0, 0}, 0, voxel::testing::raw_density_for(sigma), {0.8f, 0.4f, 0.2f});
   // Head-on through the middle of the unit root box: the chord is 1.

@@ -20,7 +20,7 @@ using test_displays::small_display;
 using test_displays::small_gen3_display;
 
 struct Fixture {
-  render::GaussianScene scene;
+  scene::GaussianScene scene;
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
 };

@@ -34,7 +34,7 @@ struct Rendered {
   QuiltStats stats;
   std::string name;
 };
-Rendered render_with(const RendererOptions& options, const LightFieldScene& scene) {
+Rendered render_with(const RendererOptions& options, const scene::Scene& scene) {
   const auto renderer = make_renderer(options, scene.kind());
   renderer->set_scene(scene);
   const render::QuiltGeometry geometry = test_geometry(scene);
@@ -75,7 +75,7 @@ TEST(CpuRenderers, VoxelsPerViewAreRenderVoxelQuiltPerView) {
   const RendererOptions o = test_options(Backend::kCpu, Method::kPerView);
   const Rendered r = render_with(o, test_voxels());
   const render::QuiltGeometry g = test_geometry(test_voxels());
-  const voxel::VoxelScene& scene = test_voxels().voxels();
+  const scene::VoxelScene& scene = test_voxels().voxels();
   expect_same_pixels(r.quilt, voxel::render_voxel_quilt_per_view(scene, g, test_layout(g), o.voxel_settings()));
   expect_same_pixels(r.view, rgb(voxel::render_voxel_view(scene, g, 1, o.voxel_settings())));
 }
@@ -86,7 +86,7 @@ TEST(CpuRenderers, VoxelsSweepingPlanesAreV2lf) {
   o.background.reset();  // the scene's own
   const Rendered r = render_with(o, test_voxels());
   const render::QuiltGeometry g = test_geometry(test_voxels());
-  const voxel::VoxelScene& scene = test_voxels().voxels();
+  const scene::VoxelScene& scene = test_voxels().voxels();
   voxel::V2lfStats stats;
   expect_same_pixels(r.quilt, voxel::render_quilt_v2lf(scene, g, test_layout(g), o.v2lf(), scene.background, &stats));
   expect_same_pixels(r.view, rgb(voxel::render_voxel_view(scene, g, 1, o.voxel_settings())));
@@ -98,13 +98,13 @@ TEST(CpuRenderers, VoxelsSweepingPlanesAreV2lf) {
 TEST(RendererFactory, ChecksTheOptionsAndTheCallsMade) {
   RendererOptions f16 = test_options(Backend::kCpu, Method::kSweepingPlanes);
   f16.gl.plane_format = gpu::PlaneFormat::kRgba16f;
-  EXPECT_THROW(make_renderer(f16, SceneKind::kGaussians), InputError);
+  EXPECT_THROW(make_renderer(f16, scene::SceneKind::kGaussians), InputError);
   RendererOptions chunks = test_options(Backend::kCpu, Method::kSweepingPlanes);
   chunks.planes.chunks = 0;
-  EXPECT_THROW(make_renderer(chunks, SceneKind::kVoxels), InputError);
+  EXPECT_THROW(make_renderer(chunks, scene::SceneKind::kVoxels), InputError);
 
   const RendererOptions o = test_options(Backend::kCpu, Method::kPerView);
-  const auto renderer = make_renderer(o, SceneKind::kGaussians);
+  const auto renderer = make_renderer(o, scene::SceneKind::kGaussians);
   EXPECT_THROW(renderer->set_scene(test_voxels()), std::logic_error);
   const render::QuiltGeometry g = test_geometry(test_gaussians());
   EXPECT_THROW(renderer->render_quilt(g, test_layout(g)), std::logic_error);  // no scene yet
@@ -113,21 +113,21 @@ TEST(RendererFactory, ChecksTheOptionsAndTheCallsMade) {
   other.background = glm::vec3(1.0f);
   renderer->set_options(other);
   EXPECT_EQ(renderer->options().background, other.background);
-  EXPECT_THROW(make_gl_renderer(o, SceneKind::kGaussians, nullptr), std::logic_error);
+  EXPECT_THROW(make_gl_renderer(o, scene::SceneKind::kGaussians, nullptr), std::logic_error);
 }
 
-TEST(LightFieldScene, KnowsItsKindSizeAndFraming) {
-  EXPECT_EQ(test_gaussians().kind(), SceneKind::kGaussians);
+TEST(scene::Scene, KnowsItsKindSizeAndFraming) {
+  EXPECT_EQ(test_gaussians().kind(), scene::SceneKind::kGaussians);
   EXPECT_STREQ(test_gaussians().primitives(), "Gaussians");
   EXPECT_EQ(test_gaussians().size(), test_gaussians().gaussians().size());
-  EXPECT_EQ(test_voxels().kind(), SceneKind::kVoxels);
+  EXPECT_EQ(test_voxels().kind(), scene::SceneKind::kVoxels);
   EXPECT_STREQ(test_voxels().primitives(), "voxels");
   EXPECT_THROW(test_voxels().gaussians(), std::logic_error);
   EXPECT_NE(test_gaussians().id(), test_voxels().id());
-  EXPECT_EQ(scene_kind_of_file(LFD_SOURCE_DIR "/data/scenes/demo.ply"), SceneKind::kGaussians);
-  EXPECT_EQ(method_name(Method::kSweepingPlanes, SceneKind::kVoxels), "v2lf");
-  EXPECT_EQ(method_name(Method::kSweepingPlanes, SceneKind::kGaussians), "g2lf");
-  EXPECT_EQ(method_name(Method::kPerView, SceneKind::kVoxels), "per-view");
+  EXPECT_EQ(scene::scene_kind_of_file(LFD_SOURCE_DIR "/data/scenes/demo.ply"), scene::SceneKind::kGaussians);
+  EXPECT_EQ(method_name(Method::kSweepingPlanes, scene::SceneKind::kVoxels), "v2lf");
+  EXPECT_EQ(method_name(Method::kSweepingPlanes, scene::SceneKind::kGaussians), "g2lf");
+  EXPECT_EQ(method_name(Method::kPerView, scene::SceneKind::kVoxels), "per-view");
 }
 
 }  // namespace

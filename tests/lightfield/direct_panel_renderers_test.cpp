@@ -26,7 +26,7 @@ display::LensModel small_lens() {
       "small"));
 }
 
-ImageF cpu_reference(const LightFieldScene& scene, const RendererOptions& o, const display::LensModel& lens,
+ImageF cpu_reference(const scene::Scene& scene, const RendererOptions& o, const display::LensModel& lens,
                      const render::QuiltGeometry& g) {
   ImageF panel;
   const auto pass = [&](const glm::vec3& background) {
@@ -37,7 +37,7 @@ ImageF cpu_reference(const LightFieldScene& scene, const RendererOptions& o, con
       panel = interlace::render_direct_panel(planes, g, ref, lens, d);
     };
   };
-  if (scene.kind() == SceneKind::kGaussians)
+  if (scene.kind() == scene::SceneKind::kGaussians)
     render::render_planes_g2lf(scene.gaussians(), g, o.planes, o.raster_settings(),
                                pass(o.raster_settings().background));
   else
@@ -47,7 +47,7 @@ ImageF cpu_reference(const LightFieldScene& scene, const RendererOptions& o, con
 
 TEST(DirectPanelRenderers, CpuSweepingPlanesRenderTheDirectPassOfTheirPlanes) {
   const display::LensModel lens = small_lens();
-  for (const LightFieldScene* scene : {&test_gaussians(), &test_voxels()}) {
+  for (const scene::Scene* scene : {&test_gaussians(), &test_voxels()}) {
     const RendererOptions o = test_options(Backend::kCpu, Method::kSweepingPlanes);
     const auto renderer = make_renderer(o, scene->kind());
     renderer->set_scene(*scene);
@@ -66,7 +66,7 @@ TEST(DirectPanelRenderers, CpuSweepingPlanesRenderTheDirectPassOfTheirPlanes) {
 }
 
 TEST(DirectPanelRenderers, PerViewRenderersHaveNoDirectPass) {
-  const auto renderer = make_renderer(test_options(Backend::kCpu, Method::kPerView), SceneKind::kGaussians);
+  const auto renderer = make_renderer(test_options(Backend::kCpu, Method::kPerView), scene::SceneKind::kGaussians);
   renderer->set_scene(test_gaussians());
   EXPECT_THROW(renderer->render_panel(test_geometry(test_gaussians()), small_lens(), {}), InputError);
 }
@@ -79,12 +79,12 @@ TEST(DirectPanelRenderers, GlSweepingPlanesAgreeWithTheCpu) {
     GTEST_SKIP() << "no GL: " << e.what();
   }
   const display::LensModel lens = small_lens();
-  for (const LightFieldScene* scene : {&test_gaussians(), &test_voxels()}) {
+  for (const scene::Scene* scene : {&test_gaussians(), &test_voxels()}) {
     RendererOptions o = test_options(Backend::kGl, Method::kSweepingPlanes);
     o.gl.quilt_format = GL_RGBA32F;
     // G2LF on the GPU blends u8 planes in RGBA16F, not rounded to 8 bits as the CPU's (docs/gpu.md
     // "Planes": 96.7 % of the panel within 2/255 at u8): compare f32 planes on both sides.
-    if (scene->kind() == SceneKind::kGaussians) o.planes.precision = render::PlanePrecision::kF32;
+    if (scene->kind() == scene::SceneKind::kGaussians) o.planes.precision = render::PlanePrecision::kF32;
     const auto gl = make_renderer(o, scene->kind(), device);
     gl->set_scene(*scene);
     const render::QuiltGeometry g = test_geometry(*scene);

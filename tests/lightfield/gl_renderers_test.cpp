@@ -31,7 +31,7 @@ std::shared_ptr<GlDevice> device_or_skip() {
 struct Pair {
   ImageF gl_quilt, gl_view, cpu_quilt, cpu_view;
 };
-Pair render_both(RendererOptions options, const LightFieldScene& scene, const std::shared_ptr<GlDevice>& device) {
+Pair render_both(RendererOptions options, const scene::Scene& scene, const std::shared_ptr<GlDevice>& device) {
   const render::QuiltGeometry geometry = test_geometry(scene);
   const render::QuiltLayout layout = test_layout(geometry);
   Pair p;
@@ -112,8 +112,8 @@ TEST(GlRenderers, VoxelsSweepingPlanesAreGlV2lf) {
 
 TEST(GlRenderers, RenderersOnOneDeviceShareTheSceneUploadAndTheQuilt) {
   DEVICE_OR_SKIP(device);
-  const auto per_view = make_renderer(test_options(Backend::kGl, Method::kPerView), SceneKind::kGaussians, device);
-  const auto g2lf = make_renderer(test_options(Backend::kGl, Method::kSweepingPlanes), SceneKind::kGaussians, device);
+  const auto per_view = make_renderer(test_options(Backend::kGl, Method::kPerView), scene::SceneKind::kGaussians, device);
+  const auto g2lf = make_renderer(test_options(Backend::kGl, Method::kSweepingPlanes), scene::SceneKind::kGaussians, device);
   per_view->set_scene(test_gaussians());
   const uint64_t generation = device->scene_generation();
   const size_t bytes = gpu::gpu_bytes_allocated();
@@ -124,7 +124,7 @@ TEST(GlRenderers, RenderersOnOneDeviceShareTheSceneUploadAndTheQuilt) {
   const render::QuiltGeometry g = test_geometry(test_gaussians());
   g2lf->render_quilt(g, test_layout(g));
   // Another scene replaces the upload; both bind to it.
-  const LightFieldScene copy = LightFieldScene(test_gaussians().gaussians());
+  const scene::Scene copy = scene::Scene(test_gaussians().gaussians());
   per_view->set_scene(copy);
   EXPECT_NE(device->scene_generation(), generation);
   EXPECT_NO_THROW(g2lf->render_quilt(g, test_layout(g)));
@@ -135,7 +135,7 @@ TEST(GlRenderers, RenderIntoTheCallersTextureOnTheCurrentContext) {
   DEVICE_OR_SKIP(headless);
   const auto device = GlDevice::on_current_context(headless->info());
   const auto renderer =
-      make_gl_renderer(test_options(Backend::kGl, Method::kSweepingPlanes), SceneKind::kGaussians, device);
+      make_gl_renderer(test_options(Backend::kGl, Method::kSweepingPlanes), scene::SceneKind::kGaussians, device);
   renderer->set_scene(test_gaussians());
   const render::QuiltGeometry g = test_geometry(test_gaussians());
   const render::QuiltLayout layout = test_layout(g);

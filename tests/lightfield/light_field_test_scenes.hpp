@@ -1,7 +1,8 @@
 #pragma once
 // Tiny scenes and quilts for the light-field renderer tests: a generated tabletop of Gaussians
 // and a generated voxel tabletop, 4 views of 32x24 in a 2x2 quilt (seconds on llvmpipe).
-#include "lightfield/light_field_scene.hpp"
+#include "lightfield/scene_framing.hpp"
+#include "scene/scene.hpp"
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/quilt_geometry.hpp"
@@ -11,26 +12,26 @@
 
 namespace lfd::lightfield {
 
-inline const LightFieldScene& test_gaussians() {
-  static const LightFieldScene scene = [] {
+inline const scene::Scene& test_gaussians() {
+  static const scene::Scene scene = [] {
     render::SceneGeneratorOptions g;
     g.count = 2000;
-    return LightFieldScene(render::generate_scene(g));
+    return scene::Scene(render::generate_scene(g));
   }();
   return scene;
 }
 
-inline const LightFieldScene& test_voxels() {
-  static const LightFieldScene scene = [] {
+inline const scene::Scene& test_voxels() {
+  static const scene::Scene scene = [] {
     voxel::VoxelGeneratorOptions g;
     g.detail_level = 5;
-    return LightFieldScene(voxel::generate_voxel_scene(g));
+    return scene::Scene(voxel::generate_voxel_scene(g));
   }();
   return scene;
 }
 
-inline render::QuiltGeometry test_geometry(const LightFieldScene& scene) {
-  const render::CameraSpec spec = scene.framing(render::kDefaultFovYDeg);
+inline render::QuiltGeometry test_geometry(const scene::Scene& scene) {
+  const render::CameraSpec spec = lightfield::scene_framing(scene);
   return render::make_quilt_geometry(render::camera_from_spec(spec, 32, 24), glm::length(spec.look_at - spec.position),
                                      40.0f, 4);
 }

@@ -7,16 +7,16 @@
 
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
-#include "render/scene_bounds.hpp"
+#include "scene/scene_bounds.hpp"
 #include "render/scene_generator.hpp"
 #include "tests/render/render_test_scenes.hpp"
 
 namespace lfd::render {
 namespace {
 
-GaussianScene box_of_gaussians(size_t n, float opacity, std::array<float, 3> lo,
+scene::GaussianScene box_of_gaussians(size_t n, float opacity, std::array<float, 3> lo,
                                std::array<float, 3> hi, uint32_t seed) {
-  GaussianScene s;
+  scene::GaussianScene s;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
   for (size_t i = 0; i < n; ++i) {
@@ -29,7 +29,7 @@ GaussianScene box_of_gaussians(size_t n, float opacity, std::array<float, 3> lo,
 
 // The opacity-weighted share of the content (opacity >= kContentMinOpacity) that `camera`
 // shows inside its view shrunk by `margin` on every side.
-double share_inside(const Camera& camera, const GaussianScene& s, float margin) {
+double share_inside(const Camera& camera, const scene::GaussianScene& s, float margin) {
   double inside = 0, total = 0;
   for (size_t i = 0; i < s.size(); ++i) {
     if (s.opacities[i] < kContentMinOpacity) continue;
@@ -43,7 +43,7 @@ double share_inside(const Camera& camera, const GaussianScene& s, float margin) 
 }
 
 TEST(DefaultCamera, ContentFillsTheViewInsideTheMargin) {
-  const GaussianScene s = box_of_gaussians(4000, 0.8f, {-2, -1, 4}, {3, 0.5f, 6}, 1);
+  const scene::GaussianScene s = box_of_gaussians(4000, 0.8f, {-2, -1, 4}, {3, 0.5f, 6}, 1);
   for (float aspect : {0.75f, 1.0f, 16.0f / 9.0f})
     for (float orbit : {0.0f, 35.0f}) {
       const CameraSpec spec = frame_scene(s, kDefaultFovYDeg, orbit, aspect);
@@ -56,18 +56,18 @@ TEST(DefaultCamera, ContentFillsTheViewInsideTheMargin) {
       EXPECT_LT(share_inside(camera_from_spec(closer, w, 400), s, kFrameMargin), kFramedOpacity - 0.01)
           << aspect << " " << orbit;
       // The focal plane passes through the centre of the content's box; y down: seen from above.
-      const auto c = content_bounds(s).center();
+      const auto c = scene::content_bounds(s).center();
       EXPECT_NEAR(glm::length(spec.look_at - glm::vec3(c[0], c[1], c[2])), 0.0f, 1e-5f);
       EXPECT_GT(spec.look_at.y, spec.position.y);
     }
 }
 
 TEST(DefaultCamera, FaintHazeAndFarFloatersDoNotMoveTheFrame) {
-  const GaussianScene content = box_of_gaussians(4000, 0.8f, {-1, -1, 4}, {1, 1, 6}, 2);
-  GaussianScene hazy = content;
-  const GaussianScene haze = box_of_gaussians(2000, 0.05f, {-40, -40, -40}, {40, 40, 40}, 3);
-  const GaussianScene floaters = box_of_gaussians(40, 0.9f, {30, 30, 30}, {35, 35, 35}, 4);
-  for (const GaussianScene* extra : {&haze, &floaters})
+  const scene::GaussianScene content = box_of_gaussians(4000, 0.8f, {-1, -1, 4}, {1, 1, 6}, 2);
+  scene::GaussianScene hazy = content;
+  const scene::GaussianScene haze = box_of_gaussians(2000, 0.05f, {-40, -40, -40}, {40, 40, 40}, 3);
+  const scene::GaussianScene floaters = box_of_gaussians(40, 0.9f, {30, 30, 30}, {35, 35, 35}, 4);
+  for (const scene::GaussianScene* extra : {&haze, &floaters})
     for (size_t i = 0; i < extra->size(); ++i)
       testing::add_gaussian(hazy, extra->positions[i], extra->scales[i], extra->opacities[i],
                             {0.5f, 0.5f, 0.5f});
@@ -78,11 +78,11 @@ TEST(DefaultCamera, FaintHazeAndFarFloatersDoNotMoveTheFrame) {
 
 TEST(DefaultCamera, ContentBoundsWeighByOpacity) {
   // Half the Gaussians, nearly transparent, spread wide: the weighted box follows the opaque half.
-  GaussianScene s = box_of_gaussians(1000, 0.9f, {0, 0, 0}, {1, 1, 1}, 5);
-  const GaussianScene faint = box_of_gaussians(1000, 0.12f, {-10, -10, -10}, {10, 10, 10}, 6);
+  scene::GaussianScene s = box_of_gaussians(1000, 0.9f, {0, 0, 0}, {1, 1, 1}, 5);
+  const scene::GaussianScene faint = box_of_gaussians(1000, 0.12f, {-10, -10, -10}, {10, 10, 10}, 6);
   for (size_t i = 0; i < faint.size(); ++i)
     testing::add_gaussian(s, faint.positions[i], faint.scales[i], faint.opacities[i], {0, 0, 0});
-  const SceneBounds weighted = content_bounds(s), plain = robust_bounds(s, 0.05, 0.95);
+  const scene::SceneBounds weighted = scene::content_bounds(s), plain = scene::robust_bounds(s, 0.05, 0.95);
   for (int a = 0; a < 3; ++a) {
     EXPECT_GT(weighted.min[a], -3.0f);
     EXPECT_LT(weighted.max[a], 4.0f);

@@ -15,7 +15,7 @@ namespace lfd::render {
 namespace {
 
 struct Fixture {
-  GaussianScene scene = testing::random_cloud(4000, 2.5f, 5.0f, 7);
+  scene::GaussianScene scene = testing::random_cloud(4000, 2.5f, 5.0f, 7);
   QuiltGeometry geometry;
   QuiltLayout layout;
   ImageF baseline;
@@ -113,7 +113,7 @@ TEST(G2lf, DepthChunksAreQuantilesWithMedianPlanes) {
 }
 
 TEST(G2lf, SingleGaussianOnTheFocalPlaneLandsOnTheSamePixelInEveryView) {
-  GaussianScene s;
+  scene::GaussianScene s;
   testing::add_gaussian(s, {0, 0, 3.5f}, {0.02f, 0.02f, 0.02f}, 0.9f, {1, 1, 1});
   const Fixture& f = fixture();
   G2lfOptions o;
@@ -178,8 +178,8 @@ TEST(G2lf, ShiftBeyondDForwardIsRefusedNotRendered) {
 // A dense cluster at depth 3.3-3.7 (around the focal plane) in front of a sparse background spread over depth 5-40: the
 // case (few large background Gaussians covering much of the image) where count quantiles put
 // the whole background on one plane.
-GaussianScene cluster_before_sparse_background() {
-  GaussianScene s = testing::random_cloud(2000, 3.3f, 3.7f, 7);
+scene::GaussianScene cluster_before_sparse_background() {
+  scene::GaussianScene s = testing::random_cloud(2000, 3.3f, 3.7f, 7);
   for (int i = 0; i < 60; ++i) {
     const float z = 5.0f + 35.0f * float(i) / 59.0f;
     const float x = 0.35f * z * (float((i * 37) % 11) / 5.0f - 1.0f), y = 0.35f * z * (float((i * 17) % 7) / 3.0f - 1.0f);
@@ -190,7 +190,7 @@ GaussianScene cluster_before_sparse_background() {
 }
 
 // Span of each chunk in inverse base-camera depth, and the whole binned range.
-std::pair<double, double> widest_disparity_span(const GaussianScene& s, const ReferenceCamera& ref,
+std::pair<double, double> widest_disparity_span(const scene::GaussianScene& s, const ReferenceCamera& ref,
                                                 const DepthChunks& c) {
   double widest = 0, w_min = 1e30, w_max = 0;
   for (const auto& members : c.members) {
@@ -207,7 +207,7 @@ std::pair<double, double> widest_disparity_span(const GaussianScene& s, const Re
 }
 
 TEST(G2lf, MixedBinningBoundsTheDisparitySpanOfEveryChunk) {
-  const GaussianScene s = cluster_before_sparse_background();
+  const scene::GaussianScene s = cluster_before_sparse_background();
   const Fixture& f = fixture();
   const ReferenceCamera ref = make_reference_camera(f.geometry, 0.5f, 1);
   const int n = 16;
@@ -218,7 +218,7 @@ TEST(G2lf, MixedBinningBoundsTheDisparitySpanOfEveryChunk) {
 }
 
 TEST(G2lf, MixedBinningKeepsEveryGaussianInAtMostNChunksFrontToBack) {
-  const GaussianScene s = cluster_before_sparse_background();
+  const scene::GaussianScene s = cluster_before_sparse_background();
   const Fixture& f = fixture();
   const ReferenceCamera ref = make_reference_camera(f.geometry, 0.5f, 1);
   const DepthChunks q = bin_by_depth(s, f.geometry, ref, 16), m = bin_by_depth(s, f.geometry, ref, 16, ChunkBinning::kMixed);
@@ -231,7 +231,7 @@ TEST(G2lf, MixedBinningKeepsEveryGaussianInAtMostNChunksFrontToBack) {
 }
 
 TEST(G2lf, MixedBinningRendersASparseBackgroundBetterThanCountQuantiles) {
-  const GaussianScene s = cluster_before_sparse_background();
+  const scene::GaussianScene s = cluster_before_sparse_background();
   const Camera base = make_look_at_camera({0, 0, 0}, {0, 0, 3.5f}, {0, 1, 0}, 0.6f, 64, 64);
   const QuiltGeometry g = make_quilt_geometry(base, 3.5f, 40.0f, 9);
   const QuiltLayout layout = make_quilt_layout(g, 9, 1);

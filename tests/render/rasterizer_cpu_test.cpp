@@ -32,7 +32,7 @@ float disk_scale_for_variance(const Camera& c, float variance_px2, float z) {
 
 TEST(Rasterizer, IsotropicGaussianCentreAndFalloffAreAnalytic) {
   const Camera cam = axis_camera(33, 33);
-  GaussianScene s;
+  scene::GaussianScene s;
   const float z = 3.0f, var = 6.0f, o = 0.8f;
   const float sc = disk_scale_for_variance(cam, var, z);
   add_gaussian(s, at_pixel(cam, 16, 16, z), {sc, sc, 0.0f}, o, {0.9f, 0.4f, 0.1f});
@@ -56,7 +56,7 @@ TEST(Rasterizer, IsotropicGaussianCentreAndFalloffAreAnalytic) {
 
 TEST(Rasterizer, NearCullDropsGaussiansAtOrBefore0_2) {
   const Camera cam = axis_camera(16, 16);
-  GaussianScene s;
+  scene::GaussianScene s;
   add_gaussian(s, {0.0f, 0.0f, 0.19f}, {0.05f, 0.05f, 0.05f}, 0.9f, {1, 1, 1});
   const auto proj = preprocess(s, cam, {});
   EXPECT_EQ(proj[0].radius_px, 0);
@@ -66,7 +66,7 @@ TEST(Rasterizer, NearCullDropsGaussiansAtOrBefore0_2) {
 
 TEST(Rasterizer, BlendsFrontToBackAndStopsBeforeTransmittanceFallsBelow1e4) {
   const Camera cam = axis_camera(17, 17);
-  GaussianScene s;
+  scene::GaussianScene s;
   const float sc = disk_scale_for_variance(cam, 50.0f, 1.0f);
   // Listed back to front on purpose; depths 4, 3, 2, 1.
   add_gaussian(s, at_pixel(cam, 8, 8, 4.0f), {4 * sc, 4 * sc, 0}, 0.5f, {0, 0, 1});
@@ -86,7 +86,7 @@ TEST(Rasterizer, BlendsFrontToBackAndStopsBeforeTransmittanceFallsBelow1e4) {
 
 TEST(Rasterizer, AlphaIsCappedAt0_99) {
   const Camera cam = axis_camera(9, 9);
-  GaussianScene s;
+  scene::GaussianScene s;
   add_gaussian(s, at_pixel(cam, 4, 4, 2.0f), {0.05f, 0.05f, 0.0f}, 1.0f, {1, 1, 1});
   const RasterImage img = rasterize(s, cam);
   EXPECT_NEAR(img.transmittance[4 * 9 + 4], 0.01f, 1e-6f);
@@ -97,7 +97,7 @@ TEST(Rasterizer, FootprintIsTheTileRectangleOfTheRadius) {
   // tile rectangle ends at column 15 although alpha at column 16 (6 px, 0.99 e^{-36/7} = 0.0058)
   // exceeds 1/255: the reference leaves it untouched (section 4.1).
   const Camera cam = axis_camera(48, 16);
-  GaussianScene s;
+  scene::GaussianScene s;
   const float z = 2.0f;
   const float sc = disk_scale_for_variance(cam, 3.5f, z);
   add_gaussian(s, at_pixel(cam, 10, 8, z), {sc, sc, 0.0f}, 0.99f, {1, 1, 1});
@@ -110,7 +110,7 @@ TEST(Rasterizer, FootprintIsTheTileRectangleOfTheRadius) {
   EXPECT_FLOAT_EQ(alpha_at(16), 0.0f);
 
   // Centred on column 15 (last of tile 0) the rectangle covers tile 1 too, analytically.
-  GaussianScene s2;
+  scene::GaussianScene s2;
   add_gaussian(s2, at_pixel(cam, 15, 8, z), {sc, sc, 0.0f}, 0.99f, {1, 1, 1});
   const RasterImage img2 = rasterize(s2, cam);
   for (int x : {16, 18, 20})
@@ -120,7 +120,7 @@ TEST(Rasterizer, FootprintIsTheTileRectangleOfTheRadius) {
 
 TEST(Rasterizer, SkipsContributionsBelow1Over255) {
   const Camera cam = axis_camera(33, 1);
-  GaussianScene s;
+  scene::GaussianScene s;
   const float sc = disk_scale_for_variance(cam, 4.0f, 2.0f);
   add_gaussian(s, at_pixel(cam, 16, 0, 2.0f), {sc, sc, 0.0f}, 0.5f, {1, 1, 1});
   const RasterImage img = rasterize(s, cam);
@@ -134,7 +134,7 @@ TEST(Rasterizer, SkipsContributionsBelow1Over255) {
 
 TEST(Rasterizer, OffAxisShiftMovesTheMeanByTheShiftInPixels) {
   Camera cam = axis_camera(32, 32);
-  GaussianScene s;
+  scene::GaussianScene s;
   add_gaussian(s, {0.0f, 0.0f, 3.0f}, {0.01f, 0.01f, 0.01f}, 0.9f, {1, 1, 1});
   cam.shift_x_ndc = 0.25f;
   const auto proj = preprocess(s, cam, {});
@@ -143,7 +143,7 @@ TEST(Rasterizer, OffAxisShiftMovesTheMeanByTheShiftInPixels) {
 
 TEST(Rasterizer, SubsetRendersOnlyThoseGaussians) {
   const Camera cam = axis_camera(32, 32);
-  GaussianScene s;
+  scene::GaussianScene s;
   add_gaussian(s, at_pixel(cam, 8, 8, 2.0f), {0.02f, 0.02f, 0.0f}, 0.9f, {1, 0, 0});
   add_gaussian(s, at_pixel(cam, 24, 24, 2.0f), {0.02f, 0.02f, 0.0f}, 0.9f, {0, 1, 0});
   const std::vector<uint32_t> only_second{1};
@@ -154,7 +154,7 @@ TEST(Rasterizer, SubsetRendersOnlyThoseGaussians) {
 
 TEST(Rasterizer, TileListsAreSortedByDepthWithTiesInSceneOrder) {
   const Camera cam = axis_camera(40, 24);
-  GaussianScene s;
+  scene::GaussianScene s;
   for (int i = 0; i < 6; ++i)
     add_gaussian(s, at_pixel(cam, 5.0f + 5.0f * i, 10.0f, i % 2 ? 2.0f : 3.0f), {0.03f, 0.03f, 0.03f}, 0.5f, {1, 1, 1});
   add_gaussian(s, at_pixel(cam, 20, 10, 2.0f), {0.03f, 0.03f, 0.03f}, 0.5f, {1, 1, 1});
@@ -172,7 +172,7 @@ TEST(SphericalHarmonics, DegreeOneMatchesTheReferenceFormula) {
   float sh[12] = {0.1f, 0.2f, 0.3f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f};
   const glm::vec3 d = glm::normalize(glm::vec3(0.3f, -0.5f, 0.8f));
   const glm::vec3 c = eval_sh_color(1, sh, d);
-  const float C0 = kShC0, C1 = 0.4886025119029199f;
+  const float C0 = scene::kShC0, C1 = 0.4886025119029199f;
   EXPECT_NEAR(c.x, 0.5f + C0 * 0.1f - C1 * d.y, 1e-6f);
   EXPECT_NEAR(c.y, 0.5f + C0 * 0.2f + C1 * d.z, 1e-6f);
   EXPECT_NEAR(c.z, 0.5f + C0 * 0.3f - C1 * d.x, 1e-6f);
@@ -185,7 +185,7 @@ TEST(SphericalHarmonics, ClampsAtZeroOnlyAndIgnoresHigherBandsAtDegreeZero) {
   for (int i = 3; i < 48; ++i) sh[i] = 5.0f;
   const glm::vec3 c0 = eval_sh_color(0, sh, {0, 0, 1});
   EXPECT_FLOAT_EQ(c0.x, 0.0f);
-  EXPECT_NEAR(c0.y, sh_dc_to_color(10.0f), 1e-5f);
+  EXPECT_NEAR(c0.y, scene::sh_dc_to_color(10.0f), 1e-5f);
   const glm::vec3 c3 = eval_sh_color(3, sh, glm::normalize(glm::vec3(1, 2, 3)));
   EXPECT_NE(c3.z, c0.z);
 }

@@ -3,13 +3,13 @@
 #include <cmath>
 #include <random>
 
-#include "render/gaussian_scene.hpp"
+#include "scene/gaussian_scene.hpp"
 #include "render/spherical_harmonics.hpp"
 
 namespace lfd::render::testing {
 
-// Appends one Gaussian with DC colour `rgb` (degree-0 SH: sh_dc_to_color(sh0) = rgb).
-inline void add_gaussian(GaussianScene& s, std::array<float, 3> pos, std::array<float, 3> scale,
+// Appends one Gaussian with DC colour `rgb` (degree-0 SH: scene::sh_dc_to_color(sh0) = rgb).
+inline void add_gaussian(scene::GaussianScene& s, std::array<float, 3> pos, std::array<float, 3> scale,
                          float opacity, std::array<float, 3> rgb,
                          std::array<float, 4> q = {1.0f, 0.0f, 0.0f, 0.0f}) {
   s.positions.push_back(pos);
@@ -17,15 +17,15 @@ inline void add_gaussian(GaussianScene& s, std::array<float, 3> pos, std::array<
   s.rotations.push_back(q);
   s.opacities.push_back(opacity);
   const int coeffs = s.sh_coeffs();
-  for (int c = 0; c < 3; ++c) s.sh.push_back(color_to_sh_dc(rgb[size_t(c)]));
+  for (int c = 0; c < 3; ++c) s.sh.push_back(scene::color_to_sh_dc(rgb[size_t(c)]));
   for (int k = 1; k < coeffs; ++k)
     for (int c = 0; c < 3; ++c) s.sh.push_back(0.0f);
 }
 
 // A cloud of `n` random Gaussians in front of a camera at the origin looking down +z:
 // depths in [z_near, z_far], lateral extent that fills a ~40 degree view.
-inline GaussianScene random_cloud(int n, float z_near, float z_far, uint32_t seed) {
-  GaussianScene s;
+inline scene::GaussianScene random_cloud(int n, float z_near, float z_far, uint32_t seed) {
+  scene::GaussianScene s;
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u01(0.0f, 1.0f);
   for (int i = 0; i < n; ++i) {

@@ -17,7 +17,7 @@
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/rasterizer_cpu.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::render {
@@ -26,7 +26,7 @@ namespace {
 const std::filesystem::path kFormats = test::fixtures() / "scenes" / "formats";
 
 // The scene rendered by the reference rasterizer from the camera that frames `framing`.
-ImageF render(const GaussianScene& scene, const GaussianScene& framing) {
+ImageF render(const scene::GaussianScene& scene, const scene::GaussianScene& framing) {
   const Camera camera = camera_from_spec(frame_scene(framing), 256, 192);
   const RasterImage r = rasterize(scene, camera);
   ImageF image(r.width, r.height, 3);
@@ -35,8 +35,8 @@ ImageF render(const GaussianScene& scene, const GaussianScene& framing) {
 }
 
 double psnr_against(const std::string& file, const std::string& truth_file) {
-  const GaussianScene truth = load_scene(kFormats / truth_file);
-  const GaussianScene scene = load_scene(kFormats / file);
+  const scene::GaussianScene truth = scene::load_gaussian_scene(kFormats / truth_file);
+  const scene::GaussianScene scene = scene::load_gaussian_scene(kFormats / file);
   EXPECT_EQ(scene.size(), truth.size()) << file;
   EXPECT_EQ(scene.sh_degree, truth.sh_degree) << file;
   const ImageF expected = render(truth, truth);
@@ -63,8 +63,8 @@ TEST(SceneFormatsReference, GlbMatchesTheSourcePly) {
   EXPECT_GE(psnr_against("tabletop.glb", "tabletop.ply"), 50.0);
   // Float attributes: the half turn about z between glTF and the PLY frame must undo exactly,
   // SH signs included (a wrong parity would still render close at this SH magnitude).
-  const GaussianScene ply = load_scene(kFormats / "tabletop.ply");
-  const GaussianScene glb = load_scene(kFormats / "tabletop.glb");
+  const scene::GaussianScene ply = scene::load_gaussian_scene(kFormats / "tabletop.ply");
+  const scene::GaussianScene glb = scene::load_gaussian_scene(kFormats / "tabletop.glb");
   ASSERT_EQ(glb.sh.size(), ply.sh.size());
   for (size_t i = 0; i < ply.size(); ++i)
     for (int a = 0; a < 3; ++a) EXPECT_NEAR(glb.positions[i][a], ply.positions[i][a], 1e-6f);
@@ -107,7 +107,7 @@ struct SogV1Steps {
 };
 
 // Writes `s` as an unpacked SOG v1 (meta.json without a version, per-channel lerps) into `dir`.
-SogV1Steps write_sog_v1(const GaussianScene& s, const std::filesystem::path& dir) {
+SogV1Steps write_sog_v1(const scene::GaussianScene& s, const std::filesystem::path& dir) {
   SogV1Steps q;
   const size_t n = s.size(), coeffs = size_t(s.sh_coeffs()), rest = coeffs - 1;
   for (size_t i = 0; i < n; ++i) {
@@ -170,11 +170,11 @@ SogV1Steps write_sog_v1(const GaussianScene& s, const std::filesystem::path& dir
 }
 
 TEST(SceneFormatsReference, SogVersion1DecodesToHalfAQuantisationStep) {
-  const GaussianScene s = load_scene(kFormats / "tabletop.ply");
+  const scene::GaussianScene s = scene::load_gaussian_scene(kFormats / "tabletop.ply");
   const auto dir = std::filesystem::path(::testing::TempDir()) / "lfd-sog-v1";
   std::filesystem::remove_all(dir);
   const SogV1Steps q = write_sog_v1(s, dir);
-  const GaussianScene v1 = load_scene(dir / "meta.json");
+  const scene::GaussianScene v1 = scene::load_gaussian_scene(dir / "meta.json");
   ASSERT_EQ(v1.size(), s.size());
   ASSERT_EQ(v1.sh_degree, s.sh_degree);
   const float slack = 1.001f;  // float rounding on top of the half step

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <set>
 
-#include "render/scene_bounds.hpp"
+#include "scene/scene_bounds.hpp"
 #include "render/scene_generator.hpp"
 #include "util/error.hpp"
 
@@ -15,8 +15,8 @@ namespace {
 
 TEST(SceneGenerator, SameSeedGivesTheSameScene) {
   for (const auto& kind : generator_kinds()) {
-    const GaussianScene a = generate_scene({kind, 40000, 7, 1});
-    const GaussianScene b = generate_scene({kind, 40000, 7, 1});
+    const scene::GaussianScene a = generate_scene({kind, 40000, 7, 1});
+    const scene::GaussianScene b = generate_scene({kind, 40000, 7, 1});
     EXPECT_EQ(a.positions, b.positions) << kind;
     EXPECT_EQ(a.rotations, b.rotations) << kind;
     EXPECT_EQ(a.sh, b.sh) << kind;
@@ -24,15 +24,15 @@ TEST(SceneGenerator, SameSeedGivesTheSameScene) {
 }
 
 TEST(SceneGenerator, DifferentSeedsGiveDifferentScenes) {
-  const GaussianScene a = generate_scene({"tabletop", 1000, 1, 1});
-  const GaussianScene b = generate_scene({"tabletop", 1000, 2, 1});
+  const scene::GaussianScene a = generate_scene({"tabletop", 1000, 1, 1});
+  const scene::GaussianScene b = generate_scene({"tabletop", 1000, 2, 1});
   EXPECT_NE(a.positions, b.positions);
 }
 
 TEST(SceneGenerator, ProducesExactlyTheRequestedCountAndDegree) {
   for (size_t count : {1u, 7u, 1000u, 123457u})
     for (int degree = 0; degree <= 3; ++degree) {
-      const GaussianScene s = generate_scene({"corridor", count, 3, degree});
+      const scene::GaussianScene s = generate_scene({"corridor", count, 3, degree});
       ASSERT_EQ(s.size(), count);
       ASSERT_EQ(s.sh_degree, degree);
       ASSERT_EQ(s.sh.size(), count * size_t(s.sh_coeffs()) * 3);
@@ -40,7 +40,7 @@ TEST(SceneGenerator, ProducesExactlyTheRequestedCountAndDegree) {
 }
 
 TEST(SceneGenerator, ValuesAreValidActivatedGaussians) {
-  const GaussianScene s = generate_scene({"tabletop", 20000, 11, 2});
+  const scene::GaussianScene s = generate_scene({"tabletop", 20000, 11, 2});
   for (size_t i = 0; i < s.size(); ++i) {
     const auto& q = s.rotations[i];
     ASSERT_NEAR(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3], 1.0f, 1e-4);
@@ -54,7 +54,7 @@ TEST(SceneGenerator, ValuesAreValidActivatedGaussians) {
 }
 
 TEST(SceneGenerator, HasViewDependentColour) {
-  const GaussianScene s = generate_scene({"tabletop", 5000, 1, 1});
+  const scene::GaussianScene s = generate_scene({"tabletop", 5000, 1, 1});
   double energy = 0;
   for (size_t i = 0; i < s.size(); ++i)
     for (int k = 3; k < 12; ++k) energy += std::fabs(s.sh_of(i)[k]);
@@ -63,7 +63,7 @@ TEST(SceneGenerator, HasViewDependentColour) {
 
 // Counts runs of occupied 0.25-unit depth bins along z among the Gaussians standing above the
 // ground (below the dome, between the walls): separate object rows leave gaps between runs.
-int depth_layers(const GaussianScene& s, float max_abs_x, float max_abs_z) {
+int depth_layers(const scene::GaussianScene& s, float max_abs_x, float max_abs_z) {
   std::set<int> bins;
   for (const auto& p : s.positions)
     if (p[1] < 0.95f && p[1] > -1.5f && std::fabs(p[0]) < max_abs_x && std::fabs(p[2]) < max_abs_z)
@@ -77,7 +77,7 @@ int depth_layers(const GaussianScene& s, float max_abs_x, float max_abs_z) {
 }
 
 TEST(SceneGenerator, TabletopHasObjectsAtSeveralDepthsAndAFarBackground) {
-  const GaussianScene s = generate_scene({"tabletop", 100000, 1, 1});
+  const scene::GaussianScene s = generate_scene({"tabletop", 100000, 1, 1});
   EXPECT_GE(depth_layers(s, 4.0f, 4.0f), 3);
   // Ground: a large share of Gaussians lies flat on y = +1 (y down, as in trained scenes).
   const auto on_ground = std::count_if(s.positions.begin(), s.positions.end(),
@@ -90,15 +90,15 @@ TEST(SceneGenerator, TabletopHasObjectsAtSeveralDepthsAndAFarBackground) {
   EXPECT_GT(far, 1000);
   EXPECT_LT(far, 5000);
   // The default framing box follows the ground and objects, not the backdrop.
-  const SceneBounds b = robust_bounds(s);
+  const scene::SceneBounds b = scene::robust_bounds(s);
   EXPECT_LT(b.radius(), 8.0f);
   EXPECT_GT(b.radius(), 3.0f);
 }
 
 TEST(SceneGenerator, CorridorRecedesInDepth) {
-  const GaussianScene s = generate_scene({"corridor", 100000, 1, 1});
+  const scene::GaussianScene s = generate_scene({"corridor", 100000, 1, 1});
   EXPECT_GE(depth_layers(s, 1.2f, 11.0f), 3);  // objects along it; walls excluded
-  const SceneBounds b = exact_bounds(s);
+  const scene::SceneBounds b = scene::exact_bounds(s);
   EXPECT_GT(b.max[2], 11.0f);  // end wall far away along +z, the viewing direction
   EXPECT_LT(b.min[2], -2.0f);
   EXPECT_LT(b.max[0] - b.min[0], 3.5f);  // narrow
@@ -111,12 +111,12 @@ TEST(SceneGenerator, RejectsUnknownKindAndAbsurdCounts) {
   EXPECT_THROW(generate_scene({"tabletop", 10, 1, 4}), InputError);
 }
 
-TEST(SceneBounds, IgnoresFarOutliers) {
-  GaussianScene s = generate_scene({"tabletop", 10000, 1, 0});
+TEST(scene::SceneBounds, IgnoresFarOutliers) {
+  scene::GaussianScene s = generate_scene({"tabletop", 10000, 1, 0});
   s.positions[0] = {1e6f, 1e6f, 1e6f};
-  const SceneBounds robust = robust_bounds(s);
+  const scene::SceneBounds robust = scene::robust_bounds(s);
   EXPECT_LT(robust.max[0], 20.0f);
-  EXPECT_GT(exact_bounds(s).max[0], 1e5f);
+  EXPECT_GT(scene::exact_bounds(s).max[0], 1e5f);
 }
 
 }  // namespace

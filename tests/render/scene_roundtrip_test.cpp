@@ -1,4 +1,4 @@
-// save_ply writes what load_scene reads back: binary and ASCII PLY, all SH degrees; SPZ v4
+// scene::save_ply writes what scene::load_gaussian_scene reads back: binary and ASCII PLY, all SH degrees; SPZ v4
 // (zstd streams) decodes exactly like the equivalent v3 (gzip) file.
 #include <unistd.h>
 #include <gtest/gtest.h>
@@ -11,10 +11,10 @@
 #include <fstream>
 #include <iterator>
 
-#include "tests/render/gzip_for_tests.hpp"
-#include "render/ply_writer.hpp"
+#include "tests/scene/gzip_for_tests.hpp"
+#include "scene/ply_writer.hpp"
 #include "render/scene_generator.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::render {
@@ -33,7 +33,7 @@ std::string read_bytes(const fs::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void expect_same(const GaussianScene& a, const GaussianScene& b, float tolerance) {
+void expect_same(const scene::GaussianScene& a, const scene::GaussianScene& b, float tolerance) {
   ASSERT_EQ(a.size(), b.size());
   ASSERT_EQ(a.sh_degree, b.sh_degree);
   for (size_t i = 0; i < a.size(); ++i) {
@@ -50,36 +50,36 @@ void expect_same(const GaussianScene& a, const GaussianScene& b, float tolerance
 class PlyRoundTrip : public ::testing::TestWithParam<int> {};
 
 TEST_P(PlyRoundTrip, BinaryPlyReadsBackWhatWasSaved) {
-  const GaussianScene scene = generate_scene({"tabletop", 500, 3, GetParam()});
+  const scene::GaussianScene scene = generate_scene({"tabletop", 500, 3, GetParam()});
   const fs::path p = temp_path("binary_" + std::to_string(GetParam()) + ".ply");
-  save_ply(p, scene);
-  expect_same(scene, load_scene(p), 1e-5f);
+  scene::save_ply(p, scene);
+  expect_same(scene, scene::load_gaussian_scene(p), 1e-5f);
 }
 
 TEST_P(PlyRoundTrip, AsciiPlyReadsBackAndResavesAsBinary) {
-  const GaussianScene scene = generate_scene({"corridor", 300, 4, GetParam()});
+  const scene::GaussianScene scene = generate_scene({"corridor", 300, 4, GetParam()});
   const fs::path ascii = temp_path("ascii_" + std::to_string(GetParam()) + ".ply");
-  const std::string text = encode_ply(scene, PlyEncoding::Ascii);
+  const std::string text = scene::encode_ply(scene, scene::PlyEncoding::Ascii);
   std::ofstream(ascii, std::ios::binary).write(text.data(), std::streamsize(text.size()));
-  const GaussianScene from_ascii = load_scene(ascii);
+  const scene::GaussianScene from_ascii = scene::load_gaussian_scene(ascii);
   expect_same(scene, from_ascii, 1e-5f);
   const fs::path binary = temp_path("from_ascii_" + std::to_string(GetParam()) + ".ply");
-  save_ply(binary, from_ascii);
-  expect_same(from_ascii, load_scene(binary), 1e-6f);
+  scene::save_ply(binary, from_ascii);
+  expect_same(from_ascii, scene::load_gaussian_scene(binary), 1e-6f);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllShDegrees, PlyRoundTrip, ::testing::Values(0, 1, 2, 3));
 
 TEST(PlyRoundTrip, PropertiesAreFoundByNameInAnyOrder) {
-  const GaussianScene scene = generate_scene({"tabletop", 20, 5, 1});
-  std::string ply = encode_ply(scene, PlyEncoding::Ascii);
+  const scene::GaussianScene scene = generate_scene({"tabletop", 20, 5, 1});
+  std::string ply = scene::encode_ply(scene, scene::PlyEncoding::Ascii);
   // Swap x and z in the header only: the reader must then return swapped columns.
   ply.replace(ply.find("property float x\n"), 17, "property float Q\n");
   ply.replace(ply.find("property float z\n"), 17, "property float x\n");
   ply.replace(ply.find("property float Q\n"), 17, "property float z\n");
   const fs::path p = temp_path("reordered.ply");
   std::ofstream(p, std::ios::binary) << ply;
-  const GaussianScene swapped = load_scene(p);
+  const scene::GaussianScene swapped = scene::load_gaussian_scene(p);
   for (size_t i = 0; i < scene.size(); ++i) {
     EXPECT_FLOAT_EQ(swapped.positions[i][0], scene.positions[i][2]);
     EXPECT_FLOAT_EQ(swapped.positions[i][2], scene.positions[i][0]);
@@ -89,7 +89,7 @@ TEST(PlyRoundTrip, PropertiesAreFoundByNameInAnyOrder) {
 TEST(PlyRoundTrip, SaveIsAtomicAndLeavesNoTemporaryFiles) {
   const fs::path dir = temp_path("atomic");
   fs::create_directories(dir);
-  save_ply(dir / "scene.ply", generate_scene({"tabletop", 50, 1, 0}));
+  scene::save_ply(dir / "scene.ply", generate_scene({"tabletop", 50, 1, 0}));
   size_t files = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++files;
   EXPECT_EQ(files, 1u);
@@ -134,14 +134,14 @@ TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
   }
   const fs::path v4 = temp_path("three-points-v4.spz");
   std::ofstream(v4, std::ios::binary) << header + table + streams;
-  expect_same(load_scene(v3), load_scene(v4), 0.0f);
+  expect_same(scene::load_gaussian_scene(v3), scene::load_gaussian_scene(v4), 0.0f);
 }
 
 using lfd::test::gzip;
 
 TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
   const fs::path v3 = test::fixture_scene("three-points.spz");
-  const GaussianScene expected = load_scene(v3);
+  const scene::GaussianScene expected = scene::load_gaussian_scene(v3);
   const std::string raw = gunzip(read_bytes(v3));
   ASSERT_EQ(raw.size(), 211u);
   // Same payload with version 2 and rotations re-encoded as v2 bytes: xyz of the file-frame
@@ -157,7 +157,7 @@ TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
   v2 += raw.substr(16 + 27 + 3 + 9 + 9 + 12);
   const fs::path path = temp_path("three-points-v2.spz");
   std::ofstream(path, std::ios::binary) << gzip(v2);
-  const GaussianScene got = load_scene(path);
+  const scene::GaussianScene got = scene::load_gaussian_scene(path);
   ASSERT_EQ(got.size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
     EXPECT_EQ(got.positions[i], expected.positions[i]);

@@ -24,7 +24,7 @@ display::Calibration test_display() {
                                  "LKG-PORT-portrait.visual.json");
 }
 
-render::GaussianScene test_scene() {
+scene::GaussianScene test_scene() {
   render::SceneGeneratorOptions o;
   o.count = 3000;
   o.sh_degree = 3;
@@ -45,7 +45,7 @@ size_t needed_bytes(size_t gaussians, int sh_degree) {
 
 TEST(LightFieldFrameFit, ASceneAboveTheFreeMemoryIsShownAtTheLargestShDegreeThatFits) {
   gpu::HeadlessContext context;
-  const render::GaussianScene scene = test_scene();
+  const scene::GaussianScene scene = test_scene();
   gpu::GlInfo info = context.info();
   info.free_memory_bytes = (long long)needed_bytes(scene.size(), 1);  // degree 2 and 3 do not fit
   LightFieldFrame frame(scene, test_display(), info);
@@ -82,7 +82,7 @@ TEST(LightFieldFrameFit, ASceneAboveTheMemoryEvenAtDegreeZeroIsRefusedWithTheNum
 
 TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   gpu::HeadlessContext context;
-  const render::GaussianScene scene = test_scene();
+  const scene::GaussianScene scene = test_scene();
   ViewerSettings s = small_settings();
   s.g2lf.precision = render::PlanePrecision::kF32;
   const FramePlan plan = plan_frame(test_display(), render::frame_scene(scene), s);

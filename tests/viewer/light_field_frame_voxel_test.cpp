@@ -11,10 +11,10 @@
 #include "render/image_metrics.hpp"
 #include "util/error.hpp"
 #include "viewer/light_field_frame.hpp"
-#include "viewer/viewer_scene.hpp"
+#include "scene/scene.hpp"
 #include "voxel/v2lf.hpp"
 #include "voxel/voxel_generator.hpp"
-#include "voxel/voxel_io.hpp"
+#include "scene/voxel_io.hpp"
 #include "voxel/voxel_quilt.hpp"
 
 namespace lfd::viewer {
@@ -25,7 +25,7 @@ display::Calibration test_display() {
                                  "LKG-PORT-portrait.visual.json");
 }
 
-voxel::VoxelScene test_scene() {
+scene::VoxelScene test_scene() {
   voxel::VoxelGeneratorOptions o;
   o.detail_level = 5;
   return voxel::generate_voxel_scene(o);
@@ -43,7 +43,7 @@ ViewerSettings small_settings(Method method) {
 
 TEST(LightFieldFrameVoxels, QuiltsAreTheCpusForBothMethods) {
   gpu::HeadlessContext context;
-  const voxel::VoxelScene scene = test_scene();
+  const scene::VoxelScene scene = test_scene();
   LightFieldFrame frame(scene, test_display(), context.info());
   EXPECT_TRUE(frame.shows_voxels());
   const render::CameraSpec camera = voxel::frame_voxel_scene(scene);
@@ -75,16 +75,16 @@ TEST(LightFieldFrameVoxels, TheLoaderTellsVoxelsFromGaussians) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "lfd_viewer_scene_test";
   std::filesystem::create_directories(dir);
   const std::filesystem::path voxels = dir / "scene.voxels";
-  voxel::save_voxel_scene(voxels, test_scene());
-  const ViewerScene loaded = load_viewer_scene(voxels.string());
-  EXPECT_TRUE(loaded.voxels());
+  scene::save_voxel_scene(voxels, test_scene());
+  const scene::Scene loaded = scene::load_scene(voxels.string());
+  EXPECT_EQ(loaded.kind(), scene::SceneKind::kVoxels);
   EXPECT_EQ(loaded.size(), test_scene().size());
-  EXPECT_NE(loaded.describe().find("voxels"), std::string::npos);
-  const ViewerScene gaussians =
-      load_viewer_scene((std::filesystem::path(LFD_SOURCE_DIR) / "data" / "scenes" / "demo.ply").string());
-  EXPECT_FALSE(gaussians.voxels());
-  EXPECT_NE(gaussians.describe().find("Gaussians"), std::string::npos);
-  EXPECT_THROW(load_viewer_scene((dir / "missing.voxels").string()), InputError);
+  EXPECT_STREQ(loaded.primitives(), "voxels");
+  const scene::Scene gaussians =
+      scene::load_scene((std::filesystem::path(LFD_SOURCE_DIR) / "data" / "scenes" / "demo.ply").string());
+  EXPECT_EQ(gaussians.kind(), scene::SceneKind::kGaussians);
+  EXPECT_STREQ(gaussians.primitives(), "Gaussians");
+  EXPECT_THROW(scene::load_scene((dir / "missing.voxels").string()), InputError);
   std::filesystem::remove_all(dir);
 }
 

@@ -8,7 +8,7 @@
 #include <tuple>
 
 #include "tests/test_data.hpp"
-#include "voxel/voxel_io.hpp"
+#include "scene/voxel_io.hpp"
 
 namespace lfd::voxel {
 namespace {
@@ -35,7 +35,7 @@ std::set<std::tuple<uint32_t, uint32_t, uint32_t, int>> fixture_leaves() {
   return out;
 }
 
-void expect_fixture(const VoxelScene& v, const std::string& which) {
+void expect_fixture(const scene::VoxelScene& v, const std::string& which) {
   SCOPED_TRACE(which);
   EXPECT_EQ(v.scene_center, glm::vec3(0.5f, -1.0f, 2.0f));
   EXPECT_EQ(v.scene_extent, 4.0f);
@@ -72,8 +72,8 @@ TEST(SvrasterConverter, SyntheticCheckpointRoundTripsThroughTheReader) {
                               " " + (fs::path(LFD_SOURCE_DIR) / "scripts/svraster_to_voxels.py").string() + " " +
                               dir.string();
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  expect_fixture(load_voxel_scene(dir / "plain.voxels"), "plain");
-  expect_fixture(load_voxel_scene(dir / "quantized.voxels"), "quantized");
+  expect_fixture(scene::load_voxel_scene(dir / "plain.voxels"), "plain");
+  expect_fixture(scene::load_voxel_scene(dir / "quantized.voxels"), "quantized");
   fs::remove_all(dir);
 }
 

@@ -20,7 +20,7 @@ namespace lfd::voxel {
 namespace {
 
 // The child of `first`..`first + 7` whose box holds `p`.
-size_t child_holding(const VoxelScene& s, size_t first, const glm::vec3& p) {
+size_t child_holding(const scene::VoxelScene& s, size_t first, const glm::vec3& p) {
   for (size_t c = first; c < first + 8; ++c) {
     const glm::vec3 lo = s.voxel_min(c), hi = lo + s.voxel_size(c);
     if (glm::all(glm::greaterThanEqual(p, lo)) && glm::all(glm::lessThanEqual(p, hi))) return c;
@@ -31,7 +31,7 @@ size_t child_holding(const VoxelScene& s, size_t first, const glm::vec3& p) {
 TEST(VoxelSplit, ChildrenKeepTheDensityFieldAtRandomPoints) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> density(-5.0f, 20.0f), unit(0.0f, 1.0f);
-  VoxelScene s = testing::empty_scene();
+  scene::VoxelScene s = testing::empty_scene();
   s.scene_extent = 4.0f;
   testing::add_voxel(s, {5, 2, 7}, 3, 0.0f, {0.2f, 0.4f, 0.6f});
   for (float& d : s.corner_density[0]) d = density(rng);
@@ -56,7 +56,7 @@ TEST(VoxelSplit, ChildrenKeepTheDensityFieldAtRandomPoints) {
 }
 
 TEST(VoxelSplit, ChildrenTileTheParent) {
-  VoxelScene s = testing::empty_scene();
+  scene::VoxelScene s = testing::empty_scene();
   testing::add_voxel(s, {1, 0, 1}, 1, 3.0f, {1, 0, 0});
   const size_t first = append_children(s, 0, s);
   glm::vec3 lo(1e9f), hi(-1e9f);
@@ -70,7 +70,7 @@ TEST(VoxelSplit, ChildrenTileTheParent) {
 }
 
 struct Fixture {
-  VoxelScene scene;
+  scene::VoxelScene scene;
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
   ImageF truth;

@@ -17,7 +17,7 @@ namespace lfd::voxel {
 namespace {
 
 struct Fixture {
-  VoxelScene scene;
+  scene::VoxelScene scene;
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
   ImageF truth;

@@ -14,7 +14,7 @@
 namespace lfd::voxel {
 namespace {
 
-bool inside_a_voxel(const VoxelScene& s, const glm::vec3& p) {
+bool inside_a_voxel(const scene::VoxelScene& s, const glm::vec3& p) {
   for (size_t i = 0; i < s.size(); ++i) {
     const glm::vec3 lo = s.voxel_min(i), hi = lo + s.voxel_size(i);
     if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y && p.z >= lo.z && p.z <= hi.z) return true;
@@ -26,7 +26,7 @@ TEST(VoxelDefaultCamera, EveryViewCameraOfTheDefaultCameraIsOutsideEveryVoxel) {
   for (int level : {6, 8}) {
     VoxelGeneratorOptions o;
     o.detail_level = level;
-    const VoxelScene s = generate_voxel_scene(o);
+    const scene::VoxelScene s = generate_voxel_scene(o);
     const render::CameraSpec spec = frame_voxel_scene(s);
     EXPECT_FALSE(inside_a_voxel(s, spec.position)) << "level " << level;
     const render::Camera base = render::camera_from_spec(spec, 32, 32);
@@ -40,7 +40,7 @@ TEST(VoxelDefaultCamera, EveryViewCameraOfTheDefaultCameraIsOutsideEveryVoxel) {
 TEST(VoxelDefaultCamera, PerViewAndV2lfQuiltsOfTheDefaultCameraAgree) {
   VoxelGeneratorOptions o;  // level 8: its old default camera sat within the shell's thickness
   o.sh_degree = 0;
-  VoxelScene s = generate_voxel_scene(o);
+  scene::VoxelScene s = generate_voxel_scene(o);
   s.supersampling = 1.0f;
   const render::CameraSpec spec = frame_voxel_scene(s);
   const render::Camera base = render::camera_from_spec(spec, 64, 64);

@@ -11,14 +11,14 @@
 namespace lfd::voxel {
 namespace {
 
-VoxelScene small_scene() {
+scene::VoxelScene small_scene() {
   VoxelGeneratorOptions o;
   o.detail_level = 6;
   return generate_voxel_scene(o);
 }
 
 TEST(VoxelGenerator, MakesSparseLeavesAtSeveralLevelsWithACoarseOuterShell) {
-  const VoxelScene s = small_scene();
+  const scene::VoxelScene s = small_scene();
   ASSERT_GT(s.size(), 1000u);
   EXPECT_LT(s.size(), size_t(1) << 18);  // 64^3 = 262144 if it were dense at level 6
   std::set<int> levels(s.level.begin(), s.level.end());
@@ -29,13 +29,13 @@ TEST(VoxelGenerator, MakesSparseLeavesAtSeveralLevelsWithACoarseOuterShell) {
   for (size_t i = 0; i < s.size(); ++i)
     if (glm::length(s.voxel_center(i)) > 6.0f) shell_level = std::min(shell_level, int(s.level[i]));
   EXPECT_LT(shell_level, 6);
-  check_voxel_scene(s, "generated");
+  scene::check_voxel_scene(s, "generated");
 }
 
 TEST(VoxelGenerator, SameSeedSameSceneOtherSeedOtherScene) {
   VoxelGeneratorOptions o;
   o.detail_level = 5;
-  const VoxelScene a = generate_voxel_scene(o), b = generate_voxel_scene(o);
+  const scene::VoxelScene a = generate_voxel_scene(o), b = generate_voxel_scene(o);
   EXPECT_EQ(a.octree_index, b.octree_index);
   EXPECT_EQ(a.sh, b.sh);
   o.seed = 2;
@@ -43,7 +43,7 @@ TEST(VoxelGenerator, SameSeedSameSceneOtherSeedOtherScene) {
 }
 
 TEST(VoxelGenerator, TheDefaultCameraSeesOpaqueContent) {
-  const VoxelScene s = small_scene();
+  const scene::VoxelScene s = small_scene();
   const render::CameraSpec spec = frame_voxel_scene(s);
   const render::Camera camera = render::camera_from_spec(spec, 48, 32);
   VoxelRenderSettings settings;

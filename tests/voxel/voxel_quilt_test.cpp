@@ -9,7 +9,7 @@ namespace lfd::voxel {
 namespace {
 
 TEST(VoxelQuilt, EachTileIsItsViewAndANearVoxelShowsParallax) {
-  VoxelScene s = testing::empty_scene();
+  scene::VoxelScene s = testing::empty_scene();
   testing::add_voxel(s, {3, 3, 1}, 3, 50.0f, {1, 0, 0});  // edge 1/8, in front of the centre
   const render::Camera base = render::make_look_at_camera({0, 0, -2}, {0, 0, 0}, {0, -1, 0}, 0.6f, 24, 24);
   const render::QuiltGeometry g = render::make_quilt_geometry(base, 2.0f, 40.0f, 3);

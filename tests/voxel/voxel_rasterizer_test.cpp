@@ -26,23 +26,23 @@ glm::vec3 centre_rgb(const render::RasterImage& img) {
 }
 
 TEST(ExpLinear11, IsLinearAbove1p1AndExponentialBelowMeetingAt1p1) {
-  EXPECT_FLOAT_EQ(exp_linear_11(2.0f), 2.0f);
-  EXPECT_NEAR(exp_linear_11(0.0f), 1.1f * std::exp(-1.0f), 1e-6f);
-  EXPECT_NEAR(exp_linear_11(1.1f - 1e-4f), 1.1f, 2e-4f);
-  EXPECT_NEAR(exp_linear_11(-5.0f), std::exp(-5.0f / 1.1f - 1.0f + std::log(1.1f)), 1e-7f);
+  EXPECT_FLOAT_EQ(scene::exp_linear_11(2.0f), 2.0f);
+  EXPECT_NEAR(scene::exp_linear_11(0.0f), 1.1f * std::exp(-1.0f), 1e-6f);
+  EXPECT_NEAR(scene::exp_linear_11(1.1f - 1e-4f), 1.1f, 2e-4f);
+  EXPECT_NEAR(scene::exp_linear_11(-5.0f), std::exp(-5.0f / 1.1f - 1.0f + std::log(1.1f)), 1e-7f);
 }
 
 TEST(Trilinear, CornerBitsAreXYZAndTheCentreIsTheMean) {
   std::array<float, 8> c{};
   for (int i = 0; i < 8; ++i) c[size_t(i)] = float(i);
-  EXPECT_FLOAT_EQ(trilinear(c, {1, 0, 0}), 4.0f);
-  EXPECT_FLOAT_EQ(trilinear(c, {0, 1, 0}), 2.0f);
-  EXPECT_FLOAT_EQ(trilinear(c, {0, 0, 1}), 1.0f);
-  EXPECT_FLOAT_EQ(trilinear(c, {0.5f, 0.5f, 0.5f}), 3.5f);
+  EXPECT_FLOAT_EQ(scene::trilinear(c, {1, 0, 0}), 4.0f);
+  EXPECT_FLOAT_EQ(scene::trilinear(c, {0, 1, 0}), 2.0f);
+  EXPECT_FLOAT_EQ(scene::trilinear(c, {0, 0, 1}), 1.0f);
+  EXPECT_FLOAT_EQ(scene::trilinear(c, {0.5f, 0.5f, 0.5f}), 3.5f);
 }
 
 TEST(VoxelRasterizer, ABoxOfConstantDensityTransmitsExpOfMinus100SigmaChord) {
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   const float sigma = 0.04f;  // below 1.1: the exponential branch of the activation
   add_voxel(s, {1, 1, 1}, 2, raw_density_for(sigma), {1, 1, 1});  // edge 0.25: tau = 1
   const glm::vec3 centre = s.voxel_center(0);
@@ -61,7 +61,7 @@ TEST(VoxelRasterizer, ABoxOfConstantDensityTransmitsExpOfMinus100SigmaChord) {
 }
 
 TEST(VoxelRasterizer, DegreeZeroColourIsShPlusHalfAndTheBackgroundFillsTheRest) {
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   add_voxel(s, {0, 0, 0}, 0, raw_density_for(0.05f), {0.2f, 0.6f, 0.9f});  // the root cell
   const glm::vec3 bg(0.1f, 0.3f, 0.5f);
   VoxelRenderSettings settings;
@@ -73,14 +73,14 @@ TEST(VoxelRasterizer, DegreeZeroColourIsShPlusHalfAndTheBackgroundFillsTheRest) 
 }
 
 TEST(VoxelRasterizer, AlphaIsCappedAt0p99999) {
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   add_voxel(s, {0, 0, 0}, 0, 50.0f, {1, 0, 0});  // tau = 5000
   const auto img = rasterize_voxels(s, camera_through({0, 0, -3}, {0, 0, 0}));
   EXPECT_NEAR(centre_transmittance(img), 1e-5f, 1e-7f);  // 0.99999f is one float step off
 }
 
 TEST(VoxelRasterizer, VoxelsBelowAlpha1eMinus5AreSkipped) {
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   // sigma such that 1 - exp(-100 sigma) is 0.5e-5: composited, it would leave T = 1 - 0.5e-5.
   add_voxel(s, {0, 0, 0}, 0, raw_density_for(0.5e-7f), {1, 1, 1});
   const auto img = rasterize_voxels(s, camera_through({0, 0, -3}, {0, 0, 0}));
@@ -89,7 +89,7 @@ TEST(VoxelRasterizer, VoxelsBelowAlpha1eMinus5AreSkipped) {
 }
 
 TEST(VoxelRasterizer, TheRayStopsOnceTransmittanceFallsBelow1eMinus4) {
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   const float edge = 0.5f;  // level 1
   const float front_t = 9e-5f;
   add_voxel(s, {0, 0, 0}, 1, raw_density_for(-std::log(front_t) / (100.0f * edge)), {1, 0, 0});
@@ -104,7 +104,7 @@ TEST(RayOrder, FrontVoxelOccludesTheBackOneFromEveryOctant) {
   // The 8 children of the root, opaque, each its own colour; looking along each octant's
   // diagonal through the nearest child's centre, that child must be what the pixel shows.
   for (int octant = 0; octant < 8; ++octant) {
-    VoxelScene s = empty_scene();
+    scene::VoxelScene s = empty_scene();
     for (uint32_t child = 0; child < 8; ++child)
       add_voxel(s, {child >> 2 & 1u, child >> 1 & 1u, child & 1u}, 1, 50.0f,
                 {float(child >> 2 & 1u), float(child >> 1 & 1u), float(child & 1u)});
@@ -122,7 +122,7 @@ TEST(RayOrder, FrontVoxelOccludesTheBackOneFromEveryOctant) {
 TEST(RayOrder, CoarseAndFineLeavesSortFrontToBackAlongEachAxis) {
   // A level-1 leaf at x low and two level-2 leaves at x high: for a ray going +x the coarse one
   // comes first, for -x last.
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   add_voxel(s, {0, 0, 0}, 1, 0.0f, {1, 1, 1});
   add_voxel(s, {2, 0, 0}, 2, 0.0f, {1, 1, 1});
   add_voxel(s, {3, 0, 0}, 2, 0.0f, {1, 1, 1});
@@ -134,7 +134,7 @@ TEST(RayOrder, CoarseAndFineLeavesSortFrontToBackAlongEachAxis) {
 }
 
 TEST(VoxelRasterizer, SupersamplingKeepsAUniformImageUniform) {
-  VoxelScene s = empty_scene();
+  scene::VoxelScene s = empty_scene();
   add_voxel(s, {0, 0, 0}, 0, 50.0f, {0.3f, 0.6f, 0.9f});
   VoxelRenderSettings settings;
   settings.supersampling = 1.5f;

@@ -7,7 +7,7 @@
 #include "render/camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/rasterizer_cpu.hpp"
-#include "render/scene_io.hpp"
+#include "scene/gaussian_io.hpp"
 #include "tests/test_data.hpp"
 #include "voxel/voxel_rasterizer.hpp"
 #include "voxel/voxelize.hpp"
@@ -23,10 +23,10 @@ ImageF to_image(const render::RasterImage& r) {
 
 TEST(VoxelizeGuitar, TheCentreViewKeepsItsStructure) {
   LFD_REQUIRE_SHARED_FILE("scenes/guitar.compressed.ply");
-  const render::GaussianScene gaussians = render::load_scene(test::shared_data() / "scenes/guitar.compressed.ply");
+  const scene::GaussianScene gaussians = scene::load_gaussian_scene(test::shared_data() / "scenes/guitar.compressed.ply");
   VoxelizeOptions options;
   options.max_level = 6;
-  const VoxelScene voxels = voxelize(gaussians, options);
+  const scene::VoxelScene voxels = voxelize(gaussians, options);
   // The camera of docs/voxels.md's measurements (gcam.json), at 64x64.
   const render::Camera camera = render::make_look_at_camera({0.07f, -2.1f, -5.0f}, {0.07f, -2.1f, 0.2f}, {0, -1, 0},
                                                             glm::radians(40.0f), 64, 64);

@@ -11,7 +11,7 @@
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
-#include "render/ply_writer.hpp"
+#include "scene/ply_writer.hpp"
 #include "render/scene_generator.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
@@ -30,7 +30,7 @@ display::Calibration test_display() {
   return display::read_calibration(fs::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json");
 }
 
-render::GaussianScene test_scene() {
+scene::GaussianScene test_scene() {
   render::SceneGeneratorOptions o;
   o.count = 3000;
   o.sh_degree = 1;
@@ -56,7 +56,7 @@ Files write_inputs(const ViewerSettings& s, const std::string& tag) {
   f.scene = kDir / "scene.ply";
   // Written every time: a scene left in the temporary folder by another build (another generator)
   // would not be the one the headless render draws.
-  write_text_atomic(f.scene, render::encode_ply(test_scene()));
+  write_text_atomic(f.scene, scene::encode_ply(test_scene()));
   f.settings = kDir / (tag + ".settings.json");
   save_settings(f.settings, s);
   f.camera = kDir / "cam.json";
