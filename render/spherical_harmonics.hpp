@@ -1,11 +1,12 @@
 #pragma once
-// View-dependent colour from real SH of degree 0-3 (reference/gaussian-splatting.md section 6,
-// forward.cu computeColorFromSH): constants and signs of the reference, +0.5, clamped at 0 only.
+// View-dependent colour from real SH of degree 0-3 (forward.cu computeColorFromSH;
+// docs/rendering.md "The CPU reference rasterizer"): constants and signs of the reference,
+// +0.5, clamped at 0 only.
 #include <glm/glm.hpp>
 
 namespace lfd::render {
 
-// The degree-0 SH basis constant, 1 / (2 sqrt(pi)) (reference section 6). The one definition:
+// The degree-0 SH basis constant, 1 / (2 sqrt(pi)) (auxiliary.h's SH_C0). The one definition:
 // gpu/shaders/sh_color.glsl carries its GLSL twin.
 inline constexpr float kShC0 = 0.28209479177387814f;
 
