@@ -26,6 +26,8 @@ TEST(LensModel, ReproducesThePublishedShaderUniforms) {
   EXPECT_NEAR(gen2.pitch_periods(), 673.46088569750157, 1e-9);
   EXPECT_NEAR(gen2.tilt(), -0.074780801514116493, 1e-15);
   const LensModel gen1(load("LKG-2K-04409.visual.json"));
+  // Not published; the same formulas in double precision: pitch' = 47.56401443481445 (2560 / 338)
+  // cos(atan(1 / -5.48)) = 354.39586, tilt = 1600 / (2560 x -5.48) = -0.11405109.
   EXPECT_NEAR(gen1.pitch_periods(), 354.39586, 1e-5);
   EXPECT_NEAR(gen1.tilt(), -0.11405109, 1e-8);
 }

@@ -31,6 +31,8 @@ TEST(SceneFormats, ThreePointsPlyMatchesTheReferenceTable) {
   const GaussianScene s = load_scene(kScenes / "three-points.ply");
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s.sh_degree, 3);
+  // The file's values activated by hand (rgb = 0.5 + C0 f_dc, opacity = sigmoid, scale = exp;
+  // docs/rendering.md "Stored parameters"), rounded to the digits shown.
   EXPECT_NEAR(s.positions[0][0], 2.00785f, 1e-4);
   EXPECT_NEAR(s.positions[2][1], -1.01235f, 1e-4);
   EXPECT_NEAR(rgb_of(s, 0, 0), 0.8125f, 1e-3);
