@@ -18,7 +18,7 @@ namespace lfd::apps {
 
 namespace {
 
-// The real 16" Gen2 unit LKG-APW92011 (reference/looking-glass.md 2.5), so the benchmark
+// The real 16" Gen2 unit LKG-APW92011 (docs/display-model.md "The test vector"), so the benchmark
 // needs no input files.
 constexpr const char* kBenchDisplay =
     R"({"serial":"LKG-APW92011","pitch":{"value":50.0693473815918},

@@ -1,5 +1,5 @@
 // lfd device: the Looking Glass units attached to this machine and their factory calibration
-// (reference/looking-glass.md section 6, docs/devices.md). Thin: device/ does the work.
+// (docs/devices.md). Thin: device/ does the work.
 #include <filesystem>
 #include <iostream>
 

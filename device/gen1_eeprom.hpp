@@ -1,8 +1,9 @@
 #pragma once
-// The Gen1 Looking Glass calibration EEPROM over USB HID (reference/looking-glass.md section
-// 6.1): a feature report [0, 0 (read), page hi, page lo, 64 x 0] asks for one 64-byte page; the
-// reply is an input report [buttons, command echo, page hi, page lo, 64 bytes]. Page 0 starts
-// with the big-endian length L of the JSON text that follows; pages 0 .. ceil((L+4)/64)-1 hold it.
+// The Gen1 Looking Glass calibration EEPROM over USB HID (docs/devices.md; after
+// lonetech/LookingGlass lgeeprom.py): a feature report [0, 0 (read), page hi, page lo, 64 x 0]
+// asks for one 64-byte page; the reply is an input report [buttons, command echo, page hi,
+// page lo, 64 bytes]. Page 0 starts with the big-endian length L of the JSON text that follows;
+// pages 0 .. ceil((L+4)/64)-1 hold it.
 //
 // The device sends button reports all the time, so replies are matched on the echoed command and
 // page, and everything else is skipped; a 68-byte report may arrive as 64 + 4 bytes and is

@@ -1,5 +1,5 @@
 #pragma once
-// HidTransport on hidapi's hidraw backend (reference/looking-glass.md section 6.1: the libusb
+// HidTransport on hidapi's hidraw backend (docs/devices.md "Sources": the libusb
 // backend detaches the kernel HID driver, the hidraw one does not).
 #include <memory>
 #include <vector>

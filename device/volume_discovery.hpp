@@ -1,6 +1,6 @@
 #pragma once
 // Looking Glass units after Gen1 carry their calibration as LKG_calibration/visual.json on a USB
-// mass-storage volume (reference/looking-glass.md sections 6.2, 6.3). The volumes are found in
+// mass-storage volume (docs/devices.md "Sources"). The volumes are found in
 // the mount table (/proc/self/mounts, else /proc/mounts), and in the folders desktops mount
 // removable media under (/media/*, /media/<user>/*, /run/media/<user>/*, /mnt/*). A volume named
 // after a serial ("LKG-...") without a readable calibration is reported too, with the reason.

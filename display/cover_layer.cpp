@@ -16,7 +16,8 @@ struct Family {
 
 // Thicknesses are estimates, not measurements: Looking Glass publishes none. Gen1 units and the
 // Portrait are a visibly thick PMMA block whose depth is a large part of the unit's (the image
-// floats inside it; reference/display-optics.md 1.3: the block "changes the field of view");
+// floats inside it; Looking Glass's forum, "pixel layout": the block widens the field of view;
+// docs/display-model.md "The cover layer");
 // Gen2 keeps a thinner block; Gen3 and Go are flat panels behind a cover glass (n = 1.52,
 // soda-lime). A measured value belongs in calibration.json's "cover". What an error in t costs
 // is measured in docs/calibration.md (`lfd bench calibration --solver-without-cover`).

@@ -1,6 +1,6 @@
 #pragma once
 // The lens parameters of one display unit, as Looking Glass stores them in visual.json
-// (reference/looking-glass.md section 2). Units follow Looking Glass: pitch in lenticules per
+// (docs/file-formats.md "visual.json"). Units follow Looking Glass: pitch in lenticules per
 // inch, slope as "run over rise", center in lens periods, viewCone in degrees.
 #include <string>
 #include <vector>

@@ -12,9 +12,10 @@ LensModel::LensModel(const DisplayCalibration& calibration, CorrectionField corr
   const ShaderTerms<double> terms = shader_terms(c.geometry(), c.pitch_lpi, c.slope);
   pitch_periods_ = terms.pitch_periods;
   tilt_ = terms.tilt;
-  // 3.5: on a BGR panel (flipSubp) red sits at the third position and blue at the first.
+  // On a BGR panel (flipSubp) red sits at the third position and blue at the first
+  // (docs/display-model.md "Vendor interlacing rules").
   if (c.flip_subp) physical_index_ = {2, 1, 0};
-  // 2.3: cell offsets are in pixel units; normalise once into screen units.
+  // Cell offsets are in pixel units; normalise once into screen units (same section).
   for (const auto& cell : c.subpixel_cells) {
     const double w = c.screen_w, h = c.screen_h;
     cell_offsets_.push_back({ScreenUV{cell.r_x / w, cell.r_y / h},
@@ -33,7 +34,7 @@ ScreenUV LensModel::subpixel_uv(int x, int row_top_down, int channel) const {
     p.u += physical_index_[channel] / (3.0 * calibration_.screen_w);
     return p;
   }
-  // 2.3: the cell pattern uses bottom-up row indices (the parity differs from top-down).
+  // The cell pattern uses bottom-up row indices (the parity differs from top-down).
   const int j = calibration_.screen_h - 1 - row_top_down;
   const ScreenUV& d = cell_offsets_[size_t(cell_index(x, j)) % cell_offsets_.size()][channel];
   p.u += d.u;

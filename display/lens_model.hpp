@@ -1,6 +1,6 @@
 #pragma once
-// The one lens model everything uses (docs/display-model.md "Phase and view",
-// reference/looking-glass.md section 3):
+// The one lens model everything uses (docs/display-model.md "Phase and view" and
+// "Vendor interlacing rules"):
 //   A(u, v) = (u + v * tilt) * pitch' - center + w(u, v)
 // with pitch' and tilt from shader_terms() (lens_relations.hpp),
 // per-channel subpixel positions (classic 1/3-pixel stride, BGR via flipSubp, or Gen3 cells),
@@ -70,7 +70,7 @@ class LensModel {
   CorrectionField correction_;
   double pitch_periods_ = 0;
   double tilt_ = 0;
-  // The Gen3 cell of pixel x in bottom-up row j (reference/looking-glass.md 2.3).
+  // The Gen3 cell of pixel x in bottom-up row j (docs/display-model.md "Vendor interlacing rules").
   int cell_index(int x, int j) const;
 
   std::array<int, 3> physical_index_{0, 1, 2};  // flipSubp: R and B swap positions

@@ -1,9 +1,10 @@
 #pragma once
-// The physical relations of a slanted lenticular display, each defined once (docs/display-model.md,
-// reference/looking-glass.md 3.1). The lens model, the interlacer, the optics simulator, the
-// calibration solver and its coarse start, validation and the demo all call these. They are
-// templates so the solver can differentiate through them with ceres::Jet; nothing here needs
-// Ceres: T only has to support arithmetic and the unqualified sqrt/tan found by ADL.
+// The physical relations of a slanted lenticular display, each defined once (docs/display-model.md;
+// the shader terms as LKG-Toolkit's Calibration.cs computes them). The lens model, the interlacer,
+// the optics simulator, the calibration solver and its coarse start, validation and the demo all
+// call these. They are templates so the solver can differentiate through them with ceres::Jet;
+// nothing here needs Ceres: T only has to support arithmetic and the unqualified sqrt/tan found
+// by ADL.
 #include <cmath>
 #include <numbers>
 
@@ -77,7 +78,7 @@ T line_tilt(const ScreenGeometry& g, const T& tilt) {
 // The seen view fraction, unwrapped: a lens at panel point P sends view fraction f toward a
 // viewer at C (display frame, metres, y up, z toward the viewer) with
 //   f_seen = 0.5 + ((Cx - Px) + (Cy - Py) line_tilt) / (Cz - Pz) / (2 tan(viewCone / 2)).
-// Only the offset across the lens lines counts (reference/display-optics.md 2.1 item 6): the
+// Only the offset across the lens lines counts (a lenticular lens has no power along them): the
 // vertical offset is worth line_tilt times as much as a horizontal one, which over the height of a
 // screen seen from half a metre is several hundredths of a period (a form with Cx - Px alone leaves
 // it out: docs/display-model.md "What a viewer sees"). f_seen < 0 or >= 1 lies outside the cone,

@@ -1,6 +1,6 @@
 #pragma once
-// The CPU reference interlacer (docs/display-model.md "Phase and view";
-// reference/looking-glass.md 3.12): for each panel subpixel, its view fraction from the lens
+// The CPU reference interlacer (docs/display-model.md "Phase and view" and
+// "Vendor interlacing rules"): for each panel subpixel, its view fraction from the lens
 // model (correction field and Gen3 cells included), a view index (nearest, or a linear blend of
 // the two nearest view centres), and a bilinear lookup inside that view's quilt tile
 // (aspect/overscan and viewPortion handled as Looking Glass software does). The GLSL
@@ -36,11 +36,11 @@ struct SubpixelSample {
   double tile_u = 0, tile_v = 0;
 };
 
-// The aspect fit (looking-glass.md 3.8) of a view of aspect `view_aspect` (width / height) on
-// the panel: where pixel (x, row) falls in it, (u, v) in [0, 1] with v up, or inside = false in
-// the black bars (the crop under overscan). The lens phase uses the unscaled pixel position;
-// only this lookup is scaled. Interlacer::sample_for and the direct panel pass
-// (interlace/direct_panel.hpp) both call it.
+// The aspect fit (docs/display-model.md "Vendor interlacing rules") of a view of aspect
+// `view_aspect` (width / height) on the panel: where pixel (x, row) falls in it, (u, v) in [0, 1]
+// with v up, or inside = false in the black bars (the crop under overscan). The lens phase uses the
+// unscaled pixel position; only this lookup is scaled. Interlacer::sample_for and the direct panel
+// pass (interlace/direct_panel.hpp) both call it.
 // The aspect fit as the scale of (u - 1/2, v - 1/2): one of them is 1.
 struct AspectFit {
   double scale_u = 1, scale_v = 1;
@@ -61,8 +61,8 @@ inline TilePoint tile_point(const display::LensModel& lens, const AspectFit& fit
   return t;
 }
 
-// The fringe correction (looking-glass.md 3.11): the gain of panel row `row_top_down`, every
-// other row darkened by |fringe|.
+// The fringe correction (docs/display-model.md "Vendor interlacing rules"): the gain of panel
+// row `row_top_down`, every other row darkened by |fringe|.
 double fringe_gain(const display::DisplayCalibration& calibration, int row_top_down);
 
 class Interlacer {

@@ -1,6 +1,6 @@
 #pragma once
 // The tiling of a quilt image on disk: from the `_qs{C}x{R}a{aspect}` in its name unless the
-// user gives it (looking-glass.md section 5).
+// user gives it (docs/file-formats.md "Quilts").
 #include <filesystem>
 #include <optional>
 

@@ -1,6 +1,6 @@
 #pragma once
 // The `_qs{C}x{R}a{aspect}` quilt name convention (docs/play.md "Conventions";
-// ../shared/reference/looking-glass.md section 5: the first number is the columns, Alice/LG's
+// docs/file-formats.md "Quilts": the first number is the columns, Alice/LG's
 // regex `_qs(\d+)x(\d+)a(\d+.?\d*)`), read without a regex and bounded, so a hostile name
 // cannot overflow; and the check that a name does not lie about the file it names.
 #include <optional>

@@ -1,6 +1,6 @@
-// Stage 3 of the reference forward pass (forward.cu renderCUDA; reference/gaussian-splatting.md
-// section 4.3). Each pixel walks its tile's list front to back exactly as the CUDA thread does;
-// here the loop runs Gaussian-outer, pixel-inner over a tile for cache locality, which leaves
+// Stage 3 of the reference forward pass (forward.cu renderCUDA; docs/rendering.md "The CPU
+// reference rasterizer"). Each pixel walks its tile's list front to back exactly as the CUDA thread
+// does; here the loop runs Gaussian-outer, pixel-inner over a tile for cache locality, which leaves
 // every pixel's sequence of operations unchanged.
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // Stage 3 of the 3DGS forward pass, per pixel (forward.cu renderCUDA;
-// reference/gaussian-splatting.md section 4.3): front-to-back alpha compositing of the tile's
+// docs/rendering.md "The CPU reference rasterizer"): front-to-back alpha compositing of the tile's
 // sorted list, C = sum_i c_i a_i prod_{j<i} (1 - a_j) with a_i = min(0.99, o_i exp(power)),
 // skipping power > 0 and a_i < 1/255 and stopping before T falls below 1e-4, exactly as the
 // CUDA thread does. The final transmittance is kept beside the colour: G2LF's sweeping planes

@@ -1,6 +1,6 @@
 #pragma once
 // A pinhole camera in the conventions of the 3DGS reference rasterizer
-// (reference/gaussian-splatting.md section 2): camera space +x right, +y down, +z forward,
+// (docs/rendering.md "Cameras and quilt geometry"): camera space +x right, +y down, +z forward,
 // pixel centres at integer coordinates, centred frustum plus an optional principal-point
 // shift (an off-axis frustum: the quilt's view cameras, docs/rendering.md).
 #include <array>
@@ -36,12 +36,12 @@ struct Camera {
     return world_to_camera * (p_world - position_world);
   }
   // The reference's full_proj_transform applied to a world point, divided by w + 1e-7
-  // (section 3.5): NDC x, y in [-1, 1] across the image; +y is down.
+  // (preprocessCUDA): NDC x, y in [-1, 1] across the image; +y is down.
   glm::vec2 project_ndc(const glm::vec3& p_world) const;
   // ndc2Pix: ((ndc + 1) * S - 1) / 2, so pixel (i, j) is centred at (i, j).
   glm::vec2 project_px(const glm::vec3& p_world) const;
-  // The 4x4 matrices of section 2 (column-major, GLM), with the principal-point shift in
-  // P[0][2], P[1][2]; for GL ports. view * world point = camera point.
+  // The reference's 4x4 matrices (getProjectionMatrix; column-major, GLM), with the
+  // principal-point shift in P[0][2], P[1][2]; for GL ports. view * world point = camera point.
   glm::mat4 view_matrix() const;
   glm::mat4 projection_matrix() const;
 };

@@ -1,5 +1,5 @@
 // Stage 1 of the reference forward pass (forward.cu preprocessCUDA, computeCov3D,
-// computeCov2D; reference/gaussian-splatting.md section 3), in float32 as the CUDA code.
+// computeCov2D; docs/rendering.md "The CPU reference rasterizer"), in float32 as the CUDA code.
 #include <algorithm>
 #include <cmath>
 
@@ -73,7 +73,7 @@ std::vector<ProjectedGaussian> preprocess(const scene::GaussianScene& scene, con
     const auto& p = scene.positions[i];
     const glm::vec3 mean(p[0], p[1], p[2]);
     const glm::vec3 t = camera.to_camera(mean);
-    if (t.z <= 0.2f) continue;  // in_frustum: near cull only (section 3.1)
+    if (t.z <= 0.2f) continue;  // in_frustum: near cull only (auxiliary.h)
 
     const glm::mat3 cov3d = covariance_3d(scene.scales[i], settings.scale_modifier, scene.rotations[i]);
     const glm::vec3 cov = covariance_2d(t, camera, cov3d, settings.dilation_px2);

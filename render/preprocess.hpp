@@ -1,6 +1,6 @@
 #pragma once
 // Stage 1 of the 3DGS forward pass, per Gaussian (diff-gaussian-rasterization forward.cu
-// preprocessCUDA; reference/gaussian-splatting.md section 3): near cull, 3D covariance from
+// preprocessCUDA; docs/rendering.md "The CPU reference rasterizer"): near cull, 3D covariance from
 // scale and rotation, EWA projection to a 2D conic with the +0.3 px^2 low-pass dilation, the
 // 3-sigma radius and the rectangle of 16x16 tiles it touches, and the SH colour seen from
 // the SH origin. Each Gaussian is independent, which is why this stage runs once per Gaussian
@@ -22,10 +22,10 @@ constexpr int kTileSize = 16;  // BLOCK_X = BLOCK_Y (config.h)
 // Settings of the whole forward pass (preprocess reads all but the background, blend that).
 struct RasterSettings {
   glm::vec3 background{0.0f};
-  float dilation_px2 = 0.3f;     // low-pass variance added to the 2D covariance (section 3.3)
+  float dilation_px2 = 0.3f;     // low-pass variance added to the 2D covariance (computeCov2D)
   float scale_modifier = 1.0f;
   int sh_degree = -1;            // -1: the scene's degree
-  // World point the SH directions are taken from; default: the camera centre (section 3.6).
+  // World point the SH directions are taken from; default: the camera centre (preprocessCUDA).
   // G2LF bakes the base camera's colours into planes rendered from the reference camera.
   std::optional<glm::vec3> sh_origin;
 };
@@ -41,7 +41,7 @@ struct ProjectedGaussian {
   glm::ivec2 rect_min{0}, rect_max{0};  // tile rectangle, max exclusive
 };
 
-// The 3D covariance R S S^T R^T of a Gaussian (section 3.2; scale linear, modifier multiplies
+// The 3D covariance R S S^T R^T of a Gaussian (computeCov3D; scale linear, modifier multiplies
 // it, quaternion (w, x, y, z)); also what voxelization spreads each Gaussian's mass with.
 glm::mat3 covariance_3d(const std::array<float, 3>& scale, float modifier, const std::array<float, 4>& q);
 

@@ -1,5 +1,5 @@
 #pragma once
-// Quilt conventions (reference/looking-glass.md section 5, docs/file-formats.md "Quilts"): V views
+// Quilt conventions (docs/file-formats.md "Quilts"): V views
 // in a C x R grid of tiles, view 0 (leftmost camera) in the bottom-left tile, views row-major
 // upward; integer tile size floor(W/C) x floor(H/R) anchored at the bottom-left corner (the rest is
 // the "viewPortion" margin); file names carry `_qs{C}x{R}a{aspect}`.

@@ -1,6 +1,6 @@
 #pragma once
 // The CPU reference rasterizer: the exact 3DGS forward pass of diff-gaussian-rasterization
-// (reference/gaussian-splatting.md sections 2-6), in its three stages:
+// (docs/rendering.md "The CPU reference rasterizer"), in its three stages:
 //   preprocess (per Gaussian) -> bin and sort (per 16x16 tile, by view-space depth) ->
 //   blend (per pixel, front to back).
 // All thresholds are the reference's: near cull z <= 0.2, 1.3 tan(fov/2) Jacobian clamp,

@@ -341,7 +341,7 @@ void fill_gaussian(scene::GaussianScene& scene, size_t i, const Component& c, st
   }
   if (scene.sh_degree >= 1) {
     // Degree 1 adds -C1 y sh1 + C1 z sh2 - C1 x sh3, (x, y, z) the direction from the camera
-    // to the Gaussian (reference section 6). sh1..3 = k (n_y, -n_z, n_x) adds C1 k when the
+    // to the Gaussian (computeColorFromSH). sh1..3 = k (n_y, -n_z, n_x) adds C1 k when the
     // view is head-on (direction = -n) and less at grazing views: a broad sheen that differs
     // between the views of a quilt.
     const float dir[3] = {n[1], -n[2], n[0]};

@@ -1,6 +1,7 @@
 #pragma once
-// View-dependent colour from real SH of degree 0-3 (reference/gaussian-splatting.md section 6,
-// forward.cu computeColorFromSH): constants and signs of the reference, +0.5, clamped at 0 only.
+// View-dependent colour from real SH of degree 0-3 (forward.cu computeColorFromSH;
+// docs/rendering.md "The CPU reference rasterizer"): constants and signs of the reference,
+// +0.5, clamped at 0 only.
 #include <glm/glm.hpp>
 
 #include "scene/sh_basis.hpp"

@@ -1,10 +1,10 @@
 #pragma once
-// Stage 2 of the 3DGS forward pass, per tile (rasterizer_impl.cu duplicateWithKeys, the radix
-// sort of (tile << 32 | depth) keys and identifyTileRanges; reference/gaussian-splatting.md
-// section 4.1-4.2): every projected Gaussian is listed once in each 16x16 tile its rectangle
-// touches, and each tile's list is ordered front to back by view-space depth, ties kept in
-// Gaussian order as the reference's stable sort does. Blending then walks one short list per
-// tile instead of every Gaussian per pixel.
+// Stage 2 of the 3DGS forward pass, per tile (rasterizer_impl.cu duplicateWithKeys, the radix sort
+// of (tile << 32 | depth) keys and identifyTileRanges; docs/rendering.md "The CPU reference
+// rasterizer"): every projected Gaussian is listed once in each 16x16 tile its rectangle touches,
+// and each tile's list is ordered front to back by view-space depth, ties kept in Gaussian order as
+// the reference's stable sort does. Blending then walks one short list per tile instead of every
+// Gaussian per pixel.
 #include <cstdint>
 #include <vector>
 

@@ -91,7 +91,7 @@ std::string html_page(const std::vector<ValidationCase>& cases, bool figures) {
       "X<sub>i</sub> = &Sigma;<sub>j&ne;i</sub>(L<sub>j</sub> &minus; L<sub>K</sub>) / "
       "(L<sub>i</sub> &minus; L<sub>K</sub>), view separation V<sub>i</sub> = (L<sub>i</sub> "
       "&minus; L<sub>K</sub>) / &Sigma;<sub>j</sub>(L<sub>j</sub> &minus; L<sub>K</sub>) "
-      "(reference/display-optics.md 9.3). Data: <a href=\"validation.json\">validation.json</a>."
+      "(lfd's docs/validation.md). Data: <a href=\"validation.json\">validation.json</a>."
       "</p>\n<table><tr><th>case</th><th>true</th><th>assumed</th><th>views</th><th>view "
       "blend</th><th>panel points</th><th>psf &sigma;<sub>A</sub></th><th>mean V</th><th>min V</th><th>mean X</th>"
       "<th>mean X adjacent</th></tr>\n";

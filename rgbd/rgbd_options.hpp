@@ -1,8 +1,7 @@
 #pragma once
-// How an RGB-D image or video frame (colour and depth side by side) is read and turned into
-// views: the Looking Glass conventions of bridge.js (@lookingglass/bridge 0.0.8, its
-// RGBDHologram settings and src/library/schemas/defaults.ts; reference/looking-glass-services.md
-// "Content conventions"), with bridge.js's names, numbering, ranges and defaults
+// How an RGB-D image or video frame (colour and depth side by side) is read and turned into views:
+// the Looking Glass conventions of bridge.js (@lookingglass/bridge 0.0.8, its RGBDHologram settings
+// and src/library/schemas/defaults.ts), with bridge.js's names, numbering, ranges and defaults
 // (docs/rgbd.md "Options"). Bridge's own renderer is closed: what each value does to the views is
 // lfd's model, written out in docs/rgbd.md "The view model".
 #include <string>
@@ -15,7 +14,7 @@
 namespace lfd::rgbd {
 
 // Where the depth half sits, numbered as bridge.js's schema (0 top, 1 bottom, 2 right, 3 left);
-// bridge.h and the Python SDK number them differently (reference/looking-glass-services.md).
+// bridge.h and the Python SDK number them differently (docs/rgbd.md "Options").
 enum class DepthLocation { top = 0, bottom = 1, right = 2, left = 3 };
 
 // The bridge.js ranges (schemas/defaults.ts) and defaults (RGBDHologram / RGBDPlaylistItem).

@@ -1,5 +1,5 @@
-// PlayCanvas / SuperSplat compressed PLY (reference/gaussian-splatting.md 7.4, after
-// playcanvas/splat-transform decompress-ply.ts): 256 Gaussians per `chunk` carrying min/max
+// PlayCanvas / SuperSplat compressed PLY (after playcanvas/splat-transform decompress-ply.ts;
+// docs/rendering.md "Scene formats"): 256 Gaussians per `chunk` carrying min/max
 // ranges; each `vertex` packs position, rotation, log scale and colour into four uint32s; an
 // optional `sh` element holds 8-bit f_rest_* values (channel-major, like the standard PLY).
 #include <cmath>
@@ -129,7 +129,7 @@ GaussianScene compressed_ply_to_scene(const PlyFile& ply, const std::string& nam
     const auto s = unpack_111011(uint32_t(vertex->value(i, packed_scale)));
     for (int a = 0; a < 3; ++a) {
       scene.positions[i][a] = lerp(c[a], c[3 + a], p[a]);
-      // min_scale / max_scale are log scales (section 7.4).
+      // min_scale / max_scale are log scales (decompress-ply.ts).
       scene.scales[i][a] = std::exp(lerp(c[6 + a], c[9 + a], s[a]));
     }
     scene.rotations[i] = unpack_rotation(uint32_t(vertex->value(i, packed_rotation)));

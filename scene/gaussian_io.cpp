@@ -38,7 +38,7 @@ std::string read_binary_file(const std::filesystem::path& path) {
 GaussianScene read_scene_bytes(std::string_view bytes, const std::string& name) {
   if (bytes.empty()) throw_input_error("{}: empty file", name);
   if (looks_like_ply(bytes)) {
-    // A compressed PLY is a PLY with a `chunk` element (reference 7.4).
+    // A compressed PLY is a PLY with a `chunk` element (splat-transform decompress-ply.ts).
     const PlyFile ply = parse_ply(bytes, name);
     return ply.find("chunk") ? compressed_ply_to_scene(ply, name)
                              : standard_ply_to_scene(ply, name);

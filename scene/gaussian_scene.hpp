@@ -1,7 +1,7 @@
 #pragma once
 // A 3D Gaussian Splatting scene in memory, activated: linear scales, opacity in (0, 1),
 // normalised (w, x, y, z) quaternions, SH coefficients coefficient-major with RGB innermost
-// (reference/gaussian-splatting.md section 1). Every loader produces this; every renderer
+// (docs/rendering.md, "Stored parameters"). Every loader produces this; every renderer
 // consumes it.
 #include <array>
 #include <cstddef>

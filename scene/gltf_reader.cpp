@@ -1,4 +1,4 @@
-// glTF 2.0 with KHR_gaussian_splatting (reference/gaussian-splatting.md 7.5; KhronosGroup/glTF
+// glTF 2.0 with KHR_gaussian_splatting (docs/rendering.md "Scene formats"; KhronosGroup/glTF
 // extensions/2.0/Khronos/KHR_gaussian_splatting; as written by playcanvas/splat-transform
 // src/lib/writers/write-glb.ts). tinygltf parses the container; this file reads the
 // attributes of every POINTS primitive that carries the extension: POSITION,
@@ -26,7 +26,7 @@ namespace {
 constexpr const char* kExtension = "KHR_gaussian_splatting";
 constexpr uint64_t kMaxGaussians = uint64_t(1) << 28;
 constexpr uint64_t kMaxBufferBytes = uint64_t(1) << 32;
-// Parity of each SH basis function (reference section 6 order) under (x, y) -> (-x, -y).
+// Parity of each SH basis function (in computeColorFromSH's order) under (x, y) -> (-x, -y).
 constexpr float kHalfTurnZSh[15] = {-1, 1, -1, 1, -1, 1, -1, 1, -1, 1, -1, 1, -1, 1, -1};
 
 // One attribute as floats, `components` per Gaussian, after checking that the accessor and its

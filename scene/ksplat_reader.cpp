@@ -1,4 +1,4 @@
-// .ksplat, the format of mkkellogg/GaussianSplats3D (reference/gaussian-splatting.md 7.5;
+// .ksplat, the format of mkkellogg/GaussianSplats3D (docs/rendering.md "Scene formats";
 // layout after its src/loaders/SplatBuffer.js and playcanvas/splat-transform
 // src/lib/readers/read-ksplat.ts). A 4096-byte header (version 0.x, section count, Gaussian
 // count, compression level 0-2, 8-bit SH range), one 1024-byte header per section, then per

@@ -1,8 +1,8 @@
 #pragma once
 // A minimal PLY container reader shared by the standard and compressed 3DGS loaders: parses the
-// header, then exposes each element's rows by property NAME (reference/gaussian-splatting.md
-// 7.1: never rely on offsets). Binary little-endian rows are read in place; ASCII rows are
-// parsed into doubles. Counts are checked against the bytes present before anything is
+// header, then exposes each element's rows by property NAME (files in the wild add, drop and
+// reorder properties: never rely on offsets). Binary little-endian rows are read in place; ASCII
+// rows are parsed into doubles. Counts are checked against the bytes present before anything is
 // allocated, so a header claiming billions of rows fails fast instead of exhausting memory.
 #include <cstddef>
 #include <cstdint>

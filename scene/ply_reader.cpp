@@ -1,6 +1,6 @@
-// Standard 3DGS PLY (reference/gaussian-splatting.md 7.1): element `vertex`, properties found
-// by name, SH degree inferred from the number of f_rest_* properties (0, 9, 24, 45), f_rest
-// stored channel-major and converted to our coefficient-major layout.
+// Standard 3DGS PLY (gaussian_model.py load_ply; docs/rendering.md "Scene formats"): element
+// `vertex`, properties found by name, SH degree inferred from the number of f_rest_* properties
+// (0, 9, 24, 45), f_rest stored channel-major and converted to our coefficient-major layout.
 #include <cmath>
 #include <string>
 
@@ -76,7 +76,7 @@ GaussianScene standard_ply_to_scene(const PlyFile& ply, const std::string& name)
     scene.opacities[i] = sigmoid(v.value_float(i, opacity));
     float* sh = scene.sh.data() + i * coeffs * 3;
     for (int c = 0; c < 3; ++c) sh[c] = v.value_float(i, dc[c]);
-    // f_rest[ch * K + k] is coefficient k + 1 of channel ch (section 7.1).
+    // f_rest[ch * K + k] is coefficient k + 1 of channel ch (gaussian_model.py save_ply).
     for (size_t ch = 0; ch < 3; ++ch)
       for (size_t k = 0; k < rest_per_channel; ++k)
         sh[(k + 1) * 3 + ch] = v.value_float(i, rest[ch * rest_per_channel + k]);

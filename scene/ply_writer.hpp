@@ -1,6 +1,7 @@
 #pragma once
-// Encodes a scene as a standard 3DGS PLY (reference/gaussian-splatting.md 7.1): the Inria
-// property order, stored (pre-activation) values, f_rest channel-major, zero normals.
+// Encodes a scene as a standard 3DGS PLY (gaussian_model.py save_ply; docs/rendering.md
+// "What each reader follows"): the Inria property order, stored (pre-activation) values, f_rest
+// channel-major, zero normals.
 #include <string>
 
 #include "scene/gaussian_scene.hpp"

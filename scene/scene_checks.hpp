@@ -1,6 +1,6 @@
 #pragma once
 // Shared post-processing of every loader: the activated scene must be finite and its
-// quaternions unit length (reference/gaussian-splatting.md section 1: files store raw
+// quaternions unit length (docs/rendering.md, "Stored parameters": files store raw
 // quaternions; only the Python side normalises, so a standalone loader must).
 #include <cstddef>
 #include <string>

@@ -11,16 +11,17 @@ namespace lfd::scene {
 
 struct PlyFile;
 
-// Standard 3DGS PLY, binary little-endian or ASCII (reference/gaussian-splatting.md 7.1).
+// The readers follow the files listed in docs/rendering.md "What each reader follows".
+// Standard 3DGS PLY, binary little-endian or ASCII (gaussian_model.py load_ply).
 GaussianScene read_standard_ply(std::string_view bytes, const std::string& name);
-// PlayCanvas / SuperSplat compressed PLY (reference 7.4).
+// PlayCanvas / SuperSplat compressed PLY (splat-transform decompress-ply.ts).
 GaussianScene read_compressed_ply(std::string_view bytes, const std::string& name);
-// antimatter15 .splat, 32 bytes per Gaussian (reference 7.2).
+// antimatter15 .splat, 32 bytes per Gaussian (antimatter15/splat convert.py).
 GaussianScene read_splat(std::string_view bytes, const std::string& name);
-// Niantic SPZ: v1-v3 gzip container, v4 zstd multi-stream container (reference 7.3).
+// Niantic SPZ: v1-v3 gzip container, v4 zstd multi-stream container (nianticlabs/spz load-spz.cc).
 GaussianScene read_spz(std::string_view bytes, const std::string& name);
-// PlayCanvas SOG, versions 1 and 2 (reference 7.5): a `.sog` ZIP archive, or the meta.json of
-// the unpacked layout with its WebP images in the same folder as `name`.
+// PlayCanvas SOG, versions 1 and 2 (splat-transform read-sog.ts): a `.sog` ZIP archive, or the
+// meta.json of the unpacked layout with its WebP images in the same folder as `name`.
 GaussianScene read_sog(std::string_view bytes, const std::string& name);
 GaussianScene read_sog_meta(std::string_view meta_bytes, const std::string& name);
 // glTF 2.0 (.glb, or .gltf with embedded or neighbouring buffers) with KHR_gaussian_splatting.

@@ -1,5 +1,5 @@
 #pragma once
-// The files of a SOG scene (reference/gaussian-splatting.md 7.5, after
+// The files of a SOG scene (docs/rendering.md "Scene formats", after
 // playcanvas/splat-transform src/lib/readers/read-sog.ts): `meta.json` and lossless WebP
 // images, either inside a `.sog` ZIP archive (stored entries) or side by side in a folder.
 // Reading is bounded: an entry's size is checked against the archive before it is read, and

@@ -1,5 +1,5 @@
-// PlayCanvas SOG (reference/gaussian-splatting.md 7.5; looking-glass-services.md "Splat formats
-// people download"; formulas after playcanvas/splat-transform src/lib/readers/read-sog.ts and
+// PlayCanvas SOG (docs/rendering.md "What each reader follows"; the PlayCanvas user manual's
+// SOG page; formulas after playcanvas/splat-transform src/lib/readers/read-sog.ts and
 // read-sog-v1.ts). Gaussian i is pixel i of every image (row-major). Both versions store:
 // means as two 8-bit images (low, high byte) of a 16-bit lerp between per-axis mins and maxs of
 // sign(x) ln(|x| + 1); quaternions as "smallest three" bytes (v / 255 * 2 - 1) / sqrt 2 with

@@ -1,6 +1,6 @@
-// antimatter15 .splat (reference/gaussian-splatting.md 7.2): 32 bytes per Gaussian, no header:
-// float32 position, float32 linear scale, RGBA bytes (DC colour, activated opacity), and a
-// (w, x, y, z) quaternion as bytes decoded by (b - 128) / 128.
+// antimatter15 .splat (antimatter15/splat convert.py; docs/rendering.md "Scene formats"): 32 bytes
+// per Gaussian, no header: float32 position, float32 linear scale, RGBA bytes (DC colour, activated
+// opacity), and a (w, x, y, z) quaternion as bytes decoded by (b - 128) / 128.
 #include <cstring>
 
 #include "scene/scene_checks.hpp"

@@ -1,4 +1,4 @@
-// Niantic SPZ (reference/gaussian-splatting.md 7.3, after nianticlabs/spz load-spz.cc).
+// Niantic SPZ (after nianticlabs/spz load-spz.cc; docs/rendering.md "Scene formats").
 // v1-v3: the whole file is gzip; inside, a 16-byte header and the attribute arrays in the
 // order positions, alphas, colours, scales, rotations, SH. v4: a 32-byte plain header, a table
 // of contents and one zstd stream per attribute in the same order.
@@ -35,7 +35,7 @@ constexpr float kColourScale = 0.15f;  // load-spz.cc colorScale
 // SPZ stores the RUB axes (x right, y up, z back); 3DGS PLY, .splat and compressed PLY use
 // COLMAP's RDF. RUB -> RDF is a 180-degree turn about x: position (x, -y, -z), quaternion
 // vector part (x, -y, -z), and each SH basis function odd in (y, z) changes sign. The signs
-// below are those basis functions' parities in the order of reference section 6:
+// below are those basis functions' parities in computeColorFromSH's order:
 // y, z, x | xy, yz, 2z^2-x^2-y^2, xz, x^2-y^2 | y(3x^2-y^2), xyz, y(4z^2-..), z(2z^2-..),
 // x(4z^2-..), z(x^2-y^2), x(x^2-3y^2). This makes all formats agree (three-points fixture).
 constexpr float kRubToRdfSh[15] = {-1, -1, 1, -1, 1, 1, -1, 1, -1, 1, -1, -1, 1, -1, 1};

@@ -1,5 +1,5 @@
 #pragma once
-// Encodes a scene as Niantic SPZ version 3 (reference/gaussian-splatting.md 7.3; the layout
+// Encodes a scene as Niantic SPZ version 3 (docs/rendering.md "Scene formats"; the layout
 // render/spz_reader.cpp reads, after nianticlabs/spz load-spz.cc): a gzip stream holding a
 // 16-byte header and the attribute arrays. Positions are 24-bit fixed point with 12 fraction
 // bits, scales and colours and SH 8-bit, rotations "smallest three" in 32 bits; the axes are

@@ -1,5 +1,5 @@
 #pragma once
-// Bridge's HTTP API (reference/looking-glass-services.md; docs/serve.md): one handler per
+// Bridge's HTTP API (docs/serve.md "Bridge HTTP API", "Sources"): one handler per
 // endpoint, each a short function from a parsed body to a reply in Bridge's `{name, type,
 // value}` shape. Transport-free: BridgeServer (HTTP) calls `handle`, and so do the tests.
 #include <deque>

@@ -1,5 +1,5 @@
 #pragma once
-// Bridge's reply shape (reference/looking-glass-services.md): every value wrapped
+// Bridge's reply shape (docs/serve.md "Sources"): every value wrapped
 // `{name, type, value}` with Bridge's type names (WSTRING, UNSIGNED_INT, INT, FLOAT, INT2,
 // VARIANT_MAP), and `status.value` one of "Completion", "Pending", "Failure",
 // "UnknownOrchestration" (bridge.js's schemas, src/schemas).

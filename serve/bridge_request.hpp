@@ -1,5 +1,5 @@
 #pragma once
-// A Bridge HTTP API request body (reference/looking-glass-services.md): a JSON object, parsed
+// A Bridge HTTP API request body (docs/serve.md "Bridge HTTP API"): a JSON object, parsed
 // under the body limit and a nesting limit (nlohmann's parser recurses), and its fields read
 // with their types and ranges checked. The parser the fuzz target `fuzz_bridge_request` drives.
 #include <cstddef>

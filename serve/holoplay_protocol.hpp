@@ -1,5 +1,5 @@
 #pragma once
-// The HoloPlay Service commands (reference/looking-glass-services.md; docs/serve.md): one
+// The HoloPlay Service commands (docs/serve.md "HoloPlay Service protocol", "Sources"): one
 // handler per command, from a parsed request to a reply map; `error` 0 is success, which is
 // all holoplay-core looks at (it rejects its promise on anything else).
 #include <cstdint>

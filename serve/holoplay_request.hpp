@@ -1,5 +1,5 @@
 #pragma once
-// A HoloPlay Service request (reference/looking-glass-services.md): the CBOR map
+// A HoloPlay Service request (holoplay-core's protocol, docs/serve.md "Sources"): the CBOR map
 // `{cmd: {<command>: {...}}, bin: <bytes>}` that holoplay-core sends after NNG's 4-byte request
 // id (which NNG's REP socket strips). The parser the fuzz target `fuzz_holoplay_request` drives.
 #include <cstdint>

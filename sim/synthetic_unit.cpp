@@ -53,7 +53,7 @@ CaptureRig make_capture_rig(const display::DisplayCalibration& d, int width_px, 
   const double span_h = d.height_m() / (0.7 * 2 * tan_half * height_px / width_px);
   const double dist = std::max(span_w, span_h);
   // Positions at clearly different distances separate the view cone from the pitch
-  // (reference/display-optics.md 2.1); the closest one still sees the whole screen.
+  // (docs/calibration.md "How to photograph"); the closest one still sees the whole screen.
   const double lateral = 0.12 * dist;
   const double scale = dist / 0.45;
   const std::vector<Eigen::Vector3d> spots =

@@ -9,7 +9,7 @@ ViewSummary summarise(const ViewProfiles& p) {
   ViewSummary s;
   const int n = p.views;
   for (int i = 0; i < n; ++i) {
-    // theta_i* = argmax L_i(theta) (display-optics.md 9.3).
+    // theta_i* = argmax L_i(theta) (docs/validation.md "View separation").
     const auto& li = p.view[i];
     const size_t k = size_t(std::max_element(li.begin(), li.end()) - li.begin());
     ViewMetrics m;

@@ -1,5 +1,5 @@
 #pragma once
-// Crosstalk and view separation from angular profiles (reference/display-optics.md 9.3),
+// Crosstalk and view separation from angular profiles (docs/validation.md "View separation"),
 // black level subtracted, evaluated at each view's luminance peak theta_i*:
 //   X_i = sum_{j != i} (L_j - L_K) / (L_i - L_K)          (system crosstalk of view i)
 //   X_i^adj: the same over the two neighbours i - 1, i + 1 (wrapping: the cone repeats)

@@ -1,5 +1,5 @@
 #pragma once
-// Angular luminance profiles of isolated views (reference/display-optics.md 9.3): for each
+// Angular luminance profiles of isolated views (docs/validation.md "View separation"): for each
 // view j a quilt with tile j white and the others black (and an all-black quilt for L_K) is
 // interlaced with the ASSUMED calibration, then seen through the simulator following the TRUE
 // calibration from directions theta sweeping the view cone, averaged over many points of the

@@ -78,8 +78,8 @@ std::array<double, 3> predicted_channel_offsets(const display::DisplayCalibratio
   const double sign = pattern.inv_view ? -1.0 : 1.0;
   std::array<double, 3> out{};
   for (int c = 0; c < 3; ++c) {
-    // Every cell pattern (reference/looking-glass.md 2.3) repeats within 2 columns x 4 rows;
-    // a block of camera pixels sees all of them, so its phasor is their mean.
+    // Every cell pattern repeats within 2 columns x 4 rows (docs/display-model.md "Vendor
+    // interlacing rules"); a block of camera pixels sees all of them, so its phasor is their mean.
     std::complex<double> sum(0, 0);
     for (int row = 0; row < 4; ++row)
       for (int x = 0; x < 2; ++x) {

@@ -11,9 +11,9 @@
 // (medians over every sample of every position). On the bench's 17-subpixel lenses RGB taken
 // for BGR moves R - B by 2/3 pixel = 0.118 lens periods (docs/calibration.md).
 //
-// Candidates: the classic 1/3-pixel stride in either order (reference/looking-glass.md 3.2,
-// 3.5) and, when the pattern set's description has Gen3 cells, that cell table (2.3: the
-// classic stride misplaces two of the three channels on such panels).
+// Candidates: the classic 1/3-pixel stride in either order and, when the pattern set's
+// description has Gen3 cells, that cell table (the classic stride misplaces two of the three
+// channels on such panels; docs/display-model.md "Vendor interlacing rules").
 #include <array>
 #include <optional>
 #include <string>

@@ -22,7 +22,7 @@ struct QualityGates {
   // factor disagrees with them (a camera that moved, glare, focus). Positions at different
   // distances differ in noise: 1.1-1.2 on the bench at 1280 px, 3.4 at 480 px.
   double max_position_rms_ratio = 4.0;
-  double max_pitch_sigma_rel = 5e-5;   // near the reference/display-optics.md 1.1 tolerance
+  double max_pitch_sigma_rel = 5e-5;   // the half-view tolerance's order, docs/calibration.md 3.5
   double max_slant_sigma_deg = 0.005;
   double max_center_sigma_periods = 0.01;
   double max_view_cone_sigma_deg = 2.0;

@@ -95,7 +95,8 @@ void main() {
       t[c] *= sample_k.a;
     }
   }
-  // interlace::fringe_gain (looking-glass.md 3.11): every other row darkened.
+  // interlace::fringe_gain: every other row darkened (docs/display-model.md "Vendor interlacing
+  // rules").
   const float fringe_gain = 1.0 - abs(fringe) * floor(mod(float(pixel.y) + 0.5 + ceil(fringe / 2.0), 2.0));
   panel = vec4((C + t * background) * fringe_gain, 1.0);
 }

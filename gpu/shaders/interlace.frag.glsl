@@ -34,7 +34,8 @@ vec3 sample_tile(int view, ivec2 t0, ivec2 t1, vec2 weight) {
 
 void main() {
   const ivec2 pixel = ivec2(gl_FragCoord.xy);  // (x, j), j bottom-up
-  // Interlacer::sample_for, aspect fit (looking-glass.md 3.8): only the tile lookup is scaled.
+  // Interlacer::sample_for, aspect fit: only the tile lookup is scaled (docs/display-model.md
+  // "Vendor interlacing rules").
   const vec2 tile_uv = (lens_pixel_uv(pixel) - 0.5) * aspect_scale + 0.5;
   if (any(lessThan(tile_uv, vec2(0.0))) || any(greaterThan(tile_uv, vec2(1.0)))) {
     panel = vec4(0.0, 0.0, 0.0, 1.0);
@@ -70,7 +71,8 @@ void main() {
     }
     rgb[c] = value[c];
   }
-  // Interlacer::interlace, fringe correction (looking-glass.md 3.11): every other row darkened.
+  // Interlacer::interlace, fringe correction: every other row darkened (docs/display-model.md
+  // "Vendor interlacing rules").
   const float fringe_gain =
       1.0 - abs(fringe) * floor(mod(float(pixel.y) + 0.5 + ceil(fringe / 2.0), 2.0));
   panel = vec4(rgb * fringe_gain, 1.0);

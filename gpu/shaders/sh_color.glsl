@@ -1,8 +1,8 @@
-// View-dependent colour from SH (forward.cu computeColorFromSH; reference/gaussian-splatting.md
-// section 6), the GLSL twin of render/spherical_harmonics.cpp: one definition for every GL pass
-// that evaluates SH (the splat preprocess, the voxel raster). Prepended to those shaders.
-// The coefficients of primitive g are (degree+1)^2 RGB triples, coefficient-major, packed into
-// sh_stride vec4s per primitive (gpu/gl_scene.hpp, gpu/gl_voxel_scene.hpp).
+// View-dependent colour from SH (forward.cu computeColorFromSH; docs/rendering.md), the GLSL twin
+// of render/spherical_harmonics.cpp: one definition for every GL pass that evaluates SH (the splat
+// preprocess, the voxel raster). Prepended to those shaders. The coefficients of primitive g are
+// (degree+1)^2 RGB triples, coefficient-major, packed into sh_stride vec4s per primitive
+// (gpu/gl_scene.hpp, gpu/gl_voxel_scene.hpp).
 layout(std430, binding = 3) readonly buffer Sh { vec4 sh[]; };
 uniform int sh_degree;
 uniform int sh_stride;  // vec4s per primitive

@@ -1,7 +1,7 @@
 // Per-Gaussian preprocess: the GLSL twin of render/preprocess.cpp (forward.cu preprocessCUDA;
-// reference/gaussian-splatting.md section 3). Written operation for operation as the CPU code so
-// the two agree to rounding; `precise` keeps the compiler from fusing multiply-adds where an
-// integer (radius, tile rectangle) is derived from the result.
+// docs/rendering.md "The CPU reference rasterizer"). Written operation for operation as the CPU
+// code so the two agree to rounding; `precise` keeps the compiler from fusing multiply-adds where
+// an integer (radius, tile rectangle) is derived from the result.
 #include "gpu/shaders/splat_record.glsl"
 #include "gpu/shaders/sh_color.glsl"
 
@@ -80,7 +80,7 @@ uint preprocess(uint i) {
   vec4 position_opacity = positions[i];
   vec3 mean = position_opacity.xyz;
   precise vec3 t = world_to_camera * (mean - camera_position);
-  if (t.z <= 0.2) {  // in_frustum: near cull only (section 3.1)
+  if (t.z <= 0.2) {  // in_frustum: near cull only (auxiliary.h)
     return cull(i);
   }
   mat3 cov3d = covariance_3d(scales[i].xyz, rotations[i]);

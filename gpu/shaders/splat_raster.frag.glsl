@@ -1,5 +1,5 @@
-// The reference's per-pixel rules (forward.cu renderCUDA; reference/gaussian-splatting.md
-// section 4.3): pixel (i, j) of the view is evaluated at exactly (i, j), row 0 = top.
+// The reference's per-pixel rules (forward.cu renderCUDA; docs/rendering.md "The CPU reference
+// rasterizer"): pixel (i, j) of the view is evaluated at exactly (i, j), row 0 = top.
 // The output is premultiplied (c alpha, alpha); the blend function
 // (DST_ALPHA, ONE | ZERO, ONE_MINUS_SRC_ALPHA) on a target holding (C, T) then does
 // C += c alpha T and T *= 1 - alpha, front to back (gpu/gl_splat_raster.hpp).

@@ -95,6 +95,7 @@ TEST(Cli, InfoReportsDerivedFiguresAsJson) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   const auto j = nlohmann::json::parse(r.output);
   EXPECT_NEAR(j["lens"]["lenses_across_screen"].get<double>(), 673.4608856975016, 1e-9);
+  // atan(1 / slope) in degrees, slope -7.521984: -7.5727.
   EXPECT_NEAR(j["lens"]["slant_deg"].get<double>(), -7.5727, 1e-3);
   EXPECT_GT(j["recommended_views"]["views"].get<int>(), 0);
   EXPECT_FALSE(j["recommended_views"]["rule"].get<std::string>().empty());

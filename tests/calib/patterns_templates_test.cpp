@@ -1,5 +1,5 @@
-// The factory templates shipped in data/displays (reference/looking-glass.md 2.4) are valid
-// displays from which patterns can be planned.
+// The factory templates shipped in data/displays (LKG-Toolkit HardCodedLKGDeviceTemplates.cs)
+// are valid displays from which patterns can be planned.
 #include <gtest/gtest.h>
 
 #include "sim/patterns.hpp"

@@ -19,12 +19,15 @@ DisplayCalibration load(const char* name) {
 
 double frac(double x) { return x - std::floor(x); }
 
-// Published processed shader values (reference/looking-glass.md 2.5 "Test vector").
+// Published processed shader values (sgumhold/cgv libs/holo_disp/glsl/holo_disp.glfs;
+// docs/display-model.md "The test vector").
 TEST(LensModel, ReproducesThePublishedShaderUniforms) {
   const LensModel gen2(load("LKG-APW92011.visual.json"));
   EXPECT_NEAR(gen2.pitch_periods(), 673.46088569750157, 1e-9);
   EXPECT_NEAR(gen2.tilt(), -0.074780801514116493, 1e-15);
   const LensModel gen1(load("LKG-2K-04409.visual.json"));
+  // Not published; the same formulas in double precision: pitch' = 47.56401443481445 (2560 / 338)
+  // cos(atan(1 / -5.48)) = 354.39586, tilt = 1600 / (2560 x -5.48) = -0.11405109.
   EXPECT_NEAR(gen1.pitch_periods(), 354.39586, 1e-5);
   EXPECT_NEAR(gen1.tilt(), -0.11405109, 1e-8);
 }
@@ -36,7 +39,8 @@ TEST(LensModel, ClassicSubpixelPhaseMatchesTheVendorFormula) {
   for (int x : {0, 17, 1280, 2559})
     for (int row : {0, 5, 800, 1599})
       for (int ch = 0; ch < 3; ++ch) {
-        // looking-glass.md 3.2 with j bottom-up: v = (j + 0.5)/H, j = H - 1 - row.
+        // The vendor phase (docs/display-model.md "Phase and view") with j bottom-up:
+        // v = (j + 0.5)/H, j = H - 1 - row.
         const double u = (x + 0.5) / c.screen_w, v = (c.screen_h - 1 - row + 0.5) / c.screen_h;
         const double a = (u + ch * s + v * T) * P - c.center_periods;
         const double f = std::clamp(1.0 - frac(a), 1e-5, 0.999999);  // invView = 1

@@ -148,7 +148,8 @@ TEST(SeenFraction, TopAndBottomOfTheScreenDifferByTheLineTilt) {
     EXPECT_NEAR(top - bottom, -h * (1.0 / d.slope) * k / 0.5, 1e-12) << cy;
     EXPECT_NEAR(top - bottom, 0.0612, 1e-4) << cy;  // slope -7.21, H 0.1606 m, cone 40 deg
   }
-  // The centre of the screen seen from 0.1 m above: 0.038 of the cone the other way.
+  // The centre of the screen seen from 0.1 m above: 0.038 of the cone the other way,
+  // 0.1 L k / 0.5 with L = 1 / -7.2115 and k = 1 / (2 tan 20 deg) = 1.3737: -0.0381.
   EXPECT_NEAR(seen_fraction(0.0, 0.1, 0.5, lens.line_tilt(), d.view_cone_deg) - 0.5, -0.0381, 1e-4);
 }
 

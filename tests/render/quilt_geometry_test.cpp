@@ -25,6 +25,7 @@ glm::vec3 ray_point(const QuiltGeometry& g, int view, float u, float v, float d)
 
 TEST(QuiltGeometry, ViewPositionsAreBinCentres) {
   const QuiltGeometry g = test_geometry(4);
+  // s_j = (j + 0.5) / V - 0.5 with V = 4: -0.375 and 0.375.
   EXPECT_FLOAT_EQ(g.view_position(0), -0.375f);
   EXPECT_FLOAT_EQ(g.view_position(3), 0.375f);
   EXPECT_LT(g.view_offset(0), 0.0f);  // view 0 is the leftmost camera

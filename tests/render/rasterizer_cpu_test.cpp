@@ -1,4 +1,4 @@
-// Analytic cases for the reference rasterizer (reference/gaussian-splatting.md sections 3-4).
+// Analytic cases for the reference rasterizer (docs/rendering.md "The CPU reference rasterizer").
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -95,7 +95,7 @@ TEST(Rasterizer, AlphaIsCappedAt0_99) {
 TEST(Rasterizer, FootprintIsTheTileRectangleOfTheRadius) {
   // Variance 3.5 px^2: radius = ceil(3 sqrt(3.5 + sqrt(0.1))) = 6. Centred on column 10 the
   // tile rectangle ends at column 15 although alpha at column 16 (6 px, 0.99 e^{-36/7} = 0.0058)
-  // exceeds 1/255: the reference leaves it untouched (section 4.1).
+  // exceeds 1/255: the reference leaves it untouched (getRect).
   const Camera cam = axis_camera(48, 16);
   scene::GaussianScene s;
   const float z = 2.0f;

@@ -112,7 +112,9 @@ std::string gunzip(const std::string& data) {
 TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
   const fs::path v3 = test::fixture_scene("three-points.spz");
   const std::string raw = gunzip(read_bytes(v3));
-  ASSERT_EQ(raw.size(), 211u);  // reference section 8: 16 + 27 + 3 + 9 + 9 + 12 + 135
+  // 16-byte header + 3 Gaussians x (9 position + 1 alpha + 3 colour + 3 scale + 4 rotation + 45 SH
+  // bytes at degree 3) = 16 + 27 + 3 + 9 + 9 + 12 + 135 = 211.
+  ASSERT_EQ(raw.size(), 211u);
   const uint32_t n = 3;
   const uint64_t sizes[6] = {n * 9, n, n * 3, n * 3, n * 4, n * 45};
   std::string header(32, '\0');

@@ -115,6 +115,7 @@ TEST(RgbdQuilt, TheFocusPlaneDoesNotMove) {
   // With focus set, the zero-parallax depth moves to d_0 and a layer there stays put.
   o.focus = 0.03;
   const double d0 = zero_parallax_depth(o);
+  // 0.5 + focus / (depthiness kReliefRatio) = 0.5 + 0.03 / (1.5 x 0.1) (docs/rgbd.md).
   EXPECT_NEAR(d0, 0.7, 1e-12);
   EXPECT_NEAR(relief_z_ratio(float(d0), o), 0.0f, 1e-7f);
   EXPECT_NEAR(expected_shift_px(0, 9, d0, o), 0.0, 1e-12);

@@ -1,5 +1,5 @@
 // The fixtures (tests/data/scenes): the same 3 real Gaussians as standard PLY, .splat and SPZ v3 agree to
-// each format's precision (reference/gaussian-splatting.md section 8), and the real PlayCanvas
+// each format's precision (docs/rendering.md "What each reader follows"), and the real PlayCanvas
 // compressed PLY (optional, ../shared/data) loads completely.
 #include <gtest/gtest.h>
 
@@ -31,6 +31,8 @@ TEST(SceneFormats, ThreePointsPlyMatchesTheReferenceTable) {
   const scene::GaussianScene s = scene::load_gaussian_scene(kScenes / "three-points.ply");
   ASSERT_EQ(s.size(), 3u);
   EXPECT_EQ(s.sh_degree, 3);
+  // The file's values activated by hand (rgb = 0.5 + C0 f_dc, opacity = sigmoid, scale = exp;
+  // docs/rendering.md "Stored parameters"), rounded to the digits shown.
   EXPECT_NEAR(s.positions[0][0], 2.00785f, 1e-4);
   EXPECT_NEAR(s.positions[2][1], -1.01235f, 1e-4);
   EXPECT_NEAR(rgb_of(s, 0, 0), 0.8125f, 1e-3);
@@ -55,7 +57,7 @@ TEST(SceneFormats, SplatAgreesWithPlyToEightBits) {
     for (int a = 0; a < 3; ++a) {
       EXPECT_NEAR(splat.positions[i][a], ply.positions[i][a], 1e-5);
       EXPECT_NEAR(splat.scales[i][a], ply.scales[i][a], 1e-5 * ply.scales[i][a] + 1e-7);
-      // ±1 LSB: the fixture is neither consistently rounded nor truncated (section 8).
+      // ±1 LSB: the fixture is neither consistently rounded nor truncated (docs/rendering.md).
       EXPECT_NEAR(rgb_of(splat, i, a), std::clamp(rgb_of(ply, i, a), 0.0f, 1.0f), 1.01f / 255);
     }
     EXPECT_NEAR(splat.opacities[i], ply.opacities[i], 1.01f / 255);

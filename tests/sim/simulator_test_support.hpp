@@ -8,7 +8,7 @@
 
 namespace lfd::sim::testing {
 
-// The real 16" Gen2 unit LKG-APW92011 (reference/looking-glass.md 2.5), embedded so the
+// The real 16" Gen2 unit LKG-APW92011 (docs/display-model.md "The test vector"), embedded so the
 // tests need no shared data.
 inline display::DisplayCalibration apw92011() {
   return display::parse_calibration(
@@ -33,8 +33,9 @@ inline display::DisplayCalibration small_display() {
   return c;
 }
 
-// The 16" Portrait Gen3 factory template (reference/looking-glass.md 2.4: CellPatternMode 4,
-// two subpixel cells) at a tenth of the resolution and DPI: same optics per lens, small panel.
+// The 16" Portrait Gen3 factory template (LKG-Toolkit HardCodedLKGDeviceTemplates.cs:
+// CellPatternMode 4, two subpixel cells) at a tenth of the resolution and DPI: same optics per
+// lens, small panel.
 inline display::DisplayCalibration small_gen3_portrait() {
   return display::parse_calibration(
              R"({"configVersion":"3.0","serial":"LKG-H-template","pitch":{"value":4.472},

@@ -1,4 +1,4 @@
-// Crosstalk and view separation definitions (reference/display-optics.md 9.3).
+// Crosstalk and view separation definitions (docs/validation.md "View separation").
 #include <gtest/gtest.h>
 
 #include "validate/view_metrics.hpp"
