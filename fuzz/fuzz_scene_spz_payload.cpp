@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "tests/render/gzip_for_tests.hpp"
+#include "tests/scene/gzip_for_tests.hpp"
 #include "scene/scene_parsers.hpp"
 #include "util/error.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// A sparse-voxel scene (voxel/voxel_scene.hpp) uploaded once into shader storage buffers for
+// A sparse-voxel scene (scene/voxel_scene.hpp) uploaded once into shader storage buffers for
 // the GL voxel raster (issue #13, V2LF's GPU half). std430, vec4-packed:
 //   binding kVoxelBoxes      vec4 boxes[]       (min corner x, y, z, edge length)
 //   binding kVoxelDensities  vec4 densities[2v] raw corner densities 0-3, 4-7 (corner i at

@@ -16,7 +16,7 @@ GaussianScene load_gaussian_scene(const std::filesystem::path& path);
 void save_ply(const std::filesystem::path& path, const GaussianScene& scene);
 
 // Writes the scene in the format its extension names: `.ply` (save_ply) or `.spz` (SPZ v3,
-// render/spz_writer.hpp), atomically; InputError for another extension. What `lfd scene
+// scene/spz_writer.hpp), atomically; InputError for another extension. What `lfd scene
 // convert` calls.
 void save_gaussian_scene(const std::filesystem::path& path, const GaussianScene& scene);
 

@@ -26,7 +26,7 @@ const float kStepScale = 100.0;
 const float kMaxAlpha = 0.99999;
 const float kMinAlpha = 1e-5;
 
-// voxel/voxel_scene.cpp exp_linear_11.
+// scene/voxel_scene.cpp exp_linear_11.
 float exp_linear_11(float x) { return x > 1.1 ? x : exp(x / 1.1 - 1.0 + log(1.1)); }
 
 float trilinear(vec4 c0123, vec4 c4567, vec3 t) {
