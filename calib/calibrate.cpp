@@ -1,6 +1,7 @@
 #include "calib/calibrate.hpp"
 
 #include <chrono>
+#include <utility>
 
 #include "calib/calibration_stages.hpp"
 #include "util/error.hpp"
@@ -51,6 +52,40 @@ void CalibrateOptions::check() const {
   require_field(!view_cone_deg || (*view_cone_deg > 0 && *view_cone_deg < 180), where,
                 "view_cone_deg", "must lie in (0, 180) degrees");
   require_field(solver.max_iterations > 0, where, "solver.max_iterations", "must be positive");
+  for (auto [value, field] : {std::pair{solver.loss_scale, "solver.loss_scale"},
+                              {solver.linear_loss_scale, "solver.linear_loss_scale"},
+                              {solver.field_loss_scale, "solver.field_loss_scale"},
+                              {solver.function_tolerance, "solver.function_tolerance"},
+                              {solver.parameter_tolerance, "solver.parameter_tolerance"}})
+    require_field(value > 0, where, field, "must be positive");
+  require_field(solver.min_noise_samples >= 1, where, "solver.min_noise_samples",
+                "must be at least 1 (the noise is a mean over them)");
+  require_field(solver.min_cell_samples >= 1, where, "solver.min_cell_samples",
+                "must be at least 1 (a cell's mean is over them)");
+  require_field(solver.min_reciprocal_condition > 0 && solver.min_reciprocal_condition < 1, where,
+                "solver.min_reciprocal_condition", "must lie in (0, 1)");
+  require_field(min_board_corners >= 4, where, "min_board_corners",
+                "must be at least 4 (a board pose needs 4 corners)");
+  for (auto [value, field] : {std::pair{max_focal_sigma_rel, "max_focal_sigma_rel"},
+                              {marker_search_fraction, "marker_search_fraction"},
+                              {max_fringe_shift_periods, "max_fringe_shift_periods"}})
+    require_field(value > 0, where, field, "must be positive");
+  for (auto [value, field] : {std::pair{warn_self_calibration_rms_px, "warn_self_calibration_rms_px"},
+                              {warn_board_rms_px, "warn_board_rms_px"},
+                              {max_board_motion_px, "max_board_motion_px"},
+                              {max_board_motion_diag_fraction, "max_board_motion_diag_fraction"},
+                              {max_motion_diag_fraction, "max_motion_diag_fraction"},
+                              {warn_exposure_change, "warn_exposure_change"},
+                              {warn_row_variation, "warn_row_variation"}})
+    require_field(value >= 0, where, field, "must not be negative");
+  require_field(saturation_level > 0 && saturation_level <= 1, where, "saturation_level",
+                "must lie in (0, 1] (of full scale)");
+  require_field(min_step_correlation >= -1 && min_step_correlation <= 1, where,
+                "min_step_correlation", "must lie in [-1, 1]");
+  for (auto [value, field] : {std::pair{min_fringe_points, "min_fringe_points"},
+                              {step_check_min_samples, "step_check_min_samples"}})
+    require_field(value >= 0, where, field, "must not be negative");
+  require_field(min_phase_samples >= 1, where, "min_phase_samples", "must be at least 1");
 }
 
 // The controller: the stages of calibration_stages.hpp in order.
@@ -73,7 +108,7 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
   CalibrationOutcome out;
   const PatternRoles roles(set);
 
-  const std::vector<BoardDetection> boards = detect_boards(set, roles, positions);
+  const std::vector<BoardDetection> boards = detect_boards(set, roles, positions, options);
   choose_camera(options, boards, set, out);
 
   const LensShift shift(set.nominal);
@@ -94,7 +129,7 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
   if (out.camera_self_calibrated) {
     // The boards alone leave the camera a few percent off (issue #12): refit it with the
     // fringe points, then register again through it.
-    refine_self_calibration(set, boards, states, out);
+    refine_self_calibration(set, options, boards, states, out);
     for (size_t i = 0; i < positions.size(); ++i) {
       const PositionContext ctx = context(i);
       states[i].fringe = {};

@@ -46,6 +46,30 @@ struct CalibrateOptions {
   double max_clipped_fraction = 0.25;  // of the screen saturated in one capture
   double min_contrast = 0.06;          // white minus black, fraction of full scale
 
+  // What the stages (calibration_stages.cpp) accept, refuse and warn about.
+  int min_board_corners = 8;  // fewer ChArUco corners found: no usable board (the pose needs them)
+  // A self-calibrated focal length less certain than this (relative, 1 sigma) is refused: it
+  // would carry tens of percent into the view cone and center (choose_camera).
+  double max_focal_sigma_rel = 0.10;
+  double warn_self_calibration_rms_px = 1.0;  // worse: a --camera file would do better
+  double warn_board_rms_px = 3.0;    // board reprojection error worse than this: focus?
+  double saturation_level = 0.985;   // a screen pixel's brightest channel counts as clipped from here
+  double marker_search_fraction = 0.1;  // of the image diagonal: a corner marker farther from
+                                        // where the registration puts it is a false detection
+  // Board capture vs the first marked capture: the corner markers may move this much plus a lens
+  // of apparent shift plus this fraction of the image diagonal (the board pose's error).
+  double max_board_motion_px = 4.0;
+  double max_board_motion_diag_fraction = 0.01;
+  double max_motion_diag_fraction = 0.005;  // max_motion_px's floor, of the image diagonal
+  double max_fringe_shift_periods = 0.4;    // fringe blocks whose seen view is nearer its wrap
+                                            // mix content a lens apart: left out
+  int min_fringe_points = 100;     // fewer decoded fringe blocks: the board alone registers
+  double min_step_correlation = 0.5;  // a phase photo correlating less is the wrong pattern
+  int step_check_min_samples = 100;   // the correlation says nothing with fewer samples
+  int min_phase_samples = 500;        // fewer per position: too little to solve with
+  double warn_exposure_change = 0.02;  // exposure drift between the phase photos worth a warning
+  double warn_row_variation = 0.01;    // banding along the rows (flicker) worth a warning
+
   // Throws InputError("calibrate options: <field>: ...") for values that cannot work.
   void check() const;
 };

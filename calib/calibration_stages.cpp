@@ -38,7 +38,8 @@ struct Exposure {
   double clipped_fraction = 0, mean = 0;
 };
 
-Exposure exposure(const cv::Mat& rgb, const cv::Mat& mask) {
+Exposure exposure(const cv::Mat& rgb, const cv::Mat& mask, double saturation_level) {
+  const float saturated = float(saturation_level);
   Exposure e;
   long n = 0, clipped = 0;
   double sum = 0;
@@ -49,7 +50,7 @@ Exposure exposure(const cv::Mat& rgb, const cv::Mat& mask) {
       if (!m[x]) continue;
       ++n;
       const float mx = std::max({row[x][0], row[x][1], row[x][2]});
-      if (mx >= 0.985f) ++clipped;
+      if (mx >= saturated) ++clipped;
       sum += (row[x][0] + row[x][1] + row[x][2]) / 3.0;
     }
   }
@@ -94,17 +95,19 @@ cv::Point2d LensShift::correction_px(cv::Point2d px, const Eigen::Vector3d& came
 }
 
 std::vector<BoardDetection> detect_boards(const sim::PatternSet& set, const PatternRoles& roles,
-                                          const std::vector<sim::PositionCaptures>& positions) {
+                                          const std::vector<sim::PositionCaptures>& positions,
+                                          const CalibrateOptions& options) {
+  const size_t min_corners = size_t(options.min_board_corners);
   std::vector<BoardDetection> boards;
   const std::string stem = PatternRoles::stem(roles.board);
   for (const auto& pc : positions) {
     BoardDetection b = detect_board(sim::to_gray8(pc.image(stem)), set);
-    if (b.ids.size() < 8 && b.touches_border)
+    if (b.ids.size() < min_corners && b.touches_border)
       throw_input_error(
           "{}: the screen is partly outside the photo (the board is cut off at the image "
           "border, {} ChArUco corners left); step back or re-aim so the whole screen shows",
           pc.path(stem), b.ids.size());
-    if (b.ids.size() < 8)
+    if (b.ids.size() < min_corners)
       throw_input_error(
           "{}: no registration board found ({} ChArUco corners); show {} full screen, focus on "
           "the screen and keep all of it in the photo",
@@ -132,13 +135,13 @@ void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetec
   // tens of percent off and the view cone and center with it, while the solver takes the
   // camera as known. Measured on the Portrait unit: positions ~20 degrees apart give a sigma of
   // 5 % (error 1 %), the capture rig's near head-on positions 14 % (error 78 %).
-  if (focal_sigma_rel > kMaxSelfCalibrationFocalSigma)
+  if (focal_sigma_rel > options.max_focal_sigma_rel)
     throw_input_error(
         "the board photos do not determine the camera's focal length (uncertainty {:.0f} %, at "
         "most {:.0f} % usable): photograph the positions about 20 degrees to the sides of the "
         "screen's axis, or pass --camera camera.yaml from a camera calibration",
-        100 * focal_sigma_rel, 100 * kMaxSelfCalibrationFocalSigma);
-  if (rms > 1.0)
+        100 * focal_sigma_rel, 100 * options.max_focal_sigma_rel);
+  if (rms > options.warn_self_calibration_rms_px)
     out.warnings.push_back(fmt::format(
         "camera self-calibration reprojection error {:.2f} px; a --camera file from a proper "
         "camera calibration will give a more accurate center",
@@ -173,7 +176,7 @@ void register_position(const PositionContext& ctx, PositionState& state) {
           "{}: the screen is partly outside the photo (a screen corner falls at pixel "
           "({:.0f}, {:.0f}) of a {}x{} image); step back or re-aim so the whole screen shows",
           board_path, p.x, p.y, size.width, size.height);
-  if (rep.reprojection_rms_px > 3.0)
+  if (rep.reprojection_rms_px > ctx.options.warn_board_rms_px)
     ctx.warnings.push_back(fmt::format("{}: board reprojection error {:.2f} px (focus?)",
                                        board_path, rep.reprojection_rms_px));
   state.screen_mask = screen_mask(*reg, size);
@@ -183,8 +186,9 @@ void check_exposure(const PositionContext& ctx, PositionState& state) {
   const sim::PositionCaptures& pc = ctx.captures;
   const std::string white_stem = PatternRoles::stem(ctx.roles.white.at(0));
   const std::string black_stem = PatternRoles::stem(ctx.roles.black.at(0));
-  const Exposure white = exposure(pc.image(white_stem), state.screen_mask);
-  const Exposure black = exposure(pc.image(black_stem), state.screen_mask);
+  const double saturation = ctx.options.saturation_level;
+  const Exposure white = exposure(pc.image(white_stem), state.screen_mask, saturation);
+  const Exposure black = exposure(pc.image(black_stem), state.screen_mask, saturation);
   if (white.clipped_fraction > ctx.options.max_clipped_fraction)
     throw_input_error(
         "{}: over-exposed: {:.0f} % of the screen is saturated; lower the exposure time or ISO "
@@ -199,10 +203,12 @@ void check_exposure(const PositionContext& ctx, PositionState& state) {
 }
 
 void identify_patterns(const PositionContext& ctx, const PositionState& state) {
-  // Pattern identity and camera motion from the corner markers. A marker farther than a
-  // tenth of the image from where the registration puts it is a false detection.
+  // Pattern identity and camera motion from the corner markers. A marker farther than
+  // options.marker_search_fraction of the image from where the registration puts it is a false
+  // detection.
   const sim::PatternSet& set = ctx.set;
   const sim::PositionCaptures& pc = ctx.captures;
+  const CalibrateOptions& options = ctx.options;
   const Registration& reg = *state.registration;
   const display::DisplayCalibration& nd = set.nominal.display;
   const std::string board_path = pc.path(PatternRoles::stem(ctx.roles.board));
@@ -227,7 +233,8 @@ void identify_patterns(const PositionContext& ctx, const PositionState& state) {
     std::set<int> others;
     for (const auto& [id, corners] : markers) {
       const cv::Point2d centre = (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25;
-      if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > 0.1 * diag) continue;
+      if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > options.marker_search_fraction * diag)
+        continue;
       if (id / 4 == p.index) {
         own[id % 4] = centre;
       } else if (id / 4 < int(set.patterns.size())) {
@@ -246,7 +253,7 @@ void identify_patterns(const PositionContext& ctx, const PositionState& state) {
       // registration (tolerance: a lens of apparent shift plus the pose error).
       for (const auto& [corner, centre] : own) {
         const double moved = cv::norm(predicted_markers[size_t(corner)] - centre);
-        if (moved > 4.0 + lens_px + 0.01 * diag)
+        if (moved > options.max_board_motion_px + lens_px + options.max_board_motion_diag_fraction * diag)
           throw_input_error(
               "{}: the camera moved between the board capture and {} ({:.1f} px); use a "
               "tripod and a remote release",
@@ -262,7 +269,7 @@ void identify_patterns(const PositionContext& ctx, const PositionState& state) {
     if (moved.empty()) continue;
     std::sort(moved.begin(), moved.end());
     const double median = moved[moved.size() / 2];
-    if (median > std::max(ctx.options.max_motion_px, 0.005 * diag))
+    if (median > std::max(options.max_motion_px, options.max_motion_diag_fraction * diag))
       throw_input_error(
           "{}: the camera moved between the captures of position {} (the corner markers are "
           "{:.1f} px away from where {} shows them); use a tripod and a remote release",
@@ -296,14 +303,15 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   const Eigen::Vector3d camera = reg->camera_position_m();
   for (size_t k = 0; k < dense.image_px.size(); ++k) {
     // Blocks where the seen view wraps mix content a lens apart: no clean position.
-    if (std::abs(ctx.shift.periods(dense.panel_px[k], camera)) > 0.4) continue;
+    if (std::abs(ctx.shift.periods(dense.panel_px[k], camera)) > ctx.options.max_fringe_shift_periods)
+      continue;
     extra.image_px.push_back(dense.image_px[k]);
     extra.panel_px.push_back(dense.panel_px[k]);
     extra.shift_px.push_back(ctx.shift.correction_px(dense.panel_px[k], camera));
   }
   PositionReport& rep = state.report;
   rep.fringe_points = long(extra.image_px.size());
-  if (extra.image_px.size() >= 100) {
+  if (extra.image_px.size() >= size_t(ctx.options.min_fringe_points)) {
     reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift, extra);
     state.fringe = extra;
     rep.reprojection_rms_px = reg->reprojection_rms_px();
@@ -316,7 +324,8 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   }
 }
 
-void refine_self_calibration(const sim::PatternSet& set, const std::vector<BoardDetection>& boards,
+void refine_self_calibration(const sim::PatternSet& set, const CalibrateOptions& options,
+                             const std::vector<BoardDetection>& boards,
                              const std::vector<PositionState>& states, CalibrationOutcome& out) {
   const display::DisplayCalibration& nd = set.nominal.display;
   // Through a cover layer a camera sees a panel point where its light leaves the cover
@@ -351,12 +360,12 @@ void refine_self_calibration(const sim::PatternSet& set, const std::vector<Board
   const PlanarCalibration c = calibrate_planar_views(views, boards.at(0).image_size, &out.camera);
   out.camera = c.camera;
   out.camera_focal_sigma_rel = c.focal_sigma_rel;
-  if (c.focal_sigma_rel > kMaxSelfCalibrationFocalSigma)
+  if (c.focal_sigma_rel > options.max_focal_sigma_rel)
     throw_input_error(
         "the photos do not determine the camera's focal length (uncertainty {:.0f} % with the "
         "fringe points, at most {:.0f} % usable): photograph the positions about 20 degrees to "
         "the sides of the screen's axis, or pass --camera camera.yaml from a camera calibration",
-        100 * c.focal_sigma_rel, 100 * kMaxSelfCalibrationFocalSigma);
+        100 * c.focal_sigma_rel, 100 * options.max_focal_sigma_rel);
 }
 
 DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state) {
@@ -366,7 +375,7 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
   for (const auto* p : phase_p) {
     const std::string stem = PatternRoles::stem(p);
     const cv::Mat& img = pc.image(stem);
-    const Exposure e = exposure(img, state.screen_mask);
+    const Exposure e = exposure(img, state.screen_mask, ctx.options.saturation_level);
     if (e.clipped_fraction > ctx.options.max_clipped_fraction)
       throw_input_error("{}: over-exposed: {:.0f} % of the screen is saturated; lower the "
                         "exposure",
@@ -375,14 +384,14 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
   }
   DecodedPhase phase = decode_phase(captures, *state.registration, ctx.set, ctx.options.decode);
   for (size_t k = 0; k < phase_p.size(); ++k)
-    if (phase.step_correlation[k] < 0.5 && phase.samples.size() > 100)
+    if (phase.step_correlation[k] < ctx.options.min_step_correlation &&
+        phase.samples.size() > size_t(ctx.options.step_check_min_samples))
       throw_input_error(
           "{}: does not look like phase step {} of {} (correlation {:.2f}); was the right "
           "pattern shown?",
           pc.path(PatternRoles::stem(phase_p[k])), phase_p[k]->step, ctx.set.phase_steps,
           phase.step_correlation[k]);
-  const long min_samples = 500;
-  if (long(phase.samples.size()) < min_samples)
+  if (long(phase.samples.size()) < ctx.options.min_phase_samples)
     throw_input_error(
         "{}: only {} usable phase samples of {} screen blocks ({} saturated, {} without "
         "fringe contrast); focus on the screen, check the exposure, photograph from closer",
@@ -396,13 +405,13 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
   rep.median_modulation = phase.median_modulation;
   // Divided out already (calib/phasors/exposure_drift.hpp); said, because a camera that drifts this
   // much is worth fixing (manual exposure) and its white/black checks saw one exposure only.
-  if (phase.exposure.max_gain_change() > 0.02)
+  if (phase.exposure.max_gain_change() > ctx.options.warn_exposure_change)
     ctx.warnings.push_back(fmt::format(
         "{}: the exposure changed between the phase photos by up to {:.1f} % (measured on {} "
         "blocks without fringes and divided out); lock the camera's exposure",
         pc.name, 100 * phase.exposure.max_gain_change(), phase.exposure.reference_blocks));
   // Banding along the rows: a rolling shutter under flickering light.
-  if (phase.exposure.max_row_variation() > 0.01)
+  if (phase.exposure.max_row_variation() > ctx.options.warn_row_variation)
     ctx.warnings.push_back(fmt::format(
         "{}: the phase photos band along their rows by up to +-{:.1f} % (rolling shutter under "
         "flickering light; fitted and divided out); a shutter time of a whole number of flicker "

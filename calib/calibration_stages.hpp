@@ -54,11 +54,10 @@ class LensShift {
 
 // 1.
 std::vector<BoardDetection> detect_boards(const sim::PatternSet& set, const PatternRoles& roles,
-                                          const std::vector<sim::PositionCaptures>& positions);
-// A self-calibrated focal length less certain than this (relative, 1 sigma) is refused.
-inline constexpr double kMaxSelfCalibrationFocalSigma = 0.10;
+                                          const std::vector<sim::PositionCaptures>& positions,
+                                          const CalibrateOptions& options);
 // 2. Sets outcome.camera and outcome.camera_self_calibrated (warns on a poor self-calibration;
-// refuses boards that leave the focal length undetermined).
+// refuses boards that leave the focal length undetermined: options.max_focal_sigma_rel).
 void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetection>& boards,
                    const sim::PatternSet& set, CalibrationOutcome& outcome);
 
@@ -96,7 +95,8 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state);
 // a lens, a ramp across the screen with a jump where the seen view wraps, which biased the
 // focal length and principal point); sets outcome.camera and camera_focal_sigma_rel. The
 // positions are then registered again through it. Refuses a focal length still undetermined.
-void refine_self_calibration(const sim::PatternSet& set, const std::vector<BoardDetection>& boards,
+void refine_self_calibration(const sim::PatternSet& set, const CalibrateOptions& options,
+                             const std::vector<BoardDetection>& boards,
                              const std::vector<PositionState>& states, CalibrationOutcome& out);
 // 7.
 DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& state);

@@ -1,4 +1,4 @@
-// libFuzzer target: the Niantic SPZ reader (gzip v1-v3 and zstd v4 containers).
+// libFuzzer target: the Niantic SPZ reader (gzip v1-v3, raw v2/v3 and zstd v4 containers).
 // Any input must either parse or throw lfd::InputError; anything else (a crash, a sanitizer
 // report, another exception, an allocation beyond -rss_limit_mb) is a bug.
 #include <cstddef>

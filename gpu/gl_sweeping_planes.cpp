@@ -16,10 +16,6 @@ void GlSweepingPlanes::allocate_planes(PlaneFormat format, int max_planes, int w
   planes_ = GlPlanes(format, max_planes, width, height);
 }
 
-void GlSweepingPlanes::set_swizzle_views(int views_per_invocation) {
-  if (swizzle_.views_per_invocation() != views_per_invocation) swizzle_ = GlSwizzle(views_per_invocation);
-}
-
 void GlSweepingPlanes::set_swizzle(const SwizzleOptions& options) {
   if (!(swizzle_.options() == options)) swizzle_ = GlSwizzle(options);
 }

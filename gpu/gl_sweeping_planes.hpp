@@ -52,8 +52,6 @@ class GlSweepingPlanes {
   bool has_planes(PlaneFormat format, int max_planes, int width, int height) const;
   // A new plane array (the old one freed first: a lower peak).
   void allocate_planes(PlaneFormat format, int max_planes, int width, int height);
-  // Views per invocation of the swizzle (gpu/gl_swizzle.hpp; the benchmark compares them).
-  void set_swizzle_views(int views_per_invocation);
   // All of the swizzle's options (its views per invocation, factor table, hardware bilinear).
   void set_swizzle(const SwizzleOptions& options);
 

@@ -41,7 +41,6 @@ class GlSwizzle {
  public:
   explicit GlSwizzle(int views_per_invocation = kSwizzleViewsPerInvocation);
   explicit GlSwizzle(const SwizzleOptions& options);
-  int views_per_invocation() const { return options_.views_per_invocation; }
   const SwizzleOptions& options() const { return options_; }
 
   // Writes every view of `geometry` into `quilt` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F; the

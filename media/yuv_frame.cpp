@@ -2,20 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
 
 namespace lfd::media {
-
-const char* yuv_matrix_name(YuvMatrix m) {
-  switch (m) {
-    case YuvMatrix::kBt601: return "BT.601";
-    case YuvMatrix::kBt709: return "BT.709";
-    case YuvMatrix::kBt2020: return "BT.2020";
-  }
-  return "?";
-}
-
-const char* yuv_range_name(YuvRange r) { return r == YuvRange::kFull ? "full" : "limited"; }
 
 YuvToRgb yuv_to_rgb_coefficients(YuvMatrix m, YuvRange r) {
   // E'y = Kr R + (1 - Kr - Kb) G + Kb B; Cb = (B - Y) / (2 (1 - Kb)); Cr = (R - Y) / (2 (1 - Kr)).
@@ -35,21 +23,6 @@ YuvToRgb yuv_to_rgb_coefficients(YuvMatrix m, YuvRange r) {
               float(r_cr * c_scale), float(g_cr * c_scale), 0.f};
   t.offset = {float(y_off), float(c_off), float(c_off)};
   return t;
-}
-
-YuvFrame copy_frame(const YuvFrame& frame) {
-  YuvFrame out = frame;
-  auto store = std::make_shared<std::array<std::vector<uint8_t>, 3>>();
-  for (int p = 0; p < 3; ++p) {
-    const YuvPlane& in = frame.planes[p];
-    auto& bytes = (*store)[p];
-    bytes.resize(size_t(in.width) * in.height);
-    for (int y = 0; y < in.height; ++y)
-      std::copy_n(in.data + size_t(y) * in.stride, in.width, bytes.data() + size_t(y) * in.width);
-    out.planes[p] = YuvPlane{bytes.data(), in.width, in.width, in.height};
-  }
-  out.storage = store;
-  return out;
 }
 
 namespace {

@@ -15,8 +15,6 @@ namespace lfd::media {
 
 enum class YuvMatrix { kBt601, kBt709, kBt2020 };
 enum class YuvRange { kLimited, kFull };  // limited: Y in [16, 235], U/V in [16, 240]
-const char* yuv_matrix_name(YuvMatrix matrix);
-const char* yuv_range_name(YuvRange range);
 
 // rgb = matrix * (yuv - offset), with yuv the 8-bit samples divided by 255 and rgb in [0, 1]
 // before clamping; column-major 3x3 (GL's mat3 order: matrix[col * 3 + row]).
@@ -42,9 +40,6 @@ struct YuvFrame {
   int64_t index = 0;             // round(pts_s * frame rate)
   std::shared_ptr<const void> storage;  // keeps the planes alive (the decoder's frame)
 };
-
-// A copy that owns its planes (tests keep frames past the decoder's next call).
-YuvFrame copy_frame(const YuvFrame& frame);
 
 // The CPU reference: RGB, rows top-down. Chroma is sampled bilinearly at each luma pixel's
 // centre with clamped edges, as the GPU's linear filter samples the half-size U and V textures.

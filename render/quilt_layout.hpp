@@ -23,9 +23,6 @@ struct QuiltLayout {
   // Top-left pixel of view k's tile in a top-down image (row 0 = top).
   int tile_x(int view) const { return (view % cols) * tile_width(); }
   int tile_y_top_down(int view) const { return height - (view / cols + 1) * tile_height(); }
-  // Fraction of the texture covered by whole tiles (Looking Glass "viewPortion").
-  double portion_x() const { return width > 0 ? double(cols * tile_width()) / width : 1.0; }
-  double portion_y() const { return height > 0 ? double(rows * tile_height()) / height : 1.0; }
   // Throws lfd::InputError naming `what` if the layout is unusable.
   void check(const std::string& what) const;
 };

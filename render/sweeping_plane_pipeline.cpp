@@ -3,7 +3,6 @@
 #include <chrono>
 
 #include "render/g2lf.hpp"
-#include "render/swizzle_blend.hpp"
 
 namespace lfd::render {
 
@@ -37,20 +36,6 @@ void run_sweeping_planes(const SweepingPlaneStages& stages, const QuiltGeometry&
     stats->seconds_planes = seconds(t1, t2);
     stats->seconds_swizzle = seconds(t2, t3);
   }
-}
-
-ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
-                                   const QuiltLayout& layout, const G2lfOptions& options,
-                                   const glm::vec3& background, SweepingPlaneStats* stats) {
-  ImageF quilt;
-  run_sweeping_planes(
-      stages, geometry, options,
-      [&](const SweepingPlanes& planes, const ReferenceCamera& ref) {
-        quilt = ImageF(layout.width, layout.height, 3, 0.0f);
-        swizzle_blend(planes, geometry, ref, layout, options.filter, background, quilt);
-      },
-      stats);
-  return quilt;
 }
 
 }  // namespace lfd::render

@@ -52,8 +52,9 @@ void copy_plane_stats(const SweepingPlaneStats& frame, MethodStats& stats) {
   stats.seconds_swizzle = frame.seconds_swizzle;
 }
 
-// What a frame does with its planes once they exist: the swizzle into a quilt
-// (render_sweeping_plane_quilt), or the direct pass into a panel (interlace/direct_panel.hpp).
+// What a frame does with its planes once they exist: the swizzle into a quilt (swizzle_blend.hpp,
+// as render_quilt_g2lf and voxel::render_quilt_v2lf do), or the direct pass into a panel
+// (interlace/direct_panel.hpp).
 // Timed as the stage after the planes (SweepingPlaneStats::seconds_swizzle).
 using PlaneConsumer = std::function<void(const SweepingPlanes&, const ReferenceCamera&)>;
 
@@ -62,12 +63,5 @@ using PlaneConsumer = std::function<void(const SweepingPlanes&, const ReferenceC
 void run_sweeping_planes(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
                          const G2lfOptions& options, const PlaneConsumer& consume,
                          SweepingPlaneStats* stats = nullptr);
-
-// Alg. 1 end to end with `stages`: the quilt (layout size, RGB, rows top-down, 0 outside the
-// tiles) for options.d_shift, plane_scale, filter over `background`. The caller has checked
-// `options` against `geometry`.
-ImageF render_sweeping_plane_quilt(const SweepingPlaneStages& stages, const QuiltGeometry& geometry,
-                                   const QuiltLayout& layout, const G2lfOptions& options,
-                                   const glm::vec3& background, SweepingPlaneStats* stats = nullptr);
 
 }  // namespace lfd::render

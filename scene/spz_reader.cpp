@@ -1,7 +1,9 @@
 // Niantic SPZ (after nianticlabs/spz load-spz.cc; docs/rendering.md "Scene formats").
 // v1-v3: the whole file is gzip; inside, a 16-byte header and the attribute arrays in the
-// order positions, alphas, colours, scales, rotations, SH. v4: a 32-byte plain header, a table
-// of contents and one zstd stream per attribute in the same order.
+// order positions, alphas, colours, scales, rotations, SH. v2 and v3 are also read raw (the
+// same bytes without the gzip layer, as PlayCanvas splat-transform reads and its fixtures hold
+// them; told apart by the first bytes: gzip's 1f 8b or the header's 'NGSP'). v4: a 32-byte
+// plain header, a table of contents and one zstd stream per attribute in the same order.
 // Decompression is bounded: the expected size follows from the header's point count, and it
 // must be reachable from the compressed bytes present (deflate cannot exceed 1032:1), so a tiny
 // file claiming billions of points fails before any allocation.
@@ -210,6 +212,27 @@ GaussianScene decode(const SpzHeader& h, const Arrays& a, const std::string& nam
   return scene;
 }
 
+// The bytes of a v1-v3 payload (header and arrays) with header `h`; refuses extension records.
+uint64_t legacy_payload_bytes(const SpzHeader& h, const std::string& name) {
+  if (h.flags & kFlagHasExtensions)
+    throw_input_error("{}: SPZ v{} extension records are not supported", name, h.version);
+  uint64_t total = kLegacyHeaderBytes;
+  for (uint64_t s : stream_sizes(h)) total += s;
+  return total;
+}
+
+// A v1-v3 payload of legacy_payload_bytes(h) bytes: the header, then the six arrays.
+GaussianScene decode_legacy(const SpzHeader& h, std::string_view payload, const std::string& name) {
+  const auto sizes = stream_sizes(h);
+  Arrays a;
+  size_t offset = kLegacyHeaderBytes;
+  for (size_t k = 0; k < 6; ++k) {
+    a.streams[k] = payload.substr(offset, size_t(sizes[k]));
+    offset += size_t(sizes[k]);
+  }
+  return decode(h, a, name);
+}
+
 GaussianScene read_legacy(std::string_view bytes, const std::string& name) {
   GzipReader gzip(bytes, name);
   std::string data;
@@ -217,31 +240,32 @@ GaussianScene read_legacy(std::string_view bytes, const std::string& name) {
   const SpzHeader h = parse_header(reinterpret_cast<const unsigned char*>(data.data()), name);
   if (h.version == 4)
     throw_input_error("{}: SPZ version 4 must not be gzip-wrapped", name);
-  if (h.flags & kFlagHasExtensions)
-    throw_input_error("{}: SPZ v{} extension records are not supported", name, h.version);
-  const auto sizes = stream_sizes(h);
-  uint64_t total = kLegacyHeaderBytes;
-  for (uint64_t s : sizes) total += s;
+  const uint64_t total = legacy_payload_bytes(h, name);
   if (total > kMaxDecompressedBytes || total / kMaxDeflateRatio > bytes.size())
     throw_input_error("{}: SPZ claims {} points ({} bytes) but the file has only {} bytes", name,
                       h.num_points, total, bytes.size());
   gzip.read_to(data, size_t(total));
-  Arrays a;
-  size_t offset = kLegacyHeaderBytes;
-  for (size_t k = 0; k < 6; ++k) {
-    a.streams[k] = std::string_view(data).substr(offset, size_t(sizes[k]));
-    offset += size_t(sizes[k]);
-  }
-  return decode(h, a, name);
+  return decode_legacy(h, data, name);
+}
+
+// v2 and v3 without the gzip layer: the payload is the file (bytes after it are ignored, as
+// after the gzip payload).
+GaussianScene read_raw_legacy(std::string_view bytes, const std::string& name) {
+  if (bytes.size() < kLegacyHeaderBytes) throw_input_error("{}: truncated SPZ header", name);
+  const SpzHeader h = parse_header(reinterpret_cast<const unsigned char*>(bytes.data()), name);
+  if (h.version == 1)
+    throw_input_error("{}: SPZ version 1 without gzip (only v2 and v3 are read raw)", name);
+  const uint64_t total = legacy_payload_bytes(h, name);
+  if (total > kMaxDecompressedBytes || total > bytes.size())
+    throw_input_error("{}: truncated SPZ: it claims {} points ({} bytes) but the file has only {} "
+                      "bytes", name, h.num_points, total, bytes.size());
+  return decode_legacy(h, bytes.substr(0, size_t(total)), name);
 }
 
 GaussianScene read_v4(std::string_view bytes, const std::string& name) {
   const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
   if (bytes.size() < kV4HeaderBytes) throw_input_error("{}: truncated SPZ v4 header", name);
   const SpzHeader h = parse_header(p, name);
-  if (h.version != 4)
-    throw_input_error("{}: uncompressed SPZ container with version {} (only v4 is)", name,
-                      h.version);
   const size_t num_streams = p[15];
   const uint64_t toc_offset = u32_at(p + 16);
   const auto sizes = stream_sizes(h);
@@ -309,8 +333,9 @@ GaussianScene read_v4(std::string_view bytes, const std::string& name) {
 GaussianScene read_spz(std::string_view bytes, const std::string& name) {
   if (bytes.size() >= 2 && uint8_t(bytes[0]) == 0x1f && uint8_t(bytes[1]) == 0x8b)
     return read_legacy(bytes, name);
-  if (bytes.size() >= 4 && u32_at(reinterpret_cast<const unsigned char*>(bytes.data())) == kSpzMagic)
-    return read_v4(bytes, name);
+  const auto* p = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (bytes.size() >= 4 && u32_at(p) == kSpzMagic)
+    return bytes.size() >= 8 && u32_at(p + 4) == 4 ? read_v4(bytes, name) : read_raw_legacy(bytes, name);
   throw_input_error("{}: not an SPZ file (neither gzip nor 'NGSP' magic)", name);
 }
 

@@ -33,7 +33,6 @@ class BridgeApi {
   BridgeApi(DisplayService& displays, PlaylistStore& playlists, EventHub& events, const ServeLimits& limits);
   // Any endpoint and body; bad input gets an error reply and a log line, never an exception.
   BridgeResponse handle(const std::string& endpoint, std::string_view body);
-  bool knows(const std::string& endpoint) const { return handlers_.count(endpoint) > 0; }
 
  private:
   using Handler = std::function<nlohmann::json(const nlohmann::json&)>;

@@ -258,8 +258,8 @@ class LensProblem {
       so.sparse_linear_algebra_library_type = ceres::EIGEN_SPARSE;
     so.max_num_iterations = options_.max_iterations;
     so.num_threads = options_.threads;
-    so.function_tolerance = 1e-10;
-    so.parameter_tolerance = 1e-12;
+    so.function_tolerance = options_.function_tolerance;
+    so.parameter_tolerance = options_.parameter_tolerance;
     so.minimizer_progress_to_stdout = options_.verbose;
     ceres::Solver::Summary summary;
     ceres::Solve(so, problem_.get(), &summary);
@@ -293,7 +293,7 @@ class LensProblem {
         sum2 += r * r;
         ++n;
       }
-    if (n < 10) {
+    if (n < options_.min_noise_samples) {
       obs_sigma_ = options_.obs_sigma;
       result.obs_sigma_periods = obs_sigma_;
       return;
@@ -312,8 +312,9 @@ class LensProblem {
     result.obs_sigma_periods = obs_sigma_;
   }
 
-  // The mean over cells (of 1/cells of the screen per side, per position, 10 inliers or more)
-  // of n * mean^2 / sigma2: 1 for independent errors, larger when a cell's samples share them.
+  // The mean over cells (of 1/cells of the screen per side, per position, with at least
+  // options_.min_cell_samples inliers) of n * mean^2 / sigma2: 1 for independent errors, larger
+  // when a cell's samples share them.
   double inflation_in_cells(int cells, double sigma2) const {
     double inflation_sum = 0;
     long cells_used = 0;
@@ -329,7 +330,7 @@ class LensProblem {
         sums[size_t(cv) * cells + cu].second += 1;
       }
       for (const auto& [sum, count] : sums)
-        if (count >= 10) {
+        if (count >= options_.min_cell_samples) {
           inflation_sum += sum * sum / double(count);  // = count * mean^2
           ++cells_used;
         }
@@ -344,7 +345,7 @@ class LensProblem {
     ceres::Covariance::Options co;
     co.algorithm_type = ceres::DENSE_SVD;
     co.null_space_rank = -1;
-    co.min_reciprocal_condition_number = 1e-14;
+    co.min_reciprocal_condition_number = options_.min_reciprocal_condition;
     co.num_threads = options_.threads;
     ceres::Covariance cov(co);
     std::vector<const double*> blocks{lens_};
@@ -568,10 +569,10 @@ SolverResult solve_on_grid(const display::Calibration& nominal, const LensEstima
   LensProblem problem(nominal, start, positions, options);
   SolverResult result;
   // Stage 1: the linear model only, wide loss (the unmodelled warp is up to ~0.3 period).
-  problem.solve_stage(0.2, false, result);
+  problem.solve_stage(options.linear_loss_scale, false, result);
   problem.update_content_points();
   // Stage 2: with the correction field.
-  problem.solve_stage(0.1, true, result);
+  problem.solve_stage(options.field_loss_scale, true, result);
   problem.update_content_points();
   // Stage 3: final robust scale, the measured noise, uncertainties.
   problem.measure_noise(result);

@@ -49,6 +49,18 @@ struct SolverOptions {
   double smoothness = 0.02;
   double obs_sigma = 0.02;       // phase noise per sample assumed before it is measured, periods
   double loss_scale = 0.05;      // Cauchy scale of the final stage, lens periods
+  double linear_loss_scale = 0.2;  // of the first stage (linear model): the warp it leaves out
+                                   // is up to ~0.3 period, which must not count as outliers
+  double field_loss_scale = 0.1;   // of the second stage, the correction field freed
+  // A stage ends in CONVERGENCE (what the quality gates ask for) when the cost's relative change
+  // or the step's falls below these (Ceres' function_tolerance, parameter_tolerance).
+  double function_tolerance = 1e-10;
+  double parameter_tolerance = 1e-12;
+  int min_noise_samples = 10;  // inliers needed to measure the phase noise (else obs_sigma stays)
+  int min_cell_samples = 10;   // inliers a screen cell needs to count in the noise's inflation
+  // The covariance refuses (no sigmas) a Jacobian conditioned worse than this (Ceres'
+  // min_reciprocal_condition_number): the problem is rank deficient there.
+  double min_reciprocal_condition = 1e-14;
   bool fit_view_cone = true;     // needs >= 2 positions (else the nominal cone is kept)
   // The vertical offset across the slanted lens lines in f_seen (lens_relations.hpp); false
   // models the horizontal offset alone, only to measure what leaving it out costs.

@@ -118,7 +118,7 @@ TEST(CalibrateSelfCalibration, HeadOnPositionsAreCalibratedWithHonestSigmas) {
   std::printf("focal error %+.4f, sigma %.4f; cone error %.3f, sigma %.3f deg; center %.4f\n",
               focal_error, out.camera_focal_sigma_rel, e.view_cone_deg, cone_sigma,
               e.center_periods);
-  EXPECT_LT(out.camera_focal_sigma_rel, kMaxSelfCalibrationFocalSigma);
+  EXPECT_LT(out.camera_focal_sigma_rel, CalibrateOptions{}.max_focal_sigma_rel);
   EXPECT_LT(std::abs(focal_error), 3 * out.camera_focal_sigma_rel);
   EXPECT_LT(e.view_cone_deg, 3 * cone_sigma);
   EXPECT_LT(e.center_periods, 0.02);

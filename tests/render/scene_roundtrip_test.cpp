@@ -1,5 +1,5 @@
 // scene::save_ply writes what scene::load_gaussian_scene reads back: binary and ASCII PLY, all SH degrees; SPZ v4
-// (zstd streams) decodes exactly like the equivalent v3 (gzip) file.
+// (zstd streams) and raw v2/v3 (no gzip layer) decode exactly like the equivalent gzip file.
 #include <unistd.h>
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -15,6 +15,7 @@
 #include "scene/ply_writer.hpp"
 #include "render/scene_generator.hpp"
 #include "scene/gaussian_io.hpp"
+#include "scene/spz_writer.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::render {
@@ -141,24 +142,27 @@ TEST(SpzContainers, V4ZstdStreamsDecodeLikeTheV3GzipFile) {
 
 using lfd::test::gzip;
 
+// The v3 fixture's payload as version 2: rotations re-encoded as v2 bytes, xyz of the
+// file-frame (RUB) quaternion with w >= 0, byte = (c + 1) * 127.5.
+std::string v2_payload(const std::string& v3_payload, const scene::GaussianScene& v3_scene) {
+  std::string v2 = v3_payload.substr(0, 16 + 27 + 3 + 9 + 9);
+  v2[4] = 2;
+  for (size_t i = 0; i < 3; ++i) {
+    auto q = v3_scene.rotations[i];  // RDF (w, x, y, z)
+    const float sign = q[0] < 0 ? -1.0f : 1.0f;
+    const float rub_xyz[3] = {sign * q[1], -sign * q[2], -sign * q[3]};
+    for (float c : rub_xyz) v2 += char(uint8_t(std::lround((c + 1.0f) * 127.5f)));
+  }
+  return v2 + v3_payload.substr(16 + 27 + 3 + 9 + 9 + 12);
+}
+
 TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
   const fs::path v3 = test::fixture_scene("three-points.spz");
   const scene::GaussianScene expected = scene::load_gaussian_scene(v3);
   const std::string raw = gunzip(read_bytes(v3));
   ASSERT_EQ(raw.size(), 211u);
-  // Same payload with version 2 and rotations re-encoded as v2 bytes: xyz of the file-frame
-  // (RUB) quaternion with w >= 0, byte = (c + 1) * 127.5.
-  std::string v2 = raw.substr(0, 16 + 27 + 3 + 9 + 9);
-  v2[4] = 2;
-  for (size_t i = 0; i < 3; ++i) {
-    auto q = expected.rotations[i];  // RDF (w, x, y, z)
-    const float sign = q[0] < 0 ? -1.0f : 1.0f;
-    const float rub_xyz[3] = {sign * q[1], -sign * q[2], -sign * q[3]};
-    for (float c : rub_xyz) v2 += char(uint8_t(std::lround((c + 1.0f) * 127.5f)));
-  }
-  v2 += raw.substr(16 + 27 + 3 + 9 + 9 + 12);
   const fs::path path = temp_path("three-points-v2.spz");
-  std::ofstream(path, std::ios::binary) << gzip(v2);
+  std::ofstream(path, std::ios::binary) << gzip(v2_payload(raw, expected));
   const scene::GaussianScene got = scene::load_gaussian_scene(path);
   ASSERT_EQ(got.size(), 3u);
   for (size_t i = 0; i < 3; ++i) {
@@ -168,6 +172,37 @@ TEST(SpzContainers, V2ThreeByteRotationsDecodeLikeV3) {
     EXPECT_GT(std::fabs(dot), 0.9999f) << "Gaussian " << i;
   }
   EXPECT_EQ(got.sh, expected.sh);
+}
+
+// The writer's payload without its gzip layer (PlayCanvas splat-transform reads and writes
+// such files): the scene of the gzip file bit for bit, and the PLY it was written from to
+// SPZ's quantisation (tests/render/scene_formats_test.cpp has each attribute's bound).
+TEST(SpzContainers, RawV3PayloadReadsLikeTheGzipFile) {
+  const scene::GaussianScene truth = scene::load_gaussian_scene(test::fixture_scene("three-points.ply"));
+  const std::string gzipped = scene::encode_spz(truth);
+  const std::string raw = gunzip(gzipped);
+  ASSERT_EQ(raw.substr(0, 4), "NGSP");
+  ASSERT_EQ(raw.size(), 211u);  // reference section 8: 16 + 27 + 3 + 9 + 9 + 12 + 135
+  const fs::path gz = temp_path("three-points-written.spz");
+  const fs::path plain = temp_path("three-points-raw.spz");
+  std::ofstream(gz, std::ios::binary) << gzipped;
+  std::ofstream(plain, std::ios::binary) << raw;
+  const scene::GaussianScene got = scene::load_gaussian_scene(plain);
+  expect_same(scene::load_gaussian_scene(gz), got, 0.0f);
+  for (size_t i = 0; i < truth.size(); ++i) {
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(got.positions[i][a], truth.positions[i][a], 0.6f / 4096);
+    EXPECT_NEAR(got.opacities[i], truth.opacities[i], 0.6f / 255);
+  }
+}
+
+TEST(SpzContainers, RawV2PayloadReadsLikeTheGzipFile) {
+  const fs::path v3 = test::fixture_scene("three-points.spz");
+  const std::string v2 = v2_payload(gunzip(read_bytes(v3)), scene::load_gaussian_scene(v3));
+  const fs::path gz = temp_path("three-points-v2-gzip.spz");
+  const fs::path plain = temp_path("three-points-v2-raw.spz");
+  std::ofstream(gz, std::ios::binary) << gzip(v2);
+  std::ofstream(plain, std::ios::binary) << v2;
+  expect_same(scene::load_gaussian_scene(gz), scene::load_gaussian_scene(plain), 0.0f);
 }
 
 }  // namespace

@@ -196,6 +196,20 @@ TEST_F(SceneBadInput, SpzUnknownVersion) {
   expect_rejected(write("v9.spz", gzip(spz_header(9, 1, 0))), "version 9");
 }
 
+TEST_F(SceneBadInput, SpzRawCountLargerThanData) {
+  expect_rejected(write("raw_count.spz", spz_header(3, 5, 0) + std::string(3 * 20, '\x40')),
+                  "truncated");
+}
+
+TEST_F(SceneBadInput, SpzRawShorterThanItsHeader) {
+  expect_rejected(write("raw_header.spz", spz_header(3, 1, 0).substr(0, 10)), "truncated");
+}
+
+TEST_F(SceneBadInput, SpzRawVersion1IsRefused) {
+  expect_rejected(write("raw_v1.spz", spz_header(1, 1, 0) + std::string(15, '\x40')),
+                  "version 1");
+}
+
 TEST_F(SceneBadInput, SpzGzipWithoutMagic) {
   expect_rejected(write("nomagic.spz", gzip(std::string(64, 'x'))), "magic");
 }
