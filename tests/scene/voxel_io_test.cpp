@@ -8,7 +8,6 @@
 #include "scene/gaussian_io.hpp"
 #include "util/error.hpp"
 #include "scene/voxel_io.hpp"
-#include "voxel_test_scenes.hpp"
 
 namespace lfd::scene {
 namespace {

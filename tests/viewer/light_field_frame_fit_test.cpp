@@ -85,7 +85,7 @@ TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   const scene::GaussianScene scene = test_scene();
   ViewerSettings s = small_settings();
   s.g2lf.precision = render::PlanePrecision::kF32;
-  const FramePlan plan = plan_frame(test_display(), render::frame_scene(scene), s);
+  const lightfield::ViewPlan plan = plan_frame(test_display(), render::frame_scene(scene), s);
   // u8 planes drawn layered are RGBA16F (half of RGBA32F; RGBA8 with a float accumulation
   // array of one layer here when those do not fit), so u8 needs less than RGBA32F.
   gpu::GlG2lfOptions f32, u8;

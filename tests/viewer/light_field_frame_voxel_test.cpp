@@ -51,7 +51,7 @@ TEST(LightFieldFrameVoxels, QuiltsAreTheCpusForBothMethods) {
     SCOPED_TRACE(method_name(method));
     const ViewerSettings settings = small_settings(method);
     frame.render(camera, settings);
-    const FramePlan& plan = frame.plan();
+    const lightfield::ViewPlan& plan = frame.plan();
     voxel::V2lfOptions v2lf;
     v2lf.planes = settings.g2lf;
     v2lf.split_levels = 0;
