@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "display/lens_model.hpp"
+#include "gpu/display_window.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/glfw_session.hpp"
 #include "play/entry_content.hpp"
@@ -19,7 +20,6 @@
 #include "display/display_quilt.hpp"
 #include "rgbd/gl_rgbd_views.hpp"
 #include "util/error.hpp"
-#include "viewer/display_window.hpp"
 
 namespace lfd::play {
 
@@ -60,7 +60,7 @@ struct Player::Impl {
   PlayerOptions options;
   display::LensModel lens;
   gpu::GlfwSession session{"lfd play needs a desktop session (X11 or Wayland) to open its window"};
-  std::unique_ptr<viewer::DisplayWindow> window;
+  std::unique_ptr<gpu::DisplayWindow> window;
   std::unique_ptr<QuiltTexture> quilt;
   std::unique_ptr<gpu::GlInterlacer> interlacer;
   render::QuiltLayout interlacer_layout;
@@ -95,7 +95,7 @@ struct Player::Impl {
   explicit Impl(PlayerOptions o)
       : options(std::move(o)), lens(options.calibration.display, options.calibration.correction) {
     const auto& d = options.calibration.display;
-    window = std::make_unique<viewer::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h);
+    window = std::make_unique<gpu::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h);
     glfwSetWindowTitle(window->handle(), window->on_display() ? "lfd play" : "lfd play (simulated display)");
     window->make_current();
     quilt = std::make_unique<QuiltTexture>();

@@ -10,6 +10,7 @@
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
+#include "gpu/display_window.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/glfw_session.hpp"
 #include "render/default_camera.hpp"
@@ -18,7 +19,6 @@
 #include "util/error.hpp"
 #include "util/progress.hpp"
 #include "viewer/control_window.hpp"
-#include "viewer/display_window.hpp"
 #include "viewer/frame_pacing.hpp"
 #include "viewer/input.hpp"
 #include "viewer/light_field_frame.hpp"
@@ -26,6 +26,9 @@
 #include "viewer/seen_from_previewer.hpp"
 
 namespace lfd::viewer {
+
+using gpu::DisplayWindow;
+
 namespace {
 
 // Mouse and key state of both windows, filled by GLFW callbacks (user pointer).
