@@ -23,21 +23,6 @@
 
 namespace lfd::play {
 
-const char* playback_event_name(PlaybackEventKind kind) {
-  switch (kind) {
-    case PlaybackEventKind::kEntryStarted: return "entry_started";
-    case PlaybackEventKind::kEntryEnded: return "entry_ended";
-    case PlaybackEventKind::kEntrySkipped: return "entry_skipped";
-    case PlaybackEventKind::kPaused: return "paused";
-    case PlaybackEventKind::kResumed: return "resumed";
-    case PlaybackEventKind::kSeeked: return "seeked";
-    case PlaybackEventKind::kLoopRestarted: return "loop_restarted";
-    case PlaybackEventKind::kPlaylistEnded: return "playlist_ended";
-    case PlaybackEventKind::kQuit: return "quit";
-  }
-  return "?";
-}
-
 namespace {
 
 bool same_layout(const render::QuiltLayout& a, const render::QuiltLayout& b) {

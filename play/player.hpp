@@ -64,7 +64,6 @@ enum class PlaybackEventKind {
   kPlaylistEnded,  // the last entry ended and looping is off: the player shows black
   kQuit,           // the window closed, Esc/Q, or quit() was called
 };
-const char* playback_event_name(PlaybackEventKind kind);
 
 struct PlaybackEvent {
   PlaybackEventKind kind = PlaybackEventKind::kEntryStarted;
