@@ -109,7 +109,7 @@ int RunPlay(int argc, char** argv) {
   std::vector<play::PlaylistEntry> entries = collect_entries(files, quilt, rgbd, duration, loop);
   options.loop = loop.value_or(!no_loop) && !no_loop;
   // One file: a bad one is an error (exit 2), not a skipped entry.
-  if (entries.size() == 1) play::open_entry(entries[0], options.calibration, options.image_duration_s, {!software, 1});
+  if (entries.size() == 1) play::open_entry(entries[0], options.calibration, {!software, 1});
 
   play::Player player(options);
   int started = 0;

@@ -3,13 +3,15 @@
 // display's monitor at the monitor's current video mode, drawing each pattern 1:1 (one texel
 // per panel pixel, no filtering, no scaling, no sRGB conversion) with vsync. The panel must
 // show the pattern's exact subpixel values: a scaled or colour-converted pattern is a
-// different phase pattern.
+// different phase pattern. The window and its GL 4.5 core context are gpu::DisplayWindow's (the
+// one `lfd play` and `lfd view` show the panel in), the GL objects gpu/'s wrappers.
 #include <chrono>
+#include <memory>
 
+#include "gpu/display_window.hpp"
+#include "gpu/gl_objects.hpp"
 #include "gpu/glfw_session.hpp"
 #include "live/live_devices.hpp"
-
-struct GLFWwindow;
 
 namespace lfd::live {
 
@@ -18,7 +20,7 @@ class PatternWindow : public PatternDisplay {
   // Opens the window on `monitor` (gpu::GlfwSession::find_display_monitor), which must be
   // width_px x height_px with a framebuffer of that size (no desktop scaling). `settle` is
   // how long show() waits once the pattern is on screen (the panel's response). Throws
-  // InputError when the window or a GL 3.3 core context cannot be made.
+  // InputError when the window or a GL 4.5 core context cannot be made.
   PatternWindow(const gpu::GlfwSession& session, GLFWmonitor* monitor, int width_px, int height_px,
                 std::chrono::milliseconds settle = std::chrono::milliseconds(0));
   ~PatternWindow() override;
@@ -43,10 +45,12 @@ class PatternWindow : public PatternDisplay {
  private:
   void draw();
 
-  GLFWwindow* window_ = nullptr;
   int width_ = 0, height_ = 0;
   std::chrono::milliseconds settle_;
-  unsigned program_ = 0, texture_ = 0, vertex_array_ = 0;
+  std::unique_ptr<gpu::DisplayWindow> window_;  // before the GL objects: they go first
+  gpu::Program program_;
+  gpu::Texture texture_;
+  std::unique_ptr<gpu::VertexArray> vertex_array_;
   bool has_pattern_ = false;
   bool enter_pressed_ = false;
 };

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <utility>
-#include <vector>
 
-#include <epoxy/gl.h>
+#include <epoxy/gl.h>  // before GLFW, which would include GL/gl.h
 #include <GLFW/glfw3.h>
+#include <opencv2/core.hpp>
 
 #include "util/error.hpp"
 
@@ -21,37 +21,25 @@ void on_key(GLFWwindow* window, int key, int, int action, int) {
 
 }  // namespace
 
-PreviewWindow::PreviewWindow(const gpu::GlfwSession&, GLFWmonitor* monitor, int width_px,
+PreviewWindow::PreviewWindow(const gpu::GlfwSession& session, GLFWmonitor* monitor, int width_px,
                              int height_px) {
-  glfwDefaultWindowHints();
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_VISIBLE, GLFW_FALSE);  // shown once placed
-  window_ = glfwCreateWindow(width_px, height_px, "lfd calibrate --live: aim the camera",
-                             nullptr, nullptr);
-  if (!window_)
-    throw_input_error("cannot open the camera preview window: {}", gpu::GlfwSession::last_error());
+  // No monitor: a normal window, width_px x height_px (nothing to fit it into).
+  window_ = std::make_unique<gpu::DisplayWindow>(session, nullptr, width_px, height_px,
+                                                 std::max(width_px, height_px));
+  GLFWwindow* handle = window_->handle();
+  glfwSetWindowTitle(handle, "lfd calibrate --live: aim the camera");
   if (monitor) {
     int x = 0, y = 0, w = 0, h = 0;
     glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
-    glfwSetWindowPos(window_, x + 40, y + 40);
+    glfwSetWindowPos(handle, x + 40, y + 40);
   }
-  glfwShowWindow(window_);
-  glfwSetWindowUserPointer(window_, &enter_pressed_);
-  glfwSetKeyCallback(window_, on_key);
-  glfwMakeContextCurrent(window_);
-  glfwSwapInterval(0);  // the camera paces the frames, not the monitor
-  glGenTextures(1, &texture_);
-  glGenFramebuffers(1, &framebuffer_);
+  glfwSetWindowUserPointer(handle, &enter_pressed_);
+  glfwSetKeyCallback(handle, on_key);
+  window_->set_swap_interval(0);  // the camera paces the frames, not the monitor
 }
 
 PreviewWindow::~PreviewWindow() {
-  glfwMakeContextCurrent(window_);
-  glDeleteFramebuffers(1, &framebuffer_);
-  glDeleteTextures(1, &texture_);
-  glfwDestroyWindow(window_);
+  if (window_) window_->make_current();  // the texture goes (before the window) while it is current
 }
 
 GLFWmonitor* PreviewWindow::other_monitor(GLFWmonitor* display) {
@@ -64,55 +52,34 @@ GLFWmonitor* PreviewWindow::other_monitor(GLFWmonitor* display) {
 
 void PreviewWindow::show(const cv::Mat& rgb8) {
   CV_Assert(rgb8.type() == CV_8UC3);
-  glfwMakeContextCurrent(window_);
-  const cv::Mat pixels = rgb8.isContinuous() ? rgb8 : rgb8.clone();
-  glBindTexture(GL_TEXTURE_2D, texture_);
+  window_->make_current();
+  // DisplayWindow shows a texture's row 0 at the bottom (GL's order); the frame's row 0 is its top.
+  cv::flip(rgb8, bottom_up_, 0);
+  if (texture_.width() != bottom_up_.cols || texture_.height() != bottom_up_.rows)
+    texture_ = gpu::Texture(GL_RGBA8, bottom_up_.cols, bottom_up_.rows);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  if (pixels.size() != texture_size_) {
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB8, pixels.cols, pixels.rows, 0, GL_RGB,
-                 GL_UNSIGNED_BYTE, pixels.data);
-    texture_size_ = pixels.size();
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
-  } else {
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, pixels.cols, pixels.rows, GL_RGB, GL_UNSIGNED_BYTE,
-                    pixels.data);
-  }
+  glTextureSubImage2D(texture_.id(), 0, 0, 0, bottom_up_.cols, bottom_up_.rows, GL_RGB, GL_UNSIGNED_BYTE,
+                      bottom_up_.data);
   draw();
-  glfwSwapBuffers(window_);
+  window_->swap();
 }
 
 void PreviewWindow::draw() {
-  // A blit scales without a shader; the frame's row 0 (its top) goes to the window's top.
-  int fb_w = 0, fb_h = 0;
-  glfwGetFramebufferSize(window_, &fb_w, &fb_h);
-  const double scale =
-      std::min(double(fb_w) / texture_size_.width, double(fb_h) / texture_size_.height);
-  const int w = int(texture_size_.width * scale), h = int(texture_size_.height * scale);
-  const int x0 = (fb_w - w) / 2, y0 = (fb_h - h) / 2;
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-  glViewport(0, 0, fb_w, fb_h);
-  glClearColor(0.1f, 0.1f, 0.1f, 1);
+  if (texture_.id()) {
+    window_->draw(texture_);  // fitted, keeping its aspect, black bars
+    glFinish();
+    return;
+  }
+  window_->make_current();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glClearColor(0, 0, 0, 1);
   glClear(GL_COLOR_BUFFER_BIT);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-  glBlitFramebuffer(0, 0, texture_size_.width, texture_size_.height, x0, y0 + h, x0 + w, y0,
-                    GL_COLOR_BUFFER_BIT, GL_LINEAR);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glFinish();
 }
 
 cv::Mat PreviewWindow::read_back() {
-  glfwMakeContextCurrent(window_);
-  int fb_w = 0, fb_h = 0;
-  glfwGetFramebufferSize(window_, &fb_w, &fb_h);
-  cv::Mat bottom_up(fb_h, fb_w, CV_8UC3), out;
-  if (texture_size_.area()) draw();  // the back buffer again: the front one may not be readable
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  glReadBuffer(GL_BACK);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, fb_w, fb_h, GL_RGB, GL_UNSIGNED_BYTE, bottom_up.data);
-  cv::flip(bottom_up, out, 0);
-  return out;
+  draw();  // the back buffer again: the front one may not be readable
+  const Image8 shown = window_->read_back_buffer();
+  return cv::Mat(shown.height, shown.width, CV_8UC3, const_cast<uint8_t*>(shown.pixels.data())).clone();
 }
 
 bool PreviewWindow::poll_enter() {
@@ -120,6 +87,6 @@ bool PreviewWindow::poll_enter() {
   return std::exchange(enter_pressed_, false);
 }
 
-bool PreviewWindow::closed() const { return glfwWindowShouldClose(window_); }
+bool PreviewWindow::closed() const { return window_->should_close(); }
 
 }  // namespace lfd::live

@@ -1,12 +1,16 @@
 #pragma once
 // The live preview while the user aims the camera: an ordinary window (not full screen) on a
 // monitor other than the display's, showing camera frames scaled to fit. It must not sit on
-// the display's panel: the camera would photograph it instead of the board.
+// the display's panel: the camera would photograph it instead of the board. The window is a
+// gpu::DisplayWindow without a monitor (a normal window showing a picture fitted), the frame a
+// gpu::Texture.
+#include <memory>
+
 #include <opencv2/core.hpp>
 
+#include "gpu/display_window.hpp"
+#include "gpu/gl_objects.hpp"
 #include "gpu/glfw_session.hpp"
-
-struct GLFWwindow;
 
 namespace lfd::live {
 
@@ -14,7 +18,7 @@ class PreviewWindow {
  public:
   // Opens a width_px x height_px window on `monitor` (its work area's top-left corner), or
   // where the window system puts it when `monitor` is null. Throws InputError when no
-  // window or GL 3.3 core context can be made.
+  // window or GL 4.5 core context can be made.
   PreviewWindow(const gpu::GlfwSession& session, GLFWmonitor* monitor, int width_px,
                 int height_px);
   ~PreviewWindow();
@@ -36,9 +40,9 @@ class PreviewWindow {
  private:
   void draw();  // the last frame into the back buffer
 
-  GLFWwindow* window_ = nullptr;
-  unsigned texture_ = 0, framebuffer_ = 0;
-  cv::Size texture_size_;
+  std::unique_ptr<gpu::DisplayWindow> window_;  // before the texture: it goes first
+  gpu::Texture texture_;  // the last frame, rows bottom-up (GL's order)
+  cv::Mat bottom_up_;     // the frame flipped for the upload, kept between frames
   bool enter_pressed_ = false;
 };
 

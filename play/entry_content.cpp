@@ -18,7 +18,7 @@ render::QuiltLayout rgbd_layout_for_display(int width, int height, const rgbd::R
 }
 
 EntryContent open_entry(const PlaylistEntry& entry, const display::Calibration& calibration,
-                        double default_duration_s, const media::DecoderOptions& decoder) {
+                        const media::DecoderOptions& decoder) {
   EntryContent content;
   content.name = entry.path.filename().string();
   content.rgbd = entry.rgbd;
@@ -40,13 +40,11 @@ EntryContent open_entry(const PlaylistEntry& entry, const display::Calibration& 
       content.still = std::move(image.pixels);
     }
     content.layout = layout_of(content.still->width, content.still->height);
-    content.duration_s = entry.duration_s.value_or(default_duration_s);
     return content;
   }
   content.video = std::make_unique<VideoStream>(entry.path, decoder);
   const media::VideoInfo& info = content.video->info();
   content.layout = layout_of(info.width, info.height);
-  content.duration_s = entry.duration_s.value_or(0.0);
   return content;
 }
 

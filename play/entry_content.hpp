@@ -8,7 +8,8 @@
 
 #include "display/calibration_file.hpp"
 #include "media/quilt_image.hpp"
-#include "play/player.hpp"
+#include "play/transport.hpp"
+#include "render/quilt_layout.hpp"
 #include "play/video_stream.hpp"
 
 namespace lfd::play {
@@ -19,13 +20,12 @@ struct EntryContent {
   std::optional<rgbd::RgbdOptions> rgbd;  // set: the picture is an RGB-D frame
   std::optional<Image8> still;          // a quilt image (uploaded once)
   std::unique_ptr<VideoStream> video;   // or a quilt video
-  double duration_s = 0;                // how long the entry runs (0: a video to its end)
 };
 
 // Opens a playlist entry for the display of `calibration` (its aspect for quilts without one;
-// its view count for RGB-D); `default_duration_s` for images.
+// its view count for RGB-D). How long it runs is the transport's rule (play/transport.hpp).
 EntryContent open_entry(const PlaylistEntry& entry, const display::Calibration& calibration,
-                        double default_duration_s, const media::DecoderOptions& decoder);
+                        const media::DecoderOptions& decoder);
 
 // The views an RGB-D frame of width x height becomes on this display: the display's view count
 // (display::quilt_for_display), tiles as tall as the colour half up to kMaxRgbdTileHeight.

@@ -1,7 +1,6 @@
 #include "play/player.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -11,32 +10,18 @@
 #include <fmt/format.h>
 
 #include "display/lens_model.hpp"
+#include "gpu/display_window.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/glfw_session.hpp"
 #include "play/entry_content.hpp"
 #include "play/player_keys.hpp"
 #include "play/quilt_texture.hpp"
+#include "play/transport.hpp"
 #include "display/display_quilt.hpp"
 #include "rgbd/gl_rgbd_views.hpp"
 #include "util/error.hpp"
-#include "viewer/display_window.hpp"
 
 namespace lfd::play {
-
-const char* playback_event_name(PlaybackEventKind kind) {
-  switch (kind) {
-    case PlaybackEventKind::kEntryStarted: return "entry_started";
-    case PlaybackEventKind::kEntryEnded: return "entry_ended";
-    case PlaybackEventKind::kEntrySkipped: return "entry_skipped";
-    case PlaybackEventKind::kPaused: return "paused";
-    case PlaybackEventKind::kResumed: return "resumed";
-    case PlaybackEventKind::kSeeked: return "seeked";
-    case PlaybackEventKind::kLoopRestarted: return "loop_restarted";
-    case PlaybackEventKind::kPlaylistEnded: return "playlist_ended";
-    case PlaybackEventKind::kQuit: return "quit";
-  }
-  return "?";
-}
 
 namespace {
 
@@ -55,12 +40,13 @@ GLFWmonitor* find_monitor(const gpu::GlfwSession& session, const PlayerOptions& 
 }  // namespace
 
 // Everything below runs on the GL thread except enqueue, publish's readers and the subscriber
-// table (each under its own mutex).
-struct Player::Impl {
+// table (each under its own mutex). The playlist, the clock and their rules are the transport's
+// (play/transport.hpp); the Impl is its output: it decodes, uploads, interlaces and shows.
+struct Player::Impl final : TransportOutput {
   PlayerOptions options;
   display::LensModel lens;
   gpu::GlfwSession session{"lfd play needs a desktop session (X11 or Wayland) to open its window"};
-  std::unique_ptr<viewer::DisplayWindow> window;
+  std::unique_ptr<gpu::DisplayWindow> window;
   std::unique_ptr<QuiltTexture> quilt;
   std::unique_ptr<gpu::GlInterlacer> interlacer;
   render::QuiltLayout interlacer_layout;
@@ -78,32 +64,29 @@ struct Player::Impl {
   int next_subscriber = 1;
 
   // Playback (GL thread).
-  std::vector<PlaylistEntry> playlist;
-  int index = -1;
+  Transport transport;
   std::optional<EntryContent> content;
   bool has_picture = false;     // the quilt texture holds the entry's picture
   bool panel_dirty = true;      // a new picture (or layout) since the panel was interlaced
-  bool announced = false;       // kEntryStarted sent for the current entry
-  double position = 0;
-  bool playing = true, looping = true, overlay = false, quit = false;
+  bool overlay = false;
   int64_t shown = 0, dropped = 0, decoded_closed = 0;
   int64_t video_index = -1;
   double video_pts = 0;
-  std::chrono::steady_clock::time_point last_tick{};
-  bool ticking = false;
 
   explicit Impl(PlayerOptions o)
-      : options(std::move(o)), lens(options.calibration.display, options.calibration.correction) {
+      : options(std::move(o)),
+        lens(options.calibration.display, options.calibration.correction),
+        transport({options.loop, options.image_duration_s, options.print_notices}, *this,
+                  [this](const PlaybackEvent& event) { send(event); }) {
     const auto& d = options.calibration.display;
-    window = std::make_unique<viewer::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h);
+    window = std::make_unique<gpu::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h);
     glfwSetWindowTitle(window->handle(), window->on_display() ? "lfd play" : "lfd play (simulated display)");
     window->make_current();
     quilt = std::make_unique<QuiltTexture>();
     panel = std::make_unique<gpu::Texture>(GL_RGBA8, d.screen_w, d.screen_h);
-    looping = options.loop;
   }
 
-  ~Impl() {
+  ~Impl() override {
     window->make_current();  // GL objects go while their context is current
     content.reset();
     interlacer.reset();
@@ -129,24 +112,21 @@ struct Player::Impl {
         command(*this);
       } catch (const InputError& e) {  // a bad quilt handed over: the notice, the old picture stays
         if (options.print_notices) std::cerr << fmt::format("notice: {}\n", e.what());
-        emit(PlaybackEventKind::kEntrySkipped, e.what());
+        transport.report_skipped(e.what());
       }
     }
   }
-
-  std::string entry_name() const { return content ? content->name : std::string(); }
 
   void update_rgbd_option(const std::string& key, const std::string& value) {
     if (!content || !content->rgbd)
       throw_input_error("{}: not an RGB-D entry, so {} does not apply", content ? content->name : "nothing shown", key);
     rgbd::set_rgbd_option(*content->rgbd, key, value);
-    if (index >= 0 && index < int(playlist.size()) && playlist[size_t(index)].rgbd)
-      rgbd::set_rgbd_option(*playlist[size_t(index)].rgbd, key, value);
+    if (PlaylistEntry* entry = transport.current_entry(); entry && entry->rgbd) rgbd::set_rgbd_option(*entry->rgbd, key, value);
     panel_dirty = true;  // the views are made again from the same frame
   }
 
-  void emit(PlaybackEventKind kind, const std::string& message = {}, std::string name = {}) {
-    const PlaybackEvent event{kind, index, name.empty() ? entry_name() : std::move(name), position, message};
+  // The transport's events to the subscribers.
+  void send(const PlaybackEvent& event) {
     std::vector<std::function<void(const PlaybackEvent&)>> callbacks;
     {
       std::lock_guard lock(subscriber_mutex);
@@ -155,96 +135,28 @@ struct Player::Impl {
     for (const auto& callback : callbacks) callback(event);
   }
 
-  void close_content() {
+  // --- TransportOutput ---
+  OpenedEntry open(const PlaylistEntry& entry) override {
+    content = open_entry(entry, options.calibration, {options.hardware_decode, options.decoder_threads});
+    if (!content->video) return {};
+    const media::VideoInfo& info = content->video->info();
+    if (options.print_notices)
+      std::cerr << fmt::format("{}: {}x{} {} at {:.3g} fps, decoder {}\n", content->name, info.width, info.height,
+                               info.codec, info.frame_rate, content->video->decode_path());
+    return {true, info.duration_s};
+  }
+
+  void close() override {
     if (content && content->video) decoded_closed += content->video->frames_decoded();
     content.reset();
     has_picture = false;
     panel_dirty = true;
-    announced = false;
     video_index = -1;
     video_pts = 0;
-    position = 0;
   }
 
-  // Starts entry `first`, skipping bad entries (a notice each); the playlist ends when none
-  // opens.
-  void start_entry(int first) {
-    close_content();
-    const int n = int(playlist.size());
-    for (int tried = 0, i = first; tried < n; ++tried, i = (i + 1) % n) {
-      if (i < first && !looping && tried > 0) break;
-      try {
-        content = open_entry(playlist[size_t(i)], options.calibration, options.image_duration_s,
-                             {options.hardware_decode, options.decoder_threads});
-        index = i;
-        if (content->video && options.print_notices)
-          std::cerr << fmt::format("{}: {}x{} {} at {:.3g} fps, decoder {}\n", content->name, content->video->info().width,
-                                   content->video->info().height, content->video->info().codec,
-                                   content->video->info().frame_rate, content->video->decode_path());
-        return;
-      } catch (const InputError& e) {
-        index = i;
-        if (options.print_notices) std::cerr << fmt::format("notice: skipped: {}\n", e.what());
-        emit(PlaybackEventKind::kEntrySkipped, e.what(), playlist[size_t(i)].path.filename().string());
-      }
-    }
-    end_playlist();
-  }
-
-  void end_playlist() {
-    close_content();
-    playing = false;
-    emit(PlaybackEventKind::kPlaylistEnded);
-  }
-
-  // The current entry ran its course: the next one, the first again when looping, or the end.
-  void advance() {
-    emit(PlaybackEventKind::kEntryEnded);
-    if (index < 0) {  // a quilt from show_quilt has no successor
-      close_content();
-      return;
-    }
-    const bool last = index + 1 >= int(playlist.size());
-    if (last && !looping) return end_playlist();
-    if (last) emit(PlaybackEventKind::kLoopRestarted);
-    if (last && playlist.size() == 1 && content && content->video) {  // one looping video: rewind it
-      content->video->seek(0);
-      position = 0;
-      return;
-    }
-    start_entry(last ? 0 : index + 1);
-  }
-
-  void go_to(int i) {
-    if (playlist.empty()) return;
-    const int n = int(playlist.size());
-    start_entry(((i % n) + n) % n);
-    playing = true;
-  }
-
-  void seek(double seconds) {
-    if (!content) return;
-    double end = content->duration_s;
-    if (content->video && content->video->info().duration_s > 0)
-      end = end > 0 ? std::min(end, content->video->info().duration_s) : content->video->info().duration_s;
-    position = std::clamp(seconds, 0.0, end > 0 ? end : seconds);
-    if (content->video) content->video->seek(position);
-    emit(PlaybackEventKind::kSeeked);
-  }
-
-  void set_playing(bool on) {
-    if (on == playing) return;
-    playing = on;
-    emit(on ? PlaybackEventKind::kResumed : PlaybackEventKind::kPaused);
-  }
-
-  // The clock: wall time between frames while playing (a stalled frame counts as it took).
-  void tick() {
-    const auto now = std::chrono::steady_clock::now();
-    const double dt = ticking ? std::chrono::duration<double>(now - last_tick).count() : 0.0;
-    last_tick = now;
-    ticking = true;
-    if (playing && content && announced) position += dt;
+  void seek(double seconds) override {
+    if (content && content->video) content->video->seek(seconds);
   }
 
   // What is due now goes to the quilt texture; an entry past its end advances.
@@ -256,26 +168,23 @@ struct Player::Impl {
         panel_dirty = true;
       }
       has_picture = true;
-      if (content->duration_s > 0 && position >= content->duration_s) advance();
-      return;
+      return transport.end_if_due(false);
     }
     VideoStream& video = *content->video;
     try {
-      if (auto frame = video.frame_due(position, dropped)) {
+      if (auto frame = video.frame_due(transport.position_s(), dropped)) {
         quilt->upload(*frame);
         has_picture = true;
         panel_dirty = true;
         video_index = frame->index;
         video_pts = frame->pts_s;
-        if (!announced) position = frame->pts_s;  // the clock starts at the first frame shown
+        transport.first_frame_at(frame->pts_s);  // the clock starts at the first frame shown
       }
     } catch (const InputError& e) {
       if (options.print_notices) std::cerr << fmt::format("notice: skipped the rest: {}\n", e.what());
-      emit(PlaybackEventKind::kEntrySkipped, e.what());
-      return advance();
+      return transport.skip_rest(e.what());
     }
-    const bool cut = content->duration_s > 0 && position >= content->duration_s;
-    if (video.finished() || cut) advance();
+    transport.end_if_due(video.finished());
   }
 
   // The quilt the interlacer reads: the picture itself, or the views an RGB-D frame makes.
@@ -314,10 +223,9 @@ struct Player::Impl {
   void draw_overlay() {
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window->handle(), &fb_w, &fb_h);
-    const double end = content ? (content->duration_s > 0 ? content->duration_s
-                                  : content->video ? content->video->info().duration_s : 0)
-                               : 0;
-    const double fraction = end > 0 ? std::clamp(position / end, 0.0, 1.0) : 0.0;
+    const double end = content ? transport.duration_s() : 0;
+    const double fraction = end > 0 ? std::clamp(transport.position_s() / end, 0.0, 1.0) : 0.0;
+    const bool playing = transport.playing();
     const int bar_h = std::max(4, fb_h / 100);
     glEnable(GL_SCISSOR_TEST);
     glScissor(0, 0, fb_w, bar_h);
@@ -336,52 +244,44 @@ struct Player::Impl {
 
   void publish() {
     PlayerState s;
-    s.entry_index = index;
-    s.entry_count = int(playlist.size());
-    s.entry_name = entry_name();
+    s.entry_index = transport.index();
+    s.entry_count = transport.entry_count();
+    s.entry_name = content ? content->name : std::string();
     s.is_video = content && content->video;
-    s.position_s = position;
-    s.duration_s = content ? content->duration_s : 0;
+    s.position_s = transport.position_s();
+    s.duration_s = content ? transport.duration_s() : 0;
     if (s.is_video) {
-      const media::VideoInfo& info = content->video->info();
-      if (s.duration_s <= 0) s.duration_s = info.duration_s;
-      s.frame_rate = info.frame_rate;
+      s.frame_rate = content->video->info().frame_rate;
       s.decode_path = content->video->decode_path();
     }
-    s.playing = playing;
-    s.looping = looping;
+    s.playing = transport.playing();
+    s.looping = transport.looping();
     s.frames_shown = shown;
     s.frames_decoded = decoded_closed + (s.is_video ? content->video->frames_decoded() : 0);
     s.frames_dropped = dropped;
     s.video_frame_index = video_index;
     s.video_frame_pts_s = video_pts;
     s.on_display = window->on_display();
-    s.quit = quit;
+    s.quit = transport.quitting();
     std::lock_guard lock(state_mutex);
     published = std::move(s);
   }
 
   bool frame(Image8* capture) {
     glfwPollEvents();
-    if (window->should_close() && !quit) {
-      quit = true;
-      emit(PlaybackEventKind::kQuit);
-    }
+    if (window->should_close()) transport.quit();
     drain_commands();
-    if (quit) {
+    if (transport.quitting()) {
       publish();
       return false;
     }
-    tick();
+    transport.tick();
     update_picture();
     draw();
     if (capture) *capture = read_back();
     window->swap();
     ++shown;
-    if (content && has_picture && !announced) {
-      announced = true;
-      emit(PlaybackEventKind::kEntryStarted);
-    }
+    if (content && has_picture) transport.picture_shown();
     publish();
     return true;
   }
@@ -402,37 +302,29 @@ void Player::show_quilt(QuiltPicture picture) {
         shared->pixels.channels != 3)
       throw_input_error("{}: the layout says {}x{} but the picture is {}x{}x{}", shared->name, shared->layout.width,
                         shared->layout.height, shared->pixels.width, shared->pixels.height, shared->pixels.channels);
-    p.close_content();
-    p.playlist.clear();
-    p.index = -1;
+    p.transport.show_picture(shared->name);
     EntryContent content;
     content.name = shared->name;
     content.layout = shared->layout;
     content.still = std::move(shared->pixels);
     p.content = std::move(content);
     p.panel_dirty = true;
-    p.playing = true;
   });
 }
 
 void Player::set_playlist(std::vector<PlaylistEntry> entries, int start) {
   auto shared = std::make_shared<std::vector<PlaylistEntry>>(std::move(entries));
-  impl_->enqueue([shared, start](Impl& p) {
-    p.close_content();
-    p.playlist = std::move(*shared);
-    p.index = -1;
-    if (!p.playlist.empty()) p.go_to(start);
-  });
+  impl_->enqueue([shared, start](Impl& p) { p.transport.set_playlist(std::move(*shared), start); });
 }
 
-void Player::play() { impl_->enqueue([](Impl& p) { p.set_playing(true); }); }
-void Player::pause() { impl_->enqueue([](Impl& p) { p.set_playing(false); }); }
-void Player::toggle_pause() { impl_->enqueue([](Impl& p) { p.set_playing(!p.playing); }); }
-void Player::next() { impl_->enqueue([](Impl& p) { p.go_to(p.index + 1); }); }
-void Player::previous() { impl_->enqueue([](Impl& p) { p.go_to(p.index - 1); }); }
-void Player::go_to(int entry_index) { impl_->enqueue([entry_index](Impl& p) { p.go_to(entry_index); }); }
-void Player::seek(double seconds) { impl_->enqueue([seconds](Impl& p) { p.seek(seconds); }); }
-void Player::seek_by(double seconds) { impl_->enqueue([seconds](Impl& p) { p.seek(p.position + seconds); }); }
+void Player::play() { impl_->enqueue([](Impl& p) { p.transport.play(); }); }
+void Player::pause() { impl_->enqueue([](Impl& p) { p.transport.pause(); }); }
+void Player::toggle_pause() { impl_->enqueue([](Impl& p) { p.transport.toggle_pause(); }); }
+void Player::next() { impl_->enqueue([](Impl& p) { p.transport.next(); }); }
+void Player::previous() { impl_->enqueue([](Impl& p) { p.transport.previous(); }); }
+void Player::go_to(int entry_index) { impl_->enqueue([entry_index](Impl& p) { p.transport.go_to(entry_index); }); }
+void Player::seek(double seconds) { impl_->enqueue([seconds](Impl& p) { p.transport.seek(seconds); }); }
+void Player::seek_by(double seconds) { impl_->enqueue([seconds](Impl& p) { p.transport.seek_by(seconds); }); }
 void Player::update_rgbd_option(const std::string& key, const std::string& value) {
   if (key == "depth_loc" || key == "depth-loc")
     throw_input_error("{}: changes the layout of the views; give it with the entry", key);
@@ -441,14 +333,10 @@ void Player::update_rgbd_option(const std::string& key, const std::string& value
   impl_->enqueue([key, value](Impl& p) { p.update_rgbd_option(key, value); });
 }
 
-void Player::set_loop(bool loop) { impl_->enqueue([loop](Impl& p) { p.looping = loop; }); }
+void Player::set_loop(bool loop) { impl_->enqueue([loop](Impl& p) { p.transport.set_loop(loop); }); }
 void Player::set_overlay(bool visible) { impl_->enqueue([visible](Impl& p) { p.overlay = visible; }); }
 void Player::quit() {
-  impl_->enqueue([](Impl& p) {
-    if (p.quit) return;
-    p.quit = true;
-    p.emit(PlaybackEventKind::kQuit);
-  });
+  impl_->enqueue([](Impl& p) { p.transport.quit(); });
 }
 
 PlayerState Player::state() const {

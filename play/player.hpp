@@ -2,7 +2,9 @@
 // `lfd play`'s engine (docs/play.md): a Player bound to one display (its calibration, the lens
 // model, and one window: full screen on the display's monitor, or the simulated-display window
 // of `lfd view` when the monitor is absent) that shows quilts decoded in memory and plays
-// playlists of quilt images and quilt videos, interlaced on the GPU by gpu::GlInterlacer.
+// playlists of quilt images and quilt videos, interlaced on the GPU by gpu::GlInterlacer. The
+// playlist, the clock and the rules of looping, seeking and skipping are play::Transport's
+// (play/transport.hpp, no GL); the Player is its output and drives it once per frame.
 //
 // Threads. GLFW and GL live on the thread that built the Player (the program's main thread):
 // construct it there and call run() / run_frame() / read_back_panel() there only. Every other
@@ -14,36 +16,18 @@
 // frames: they must not block, and must not call run_frame(); calling the thread-safe commands
 // from them is allowed (they take effect the next frame).
 #include <cstdint>
-#include <filesystem>
 #include <functional>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "display/calibration_file.hpp"
 #include "interlace/interlacer.hpp"
-#include "interlace/quilt_file.hpp"
+#include "play/transport.hpp"
 #include "render/quilt_layout.hpp"
-#include "rgbd/rgbd_options.hpp"
 #include "util/image.hpp"
 
 namespace lfd::play {
-
-// One playlist entry: a quilt image or a quilt video on disk.
-struct PlaylistEntry {
-  std::filesystem::path path;
-  // The tiling when the file's `_qsCxRaA` name lacks it or is wrong (any field given overrides
-  // the name; without name or override the entry is skipped with a notice).
-  interlace::QuiltOverrides quilt;
-  // How long an image stays (seconds; default PlayerOptions::image_duration_s). For a video:
-  // nullopt plays it to its end; a value cuts it there (or repeats it until then).
-  std::optional<double> duration_s;
-  // Set: the file is an RGB-D image or video (colour and depth side by side, bridge.js
-  // conventions, rgbd/rgbd_options.hpp) turned into the display's views on the GPU
-  // (rgbd::GlRgbdViews) every new frame; `quilt` is then ignored.
-  std::optional<rgbd::RgbdOptions> rgbd;
-};
 
 // A quilt decoded in memory (a caller that received the bytes over the network and decoded
 // them with media::decode_quilt_image, say): 8-bit RGB pixels, rows top-down, and its tiling.
@@ -51,27 +35,6 @@ struct QuiltPicture {
   Image8 pixels;              // 3 channels, row 0 = top (as on disk)
   render::QuiltLayout layout;  // width/height must equal pixels' size
   std::string name;           // for state and messages
-};
-
-enum class PlaybackEventKind {
-  kEntryStarted,   // a playlist entry (or a shown quilt) is on screen: its first frame was shown
-  kEntryEnded,     // an entry ran its duration / its video ended
-  kEntrySkipped,   // a bad entry (message says why), skipped
-  kPaused,
-  kResumed,
-  kSeeked,
-  kLoopRestarted,  // the playlist (or a looping video) started again
-  kPlaylistEnded,  // the last entry ended and looping is off: the player shows black
-  kQuit,           // the window closed, Esc/Q, or quit() was called
-};
-const char* playback_event_name(PlaybackEventKind kind);
-
-struct PlaybackEvent {
-  PlaybackEventKind kind = PlaybackEventKind::kEntryStarted;
-  int entry_index = -1;     // into the playlist; -1 for a quilt shown with show_quilt
-  std::string entry_name;   // the file name (or QuiltPicture::name)
-  double position_s = 0;    // within the entry
-  std::string message;      // kEntrySkipped: the one-line reason
 };
 
 // A snapshot of the player, taken once per frame on the GL thread.

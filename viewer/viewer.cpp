@@ -10,6 +10,7 @@
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
+#include "gpu/display_window.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/glfw_session.hpp"
 #include "lightfield/scene_framing.hpp"
@@ -19,7 +20,6 @@
 #include "util/error.hpp"
 #include "util/progress.hpp"
 #include "viewer/control_window.hpp"
-#include "viewer/display_window.hpp"
 #include "viewer/frame_pacing.hpp"
 #include "viewer/input.hpp"
 #include "viewer/light_field_frame.hpp"
@@ -27,6 +27,9 @@
 #include "viewer/seen_from_previewer.hpp"
 
 namespace lfd::viewer {
+
+using gpu::DisplayWindow;
+
 namespace {
 
 // Mouse and key state of both windows, filled by GLFW callbacks (user pointer).

@@ -14,14 +14,14 @@
 struct GLFWwindow;
 struct GLFWmonitor;
 
-namespace lfd::viewer {
+namespace lfd::gpu {
 
 class DisplayWindow {
  public:
   // `monitor` null: the simulated display window (panel fitted in at most `max_window_px`).
   // Throws InputError naming the monitor and its mode when the framebuffer does not come out at
   // the panel's size, and "no GL: ..." when no GL 4.5 core context can be made.
-  DisplayWindow(const gpu::GlfwSession& session, GLFWmonitor* monitor, int panel_w, int panel_h,
+  DisplayWindow(const GlfwSession& session, GLFWmonitor* monitor, int panel_w, int panel_h,
                 int max_window_px = 1024);
   ~DisplayWindow();
   DisplayWindow(const DisplayWindow&) = delete;
@@ -33,7 +33,7 @@ class DisplayWindow {
   bool should_close() const;
   // Draws the panel texture (panel-size) into the back buffer: 1:1 on the display, fitted
   // (linear filter, black bars) in the simulated window.
-  void draw(const gpu::Texture& panel);
+  void draw(const Texture& panel);
   // What draw() put in the back buffer, rows top-down (the screenshot of the window).
   Image8 read_back_buffer() const;
   void swap();
@@ -44,7 +44,7 @@ class DisplayWindow {
   GLFWwindow* window_ = nullptr;
   bool on_display_ = false;
   int panel_w_ = 0, panel_h_ = 0;
-  std::unique_ptr<gpu::Framebuffer> read_fbo_;  // reads the panel texture for the blit
+  std::unique_ptr<Framebuffer> read_fbo_;  // reads the panel texture for the blit
 };
 
-}  // namespace lfd::viewer
+}  // namespace lfd::gpu

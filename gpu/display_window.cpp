@@ -1,4 +1,4 @@
-#include "viewer/display_window.hpp"
+#include "gpu/display_window.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,11 +8,13 @@
 #include <fmt/format.h>
 
 #include "gpu/gl_context.hpp"
+#include "gpu/gl_debug.hpp"
+#include "gpu/gl_program.hpp"
 #include "util/error.hpp"
 
-namespace lfd::viewer {
+namespace lfd::gpu {
 
-DisplayWindow::DisplayWindow(const gpu::GlfwSession&, GLFWmonitor* monitor, int panel_w,
+DisplayWindow::DisplayWindow(const GlfwSession&, GLFWmonitor* monitor, int panel_w,
                              int panel_h, int max_window_px)
     : on_display_(monitor != nullptr), panel_w_(panel_w), panel_h_(panel_h) {
   glfwDefaultWindowHints();
@@ -22,6 +24,8 @@ DisplayWindow::DisplayWindow(const gpu::GlfwSession&, GLFWmonitor* monitor, int 
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_FALSE);
+  // A debug context under strict checks (the tests), so the driver reports misuse (gl_debug.hpp).
+  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, strict_gl_checks() ? GLFW_TRUE : GLFW_FALSE);
   int width = panel_w, height = panel_h;
   if (monitor) {
     const GLFWvidmode* mode = glfwGetVideoMode(monitor);
@@ -40,8 +44,8 @@ DisplayWindow::DisplayWindow(const gpu::GlfwSession&, GLFWmonitor* monitor, int 
   window_ = glfwCreateWindow(width, height,
                              monitor ? "lfd view" : "lfd view (simulated display)", monitor, nullptr);
   if (!window_)
-    throw gpu::GlUnavailable(fmt::format("no GL: no OpenGL 4.5 core window ({})",
-                                         gpu::GlfwSession::last_error()));
+    throw GlUnavailable(fmt::format("no GL: no OpenGL 4.5 core window ({})",
+                                         GlfwSession::last_error()));
   if (monitor) {
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
@@ -55,6 +59,7 @@ DisplayWindow::DisplayWindow(const gpu::GlfwSession&, GLFWmonitor* monitor, int 
     }
   }
   glfwMakeContextCurrent(window_);
+  enable_gl_debug_output();
   glfwSwapInterval(1);  // one frame per vsync: a swap replaces a whole frame
 }
 
@@ -70,9 +75,9 @@ void DisplayWindow::make_current() const { glfwMakeContextCurrent(window_); }
 
 bool DisplayWindow::should_close() const { return glfwWindowShouldClose(window_); }
 
-void DisplayWindow::draw(const gpu::Texture& panel) {
+void DisplayWindow::draw(const Texture& panel) {
   make_current();
-  if (!read_fbo_) read_fbo_ = std::make_unique<gpu::Framebuffer>();
+  if (!read_fbo_) read_fbo_ = std::make_unique<Framebuffer>();
   read_fbo_->attach(0, panel);
   int fb_w = 0, fb_h = 0;
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
@@ -86,7 +91,7 @@ void DisplayWindow::draw(const gpu::Texture& panel) {
   const int x0 = (fb_w - w) / 2, y0 = (fb_h - h) / 2;
   glBlitNamedFramebuffer(read_fbo_->id(), 0, 0, 0, panel.width(), panel.height(), x0, y0, x0 + w,
                          y0 + h, GL_COLOR_BUFFER_BIT, scale == 1.0 ? GL_NEAREST : GL_LINEAR);
-  gpu::check_gl("presenting the panel");
+  check_gl("presenting the panel");
 }
 
 Image8 DisplayWindow::read_back_buffer() const {
@@ -99,7 +104,7 @@ Image8 DisplayWindow::read_back_buffer() const {
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, fb_w, fb_h, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
-  gpu::check_gl("reading the window back");
+  check_gl("reading the window back");
   // GL rows are bottom-up.
   for (int y = 0; y < fb_h; ++y)
     std::copy_n(rows.data() + size_t(fb_h - 1 - y) * fb_w * 3, size_t(fb_w) * 3,
@@ -114,4 +119,4 @@ void DisplayWindow::set_swap_interval(int interval) const {
   glfwSwapInterval(interval);
 }
 
-}  // namespace lfd::viewer
+}  // namespace lfd::gpu
