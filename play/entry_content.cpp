@@ -23,7 +23,9 @@ EntryContent open_entry(const PlaylistEntry& entry, const display::Calibration& 
   content.name = entry.path.filename().string();
   content.rgbd = entry.rgbd;
   if (content.rgbd) content.rgbd->check(entry.path.string());
-  const double display_aspect = double(calibration.display.screen_w) / calibration.display.screen_h;
+  // The display's view aspect (display::quilt_for_display, the one rule): a quilt that names no
+  // aspect is read at it, and the interlacer letterboxes one that names another.
+  const double display_aspect = display::quilt_for_display(calibration).view_aspect;
   auto layout_of = [&](int width, int height) {
     if (!content.rgbd) return media::quilt_layout_for(entry.path.string(), width, height, entry.quilt, display_aspect);
     try {
