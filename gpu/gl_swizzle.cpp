@@ -106,12 +106,14 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   glUniform2i(p.uniform("view_size"), W, H);
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
   glUniform3i(p.uniform("tiles"), layout.cols, layout.tile_width(), layout.tile_height());
-  glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
-  glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
-  glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
-  glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
-  glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
-  glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  if (!options_.factor_table) {  // with the table, the table pass used the cameras
+    glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
+    glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
+    glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
+    glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
+    glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
+    glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  }
   glUniform3f(p.uniform("background"), background.x, background.y, background.z);
   glUniform1i(p.uniform("view_count"), V);
   const int view_groups = (V + options_.views_per_invocation - 1) / options_.views_per_invocation;
