@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/gl_splat_preprocess.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/voxel_binning_chunk_of.comp.glsl.hpp"
 #include "gpu/shaders/voxel_binning_draws.comp.glsl.hpp"
 #include "gpu/shaders/voxel_binning_keys.comp.glsl.hpp"
@@ -13,8 +14,6 @@
 
 namespace lfd::gpu {
 namespace {
-
-constexpr GLuint kVoxelChunkOf = 11;
 
 Program keys_program() {
   return Program("v2lf binning: keys", {{GL_COMPUTE_SHADER, voxel_binning_keys_comp_glsl}}, {"SIGNED_DEPTH_KEYS 1"});
@@ -40,9 +39,9 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
   const PlaneTableHeader zero;
   table.buffer.upload(&zero, sizeof(zero));
   scene.bind();
-  keys_buffer_.bind_storage(kSplatKeys);
-  values_.bind_storage(kSplatValues);
-  table.buffer.bind_storage(kPlaneTable);
+  keys_buffer_.bind_storage(kSplatKeysBinding);
+  values_.bind_storage(kSplatValuesBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
   const glm::vec3 f = glm::abs(camera.forward());  // as voxel/v2lf.cpp's depth_span
   const GLuint p = keys_.id();
   glProgramUniform1ui(p, keys_.uniform("voxel_count"), GLuint(n));
@@ -50,7 +49,7 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
   glProgramUniform3fv(p, keys_.uniform("camera_position"), 1, glm::value_ptr(camera.position_world));
   glProgramUniform1f(p, keys_.uniform("extent_factor"), f.x + f.y + f.z);
   keys_.use();
-  keys_.dispatch_1d(n, 256);
+  keys_.dispatch_1d(n, kVoxelBinningGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -69,27 +68,27 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   group_sorted_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   group_values_.ensure(std::max<size_t>(n * slots, 1) * sizeof(uint32_t));
 
-  values_.bind_storage(kSplatValues);
-  layers_.bind_storage(kSplatLayers);
-  table.buffer.bind_storage(kPlaneTable);
-  chunk_of_buffer_.bind_storage(kVoxelChunkOf);
+  values_.bind_storage(kSplatValuesBinding);
+  layers_.bind_storage(kSplatLayersBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
+  chunk_of_buffer_.bind_storage(kVoxelChunkOfBinding);
   glProgramUniform1ui(chunk_of_.id(), chunk_of_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(chunk_of_.id(), chunk_of_.uniform("unbinned"), GLuint(max_planes));
   chunk_of_.use();
-  chunk_of_.dispatch_1d(n, 256);
+  chunk_of_.dispatch_1d(n, kVoxelBinningGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   // Per octant in view: its order keyed by chunk, sorted stably, copied to its slot.
   const GLuint p = orders_.id();
   glProgramUniform1ui(p, orders_.uniform("voxel_count"), GLuint(n));
   for (GLuint s = 0; s < slots; ++s) {
-    scene.order_buffer().bind_storage(kVoxelOrder);
-    group_keys_.bind_storage(kSplatKeys);
-    group_sorted_.bind_storage(kSplatValues);
-    chunk_of_buffer_.bind_storage(kVoxelChunkOf);
+    scene.order_buffer().bind_storage(kVoxelOrderBinding);
+    group_keys_.bind_storage(kSplatKeysBinding);
+    group_sorted_.bind_storage(kSplatValuesBinding);
+    chunk_of_buffer_.bind_storage(kVoxelChunkOfBinding);
     glProgramUniform1ui(p, orders_.uniform("octant"), GLuint(octant_of_slot[s]));
     orders_.use();
-    orders_.dispatch_1d(n, 256);
+    orders_.dispatch_1d(n, kVoxelBinningGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     sort_.sort(group_keys_, group_sorted_, uint32_t(n), chunk_bits);
     if (n > 0)
@@ -97,15 +96,15 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
                                GLsizeiptr(n * sizeof(uint32_t)));
   }
 
-  draws_.bind_storage(kVoxelDraws);
-  table.buffer.bind_storage(kPlaneTable);
+  draws_.bind_storage(kVoxelDrawsBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
   const GLuint d = draws_pass_.id();
   glProgramUniform1ui(d, draws_pass_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(d, draws_pass_.uniform("max_planes"), GLuint(max_planes));
   glProgramUniform1iv(d, draws_pass_.uniform("slot_of_octant"), 8, slot_of_octant);
   glProgramUniform2ui(d, draws_pass_.uniform("plane_groups"), plane_groups.x, plane_groups.y);
   draws_pass_.use();
-  draws_pass_.dispatch_1d(size_t(max_planes) * 8, 64);
+  draws_pass_.dispatch_1d(size_t(max_planes) * 8, kVoxelDrawsGroupSize);
   // Next: the raster (storage reads of the orders and draws, indirect draws), the swizzle.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }

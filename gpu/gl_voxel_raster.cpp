@@ -38,7 +38,7 @@ uint32_t GlVoxelRaster::set_view(const GlVoxelScene& scene, const render::Camera
   glProgramUniform1i(p, program_.uniform("sh_stride"), sh_vec4_stride(scene.scene().sh_degree));
   glProgramUniform1i(p, program_.uniform("samples_per_voxel"), scene.scene().samples_per_voxel);
   scene.bind();
-  order.bind_storage(kVoxelOrder);
+  order.bind_storage(kVoxelOrderBinding);
   return octants_in_view(camera);
 }
 
@@ -72,7 +72,7 @@ void GlVoxelRaster::begin_indirect(const GlVoxelScene& scene, const render::Came
                                    const SplatRasterTarget& target) {
   glProgramUniform1ui(program_.id(), program_.uniform("order_offset"), 0u);
   indirect_octants_ = set_view(scene, camera, sh_origin, order, target);
-  draws.bind_storage(kVoxelDraws);
+  draws.bind_storage(kVoxelDrawsBinding);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.id());
 }
 

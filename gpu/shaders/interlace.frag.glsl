@@ -4,9 +4,10 @@
 // fraction, which says where single precision is enough); the lines marked "Interlacer::" repeat
 // that function's arithmetic in the same order. Every constant comes from the CPU
 // (gpu/gl_interlacer.cpp, gpu/gl_lens_view.cpp).
+#include "gpu/shaders/lens_view_io.h"
 #include "gpu/shaders/lens_view.glsl"
 
-layout(binding = 0) uniform sampler2D quilt;  // rows bottom-up, view 0 in the bottom-left tile
+layout(binding = kInterlaceQuiltUnit) uniform sampler2D quilt;  // rows bottom-up, view 0 in the bottom-left tile
 
 uniform int views;
 uniform int quilt_cols;

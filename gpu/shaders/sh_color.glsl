@@ -3,7 +3,9 @@
 // that evaluates SH (the splat preprocess, the voxel raster). Prepended to those shaders.
 // The coefficients of primitive g are (degree+1)^2 RGB triples, coefficient-major, packed into
 // sh_stride vec4s per primitive (gpu/gl_scene.hpp, gpu/gl_voxel_scene.hpp).
-layout(std430, binding = 3) readonly buffer Sh { vec4 sh[]; };
+#include "gpu/shaders/frame_io.h"
+
+layout(std430, binding = kSceneShBinding) readonly buffer Sh { vec4 sh[]; };
 uniform int sh_degree;
 uniform int sh_stride;  // vec4s per primitive
 

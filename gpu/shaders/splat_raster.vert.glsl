@@ -12,12 +12,13 @@
 #ifdef LAYERED
 #extension GL_ARB_shader_viewport_layer_array : require
 #endif
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/splat_record.glsl"
 
-layout(std430, binding = 4) readonly buffer Records { SplatRecord records[]; };
-layout(std430, binding = 6) readonly buffer SortedIds { uint sorted_ids[]; };
+layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
+layout(std430, binding = kSplatValuesBinding) readonly buffer SortedIds { uint sorted_ids[]; };
 #ifdef LAYERED
-layout(std430, binding = 8) readonly buffer Layers { uint layers[]; };
+layout(std430, binding = kSplatLayersBinding) readonly buffer Layers { uint layers[]; };
 #endif
 
 uniform ivec2 image_size;  // the view's size in pixels; the viewport maps it to the target
