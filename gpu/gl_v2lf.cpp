@@ -111,10 +111,10 @@ bool GlV2lfRenderer::prepare_lowpass(float variance_px2) {
   const std::vector<float> kernel = voxel::gaussian_lowpass_kernel(variance_px2);  // the CPU's weights
   if (kernel.empty()) return false;
   const int radius = int(kernel.size() / 2);
-  if (radius > 64)
-    throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than 64 texels; "
+  if (radius > kLowpassMaxRadius)
+    throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than {} texels; "
                       "lower --plane-scale",
-                      std::sqrt(variance_px2));
+                      std::sqrt(variance_px2), kLowpassMaxRadius);
   const int wp = accumulation_.width(), hp = accumulation_.height();
   if (!lowpass_scratch_.id() || lowpass_scratch_.width() != wp || lowpass_scratch_.height() != hp)
     lowpass_scratch_ = Texture(GL_RGBA32F, wp, hp);

@@ -56,9 +56,9 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
 void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, int max_planes,
                                   const glm::uvec2& plane_groups, GlPlaneTable& table) {
   const size_t n = scene.size();
-  GLint octant_of_slot[8] = {0, 0, 0, 0, 0, 0, 0, 0}, slot_of_octant[8];
+  GLint octant_of_slot[kVoxelOctants] = {0, 0, 0, 0, 0, 0, 0, 0}, slot_of_octant[kVoxelOctants];
   GLuint slots = 0;
-  for (int octant = 0; octant < 8; ++octant) {
+  for (int octant = 0; octant < int(kVoxelOctants); ++octant) {
     slot_of_octant[octant] = (octants & (1u << octant)) ? GLint(slots) : -1;
     if (octants & (1u << octant)) octant_of_slot[slots++] = octant;
   }
@@ -101,16 +101,16 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   const GLuint d = draws_pass_.id();
   glProgramUniform1ui(d, draws_pass_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(d, draws_pass_.uniform("max_planes"), GLuint(max_planes));
-  glProgramUniform1iv(d, draws_pass_.uniform("slot_of_octant"), 8, slot_of_octant);
+  glProgramUniform1iv(d, draws_pass_.uniform("slot_of_octant"), kVoxelOctants, slot_of_octant);
   glProgramUniform2ui(d, draws_pass_.uniform("plane_groups"), plane_groups.x, plane_groups.y);
   draws_pass_.use();
-  draws_pass_.dispatch_1d(size_t(max_planes) * 8, kVoxelDrawsGroupSize);
+  draws_pass_.dispatch_1d(size_t(max_planes) * kVoxelOctants, kVoxelDrawsGroupSize);
   // Next: the raster (storage reads of the orders and draws, indirect draws), the swizzle.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 size_t GlVoxelBinning::plane_dispatch_offset(int plane, int max_planes) {
-  return (size_t(8) * size_t(max_planes) + size_t(plane)) * 4 * sizeof(uint32_t);
+  return (size_t(kVoxelOctants) * size_t(max_planes) + size_t(plane)) * 4 * sizeof(uint32_t);
 }
 
 void GlVoxelBinning::run(const GlVoxelScene& scene, const render::ReferenceCamera& ref, int chunks,
@@ -120,7 +120,7 @@ void GlVoxelBinning::run(const GlVoxelScene& scene, const render::ReferenceCamer
   values_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   layers_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   chunk_of_buffer_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
-  draws_.ensure(size_t(table.max_planes) * 9 * 4 * sizeof(uint32_t));  // 8 draws, 1 dispatch a plane
+  draws_.ensure(size_t(table.max_planes) * (kVoxelOctants + 1) * 4 * sizeof(uint32_t));  // the draws, 1 dispatch a plane
   keys(scene, ref.camera, table);
   sort_.sort(keys_buffer_, values_, uint32_t(n), 32);
   chunking_.chunk_sorted(ref, chunks, binning, keys_buffer_, n, layers_, table);

@@ -79,7 +79,7 @@ void GlVoxelRaster::begin_indirect(const GlVoxelScene& scene, const render::Came
 void GlVoxelRaster::draw_indirect(int plane, const SplatRasterTarget& target) const {
   const GLuint p = program_.id();
   draw_octants(indirect_octants_, target, [&](int octant) {
-    const int command = 8 * plane + octant;
+    const int command = int(kVoxelOctants) * plane + octant;
     glProgramUniform1i(p, program_.uniform("draw_command"), command);
     glProgramUniform1i(p, program_.uniform("octant"), octant);
     glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(command) * 4 * sizeof(uint32_t)));

@@ -59,7 +59,7 @@ struct PlaneBatch {
 // The voxel binning and raster (gpu/gl_voxel_binning.hpp, gpu/gl_voxel_raster.hpp).
 LFD_IO_INT(kVoxelDrawsBinding, 4)    // per plane 8 indirect draws (one per octant), then the dispatches
 LFD_IO_INT(kVoxelChunkOfBinding, 11) // the chunk of each voxel
-LFD_IO_UINT(kVoxelOctants, 8u)
+LFD_IO_UINT(kVoxelOctants, 8u)  // draws per plane: command kVoxelOctants k + octant, uvec4 each
 
 // Work-group sizes (local_size_x; the C++ side dispatches ceil(n / size) groups).
 LFD_IO_UINT(kSplatPreprocessGroupSize, 128u)

@@ -15,6 +15,10 @@ LFD_IO_INT(kPlaneLowpassScratchImage, 2)  // image unit: the lowpass's horizonta
 LFD_IO_INT(kDownsampleSourceUnit, 0)    // texture unit: the supersampled view
 LFD_IO_INT(kDownsampleTargetImage, 1)   // image unit: the view written
 
+// The low-pass's largest radius (texels): its 2 r + 1 weights are a uniform array.
+LFD_IO_INT(kLowpassMaxRadius, 64)
+LFD_IO_INT(kLowpassMaxTaps, 2 * kLowpassMaxRadius + 1)
+
 LFD_IO_UINT(kPlaneGroupWidth, 16u)
 LFD_IO_UINT(kPlaneGroupHeight, 8u)
 

@@ -14,14 +14,14 @@ layout(std430, binding = kVoxelDrawsBinding) writeonly buffer Draws { uvec4 draw
 
 uniform uint voxel_count;
 uniform uint max_planes;
-uniform int slot_of_octant[8];  // -1: not in view
+uniform int slot_of_octant[kVoxelOctants];  // -1: not in view
 uniform uvec2 plane_groups;     // work groups of a per-plane pass (16 x 8 texels each)
 
 void main() {
   const uint c = gl_GlobalInvocationID.x;
-  if (c >= 8u * max_planes) return;
-  const uint k = c / 8u, octant = c % 8u;
-  if (octant == 0u) draws[8u * max_planes + k] = k < table.plane_count ? uvec4(plane_groups, 1u, 0u) : uvec4(0u);
+  if (c >= kVoxelOctants * max_planes) return;
+  const uint k = c / kVoxelOctants, octant = c % kVoxelOctants;
+  if (octant == 0u) draws[kVoxelOctants * max_planes + k] = k < table.plane_count ? uvec4(plane_groups, 1u, 0u) : uvec4(0u);
   const int slot = slot_of_octant[octant];
   if (k >= table.plane_count || slot < 0) {
     draws[c] = uvec4(4u, 0u, 0u, 0u);

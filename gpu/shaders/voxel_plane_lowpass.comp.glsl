@@ -12,7 +12,7 @@ layout(rgba32f, binding = kPlaneLowpassScratchImage) uniform image2D scratch;
 uniform ivec2 plane_size;
 uniform int radius;
 uniform int along_y;  // 0: accumulation -> scratch along x; 1: scratch -> accumulation along y
-uniform float kernel[129];
+uniform float kernel[kLowpassMaxTaps];
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
