@@ -111,8 +111,11 @@ void main() { out_value[0] = scale * offsets[2].y; }
   EXPECT_EQ(p.uniform("offsets"), glGetUniformLocation(p.id(), "offsets"));
   EXPECT_EQ(p.uniform("offsets[0]"), glGetUniformLocation(p.id(), "offsets[0]"));
   // Optimised away: -1, or an exception under strict checks (gl_program_test.cpp).
-  if (strict_gl_checks()) EXPECT_THROW(p.uniform("unused_by_the_code"), std::logic_error);
-  else EXPECT_EQ(p.uniform("unused_by_the_code"), -1);
+  if (strict_gl_checks()) {
+    EXPECT_THROW(p.uniform("unused_by_the_code"), std::logic_error);
+  } else {
+    EXPECT_EQ(p.uniform("unused_by_the_code"), -1);
+  }
   EXPECT_THROW(p.uniform("no_such_uniform"), std::logic_error);  // not in the sources
 }
 
