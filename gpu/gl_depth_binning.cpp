@@ -27,14 +27,15 @@ GlDepthBinning::GlDepthBinning(DepthKeys keys)
       cuts_(depth_pass("depth binning: cuts", binning_cuts_comp_glsl, keys)),
       chunks_(depth_pass("depth binning: chunks", binning_chunks_comp_glsl, keys)),
       layers_("g2lf binning: layers", {{GL_COMPUTE_SHADER, binning_layers_comp_glsl}}),
-      cut_positions_(sizeof(uint32_t) * 4098),
+      cut_positions_(sizeof(uint32_t) * (kBinningMaxCuts + 1)),
       unused_draw_(sizeof(DrawArraysIndirect)) {}
 
 void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& ref, int chunks,
                          render::ChunkBinning binning, GlRadixSort& sort, Buffer& keys,
                          Buffer& values, Buffer& layers, GlPlaneTable& table, const Buffer* draw, bool binned_only) {
-  if (chunks < 1 || chunks > 4096 || chunks > table.max_planes)
-    throw std::logic_error("GlDepthBinning: chunks outside 1..min(4096, table.max_planes)");
+  if (chunks < 1 || chunks > int(kBinningMaxChunks) || chunks > table.max_planes)
+    throw std::logic_error("GlDepthBinning: chunks outside 1..min(" + std::to_string(kBinningMaxChunks) +
+                           ", table.max_planes)");
   const size_t n = scene.size();
   keys.ensure(n * sizeof(uint32_t));
   values.ensure(n * sizeof(uint32_t));
@@ -46,12 +47,12 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
   table.buffer.upload(&zero, sizeof(zero));
 
   scene.bind();
-  keys.bind_storage(kSplatKeys);
-  values.bind_storage(kSplatValues);
-  layers.bind_storage(kSplatLayers);
-  table.buffer.bind_storage(kPlaneTable);
-  cut_positions_.bind_storage(kBinningCuts);
-  (draw ? *draw : unused_draw_).bind_storage(kSplatDraw);
+  keys.bind_storage(kSplatKeysBinding);
+  values.bind_storage(kSplatValuesBinding);
+  layers.bind_storage(kSplatLayersBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
+  cut_positions_.bind_storage(kBinningCutsBinding);
+  (draw ? *draw : unused_draw_).bind_storage(kSplatDrawBinding);
 
   {
     const GLuint p = keys_.id();
@@ -61,7 +62,7 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
     glProgramUniform3fv(p, keys_.uniform("camera_position"), 1, glm::value_ptr(cam.position_world));
     glProgramUniform2f(p, keys_.uniform("limit"), 1.3f * cam.tan_half_fov_x(), 1.3f * cam.tan_half_fov_y());
     keys_.use();
-    keys_.dispatch_1d(n, 256);
+    keys_.dispatch_1d(n, kBinningKeysGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   SortKeys how;
@@ -73,18 +74,19 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
 void GlDepthBinning::chunk_sorted(const render::ReferenceCamera& ref, int chunks, render::ChunkBinning binning,
                                   const Buffer& keys, size_t n, Buffer& layers, GlPlaneTable& table,
                                   const Buffer* draw) {
-  if (chunks < 1 || chunks > 4096 || chunks > table.max_planes)
-    throw std::logic_error("GlDepthBinning: chunks outside 1..min(4096, table.max_planes)");
+  if (chunks < 1 || chunks > int(kBinningMaxChunks) || chunks > table.max_planes)
+    throw std::logic_error("GlDepthBinning: chunks outside 1..min(" + std::to_string(kBinningMaxChunks) +
+                           ", table.max_planes)");
   layers.ensure(n * sizeof(uint32_t));
   const bool mixed = binning == render::ChunkBinning::kMixed;
   const GLuint count_chunks = GLuint(mixed ? chunks - chunks / 2 : chunks);
   const GLuint disparity_chunks = GLuint(mixed ? chunks / 2 : 0);
   // The sort binds its own buffers: bind ours again.
-  keys.bind_storage(kSplatKeys);
-  layers.bind_storage(kSplatLayers);
-  table.buffer.bind_storage(kPlaneTable);
-  cut_positions_.bind_storage(kBinningCuts);
-  (draw ? *draw : unused_draw_).bind_storage(kSplatDraw);
+  keys.bind_storage(kSplatKeysBinding);
+  layers.bind_storage(kSplatLayersBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
+  cut_positions_.bind_storage(kBinningCutsBinding);
+  (draw ? *draw : unused_draw_).bind_storage(kSplatDrawBinding);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   for (const Program* program : {&cuts_, &chunks_}) {
@@ -94,13 +96,13 @@ void GlDepthBinning::chunk_sorted(const render::ReferenceCamera& ref, int chunks
     glProgramUniform1f(p, program->uniform("d_forward_eff"), ref.d_forward_eff);
   }
   cuts_.use();
-  glDispatchCompute((count_chunks + disparity_chunks + 63) / 64, 1, 1);
+  glDispatchCompute((count_chunks + disparity_chunks + kBinningCutsGroupSize - 1) / kBinningCutsGroupSize, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   chunks_.use();
-  glDispatchCompute(1, 1, 1);
+  glDispatchCompute(1, 1, 1);  // one work group merges every cut
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   layers_.use();
-  layers_.dispatch_1d(n, 256);
+  layers_.dispatch_1d(n, kBinningLayersGroupSize);
   // Next: the layered raster (storage reads, indirect draw), the swizzle, read-backs.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   check_gl("G2LF depth binning");

@@ -19,14 +19,11 @@
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_radix_sort.hpp"
 #include "gpu/gl_scene.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "render/depth_binning.hpp"
 #include "render/quilt_geometry.hpp"
 
 namespace lfd::gpu {
-
-// Storage-buffer bindings of the binning passes beside the splat passes' (0-8).
-constexpr GLuint kPlaneTable = 9;
-constexpr GLuint kBinningCuts = 10;
 
 // How sort keys hold depths (gpu/shaders/depth_key.glsl): float bits (positive depths, G2LF's)
 // or the order-preserving map of any float (V2LF's voxel centres, gpu/gl_voxel_binning.hpp).

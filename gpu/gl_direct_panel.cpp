@@ -7,6 +7,8 @@
 #include "gpu/gl_interlacer.hpp"
 #include "gpu/shaders/direct_panel.frag.glsl.hpp"
 #include "gpu/shaders/interlace.vert.glsl.hpp"
+#include "gpu/shaders/lens_view_io.h"
+#include "gpu/shaders/plane_table_io.h"
 #include "interlace/interlacer.hpp"
 #include "util/error.hpp"
 
@@ -62,13 +64,13 @@ void GlDirectPanel::draw(const GlPlanes& planes, const render::QuiltGeometry& ge
   glViewport(0, 0, panel_width_, panel_height_);
   p.use();
   lens_view_.bind();
-  glBindTextureUnit(0, planes.texels.id());
+  glBindTextureUnit(kDirectPanelPlanesUnit, planes.texels.id());
   const bool sampled = hardware_bilinear_ && options.filter == render::PlaneFilter::kBilinear;
-  glBindSampler(0, sampled ? linear_.id() : 0);
-  planes.table.buffer.bind_storage(0);
+  glBindSampler(kDirectPanelPlanesUnit, sampled ? linear_.id() : 0);
+  planes.table.buffer.bind_storage(kPlaneTableBinding);
   glBindVertexArray(triangle_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindSampler(0, 0);
+  glBindSampler(kDirectPanelPlanesUnit, 0);
   check_gl("the direct panel pass");
 }
 

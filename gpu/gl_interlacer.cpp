@@ -9,6 +9,7 @@
 
 #include "gpu/shaders/interlace.frag.glsl.hpp"
 #include "gpu/shaders/interlace.vert.glsl.hpp"
+#include "gpu/shaders/lens_view_io.h"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
@@ -54,7 +55,7 @@ void GlInterlacer::draw(const Texture& quilt) const {
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, panel_width_, panel_height_);
   program_.use();
-  glBindTextureUnit(0, quilt.id());
+  glBindTextureUnit(kInterlaceQuiltUnit, quilt.id());
   lens_view_.bind();
   glBindVertexArray(triangle_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

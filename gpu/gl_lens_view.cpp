@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "gpu/shaders/interlace.vert.glsl.hpp"
+#include "gpu/shaders/lens_view_io.h"
 #include "gpu/shaders/lens_view_probe.frag.glsl.hpp"
 #include "util/error.hpp"
 
@@ -15,15 +16,14 @@ namespace lfd::gpu {
 namespace {
 
 // The shader looks subpixel offsets up by pixel class (x mod 2) + 2 (j mod 4), j bottom-up.
-constexpr int kClassesX = 2, kClassesY = 4;
 
 // LensModel::subpixel_uv - pixel_uv for each pixel class and channel, taken from LensModel
 // itself so the shader holds no rule of its own for BGR panels or Gen3 cells.
 std::vector<double> subpixel_offset_table(const display::LensModel& lens) {
   const int h = lens.calibration().screen_h;
   std::vector<double> table;
-  for (int jm = 0; jm < kClassesY; ++jm)
-    for (int xm = 0; xm < kClassesX; ++xm)
+  for (int jm = 0; jm < kLensPixelClassesY; ++jm)
+    for (int xm = 0; xm < kLensPixelClassesX; ++xm)
       for (int c = 0; c < 3; ++c) {
         const display::ScreenUV p = lens.pixel_uv(xm, h - 1 - jm);
         const display::ScreenUV s = lens.subpixel_uv(xm, h - 1 - jm, c);
@@ -32,11 +32,11 @@ std::vector<double> subpixel_offset_table(const display::LensModel& lens) {
       }
   // Guard the period the table assumes: every cell pattern of lens_model.cpp repeats within
   // 2 x 4 pixels. A new pattern with a longer period must fail here, not alias on the GPU.
-  for (int j = 0; j < 3 * kClassesY; ++j)
-    for (int x = 0; x < 3 * kClassesX; ++x)
+  for (int j = 0; j < 3 * kLensPixelClassesY; ++j)
+    for (int x = 0; x < 3 * kLensPixelClassesX; ++x)
       for (int c = 0; c < 3; ++c) {
         const int row = h - 1 - j;
-        const size_t k = size_t(((x % kClassesX) + kClassesX * (j % kClassesY)) * 3 + c) * 2;
+        const size_t k = size_t(((x % kLensPixelClassesX) + kLensPixelClassesX * (j % kLensPixelClassesY)) * 3 + c) * 2;
         const display::ScreenUV p = lens.pixel_uv(x, row), s = lens.subpixel_uv(x, row, c);
         if (std::abs(p.u + table[k] - s.u) > 1e-12 || std::abs(p.v + table[k + 1] - s.v) > 1e-12)
           throw std::logic_error("GlLensView: the subpixel layout does not repeat every 2x4 pixels");
@@ -140,8 +140,8 @@ void GlLensView::set_uniforms(const Program& program) const {
 }
 
 void GlLensView::bind() const {
-  glBindTextureUnit(1, correction_.id());
-  phase_parts_.bind_storage(3);
+  glBindTextureUnit(kLensCorrectionUnit, correction_.id());
+  phase_parts_.bind_storage(kLensPhasePartsBinding);
 }
 
 ImageF view_fractions_on_gpu(const display::LensModel& lens, int first_row, int rows) {

@@ -30,7 +30,8 @@ class GlLensView {
 
   // Sets lens_view.glsl's uniforms in `program` (once, after linking).
   void set_uniforms(const Program& program) const;
-  // Binds the correction grid (texture unit 1) and the phase parts (storage binding 3).
+  // Binds the correction grid (kLensCorrectionUnit) and the phase parts (kLensPhasePartsBinding;
+  // gpu/shaders/lens_view_io.h).
   void bind() const;
 
   // w(u, v) at grid point (i, j) = (i / (width - 1), j / (height - 1)), R32F; 2 x 2 zeros

@@ -5,15 +5,16 @@
 #include <vector>
 
 #include "gpu/gl_depth_binning.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/g2lf_plane_batches.comp.glsl.hpp"
 #include "gpu/shaders/g2lf_plane_convert.comp.glsl.hpp"
 #include "gpu/shaders/g2lf_plane_copy.comp.glsl.hpp"
+#include "gpu/shaders/plane_io.h"
 
 namespace lfd::gpu {
 namespace {
 
-constexpr size_t kBatchBytes = 8 * sizeof(uint32_t);  // Batch in the shaders
-constexpr size_t kAccumulationTexel = 16;             // RGBA32F
+constexpr size_t kAccumulationTexel = 16;  // RGBA32F
 
 }  // namespace
 
@@ -75,7 +76,7 @@ void GlPlaneRaster::ensure(const GlPlanes& planes, int batch_layers, size_t gaus
     accumulation_framebuffer_.finish(1);
   }
   const int batches = (planes.max_planes + batch_layers - 1) / batch_layers;
-  batch_commands_.ensure(size_t(batches) * kBatchBytes);
+  batch_commands_.ensure(size_t(batches) * sizeof(PlaneBatch));
   batch_ids_.ensure(std::max<size_t>(gaussians, 1) * sizeof(uint32_t));
   batch_layers_.ensure(std::max<size_t>(gaussians, 1) * sizeof(uint32_t));
 }
@@ -99,12 +100,12 @@ void GlPlaneRaster::run(const Buffer& records, const Buffer& sorted_ids, const B
   }
 
   const GLuint batches = GLuint((planes.max_planes + batch_layers - 1) / batch_layers);
-  planes.table.buffer.bind_storage(kPlaneTable);
-  batch_commands_.bind_storage(kPlaneBatches);
+  planes.table.buffer.bind_storage(kPlaneTableBinding);
+  batch_commands_.bind_storage(kPlaneBatchesBinding);
   glProgramUniform1ui(batches_.id(), batches_.uniform("batch_count"), batches);
   glProgramUniform1ui(batches_.id(), batches_.uniform("batch_layers"), GLuint(batch_layers));
   batches_.use();
-  glDispatchCompute((batches + 63) / 64, 1, 1);
+  glDispatchCompute((batches + kPlaneBatchesGroupSize - 1) / kPlaneBatchesGroupSize, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
   const Program& convert = planes.format == PlaneFormat::kRgba8 ? convert_u8_ : convert_f16_;
@@ -114,28 +115,30 @@ void GlPlaneRaster::run(const Buffer& records, const Buffer& sorted_ids, const B
   target.framebuffer = accumulation_framebuffer_.id();
   for (GLuint b = 0; b < batches; ++b) {
     // The raster and the convert pass bind storage and images of their own: bind ours each time.
-    planes.table.buffer.bind_storage(kPlaneTable);
-    batch_commands_.bind_storage(kPlaneBatches);
-    batch_draw_.bind_storage(kPlaneBatchDraw);
-    sorted_ids.bind_storage(kSplatValues);
-    layers.bind_storage(kSplatLayers);
-    batch_ids_.bind_storage(kPlaneBatchIds);
-    batch_layers_.bind_storage(kPlaneBatchLayers);
+    planes.table.buffer.bind_storage(kPlaneTableBinding);
+    batch_commands_.bind_storage(kPlaneBatchesBinding);
+    batch_draw_.bind_storage(kPlaneBatchDrawBinding);
+    sorted_ids.bind_storage(kSplatValuesBinding);
+    layers.bind_storage(kSplatLayersBinding);
+    batch_ids_.bind_storage(kPlaneBatchIdsBinding);
+    batch_layers_.bind_storage(kPlaneBatchLayersBinding);
     glProgramUniform1ui(copy_.id(), copy_.uniform("batch"), b);
     copy_.use();
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, batch_commands_.id());
-    glDispatchComputeIndirect(GLintptr(b * kBatchBytes));
+    glDispatchComputeIndirect(GLintptr(b * sizeof(PlaneBatch)));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
     raster_.draw(records, batch_ids_, batch_draw_, target, &batch_layers_);
 
-    planes.table.buffer.bind_storage(kPlaneTable);
-    glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(1, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
+    planes.table.buffer.bind_storage(kPlaneTableBinding);
+    glBindImageTexture(kPlaneAccumulationImage, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glBindImageTexture(kPlaneTexelsImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
+                       gl_internal_format(planes.format));
     glProgramUniform1ui(convert.id(), convert.uniform("batch"), b);
     convert.use();
-    glDispatchCompute(GLuint((planes.width + 15) / 16), GLuint((planes.height + 7) / 8), GLuint(batch_layers));
+    glDispatchCompute((GLuint(planes.width) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
+                      (GLuint(planes.height) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, GLuint(batch_layers));
     // The reset accumulation is drawn into next; the planes are fetched by the swizzle; the
     // batch buffers are rewritten by the next copy.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |

@@ -23,14 +23,9 @@
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_splat_preprocess.hpp"
 #include "gpu/gl_splat_raster.hpp"
+#include "gpu/shaders/frame_io.h"
 
 namespace lfd::gpu {
-
-// Storage-buffer bindings of the plane passes beside the splat (0-8) and binning (9-10) ones.
-constexpr GLuint kPlaneBatches = 11;
-constexpr GLuint kPlaneBatchDraw = 12;
-constexpr GLuint kPlaneBatchIds = 13;
-constexpr GLuint kPlaneBatchLayers = 14;
 
 enum class PlaneRaster { kLayered, kBatched };
 const char* plane_raster_name(PlaneRaster raster);  // "layered", "batched"

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gpu/gl_objects.hpp"
+#include "gpu/shaders/plane_table_io.h"
 #include "render/sweeping_planes.hpp"
 
 namespace lfd::gpu {
@@ -24,18 +25,9 @@ size_t bytes_per_plane_texel(PlaneFormat format);
 PlaneFormat plane_format_for(render::PlanePrecision precision);
 const char* plane_format_name(PlaneFormat format);
 
-// Layout of the plane table buffer (std430): the header, then one entry per plane and one past
-// the last: entry k holds d_k and the first sorted splat of plane k; entry plane_count holds
-// begin = splats_binned (the end of the last plane).
-struct PlaneTableHeader {
-  uint32_t plane_count = 0;
-  uint32_t splats_binned = 0;  // Gaussians whose centre lies in the reference frustum
-  uint32_t pad[2] = {0, 0};
-};
-struct PlaneTableEntry {
-  float depth = 0.0f;   // d_k, base-camera depth (Eq. u_prime)
-  uint32_t begin = 0;   // first sorted splat of the plane
-};
+// The plane table buffer's layout (std430), PlaneTableHeader then PlaneTableEntry[max_planes + 1],
+// is the shaders' own: gpu/shaders/plane_table_io.h.
+static_assert(sizeof(PlaneTableHeader) == 16 && sizeof(PlaneTableEntry) == 8, "std430: packed 4-byte members");
 inline size_t plane_table_bytes(int max_planes) {
   return sizeof(PlaneTableHeader) + sizeof(PlaneTableEntry) * (size_t(max_planes) + 1);
 }

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "gpu/gl_debug.hpp"
 #include "gpu/shader_source.hpp"
 
 namespace lfd::gpu {
@@ -64,6 +65,9 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
       const std::string log = name_files_in_log(info_log(shader, false), files);
       glDeleteShader(shader);
       for (GLuint s : shaders) glDeleteShader(s);
+      // The exception carries the log; the debug output's copy of the same error would fail the
+      // next check_gl, in whatever pass (or test) comes next.
+      take_gl_debug_error();
       throw std::runtime_error(fmt::format("shader '{}' does not compile: {}", label, log));
     }
     glAttachShader(program, shader);
@@ -73,7 +77,10 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
   for (GLuint s : shaders) glDeleteShader(s);
   GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) throw std::runtime_error(fmt::format("program '{}' does not link: {}", label, info_log(program, true)));
+  if (!ok) {
+    take_gl_debug_error();  // as for a compile error
+    throw std::runtime_error(fmt::format("program '{}' does not link: {}", label, info_log(program, true)));
+  }
   list_uniforms();
   check_bindings();
 }

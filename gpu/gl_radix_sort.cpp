@@ -1,6 +1,7 @@
 #include "gpu/gl_radix_sort.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -8,14 +9,14 @@
 #include "gpu/shaders/radix_scan.comp.glsl.hpp"
 #include "gpu/shaders/radix_scatter.comp.glsl.hpp"
 #include "gpu/shaders/radix_setup.comp.glsl.hpp"
+#include "gpu/shaders/radix_sort_io.h"
 
 namespace lfd::gpu {
 namespace {
 
-constexpr uint32_t kTile = 256;           // elements ranked together (local_size_x)
-constexpr uint32_t kTargetBlocks = 1024;  // enough work groups to fill a large GPU
-constexpr uint32_t kMaxTilesPerBlock = 64;
-constexpr GLintptr kParamsGroupsOffset = 16;  // SortParams.param_groups_x (radix_common.glsl)
+static_assert(kRadixTile == kRadixDigits, "the histogram and the scatter count one digit per invocation");
+static_assert(sizeof(RadixSortParams) == 8 * sizeof(uint32_t) && offsetof(RadixSortParams, groups_x) == 16,
+              "RadixSortParams is std430: packed uints");
 
 Program pass_program(const char* label, const char* source) { return Program(label, {{GL_COMPUTE_SHADER, source}}); }
 
@@ -23,32 +24,39 @@ struct BlockLayout {
   uint32_t items = 0, blocks = 0;
 };
 
-// Blocks of whole tiles, about kTargetBlocks of them (more for huge counts); radix_setup makes
+// Blocks of whole tiles, about kRadixTargetBlocks of them (more for huge counts); radix_setup makes
 // the same choice on the GPU.
 BlockLayout block_layout(uint32_t count) {
-  const uint32_t tiles = (count + kTile - 1) / kTile;
-  const uint32_t tiles_per_block = std::clamp<uint32_t>((tiles + kTargetBlocks - 1) / kTargetBlocks, 1, kMaxTilesPerBlock);
+  const uint32_t tiles = (count + kRadixTile - 1) / kRadixTile;
+  const uint32_t tiles_per_block = std::clamp<uint32_t>((tiles + kRadixTargetBlocks - 1) / kRadixTargetBlocks, 1, kRadixMaxTilesPerBlock);
   BlockLayout layout;
-  layout.items = tiles_per_block * kTile;
+  layout.items = tiles_per_block * kRadixTile;
   layout.blocks = std::max<uint32_t>(1, (count + layout.items - 1) / layout.items);
   return layout;
 }
 
+// What a pass reads: the scan only the block count (the length of its rows of block counts); the
+// histogram and the scatter the keys too. A program gets only the uniforms it reads (the scan's
+// compiler drops the others, which strict GL checks refuse to set).
+enum class PassReads { kBlockCount, kKeys };
+
 // The uniforms of one pass, and those last set on a program: only what changed is set again
 // (a sort of 3 passes would otherwise make 60 uniform calls a view; docs/gpu.md "A frame that
 // never waits" counts the calls).
-void set_changed(const Program& p, RadixPassUniforms& last, const RadixPassUniforms& now) {
+void set_changed(const Program& p, PassReads reads, RadixPassUniforms& last, const RadixPassUniforms& now) {
   const auto set = [&](const char* name, uint32_t RadixPassUniforms::*field) {
     if (last.*field == now.*field) return;
     glProgramUniform1ui(p.id(), p.uniform(name), now.*field);
   };
-  set("count", &RadixPassUniforms::count);
   set("block_count", &RadixPassUniforms::block_count);
-  set("block_items", &RadixPassUniforms::block_items);
   set("later_pass", &RadixPassUniforms::later);
-  set("drop_culled", &RadixPassUniforms::drop);
-  set("normalise_bits", &RadixPassUniforms::normalise_bits);
-  set("shift", &RadixPassUniforms::shift);
+  if (reads == PassReads::kKeys) {
+    set("count", &RadixPassUniforms::count);
+    set("block_items", &RadixPassUniforms::block_items);
+    set("drop_culled", &RadixPassUniforms::drop);
+    set("normalise_bits", &RadixPassUniforms::normalise_bits);
+    set("shift", &RadixPassUniforms::shift);
+  }
   last = now;
 }
 
@@ -72,11 +80,8 @@ GlRadixSort::GlRadixSort()
       scan_(pass_program("radix sort scan", radix_scan_comp_glsl)),
       scatter_(pass_program("radix sort scatter", radix_scatter_comp_glsl)),
       setup_(pass_program("radix sort setup", radix_setup_comp_glsl)),
-      digit_totals_(256 * 4),
-      params_(8 * 4) {
-  glProgramUniform1ui(setup_.id(), setup_.uniform("target_blocks"), kTargetBlocks);
-  glProgramUniform1ui(setup_.id(), setup_.uniform("max_tiles_per_block"), kMaxTilesPerBlock);
-}
+      digit_totals_(kRadixDigits * sizeof(uint32_t)),
+      params_(sizeof(RadixSortParams)) {}
 
 size_t GlRadixSort::scratch_bytes() const {
   return keys_tmp_.bytes() + values_tmp_.bytes() + block_offsets_.bytes() + digit_totals_.bytes() + params_.bytes();
@@ -93,8 +98,8 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
     throw std::invalid_argument("GlRadixSort: count exceeds the buffers");
   // Without dropping, 0 or 1 keys are sorted; with it a single key may still be dropped.
   if (count == 0 && how.drop_culled) {  // nothing kept: what kept_count_buffer() promises
-    const uint32_t none[8] = {};
-    params_.upload(none, sizeof(none));
+    const RadixSortParams none;
+    params_.upload(&none, sizeof(none));
   }
   if (count == 0 || (count == 1 && !how.drop_culled)) return;
 
@@ -102,8 +107,8 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
   if (first.blocks > 65535) throw std::invalid_argument("GlRadixSort: too many keys for one dispatch");
   keys_tmp_.ensure(size_t(count) * 4);
   values_tmp_.ensure(size_t(count) * 4);
-  // The later passes' layout (for at most `count` kept keys) has at most max(first, kTargetBlocks) blocks.
-  block_offsets_.ensure(size_t(std::max(first.blocks, kTargetBlocks)) * 256 * 4);
+  // The later passes' layout (for at most `count` kept keys) has at most max(first, kRadixTargetBlocks) blocks.
+  block_offsets_.ensure(size_t(std::max(first.blocks, kRadixTargetBlocks)) * kRadixDigits * sizeof(uint32_t));
 
   // Ping-pong: pass p reads copy p % 2 and writes the other.
   Buffer* key_copies[2] = {&keys, &keys_tmp_};
@@ -111,8 +116,8 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
   const int passes = GlRadixSort::passes(how);
   const int low_bit = how.normalise_bits ? 0 : how.low_bit;
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  params_.bind_storage(6);
-  if (how.key_range) how.key_range->bind_storage(7);
+  params_.bind_storage(kRadixParamsBinding);
+  if (how.key_range) how.key_range->bind_storage(kRadixKeyRangeBinding);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, params_.id());
   for (int pass = 0; pass < passes; ++pass) {
     const uint32_t shift = uint32_t(low_bit + 8 * pass);
@@ -120,26 +125,26 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
     const bool drop = how.drop_culled && pass == 0;
     const uint32_t normalise = pass == 0 ? uint32_t(how.normalise_bits) : 0u;
     const RadixPassUniforms now{count, first.blocks, first.items, later, drop, normalise, shift};
-    set_changed(histogram_, last_uniforms_[0], now);
-    set_changed(scan_, last_uniforms_[1], now);
-    set_changed(scatter_, last_uniforms_[2], now);
+    set_changed(histogram_, PassReads::kKeys, last_uniforms_[0], now);
+    set_changed(scan_, PassReads::kBlockCount, last_uniforms_[1], now);
+    set_changed(scatter_, PassReads::kKeys, last_uniforms_[2], now);
 
-    key_copies[pass % 2]->bind_storage(0);
-    block_offsets_.bind_storage(1);
-    digit_totals_.bind_storage(2);
-    value_copies[pass % 2]->bind_storage(3);
-    key_copies[(pass + 1) % 2]->bind_storage(4);
-    value_copies[(pass + 1) % 2]->bind_storage(5);
+    key_copies[pass % 2]->bind_storage(kRadixKeysInBinding);
+    block_offsets_.bind_storage(kRadixBlockCountsBinding);
+    digit_totals_.bind_storage(kRadixDigitTotalsBinding);
+    value_copies[pass % 2]->bind_storage(kRadixValuesInBinding);
+    key_copies[(pass + 1) % 2]->bind_storage(kRadixKeysOutBinding);
+    value_copies[(pass + 1) % 2]->bind_storage(kRadixValuesOutBinding);
 
     const auto dispatch_blocks = [&] {
-      if (later) glDispatchComputeIndirect(kParamsGroupsOffset);
+      if (later) glDispatchComputeIndirect(GLintptr(offsetof(RadixSortParams, groups_x)));
       else glDispatchCompute(first.blocks, 1, 1);
     };
     histogram_.use();
     dispatch_blocks();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scan_.use();
-    glDispatchCompute(256, 1, 1);
+    glDispatchCompute(kRadixDigits, 1, 1);  // a work group per digit
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scatter_.use();
     dispatch_blocks();

@@ -126,10 +126,10 @@ size_t GlScene::bytes() const {
 }
 
 void GlScene::bind() const {
-  positions_.bind_storage(kScenePositions);
-  scales_.bind_storage(kSceneScales);
-  rotations_.bind_storage(kSceneRotations);
-  sh_.bind_storage(kSceneSh);
+  positions_.bind_storage(kScenePositionsBinding);
+  scales_.bind_storage(kSceneScalesBinding);
+  rotations_.bind_storage(kSceneRotationsBinding);
+  sh_.bind_storage(kSceneShBinding);
 }
 
 }  // namespace lfd::gpu

@@ -2,10 +2,10 @@
 // A Gaussian scene uploaded once into shader storage buffers (docs/gpu.md "Per-view renderer"),
 // read by every GL pass (the per-view preprocess, G2LF). Layouts are std430 and vec4-packed so
 // a Gaussian's data is whole 16-byte loads:
-//   binding kScenePositions  vec4 positions[]  (x, y, z, opacity)
-//   binding kSceneScales     vec4 scales[]     (linear scale x, y, z, 0)
-//   binding kSceneRotations  vec4 rotations[]  (unit quaternion w, x, y, z)
-//   binding kSceneSh         vec4 sh[]         per Gaussian sh_vec4_stride() vec4s holding the
+//   binding kScenePositionsBinding  vec4 positions[]  (x, y, z, opacity)
+//   binding kSceneScalesBinding     vec4 scales[]     (linear scale x, y, z, 0)
+//   binding kSceneRotationsBinding  vec4 rotations[]  (unit quaternion w, x, y, z)
+//   binding kSceneShBinding         vec4 sh[]         per Gaussian sh_vec4_stride() vec4s holding the
 //                            (degree+1)^2 RGB triples coefficient-major (as GaussianScene::sh),
 //                            zero-padded to a whole vec4.
 // Scale and rotation are kept (not the 3D covariance) so RasterSettings::scale_modifier applies
@@ -17,14 +17,10 @@
 
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_objects.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "scene/gaussian_scene.hpp"
 
 namespace lfd::gpu {
-
-constexpr GLuint kScenePositions = 0;
-constexpr GLuint kSceneScales = 1;
-constexpr GLuint kSceneRotations = 2;
-constexpr GLuint kSceneSh = 3;
 
 // vec4s of SH per Gaussian at `sh_degree`: ceil(3 (degree+1)^2 / 4) = 1, 3, 7, 12.
 int sh_vec4_stride(int sh_degree);
@@ -67,7 +63,7 @@ class GlScene {
   const Buffer& scales() const { return scales_; }
   const Buffer& rotations() const { return rotations_; }
   const Buffer& sh() const { return sh_; }
-  // Binds the four buffers at kScenePositions..kSceneSh.
+  // Binds the four buffers at kScenePositionsBinding..kSceneShBinding.
   void bind() const;
 
  private:

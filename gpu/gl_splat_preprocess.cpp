@@ -9,7 +9,6 @@
 
 namespace lfd::gpu {
 namespace {
-constexpr int kLocalSize = 128;  // local_size_x of splat_preprocess.comp.glsl
 }
 
 void SplatBuffers::ensure(size_t gaussians) {
@@ -24,11 +23,11 @@ void SplatBuffers::ensure(size_t gaussians) {
 }
 
 void SplatBuffers::bind() const {
-  records.bind_storage(kSplatRecords);
-  keys.bind_storage(kSplatKeys);
-  values.bind_storage(kSplatValues);
-  draw.bind_storage(kSplatDraw);
-  depth_range.bind_storage(kSplatDepthRange);
+  records.bind_storage(kSplatRecordsBinding);
+  keys.bind_storage(kSplatKeysBinding);
+  values.bind_storage(kSplatValuesBinding);
+  draw.bind_storage(kSplatDrawBinding);
+  depth_range.bind_storage(kSplatDepthRangeBinding);
 }
 
 GlSplatPreprocess::GlSplatPreprocess() {
@@ -67,7 +66,7 @@ void GlSplatPreprocess::run(const GlScene& scene, const render::Camera& camera,
   scene.bind();
   buffers.bind();
   program_.use();
-  program_.dispatch_1d(scene.size(), kLocalSize);
+  program_.dispatch_1d(scene.size(), kSplatPreprocessGroupSize);
   // What the consumers read: the sort (storage), the indirect draw (command), downloads (update).
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   check_gl("the splat preprocess");

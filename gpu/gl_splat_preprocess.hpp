@@ -21,18 +21,11 @@
 
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_scene.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "render/camera.hpp"
 #include "render/preprocess.hpp"
 
 namespace lfd::gpu {
-
-// Storage-buffer bindings of the splat passes (the scene uses 0-3).
-constexpr GLuint kSplatRecords = 4;
-constexpr GLuint kSplatKeys = 5;
-constexpr GLuint kSplatValues = 6;  // sorted: the Gaussian index of each sorted position
-constexpr GLuint kSplatDraw = 7;
-constexpr GLuint kSplatLayers = 8;  // layered raster: the layer of each sorted position
-constexpr GLuint kSplatDepthRange = 11;  // the visible depths' range (the sort's normalised keys)
 
 // std430 record of one projected Gaussian (gpu/shaders/splat_record.glsl), 64 bytes.
 struct SplatRecord {

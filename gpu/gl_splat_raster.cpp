@@ -6,6 +6,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/splat_composite.frag.glsl.hpp"
 #include "gpu/shaders/splat_composite.vert.glsl.hpp"
 #include "gpu/shaders/splat_raster.frag.glsl.hpp"
@@ -82,9 +83,9 @@ void GlSplatRaster::draw(const Buffer& records, const Buffer& sorted_ids, const 
   if (!program.id())
     throw std::runtime_error("layered splat raster needs GL_ARB_shader_viewport_layer_array");
   begin(target);
-  records.bind_storage(kSplatRecords);
-  sorted_ids.bind_storage(kSplatValues);
-  if (layers) layers->bind_storage(kSplatLayers);
+  records.bind_storage(kSplatRecordsBinding);
+  sorted_ids.bind_storage(kSplatValuesBinding);
+  if (layers) layers->bind_storage(kSplatLayersBinding);
   glProgramUniform2i(program.id(), program.uniform("image_size"), target.image_size.x, target.image_size.y);
   glProgramUniform2f(program.id(), program.uniform("viewport_origin"), float(target.viewport_origin.x),
                      float(target.viewport_origin.y));
@@ -125,12 +126,11 @@ void GlSplatRaster::composite_from(const Texture& accumulation, const SplatRaste
   glProgramUniform3fv(p, composite_copy_.uniform("background"), 1, glm::value_ptr(background));
   glProgramUniform2i(p, composite_copy_.uniform("viewport_origin"), target.viewport_origin.x,
                      target.viewport_origin.y);
-  glProgramUniform1i(p, composite_copy_.uniform("accumulation"), 0);
-  glBindTextureUnit(0, accumulation.id());
+  glBindTextureUnit(kSplatAccumulationUnit, accumulation.id());
   composite_copy_.use();
   glDisable(GL_BLEND);
   glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindTextureUnit(0, 0);
+  glBindTextureUnit(kSplatAccumulationUnit, 0);
   end();
   check_gl("compositing into the target");
 }

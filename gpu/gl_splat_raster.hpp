@@ -22,7 +22,7 @@
 // Targets. A SplatRasterTarget is a framebuffer region: the view's pixel size and the window
 // position of its bottom-left corner, so a view can be drawn straight into its quilt tile;
 // image row 0 (the top) lands at the region's top row. Layered: a per-sorted-splat layer
-// buffer (binding kSplatLayers) routes each splat to a layer of a 2D array texture through
+// buffer (binding kSplatLayersBinding) routes each splat to a layer of a 2D array texture through
 // gl_Layer in the vertex shader (GL_ARB_shader_viewport_layer_array), so G2LF draws all chunk
 // planes in one instanced draw; with a zero background the planes hold (C, T).
 #include <glm/glm.hpp>

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "gpu/shaders/plane_table_io.h"
 #include "gpu/shaders/swizzle.comp.glsl.hpp"
+#include "gpu/shaders/swizzle_io.h"
 #include "gpu/shaders/swizzle_table.comp.glsl.hpp"
 
 namespace lfd::gpu {
@@ -58,10 +60,10 @@ void GlSwizzle::write_table(const GlPlanes& planes, const render::QuiltGeometry&
   view_plane_columns_.ensure(size_t(std::max(planes.max_planes, 1)) * size_t(V) * sizeof(float));
   const Program& p = table_;
   p.use();
-  planes.table.buffer.bind_storage(0);
-  view_offsets_.bind_storage(1);
-  plane_factors_.bind_storage(2);
-  view_plane_columns_.bind_storage(3);
+  planes.table.buffer.bind_storage(kPlaneTableBinding);
+  view_offsets_.bind_storage(kSwizzleViewOffsetsBinding);
+  plane_factors_.bind_storage(kSwizzlePlaneFactorsBinding);
+  view_plane_columns_.bind_storage(kSwizzleViewPlaneColumnsBinding);
   glUniform2i(p.uniform("view_size"), geometry.base.width, geometry.base.height);
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
   glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
@@ -72,7 +74,8 @@ void GlSwizzle::write_table(const GlPlanes& planes, const render::QuiltGeometry&
   glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
   glUniform1i(p.uniform("view_count"), V);
   // Every possible plane (the count is on the GPU); those past it return at once.
-  glDispatchCompute(GLuint((V + 63) / 64), GLuint(std::max(planes.max_planes, 1)), 1);
+  glDispatchCompute((GLuint(V) + kSwizzleTableGroupSize - 1) / kSwizzleTableGroupSize,
+                    GLuint(std::max(planes.max_planes, 1)), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -92,31 +95,34 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
 
   const Program& p = program(filter, quilt.internal_format());
   p.use();
-  glBindTextureUnit(0, planes.texels.id());
+  glBindTextureUnit(kSwizzlePlanesUnit, planes.texels.id());
   const bool sampled = options_.hardware_bilinear && filter == render::PlaneFilter::kBilinear;
-  glBindSampler(0, sampled ? linear_.id() : 0);
-  glBindImageTexture(0, quilt.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, quilt.internal_format());
-  planes.table.buffer.bind_storage(0);
-  view_offsets_.bind_storage(1);
+  glBindSampler(kSwizzlePlanesUnit, sampled ? linear_.id() : 0);
+  glBindImageTexture(kSwizzleQuiltImage, quilt.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, quilt.internal_format());
+  planes.table.buffer.bind_storage(kPlaneTableBinding);
+  view_offsets_.bind_storage(kSwizzleViewOffsetsBinding);
   if (options_.factor_table) {
-    plane_factors_.bind_storage(2);
-    view_plane_columns_.bind_storage(3);
+    plane_factors_.bind_storage(kSwizzlePlaneFactorsBinding);
+    view_plane_columns_.bind_storage(kSwizzleViewPlaneColumnsBinding);
   }
   const int W = geometry.base.width, H = geometry.base.height;
   glUniform2i(p.uniform("view_size"), W, H);
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
   glUniform3i(p.uniform("tiles"), layout.cols, layout.tile_width(), layout.tile_height());
-  glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
-  glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
-  glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
-  glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
-  glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
-  glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  if (!options_.factor_table) {  // with the table, the table pass used the cameras
+    glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
+    glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
+    glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
+    glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
+    glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
+    glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  }
   glUniform3f(p.uniform("background"), background.x, background.y, background.z);
   glUniform1i(p.uniform("view_count"), V);
   const int view_groups = (V + options_.views_per_invocation - 1) / options_.views_per_invocation;
-  glDispatchCompute(GLuint((W + 15) / 16), GLuint((H + 7) / 8), GLuint(view_groups));
-  glBindSampler(0, 0);
+  glDispatchCompute((GLuint(W) + kSwizzleGroupWidth - 1) / kSwizzleGroupWidth, (GLuint(H) + kSwizzleGroupHeight - 1) / kSwizzleGroupHeight,
+                    GLuint(view_groups));
+  glBindSampler(kSwizzlePlanesUnit, 0);
   // The quilt is read next by texture fetches (interlacing) or a read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

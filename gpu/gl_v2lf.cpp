@@ -9,6 +9,8 @@
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_plane_raster.hpp"
 #include "gpu/gl_quilt_target.hpp"
+#include "gpu/shaders/plane_io.h"
+#include "gpu/shaders/plane_table_io.h"
 #include "gpu/shaders/voxel_plane_lowpass.comp.glsl.hpp"
 #include "util/error.hpp"
 #include "voxel/plane_lowpass.hpp"
@@ -16,10 +18,10 @@
 namespace lfd::gpu {
 namespace {
 
-constexpr GLuint kPlaneTableBinding = 9;  // g2lf_plane_convert.comp.glsl's PlaneTable
-
-// Work groups of a per-plane pass (low-pass, convert: 16 x 8 texels each).
-glm::uvec2 plane_groups(int width, int height) { return {GLuint((width + 15) / 16), GLuint((height + 7) / 8)}; }
+// Work groups of a per-plane pass (low-pass, convert: kPlaneGroupWidth x kPlaneGroupHeight texels each).
+glm::uvec2 plane_groups(int width, int height) {
+  return {(GLuint(width) + kPlaneGroupWidth - 1) / kPlaneGroupWidth, (GLuint(height) + kPlaneGroupHeight - 1) / kPlaneGroupHeight};
+}
 
 // Where each chunk begins in the binned voxels listed chunk by chunk, and one past the last.
 std::vector<uint32_t> chunk_starts(const render::DepthChunks& chunks) {
@@ -109,10 +111,10 @@ bool GlV2lfRenderer::prepare_lowpass(float variance_px2) {
   const std::vector<float> kernel = voxel::gaussian_lowpass_kernel(variance_px2);  // the CPU's weights
   if (kernel.empty()) return false;
   const int radius = int(kernel.size() / 2);
-  if (radius > 64)
-    throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than 64 texels; "
+  if (radius > kLowpassMaxRadius)
+    throw_input_error("V2LF on the GPU: the planes' low-pass filter (sigma {:.1f} texels) is wider than {} texels; "
                       "lower --plane-scale",
-                      std::sqrt(variance_px2));
+                      std::sqrt(variance_px2), kLowpassMaxRadius);
   const int wp = accumulation_.width(), hp = accumulation_.height();
   if (!lowpass_scratch_.id() || lowpass_scratch_.width() != wp || lowpass_scratch_.height() != hp)
     lowpass_scratch_ = Texture(GL_RGBA32F, wp, hp);
@@ -124,8 +126,8 @@ bool GlV2lfRenderer::prepare_lowpass(float variance_px2) {
 }
 
 void GlV2lfRenderer::lowpass(int k, const PlaneDispatch& dispatch) {
-  glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(2, lowpass_scratch_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(kPlaneAccumulationImage, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(kPlaneLowpassScratchImage, lowpass_scratch_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
   lowpass_.use();
   for (int along_y = 0; along_y < 2; ++along_y) {
     glProgramUniform1i(lowpass_.id(), lowpass_.uniform("along_y"), along_y);
@@ -184,8 +186,8 @@ void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float l
 // Layer k of the planes from the accumulation layer (which the pass resets to empty).
 void GlV2lfRenderer::convert_plane(int k, const Program& convert, const PlaneDispatch& dispatch, GlPlanes& planes) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  glBindImageTexture(0, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(1, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
+  glBindImageTexture(kPlaneAccumulationImage, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+  glBindImageTexture(kPlaneTexelsImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
   planes.table.buffer.bind_storage(kPlaneTableBinding);
   glProgramUniform1ui(convert.id(), convert.uniform("batch"), GLuint(k));
   convert.use();

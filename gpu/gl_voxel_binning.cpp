@@ -6,6 +6,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/gl_splat_preprocess.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/voxel_binning_chunk_of.comp.glsl.hpp"
 #include "gpu/shaders/voxel_binning_draws.comp.glsl.hpp"
 #include "gpu/shaders/voxel_binning_keys.comp.glsl.hpp"
@@ -13,8 +14,6 @@
 
 namespace lfd::gpu {
 namespace {
-
-constexpr GLuint kVoxelChunkOf = 11;
 
 Program keys_program() {
   return Program("v2lf binning: keys", {{GL_COMPUTE_SHADER, voxel_binning_keys_comp_glsl}}, {"SIGNED_DEPTH_KEYS 1"});
@@ -40,9 +39,9 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
   const PlaneTableHeader zero;
   table.buffer.upload(&zero, sizeof(zero));
   scene.bind();
-  keys_buffer_.bind_storage(kSplatKeys);
-  values_.bind_storage(kSplatValues);
-  table.buffer.bind_storage(kPlaneTable);
+  keys_buffer_.bind_storage(kSplatKeysBinding);
+  values_.bind_storage(kSplatValuesBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
   const glm::vec3 f = glm::abs(camera.forward());  // as voxel/v2lf.cpp's depth_span
   const GLuint p = keys_.id();
   glProgramUniform1ui(p, keys_.uniform("voxel_count"), GLuint(n));
@@ -50,16 +49,16 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
   glProgramUniform3fv(p, keys_.uniform("camera_position"), 1, glm::value_ptr(camera.position_world));
   glProgramUniform1f(p, keys_.uniform("extent_factor"), f.x + f.y + f.z);
   keys_.use();
-  keys_.dispatch_1d(n, 256);
+  keys_.dispatch_1d(n, kVoxelBinningGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, int max_planes,
                                   const glm::uvec2& plane_groups, GlPlaneTable& table) {
   const size_t n = scene.size();
-  GLint octant_of_slot[8] = {0, 0, 0, 0, 0, 0, 0, 0}, slot_of_octant[8];
+  GLint octant_of_slot[kVoxelOctants] = {0, 0, 0, 0, 0, 0, 0, 0}, slot_of_octant[kVoxelOctants];
   GLuint slots = 0;
-  for (int octant = 0; octant < 8; ++octant) {
+  for (int octant = 0; octant < int(kVoxelOctants); ++octant) {
     slot_of_octant[octant] = (octants & (1u << octant)) ? GLint(slots) : -1;
     if (octants & (1u << octant)) octant_of_slot[slots++] = octant;
   }
@@ -69,27 +68,27 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   group_sorted_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   group_values_.ensure(std::max<size_t>(n * slots, 1) * sizeof(uint32_t));
 
-  values_.bind_storage(kSplatValues);
-  layers_.bind_storage(kSplatLayers);
-  table.buffer.bind_storage(kPlaneTable);
-  chunk_of_buffer_.bind_storage(kVoxelChunkOf);
+  values_.bind_storage(kSplatValuesBinding);
+  layers_.bind_storage(kSplatLayersBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
+  chunk_of_buffer_.bind_storage(kVoxelChunkOfBinding);
   glProgramUniform1ui(chunk_of_.id(), chunk_of_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(chunk_of_.id(), chunk_of_.uniform("unbinned"), GLuint(max_planes));
   chunk_of_.use();
-  chunk_of_.dispatch_1d(n, 256);
+  chunk_of_.dispatch_1d(n, kVoxelBinningGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   // Per octant in view: its order keyed by chunk, sorted stably, copied to its slot.
   const GLuint p = orders_.id();
   glProgramUniform1ui(p, orders_.uniform("voxel_count"), GLuint(n));
   for (GLuint s = 0; s < slots; ++s) {
-    scene.order_buffer().bind_storage(kVoxelOrder);
-    group_keys_.bind_storage(kSplatKeys);
-    group_sorted_.bind_storage(kSplatValues);
-    chunk_of_buffer_.bind_storage(kVoxelChunkOf);
+    scene.order_buffer().bind_storage(kVoxelOrderBinding);
+    group_keys_.bind_storage(kSplatKeysBinding);
+    group_sorted_.bind_storage(kSplatValuesBinding);
+    chunk_of_buffer_.bind_storage(kVoxelChunkOfBinding);
     glProgramUniform1ui(p, orders_.uniform("octant"), GLuint(octant_of_slot[s]));
     orders_.use();
-    orders_.dispatch_1d(n, 256);
+    orders_.dispatch_1d(n, kVoxelBinningGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     sort_.sort(group_keys_, group_sorted_, uint32_t(n), chunk_bits);
     if (n > 0)
@@ -97,21 +96,21 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
                                GLsizeiptr(n * sizeof(uint32_t)));
   }
 
-  draws_.bind_storage(kVoxelDraws);
-  table.buffer.bind_storage(kPlaneTable);
+  draws_.bind_storage(kVoxelDrawsBinding);
+  table.buffer.bind_storage(kPlaneTableBinding);
   const GLuint d = draws_pass_.id();
   glProgramUniform1ui(d, draws_pass_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(d, draws_pass_.uniform("max_planes"), GLuint(max_planes));
-  glProgramUniform1iv(d, draws_pass_.uniform("slot_of_octant"), 8, slot_of_octant);
+  glProgramUniform1iv(d, draws_pass_.uniform("slot_of_octant"), kVoxelOctants, slot_of_octant);
   glProgramUniform2ui(d, draws_pass_.uniform("plane_groups"), plane_groups.x, plane_groups.y);
   draws_pass_.use();
-  draws_pass_.dispatch_1d(size_t(max_planes) * 8, 64);
+  draws_pass_.dispatch_1d(size_t(max_planes) * kVoxelOctants, kVoxelDrawsGroupSize);
   // Next: the raster (storage reads of the orders and draws, indirect draws), the swizzle.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 size_t GlVoxelBinning::plane_dispatch_offset(int plane, int max_planes) {
-  return (size_t(8) * size_t(max_planes) + size_t(plane)) * 4 * sizeof(uint32_t);
+  return (size_t(kVoxelOctants) * size_t(max_planes) + size_t(plane)) * 4 * sizeof(uint32_t);
 }
 
 void GlVoxelBinning::run(const GlVoxelScene& scene, const render::ReferenceCamera& ref, int chunks,
@@ -121,7 +120,7 @@ void GlVoxelBinning::run(const GlVoxelScene& scene, const render::ReferenceCamer
   values_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   layers_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   chunk_of_buffer_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
-  draws_.ensure(size_t(table.max_planes) * 9 * 4 * sizeof(uint32_t));  // 8 draws, 1 dispatch a plane
+  draws_.ensure(size_t(table.max_planes) * (kVoxelOctants + 1) * 4 * sizeof(uint32_t));  // the draws, 1 dispatch a plane
   keys(scene, ref.camera, table);
   sort_.sort(keys_buffer_, values_, uint32_t(n), 32);
   chunking_.chunk_sorted(ref, chunks, binning, keys_buffer_, n, layers_, table);

@@ -38,7 +38,7 @@ uint32_t GlVoxelRaster::set_view(const GlVoxelScene& scene, const render::Camera
   glProgramUniform1i(p, program_.uniform("sh_stride"), sh_vec4_stride(scene.scene().sh_degree));
   glProgramUniform1i(p, program_.uniform("samples_per_voxel"), scene.scene().samples_per_voxel);
   scene.bind();
-  order.bind_storage(kVoxelOrder);
+  order.bind_storage(kVoxelOrderBinding);
   return octants_in_view(camera);
 }
 
@@ -72,14 +72,14 @@ void GlVoxelRaster::begin_indirect(const GlVoxelScene& scene, const render::Came
                                    const SplatRasterTarget& target) {
   glProgramUniform1ui(program_.id(), program_.uniform("order_offset"), 0u);
   indirect_octants_ = set_view(scene, camera, sh_origin, order, target);
-  draws.bind_storage(kVoxelDraws);
+  draws.bind_storage(kVoxelDrawsBinding);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.id());
 }
 
 void GlVoxelRaster::draw_indirect(int plane, const SplatRasterTarget& target) const {
   const GLuint p = program_.id();
   draw_octants(indirect_octants_, target, [&](int octant) {
-    const int command = 8 * plane + octant;
+    const int command = int(kVoxelOctants) * plane + octant;
     glProgramUniform1i(p, program_.uniform("draw_command"), command);
     glProgramUniform1i(p, program_.uniform("octant"), octant);
     glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(command) * 4 * sizeof(uint32_t)));

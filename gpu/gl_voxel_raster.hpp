@@ -19,12 +19,10 @@
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_splat_raster.hpp"
 #include "gpu/gl_voxel_scene.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "render/camera.hpp"
 
 namespace lfd::gpu {
-
-// Storage binding of V2LF's indirect draws (voxel_raster.vert.glsl reads their base instance).
-constexpr GLuint kVoxelDraws = 4;
 
 // Entries [offset, offset + count) of an order buffer: one octant's voxels, front to back.
 struct VoxelOrderRange {
@@ -46,7 +44,8 @@ class GlVoxelRaster {
   // (begin_indirect), then per plane its indirect draws (draw_indirect: command 8 plane + octant
   // of `draws`, base instance = where its voxels begin in `order`; sizes and offsets stay on the
   // GPU), the octants no pixel's ray takes skipped. In between, passes may run that leave storage
-  // bindings 0-4 and the draw-indirect buffer alone (the planes' filter and convert passes).
+  // bindings of the voxel scene and draws (gpu/shaders/frame_io.h) and the draw-indirect buffer
+  // alone (the planes' filter and convert passes).
   void begin_indirect(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
                       const Buffer& order, const Buffer& draws, const SplatRasterTarget& target);
   void draw_indirect(int plane, const SplatRasterTarget& target) const;

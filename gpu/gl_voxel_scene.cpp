@@ -73,9 +73,9 @@ GlVoxelScene::GlVoxelScene(const scene::VoxelScene& scene, const GlInfo& info) :
 size_t GlVoxelScene::bytes() const { return boxes_.bytes() + densities_.bytes() + sh_.bytes() + order_.bytes(); }
 
 void GlVoxelScene::bind() const {
-  boxes_.bind_storage(kVoxelBoxes);
-  densities_.bind_storage(kVoxelDensities);
-  sh_.bind_storage(kSceneSh);
+  boxes_.bind_storage(kVoxelBoxesBinding);
+  densities_.bind_storage(kVoxelDensitiesBinding);
+  sh_.bind_storage(kSceneShBinding);
 }
 
 uint32_t octants_in_view(const render::Camera& camera) {

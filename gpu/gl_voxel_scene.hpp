@@ -1,13 +1,14 @@
 #pragma once
 // A sparse-voxel scene (scene/voxel_scene.hpp) uploaded once into shader storage buffers for
 // the GL voxel raster (issue #13, V2LF's GPU half). std430, vec4-packed:
-//   binding kVoxelBoxes      vec4 boxes[]       (min corner x, y, z, edge length)
-//   binding kVoxelDensities  vec4 densities[2v] raw corner densities 0-3, 4-7 (corner i at
-//                            (x, y, z) = bits (2, 1, 0) of i, as VoxelScene)
-//   binding kSceneSh (3)     vec4 sh[]          sh_vec4_stride() vec4s per voxel, the layout of
-//                            GlScene's SH so gpu/shaders/sh_color.glsl reads both
-//   binding kVoxelOrder      uint order[8 v]    the eight front-to-back orders (voxel/ray_order.hpp),
-//                            order o at [o v, (o + 1) v): octant o's rays visit voxels in it
+//   kVoxelBoxesBinding      vec4 boxes[]       (min corner x, y, z, edge length)
+//   kVoxelDensitiesBinding  vec4 densities[2v] raw corner densities 0-3, 4-7 (corner i at
+//                           (x, y, z) = bits (2, 1, 0) of i, as VoxelScene)
+//   kSceneShBinding         vec4 sh[]          sh_vec4_stride() vec4s per voxel, the layout of
+//                           GlScene's SH so gpu/shaders/sh_color.glsl reads both
+//   kVoxelOrderBinding      uint order[8 v]    the eight front-to-back orders (voxel/ray_order.hpp),
+//                           order o at [o v, (o + 1) v): octant o's rays visit voxels in it
+// (binding points: gpu/shaders/frame_io.h)
 // The eight orders depend on the scene only (not the camera), so they are sorted once here on
 // the CPU and kept there too: V2LF groups each order by chunk per frame (gpu/gl_voxel_renderer.hpp).
 #include <array>
@@ -18,15 +19,11 @@
 
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_objects.hpp"
+#include "gpu/shaders/frame_io.h"
 #include "render/camera.hpp"
 #include "scene/voxel_scene.hpp"
 
 namespace lfd::gpu {
-
-constexpr GLuint kVoxelBoxes = 0;
-constexpr GLuint kVoxelDensities = 1;
-constexpr GLuint kVoxelOrder = 2;
-// SH at kSceneSh (3), shared with GlScene.
 
 // GPU bytes per voxel of the scene buffers at `sh_degree`.
 size_t voxel_scene_bytes_per_voxel(int sh_degree);

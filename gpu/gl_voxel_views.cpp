@@ -9,6 +9,7 @@
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_quilt_target.hpp"
+#include "gpu/shaders/plane_io.h"
 #include "gpu/shaders/voxel_downsample.comp.glsl.hpp"
 #include "util/error.hpp"
 
@@ -72,14 +73,14 @@ void GlVoxelViews::render_into(const render::Camera& camera, const voxel::VoxelR
   glProgramUniform4i(p, program.uniform("write_region"), write_region.x, write_region.y, write_region.z,
                      write_region.w);
   glProgramUniform1f(p, program.uniform("alpha_out"), keep_transmittance ? -1.0f : 1.0f);
-  glProgramUniform1i(p, program.uniform("source"), 0);
-  glBindTextureUnit(0, supersampled_.id());
-  glBindImageTexture(1, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.internal_format());
+  glBindTextureUnit(kDownsampleSourceUnit, supersampled_.id());
+  glBindImageTexture(kDownsampleTargetImage, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.internal_format());
   program.use();
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the draws above wrote what the pass reads
-  glDispatchCompute(GLuint((camera.width + 15) / 16), GLuint((camera.height + 7) / 8), 1);
+  glDispatchCompute((GLuint(camera.width) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
+                    (GLuint(camera.height) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, 1);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  glBindTextureUnit(0, 0);
+  glBindTextureUnit(kDownsampleSourceUnit, 0);
   check_gl("downsampling a voxel view");
 }
 

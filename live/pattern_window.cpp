@@ -7,6 +7,7 @@
 #include <GLFW/glfw3.h>
 
 #include "live/shaders/pattern_window.frag.glsl.hpp"
+#include "live/shaders/pattern_window_io.h"
 #include "live/shaders/pattern_window.vert.glsl.hpp"
 #include "util/error.hpp"
 
@@ -67,7 +68,7 @@ void PatternWindow::draw() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width_, height_);
   program_.use();
-  glBindTextureUnit(0, texture_.id());
+  glBindTextureUnit(kPatternUnit, texture_.id());
   glBindVertexArray(vertex_array_->id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }

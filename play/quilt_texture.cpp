@@ -2,6 +2,7 @@
 
 #include "play/shaders/quilt_convert.frag.glsl.hpp"
 #include "play/shaders/quilt_convert.vert.glsl.hpp"
+#include "play/shaders/quilt_convert_io.h"
 
 namespace lfd::play {
 namespace {
@@ -63,7 +64,8 @@ void QuiltTexture::convert(bool yuv, const media::YuvToRgb& t) {
     glUniformMatrix3fv(program_.uniform("u_yuv_matrix"), 1, GL_FALSE, t.matrix.data());
     glUniform3fv(program_.uniform("u_yuv_offset"), 1, t.offset.data());
   }
-  for (int p = 0; p < (yuv ? 3 : 1); ++p) glBindTextureUnit(GLuint(p), planes_[p].id());
+  const GLuint units[] = {kQuiltPlane0Unit, kQuiltPlane1Unit, kQuiltPlane2Unit};
+  for (int p = 0; p < (yuv ? 3 : 1); ++p) glBindTextureUnit(units[p], planes_[p].id());
   glBindVertexArray(triangle_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

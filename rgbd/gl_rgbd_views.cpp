@@ -11,6 +11,7 @@
 #include "rgbd/rgbd_view_model.hpp"
 #include "rgbd/shaders/rgbd_fill.frag.glsl.hpp"
 #include "rgbd/shaders/rgbd_fullscreen.vert.glsl.hpp"
+#include "rgbd/shaders/rgbd_io.h"
 #include "rgbd/shaders/rgbd_resample.frag.glsl.hpp"
 #include "rgbd/shaders/rgbd_warp.frag.glsl.hpp"
 #include "util/error.hpp"
@@ -116,10 +117,10 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
   glBindVertexArray(triangle_.id());
-  for (GLuint unit = 0; unit < 2; ++unit) glBindSampler(unit, sampler_);
+  for (GLuint unit = 0; unit < kRgbdSampledUnits; ++unit) glBindSampler(unit, sampler_);
 
   resample_.use();
-  glBindTextureUnit(0, frame.id);
+  glBindTextureUnit(kRgbdFrameUnit, frame.id);
   set_rect(resample_.uniform("colour_rect"), split.colour);
   set_rect(resample_.uniform("depth_rect"), split.depth);
   glUniform1i(resample_.uniform("frame_height"), frame.height);
@@ -132,8 +133,8 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   draw_into(source_, tw, th);
 
   warp_.use();
-  glBindTextureUnit(0, source_.id());
-  glBindTextureUnit(1, shifts_.id());
+  glBindTextureUnit(kRgbdSourceUnit, source_.id());
+  glBindTextureUnit(kRgbdShiftPerZUnit, shifts_.id());
   glUniform2i(warp_.uniform("tile_size"), tw, th);
   glUniform3i(warp_.uniform("grid"), layout.cols, layout.rows, layout.views);
   glUniform1f(warp_.uniform("relief_slope"), float(options.depthiness * kReliefRatio));
@@ -142,11 +143,11 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   draw_into(warped_, layout.width, layout.height);
 
   fill_.use();
-  glBindTextureUnit(0, warped_.id());
+  glBindTextureUnit(kRgbdWarpedUnit, warped_.id());
   glUniform2i(fill_.uniform("tile_size"), tw, th);
   draw_into(quilt, layout.width, layout.height);
 
-  for (GLuint unit = 0; unit < 2; ++unit) glBindSampler(unit, 0);
+  for (GLuint unit = 0; unit < kRgbdSampledUnits; ++unit) glBindSampler(unit, 0);
   glBindVertexArray(0);
 }
 

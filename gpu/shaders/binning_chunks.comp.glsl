@@ -4,36 +4,28 @@
 // and give empty chunks, which are dropped, as the CPU does. The non-empty chunks become the
 // planes, front to back: plane p gets its first sorted splat and d_k = the median reference
 // depth of its members + D_forward_eff (base-camera depth, Eq. u_prime). Also sets the
-// indirect draw's instance count to the binned count (the layered raster draws those). Needs
-// depth_key.glsl prepended.
+// indirect draw's instance count to the binned count (the layered raster draws those).
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/depth_key.glsl"
 
-layout(local_size_x = 256) in;
+layout(local_size_x = kBinningChunksGroupSize) in;
 
-const uint kThreads = 256u;
-const uint kMaxCuts = 4097u;       // N_chunk <= 4096
-const uint kMaxDisparity = 2048u;  // N_chunk / 2
+const uint kThreads = kBinningChunksGroupSize;
 
-struct PlaneEntry {
-  float depth;
-  uint begin;
+layout(std430, binding = kSplatKeysBinding) readonly buffer Keys { uint keys[]; };  // sorted
+layout(std430, binding = kSplatDrawBinding) buffer Draw { uint draw_count; uint draw_instances; uint draw_first; uint draw_base; };
+layout(std430, binding = kPlaneTableBinding) buffer PlaneTable {
+  PlaneTableHeader table;
+  PlaneTableEntry plane[];
 };
-layout(std430, binding = 5) readonly buffer Keys { uint keys[]; };  // sorted
-layout(std430, binding = 7) buffer Draw { uint draw_count; uint draw_instances; uint draw_first; uint draw_base; };
-layout(std430, binding = 9) buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
-layout(std430, binding = 10) readonly buffer Cuts { uint cuts[]; };
+layout(std430, binding = kBinningCutsBinding) readonly buffer Cuts { uint cuts[]; };
 
 uniform uint count_chunks;      // K
 uniform uint disparity_chunks;  // M (0: kQuantile)
 uniform float d_forward_eff;
 
-shared uint disparity[kMaxDisparity];
-shared uint merged[kMaxCuts];
+shared uint disparity[kBinningMaxDisparityChunks];
+shared uint merged[kBinningMaxCuts];
 shared uint planes_before[kThreads];
 
 uint count_cut(uint n, uint k) {
@@ -67,7 +59,7 @@ float depth_at(uint i) { return key_depth(keys[i]); }
 
 void main() {
   const uint tid = gl_LocalInvocationIndex;
-  const uint n = splats_binned;
+  const uint n = table.splats_binned;
   const uint stored = disparity_chunks > 1u ? disparity_chunks - 1u : 0u;
   const uint total = count_chunks + 1u + stored;
 
@@ -98,7 +90,7 @@ void main() {
       planes_before[t] = sum;
       sum += v;
     }
-    plane_count = sum;
+    table.plane_count = sum;
     plane[sum].begin = n;
     plane[sum].depth = 0.0;
     draw_instances = n;

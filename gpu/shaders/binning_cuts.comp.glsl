@@ -4,17 +4,14 @@
 //   cuts[K + m], m = 1..M-1    kMixed only: lower_bound of the depth z_m whose base-camera
 //                              disparity is the m/M step from the nearest to the farthest
 //                              binned Gaussian (M = disparity_chunks), in double as the CPU.
-// Both runs are non-decreasing; the chunk pass merges them. Needs depth_key.glsl prepended.
+// Both runs are non-decreasing; the chunk pass merges them.
+#include "gpu/shaders/frame_io.h"
+#include "gpu/shaders/plane_table.glsl"
 #include "gpu/shaders/depth_key.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kBinningCutsGroupSize) in;
 
-layout(std430, binding = 5) readonly buffer Keys { uint keys[]; };  // sorted
-layout(std430, binding = 9) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-};
-layout(std430, binding = 10) writeonly buffer Cuts { uint cuts[]; };
+layout(std430, binding = kSplatKeysBinding) readonly buffer Keys { uint keys[]; };  layout(std430, binding = kBinningCutsBinding) writeonly buffer Cuts { uint cuts[]; };
 
 uniform uint count_chunks;      // K
 uniform uint disparity_chunks;  // M (0: kQuantile)
@@ -35,7 +32,7 @@ uint lower_bound(uint n, float z) {
 
 void main() {
   const uint c = gl_GlobalInvocationID.x;
-  const uint n = splats_binned;
+  const uint n = table.splats_binned;
   if (c <= count_chunks) {
     // n k / K without 64-bit products: n = q K + r, so n k / K = q k + r k / K exactly.
     const uint q = n / count_chunks, r = n % count_chunks;

@@ -3,14 +3,16 @@
 // the rasterizer's guard band) get their reference-camera depth as the sort key (float bits:
 // depth > 0.2 orders as the floats), the others 0xFFFFFFFF so they sort after every binned one;
 // values are the Gaussian indices. Binned Gaussians are counted in the plane table.
-layout(local_size_x = 256) in;
+#include "gpu/shaders/frame_io.h"
 
-layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
-layout(std430, binding = 5) writeonly buffer Keys { uint keys[]; };
-layout(std430, binding = 6) writeonly buffer Values { uint values[]; };
-layout(std430, binding = 9) buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
+layout(local_size_x = kBinningKeysGroupSize) in;
+
+layout(std430, binding = kScenePositionsBinding) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
+layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };
+layout(std430, binding = kSplatValuesBinding) writeonly buffer Values { uint values[]; };
+layout(std430, binding = kPlaneTableBinding) buffer PlaneTable {
+  PlaneTableHeader table;
+  PlaneTableEntry plane[];
 };
 
 uniform uint gaussian_count;
@@ -35,5 +37,5 @@ void main() {
     if (!culled) atomicAdd(group_binned, 1u);
   }
   barrier();
-  if (gl_LocalInvocationIndex == 0u && group_binned > 0u) atomicAdd(splats_binned, group_binned);
+  if (gl_LocalInvocationIndex == 0u && group_binned > 0u) atomicAdd(table.splats_binned, group_binned);
 }

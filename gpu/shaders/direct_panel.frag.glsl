@@ -1,7 +1,7 @@
 // The direct panel pass (issue 24; docs/rendering.md "Direct panel rendering"), the GLSL twin of
 // interlace::render_direct_panel (interlace/direct_panel.cpp) and render::PlaneRays
 // (render/plane_rays.cpp): one fragment per panel pixel. Each channel's view fraction comes from
-// lens_view.glsl (prepended: the one GLSL definition the interlacer uses too); it stands for the
+// lens_view.glsl (#included: the one GLSL definition the interlacer uses too); it stands for the
 // camera at view position s = f - 1/2, offset dx = view_offset_at(s) (render/quilt_geometry.hpp),
 // and the sweeping planes are composited front to back along that camera's ray through the
 // pixel's point in the view (the interlacer's aspect fit), for that channel alone. Plane
@@ -11,21 +11,12 @@
 // filters (a sampler with GL_LINEAR and a (0, 0, 0, 1) border, as the swizzle's): one fetch
 // instead of four, with the unit's own weights (8 bits of fraction on NVIDIA), not the CPU's.
 // Defines: BILINEAR 0|1, HW_BILINEAR 0|1.
+#include "gpu/shaders/lens_view_io.h"
+#include "gpu/shaders/plane_table.glsl"
 #include "gpu/shaders/lens_view.glsl"
 
-layout(binding = 0) uniform sampler2DArray planes;  // rows bottom-up (gpu/gl_planes.hpp)
+layout(binding = kDirectPanelPlanesUnit) uniform sampler2DArray planes;  // rows bottom-up (gpu/gl_planes.hpp)
 
-// The plane table (gpu/gl_planes.hpp): header, then d_k and the first splat per plane.
-struct PlaneEntry {
-  float depth;
-  uint begin;
-};
-layout(std430, binding = 0) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
 
 uniform ivec2 plane_size;        // Wp, Hp
 uniform float focal_distance;    // D_focal
@@ -65,7 +56,7 @@ void main() {
     dx[c] = two_focal_distance * s * tan_half_cone;
   }
   vec3 C = vec3(0.0), t = vec3(1.0);
-  const uint count = plane_count;
+  const uint count = table.plane_count;
   for (uint k = 0u; k < count && max(t.r, max(t.g, t.b)) >= kMinTransmittance; ++k) {
     const float d = plane[k].depth;
     precise const float depth_ref = d - d_forward_eff;

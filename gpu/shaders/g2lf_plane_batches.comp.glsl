@@ -3,19 +3,12 @@
 // its first plane to the first splat past its last plane (plane_count's entry holds the binned
 // count, so the last batch ends there). Writes the run and the copy pass's indirect dispatch
 // (at least one group, so the copy always writes the batch's draw command).
-#define PLANE_TABLE_BINDING 9
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/plane_table.glsl"
 
-layout(local_size_x = 64) in;
+layout(local_size_x = kPlaneBatchesGroupSize) in;
 
-// PlaneTable (plane_table.glsl, prepended at binding 9): plane_count, splats_binned, plane[k].
-struct Batch {
-  uint groups_x, groups_y, groups_z;  // DispatchIndirectCommand of the copy pass
-  uint first;                         // first sorted splat of the batch
-  uint count;                         // its splats
-  uint pad0, pad1, pad2;
-};
-layout(std430, binding = 11) writeonly buffer Batches { Batch batches[]; };
+layout(std430, binding = kPlaneBatchesBinding) writeonly buffer Batches { PlaneBatch batches[]; };
 
 uniform uint batch_count;
 uniform uint batch_layers;
@@ -23,9 +16,9 @@ uniform uint batch_layers;
 void main() {
   const uint b = gl_GlobalInvocationID.x;
   if (b >= batch_count) return;
-  const uint count = plane_count;
+  const uint count = table.plane_count;
   const uint first = plane[min(b * batch_layers, count)].begin;
   const uint last = plane[min((b + 1u) * batch_layers, count)].begin;
   const uint n = last - first;
-  batches[b] = Batch(max(1u, (n + 255u) / 256u), 1u, 1u, first, n, 0u, 0u, 0u);
+  batches[b] = PlaneBatch(max(1u, (n + kPlaneCopyGroupSize - 1u) / kPlaneCopyGroupSize), 1u, 1u, first, n, 0u, 0u, 0u);
 }

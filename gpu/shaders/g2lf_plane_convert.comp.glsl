@@ -4,14 +4,14 @@
 // conversion's rounding), and the accumulation texel reset to empty (C = 0, T = 1) for the next
 // batch. Layers past the frame's plane count were not drawn into and are left alone.
 // Defines: PLANE_FORMAT (rgba8 | rgba16f), QUANTIZE_U8 0|1.
-#define PLANE_TABLE_BINDING 9
+#include "gpu/shaders/plane_io.h"
 #include "gpu/shaders/plane_table.glsl"
 
-layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = kPlaneGroupWidth, local_size_y = kPlaneGroupHeight) in;
 
-layout(rgba32f, binding = 0) uniform image2DArray accumulation;
-layout(PLANE_FORMAT, binding = 1) uniform writeonly image2DArray planes;
-// PlaneTable (plane_table.glsl, prepended at binding 9): plane_count, splats_binned, plane[k].
+layout(rgba32f, binding = kPlaneAccumulationImage) uniform image2DArray accumulation;
+layout(PLANE_FORMAT, binding = kPlaneTexelsImage) uniform writeonly image2DArray planes;
+// PlaneTable (plane_table.glsl): table.plane_count, table.splats_binned, plane[k].
 
 uniform uint batch;
 uniform uint batch_layers;
@@ -20,7 +20,7 @@ uniform ivec2 plane_size;
 void main() {
   const ivec3 p = ivec3(gl_GlobalInvocationID);
   const uint plane = batch * batch_layers + uint(p.z);
-  if (p.x >= plane_size.x || p.y >= plane_size.y || plane >= plane_count) return;
+  if (p.x >= plane_size.x || p.y >= plane_size.y || plane >= table.plane_count) return;
   vec4 v = imageLoad(accumulation, p);
 #if QUANTIZE_U8
   precise vec4 q = floor(clamp(v, 0.0, 1.0) * 255.0 + 0.5);

@@ -1,12 +1,13 @@
 // The interlacing shader: the GLSL twin of interlace::Interlacer (interlace/interlacer.cpp), one
 // fragment per panel pixel, in single precision. Each subpixel's view fraction comes from
-// lens_view.glsl (prepended: the one GLSL definition of display::LensModel's phase and view
+// lens_view.glsl (#included: the one GLSL definition of display::LensModel's phase and view
 // fraction, which says where single precision is enough); the lines marked "Interlacer::" repeat
 // that function's arithmetic in the same order. Every constant comes from the CPU
 // (gpu/gl_interlacer.cpp, gpu/gl_lens_view.cpp).
+#include "gpu/shaders/lens_view_io.h"
 #include "gpu/shaders/lens_view.glsl"
 
-layout(binding = 0) uniform sampler2D quilt;  // rows bottom-up, view 0 in the bottom-left tile
+layout(binding = kInterlaceQuiltUnit) uniform sampler2D quilt;  // rows bottom-up, view 0 in the bottom-left tile
 
 uniform int views;
 uniform int quilt_cols;

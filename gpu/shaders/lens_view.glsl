@@ -12,18 +12,19 @@
 // grid. Every float here is < 4 in magnitude, so the sum and frac() lose at most ~5e-7 period:
 // a subpixel shows the CPU's view unless its double fraction lies within kLensViewTolerance of
 // a view boundary (tests/gpu/gl_lens_view_test.cpp measures it over whole 8K panels).
+#include "gpu/shaders/lens_view_io.h"
 
-layout(binding = 1) uniform sampler2D correction;  // w(u, v) on a grid over [0, 1]^2, R32F
+layout(binding = kLensCorrectionUnit) uniform sampler2D correction;  // w(u, v) on a grid over [0, 1]^2, R32F
 // column[x] for x < screenW, then row[j] (j bottom-up) for j < screenH: frac() of the phase parts.
-layout(std430, binding = 3) readonly buffer LensPhaseParts { float phase_part[]; };
+layout(std430, binding = kLensPhasePartsBinding) readonly buffer LensPhaseParts { float phase_part[]; };
 
 uniform ivec2 panel_size;  // screenW, screenH
 uniform bool inv_view;     // calibration().inv_view
 // For the 8 pixel classes (x mod 2) + 2 (j mod 4), j bottom-up, and each channel:
 // LensModel::subpixel_uv - pixel_uv (every cell pattern and flipSubp repeat with that period, so
 // the table is LensModel's own offsets), and its phase (du + dv tilt) pitch'.
-uniform vec2 subpixel_offset[8 * 3];
-uniform float subpixel_phase[8 * 3];
+uniform vec2 subpixel_offset[kLensSubpixelEntries];
+uniform float subpixel_phase[kLensSubpixelEntries];
 uniform bool has_correction;
 uniform ivec2 correction_grid;  // grid points per axis; point i at u = i / (grid.x - 1)
 

@@ -1,5 +1,5 @@
 // The view fraction of each channel of every pixel of a band of panel rows, as lens_view.glsl
-// (prepended) computes it: for measuring the shaders' single precision against LensModel over
+// (#included) computes it: for measuring the shaders' single precision against LensModel over
 // whole panels (gpu::view_fractions_on_gpu, tests/gpu/gl_lens_view_test.cpp).
 #include "gpu/shaders/lens_view.glsl"
 

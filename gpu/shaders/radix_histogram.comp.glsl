@@ -1,16 +1,16 @@
 // Radix sort pass 1 (gpu/gl_radix_sort.hpp): the digit counts of one block of keys.
 #include "gpu/shaders/radix_common.glsl"
 
-layout(local_size_x = 256) in;
+layout(local_size_x = kRadixTile) in;
 
-layout(std430, binding = 0) readonly buffer Keys { uint keys[]; };
+layout(std430, binding = kRadixKeysInBinding) readonly buffer Keys { uint keys[]; };
 // [digit * block_count + block]: digit-major, so one prefix scan per digit row gives each
 // block its offset among the elements of that digit.
-layout(std430, binding = 1) writeonly buffer BlockCounts { uint block_counts[]; };
+layout(std430, binding = kRadixBlockCountsBinding) writeonly buffer BlockCounts { uint block_counts[]; };
 
 uniform uint shift;
 
-shared uint local_counts[256];
+shared uint local_counts[kRadixDigits];
 
 void main() {
   uint tid = gl_LocalInvocationID.x;
@@ -20,9 +20,9 @@ void main() {
   uint items = pass_block_items();
   uint begin = block * items;
   uint end = min(begin + items, pass_count());
-  for (uint k = begin + tid; k < end; k += 256u) {
+  for (uint k = begin + tid; k < end; k += kRadixTile) {
     uint key = keys[k];
-    if (!dropped(key)) atomicAdd(local_counts[(pass_key(key) >> shift) & 255u], 1u);
+    if (!dropped(key)) atomicAdd(local_counts[(pass_key(key) >> shift) & (kRadixDigits - 1u)], 1u);
   }
   barrier();
   block_counts[tid * pass_block_count() + block] = local_counts[tid];

@@ -1,9 +1,11 @@
 // View-dependent colour from SH (forward.cu computeColorFromSH; docs/rendering.md), the GLSL twin
 // of render/spherical_harmonics.cpp: one definition for every GL pass that evaluates SH (the splat
-// preprocess, the voxel raster). Prepended to those shaders. The coefficients of primitive g are
+// preprocess, the voxel raster), #included by them. The coefficients of primitive g are
 // (degree+1)^2 RGB triples, coefficient-major, packed into sh_stride vec4s per primitive
 // (gpu/gl_scene.hpp, gpu/gl_voxel_scene.hpp).
-layout(std430, binding = 3) readonly buffer Sh { vec4 sh[]; };
+#include "gpu/shaders/frame_io.h"
+
+layout(std430, binding = kSceneShBinding) readonly buffer Sh { vec4 sh[]; };
 uniform int sh_degree;
 uniform int sh_stride;  // vec4s per primitive
 

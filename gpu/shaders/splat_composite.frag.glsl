@@ -2,9 +2,11 @@
 // step). FROM_TEXTURE: reads (C, T) from an accumulation texture into another target (an RGBA8
 // quilt tile), alpha 1. Otherwise in place through blending: the fragment is (bg, a) and the
 // blend function (DST_ALPHA, ONE) adds T bg to C; alpha becomes 1 or stays T.
+#include "gpu/shaders/frame_io.h"
+
 uniform vec3 background;
 #ifdef FROM_TEXTURE
-uniform sampler2D accumulation;
+layout(binding = kSplatAccumulationUnit) uniform sampler2D accumulation;
 uniform ivec2 viewport_origin;
 #else
 uniform float alpha_out;

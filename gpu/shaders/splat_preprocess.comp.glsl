@@ -2,21 +2,22 @@
 // docs/rendering.md "The CPU reference rasterizer"). Written operation for operation as the CPU
 // code so the two agree to rounding; `precise` keeps the compiler from fusing multiply-adds where
 // an integer (radius, tile rectangle) is derived from the result.
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/splat_record.glsl"
 #include "gpu/shaders/sh_color.glsl"
 
-layout(local_size_x = 128) in;
+layout(local_size_x = kSplatPreprocessGroupSize) in;
 
-layout(std430, binding = 0) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
-layout(std430, binding = 1) readonly buffer Scales { vec4 scales[]; };
-layout(std430, binding = 2) readonly buffer Rotations { vec4 rotations[]; };  // w, x, y, z
-layout(std430, binding = 4) writeonly buffer Records { SplatRecord records[]; };
-layout(std430, binding = 5) writeonly buffer Keys { uint keys[]; };
-layout(std430, binding = 6) writeonly buffer Values { uint values[]; };
-layout(std430, binding = 7) buffer Draw { uint draw_count; uint draw_instances; uint draw_first; uint draw_base; };
+layout(std430, binding = kScenePositionsBinding) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
+layout(std430, binding = kSceneScalesBinding) readonly buffer Scales { vec4 scales[]; };
+layout(std430, binding = kSceneRotationsBinding) readonly buffer Rotations { vec4 rotations[]; };  // w, x, y, z
+layout(std430, binding = kSplatRecordsBinding) writeonly buffer Records { SplatRecord records[]; };
+layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };
+layout(std430, binding = kSplatValuesBinding) writeonly buffer Values { uint values[]; };
+layout(std430, binding = kSplatDrawBinding) buffer Draw { uint draw_count; uint draw_instances; uint draw_first; uint draw_base; };
 // The visible depths' range as float bits (positive floats order as their bits), reset to
 // (0xFFFFFFFF, 0) before the pass: the sort's normalised keys (gpu/gl_radix_sort.hpp).
-layout(std430, binding = 11) buffer DepthRange { uint depth_min_bits; uint depth_max_bits; };
+layout(std430, binding = kSplatDepthRangeBinding) buffer DepthRange { uint depth_min_bits; uint depth_max_bits; };
 
 uniform uint gaussian_count;
 uniform mat3 world_to_camera;

@@ -1,6 +1,6 @@
 // One quad per sorted visible splat (instanced, glDrawArraysIndirect, a 4-vertex strip).
-// Needs splat_record.glsl prepended (and, for LAYERED, the GL_ARB_shader_viewport_layer_array
-// extension line before it).
+// For LAYERED, the GL_ARB_shader_viewport_layer_array extension line comes before every
+// declaration (Mesa refuses it later), so before the #includes.
 //
 // Coverage: the reference evaluates a splat on every pixel of the 16x16 tiles its rectangle
 // touches, but a pixel changes the image only where alpha = min(0.99, o exp(power)) >= 1/255,
@@ -12,12 +12,13 @@
 #ifdef LAYERED
 #extension GL_ARB_shader_viewport_layer_array : require
 #endif
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/splat_record.glsl"
 
-layout(std430, binding = 4) readonly buffer Records { SplatRecord records[]; };
-layout(std430, binding = 6) readonly buffer SortedIds { uint sorted_ids[]; };
+layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
+layout(std430, binding = kSplatValuesBinding) readonly buffer SortedIds { uint sorted_ids[]; };
 #ifdef LAYERED
-layout(std430, binding = 8) readonly buffer Layers { uint layers[]; };
+layout(std430, binding = kSplatLayersBinding) readonly buffer Layers { uint layers[]; };
 #endif
 
 uniform ivec2 image_size;  // the view's size in pixels; the viewport maps it to the target

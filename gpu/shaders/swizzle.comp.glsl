@@ -17,20 +17,20 @@
 // four, whose weights are the unit's own (8 bits of fraction on NVIDIA), not the CPU's.
 // Defines: BILINEAR 0|1, HW_BILINEAR 0|1, TABLE 0|1, QUILT_FORMAT (rgba8 | rgba16f | rgba32f),
 // VIEWS (views per invocation).
-#define PLANE_TABLE_BINDING 0
+#include "gpu/shaders/swizzle_io.h"
 #include "gpu/shaders/plane_table.glsl"
 
-layout(local_size_x = 16, local_size_y = 8, local_size_z = 1) in;
+layout(local_size_x = kSwizzleGroupWidth, local_size_y = kSwizzleGroupHeight) in;
 
-layout(binding = 0) uniform sampler2DArray planes;
-layout(QUILT_FORMAT, binding = 0) uniform writeonly image2D quilt;
+layout(binding = kSwizzlePlanesUnit) uniform sampler2DArray planes;
+layout(QUILT_FORMAT, binding = kSwizzleQuiltImage) uniform writeonly image2D quilt;
 
-// PlaneTable (plane_table.glsl, prepended at binding 0): plane_count, splats_binned, plane[k].
+// PlaneTable (plane_table.glsl): table.plane_count, table.splats_binned, plane[k].
 #if TABLE
-layout(std430, binding = 2) readonly buffer PlaneFactors { vec2 plane_factors[]; };  // scale_y, beta
-layout(std430, binding = 3) readonly buffer ViewPlaneColumns { float view_plane_column[]; };  // [k V + j]
+layout(std430, binding = kSwizzlePlaneFactorsBinding) readonly buffer PlaneFactors { vec2 plane_factors[]; };  // scale_y, beta
+layout(std430, binding = kSwizzleViewPlaneColumnsBinding) readonly buffer ViewPlaneColumns { float view_plane_column[]; };  // [k V + j]
 #else
-layout(std430, binding = 1) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
+layout(std430, binding = kSwizzleViewOffsetsBinding) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
 #endif
 
 uniform ivec2 view_size;   // W, H of a view
@@ -84,7 +84,7 @@ void main() {
     C[i] = vec3(0.0);
     t[i] = i < views ? 1.0 : 0.0;  // views past the last are done from the start
   }
-  const uint count = plane_count;
+  const uint count = table.plane_count;
   bool open = true;  // some view's pixel still lets light through
   for (uint k = 0u; k < count && open; ++k) {
 #if TABLE

@@ -5,17 +5,17 @@
 // (view, plane); planes past the frame's plane count are skipped. The expressions and their
 // order are the swizzle's own (`precise`: no fused multiply-add), so the swizzle samples the
 // same positions bit for bit with or without the table.
-#define PLANE_TABLE_BINDING 0
+#include "gpu/shaders/swizzle_io.h"
 #include "gpu/shaders/plane_table.glsl"
 
-layout(local_size_x = 64, local_size_y = 1, local_size_z = 1) in;
+layout(local_size_x = kSwizzleTableGroupSize) in;
 
-// PlaneTable (plane_table.glsl, prepended at binding 0): plane_count, splats_binned, plane[k].
-layout(std430, binding = 1) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
+// PlaneTable (plane_table.glsl): table.plane_count, table.splats_binned, plane[k].
+layout(std430, binding = kSwizzleViewOffsetsBinding) readonly buffer ViewOffsets { float view_offset[]; };  // dx_j
 // Per plane: scale_y (for the sample row) and beta (the column step per pixel x).
-layout(std430, binding = 2) writeonly buffer PlaneFactors { vec2 plane_factors[]; };
+layout(std430, binding = kSwizzlePlaneFactorsBinding) writeonly buffer PlaneFactors { vec2 plane_factors[]; };
 // Per plane k and view j, at k * view_count + j: alpha, the column sampled by pixel x = 0.
-layout(std430, binding = 3) writeonly buffer ViewPlaneColumns { float view_plane_column[]; };
+layout(std430, binding = kSwizzleViewPlaneColumnsBinding) writeonly buffer ViewPlaneColumns { float view_plane_column[]; };
 
 uniform ivec2 view_size;   // W, H of a view
 uniform ivec2 plane_size;  // Wp, Hp
@@ -28,7 +28,7 @@ uniform int view_count;  // V
 void main() {
   const int j = int(gl_GlobalInvocationID.x);
   const uint k = gl_GlobalInvocationID.y;
-  if (j >= view_count || k >= plane_count) return;
+  if (j >= view_count || k >= table.plane_count) return;
   const float W = float(view_size.x);
   const float Wp = float(plane_size.x);
   const float d = plane[k].depth;

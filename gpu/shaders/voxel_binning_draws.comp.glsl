@@ -5,32 +5,25 @@
 // frame's plane count and octants not in view draw nothing. After the draws, per plane k at
 // entry 8 max_planes + k, the indirect dispatch of its filter and convert passes: the plane's
 // work groups, none past the plane count (so those planes cost no GPU work).
-layout(local_size_x = 64) in;
+#include "gpu/shaders/frame_io.h"
+#include "gpu/shaders/plane_table.glsl"
 
-struct PlaneEntry {
-  float depth;
-  uint begin;
-};
-layout(std430, binding = 4) writeonly buffer Draws { uvec4 draws[]; };  // count, instances, first, base instance
-layout(std430, binding = 9) readonly buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;
-  uint pad0, pad1;
-  PlaneEntry plane[];
-};
+layout(local_size_x = kVoxelDrawsGroupSize) in;
+
+layout(std430, binding = kVoxelDrawsBinding) writeonly buffer Draws { uvec4 draws[]; };  // count, instances, first, base instance
 
 uniform uint voxel_count;
 uniform uint max_planes;
-uniform int slot_of_octant[8];  // -1: not in view
+uniform int slot_of_octant[kVoxelOctants];  // -1: not in view
 uniform uvec2 plane_groups;     // work groups of a per-plane pass (16 x 8 texels each)
 
 void main() {
   const uint c = gl_GlobalInvocationID.x;
-  if (c >= 8u * max_planes) return;
-  const uint k = c / 8u, octant = c % 8u;
-  if (octant == 0u) draws[8u * max_planes + k] = k < plane_count ? uvec4(plane_groups, 1u, 0u) : uvec4(0u);
+  if (c >= kVoxelOctants * max_planes) return;
+  const uint k = c / kVoxelOctants, octant = c % kVoxelOctants;
+  if (octant == 0u) draws[kVoxelOctants * max_planes + k] = k < table.plane_count ? uvec4(plane_groups, 1u, 0u) : uvec4(0u);
   const int slot = slot_of_octant[octant];
-  if (k >= plane_count || slot < 0) {
+  if (k >= table.plane_count || slot < 0) {
     draws[c] = uvec4(4u, 0u, 0u, 0u);
     return;
   }

@@ -5,16 +5,17 @@
 // indices. Binned voxels are counted in the plane table. The depths are the CPU's bit for bit:
 // the centre as VoxelScene::voxel_center (min + edge / 2), Camera::to_camera as glm evaluates it
 // (no fused multiply-add), the half extent as (edge / 2) (|f.x| + |f.y| + |f.z|).
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/depth_key.glsl"
 
-layout(local_size_x = 256) in;
+layout(local_size_x = kVoxelBinningGroupSize) in;
 
-layout(std430, binding = 0) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
-layout(std430, binding = 5) writeonly buffer Keys { uint keys[]; };
-layout(std430, binding = 6) writeonly buffer Values { uint values[]; };
-layout(std430, binding = 9) buffer PlaneTable {
-  uint plane_count;
-  uint splats_binned;  // here: voxels binned
+layout(std430, binding = kVoxelBoxesBinding) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
+layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };
+layout(std430, binding = kSplatValuesBinding) writeonly buffer Values { uint values[]; };
+layout(std430, binding = kPlaneTableBinding) buffer PlaneTable {
+  PlaneTableHeader table;  // here splats_binned counts the voxels binned
+  PlaneTableEntry plane[];
 };
 
 uniform uint voxel_count;
@@ -41,5 +42,5 @@ void main() {
     if (binned) atomicAdd(group_binned, 1u);
   }
   barrier();
-  if (gl_LocalInvocationIndex == 0u && group_binned > 0u) atomicAdd(splats_binned, group_binned);
+  if (gl_LocalInvocationIndex == 0u && group_binned > 0u) atomicAdd(table.splats_binned, group_binned);
 }

@@ -5,12 +5,14 @@
 // the chunk's first sorted position (the plane table's begin: every order holds the same voxels
 // per chunk). One octant at a time: the keys need only the chunk's bits (one radix pass up to
 // 255 planes).
-layout(local_size_x = 256) in;
+#include "gpu/shaders/frame_io.h"
 
-layout(std430, binding = 2) readonly buffer Order { uint order[]; };  // eight orders of n
-layout(std430, binding = 5) writeonly buffer Keys { uint keys[]; };
-layout(std430, binding = 6) writeonly buffer Values { uint values[]; };
-layout(std430, binding = 11) readonly buffer ChunkOf { uint chunk_of[]; };
+layout(local_size_x = kVoxelBinningGroupSize) in;
+
+layout(std430, binding = kVoxelOrderBinding) readonly buffer Order { uint order[]; };  // eight orders of n
+layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };
+layout(std430, binding = kSplatValuesBinding) writeonly buffer Values { uint values[]; };
+layout(std430, binding = kVoxelChunkOfBinding) readonly buffer ChunkOf { uint chunk_of[]; };
 
 uniform uint voxel_count;
 uniform uint octant;

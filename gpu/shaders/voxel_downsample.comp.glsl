@@ -4,10 +4,12 @@
 // alpha = T) into the view's pixels of a quilt tile or view image. The filter is symmetric
 // under flipping an axis, so it runs on GL's bottom-up rows as the CPU does on top-down ones.
 // At scale 1 it is the identity. Defines: OUT_FORMAT (rgba8 | rgba16f | rgba32f).
-layout(local_size_x = 16, local_size_y = 8) in;
+#include "gpu/shaders/plane_io.h"
 
-layout(binding = 0) uniform sampler2D source;
-layout(OUT_FORMAT, binding = 1) uniform writeonly image2D target;
+layout(local_size_x = kPlaneGroupWidth, local_size_y = kPlaneGroupHeight) in;
+
+layout(binding = kDownsampleSourceUnit) uniform sampler2D source;
+layout(OUT_FORMAT, binding = kDownsampleTargetImage) uniform writeonly image2D target;
 
 uniform ivec2 source_size;
 uniform ivec2 view_size;

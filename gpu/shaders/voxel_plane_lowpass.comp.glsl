@@ -2,15 +2,17 @@
 // axis per dispatch: a normalised Gaussian kernel (weights from the CPU, cut at 3 sigma) along
 // x from the accumulation layer into a scratch image, then along y back into the layer, edges
 // clamped, on (C, T) alike.
-layout(local_size_x = 16, local_size_y = 8) in;
+#include "gpu/shaders/plane_io.h"
 
-layout(rgba32f, binding = 0) uniform image2DArray accumulation;  // layer 0: the plane (C, T)
-layout(rgba32f, binding = 2) uniform image2D scratch;
+layout(local_size_x = kPlaneGroupWidth, local_size_y = kPlaneGroupHeight) in;
+
+layout(rgba32f, binding = kPlaneAccumulationImage) uniform image2DArray accumulation;  // layer 0: the plane (C, T)
+layout(rgba32f, binding = kPlaneLowpassScratchImage) uniform image2D scratch;
 
 uniform ivec2 plane_size;
 uniform int radius;
 uniform int along_y;  // 0: accumulation -> scratch along x; 1: scratch -> accumulation along y
-uniform float kernel[129];
+uniform float kernel[kLowpassMaxTaps];
 
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);

@@ -5,8 +5,10 @@
 // another octant than this pass's are left to that octant's pass (its order is theirs).
 // Output premultiplied (c alpha, alpha): the splat raster's blend then gives C += c alpha T,
 // T *= 1 - alpha front to back (gpu/gl_splat_raster.hpp).
-layout(std430, binding = 0) readonly buffer Boxes { vec4 boxes[]; };
-layout(std430, binding = 1) readonly buffer Densities { vec4 densities[]; };  // corners 0-3, 4-7
+#include "gpu/shaders/frame_io.h"
+
+layout(std430, binding = kVoxelBoxesBinding) readonly buffer Boxes { vec4 boxes[]; };
+layout(std430, binding = kVoxelDensitiesBinding) readonly buffer Densities { vec4 densities[]; };  // corners 0-3, 4-7
 
 uniform mat3 world_to_camera;
 uniform vec3 camera_position;

@@ -4,12 +4,13 @@
 // the whole image when a corner lies behind the camera plane (the fragment's slab test sorts
 // out the rays, as the CPU's tile rectangle does); nothing when all 8 do. The voxel's colour is
 // its SH seen from `sh_origin` towards the voxel centre, once per voxel per view.
+#include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/sh_color.glsl"
 
-layout(std430, binding = 0) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
-layout(std430, binding = 2) readonly buffer Order { uint order[]; };
+layout(std430, binding = kVoxelBoxesBinding) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
+layout(std430, binding = kVoxelOrderBinding) readonly buffer Order { uint order[]; };
 // V2LF's indirect draws (gpu/gl_voxel_binning.hpp): count, instances, first, base instance.
-layout(std430, binding = 4) readonly buffer Draws { uvec4 draws[]; };
+layout(std430, binding = kVoxelDrawsBinding) readonly buffer Draws { uvec4 draws[]; };
 
 uniform uint order_offset;  // first entry of this draw's order
 uniform int draw_command;   // >= 0: an indirect draw's, whose base instance is added to order_offset

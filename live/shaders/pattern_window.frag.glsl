@@ -1,8 +1,10 @@
 // Panel pixel (x, y) shows pattern texel (x, H-1-y): the pattern's row 0 is the panel's top
 // row, GL's window row 0 its bottom. texelFetch: one texel per pixel, no filtering, no scaling,
 // and 8-bit values survive the unorm round trip exactly (v / 255 * 255 = v). gpu::Program puts
-// the #version line first; PatternWindow binds the pattern to texture unit 0.
-layout(binding = 0) uniform sampler2D pattern;
+// the #version line first; PatternWindow binds the pattern to kPatternUnit.
+#include "live/shaders/pattern_window_io.h"
+
+layout(binding = kPatternUnit) uniform sampler2D pattern;
 out vec4 color;
 
 void main() {

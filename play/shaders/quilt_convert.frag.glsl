@@ -3,11 +3,13 @@
 // tile), and YUV 4:2:0 to RGB with the stream's matrix and range (media::yuv_to_rgb_coefficients,
 // the one definition, passed in as u_yuv_matrix / u_yuv_offset; its CPU twin media::yuv_to_rgb
 // samples the half-size chroma planes as this linear filter does).
+#include "play/shaders/quilt_convert_io.h"
+
 in vec2 v_uv;
 layout(location = 0) out vec4 out_color;
-layout(binding = 0) uniform sampler2D u_plane0;  // RGB picture, or Y
-layout(binding = 1) uniform sampler2D u_plane1;  // U (Cb)
-layout(binding = 2) uniform sampler2D u_plane2;  // V (Cr)
+layout(binding = kQuiltPlane0Unit) uniform sampler2D u_plane0;  // RGB picture, or Y
+layout(binding = kQuiltPlane1Unit) uniform sampler2D u_plane1;  // U (Cb)
+layout(binding = kQuiltPlane2Unit) uniform sampler2D u_plane2;  // V (Cr)
 uniform int u_is_yuv;
 uniform mat3 u_yuv_matrix;
 uniform vec3 u_yuv_offset;

@@ -2,7 +2,9 @@
 // landed on takes the colour of the farther (smaller depth) of its nearest covered neighbours
 // left and right on its tile row, the left one on a tie, the only one at a tile's edge. Target:
 // the caller's quilt, black outside the tiles, alpha 1.
-layout(binding = 0) uniform sampler2D warped;  // quilt-size: colour, landed depth
+#include "rgbd/shaders/rgbd_io.h"
+
+layout(binding = kRgbdWarpedUnit) uniform sampler2D warped;  // quilt-size: colour, landed depth
 uniform ivec2 tile_size;
 
 out vec4 result;

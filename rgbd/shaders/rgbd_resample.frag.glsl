@@ -3,9 +3,10 @@
 // from the frame through their rectangles. Target: tile-size RGBA32F, rgb = colour, a = depth.
 // Rectangles and rows are top-down like the CPU's; the frame texture is bottom-up unless
 // frame_top_down.
+#include "rgbd/shaders/rgbd_io.h"
 #include "rgbd/shaders/rgbd_depth.glsl"
 
-layout(binding = 0) uniform sampler2D frame;
+layout(binding = kRgbdFrameUnit) uniform sampler2D frame;
 uniform ivec4 colour_rect;  // x, y (top-down), width, height
 uniform ivec4 depth_rect;
 uniform int frame_height;

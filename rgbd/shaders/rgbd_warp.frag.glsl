@@ -3,8 +3,10 @@
 // centre x + 0.5 + shift_j(d) lands in t, the nearest (largest d): the CPU's scatter with its
 // z-test, pixel for pixel. Target: quilt-size RGBA32F, rgb = colour, a = the landed depth,
 // kHole (-1) where nothing landed, kOutside (-2) outside the tiles.
-layout(binding = 0) uniform sampler2D source;          // tile-size: colour, depth (bottom-up rows)
-layout(binding = 1) uniform sampler2D shift_per_z;     // views x 1: p_j W_tile / 2 (pixels)
+#include "rgbd/shaders/rgbd_io.h"
+
+layout(binding = kRgbdSourceUnit) uniform sampler2D source;          // tile-size: colour, depth (bottom-up rows)
+layout(binding = kRgbdShiftPerZUnit) uniform sampler2D shift_per_z;     // views x 1: p_j W_tile / 2 (pixels)
 uniform ivec2 tile_size;
 uniform ivec3 grid;         // cols, rows, views
 uniform float relief_slope; // depthiness * kReliefRatio: q(d) = relief_slope (0.5 - d) + focus

@@ -55,7 +55,9 @@ void expect_gpu_matches_cpu(const std::string& name, const display::LensModel& l
       std::printf("  %-44s max |GL - CPU| %.2e  within 1/255: %.4f %%\n", what.c_str(), a.max_difference,
                   100 * a.fraction_within);
       EXPECT_GE(a.fraction_within, 0.999) << what;
-      if (filter == render::PlaneFilter::kBilinear) EXPECT_LT(a.max_difference, 0.02) << what;
+      if (filter == render::PlaneFilter::kBilinear) {
+        EXPECT_LT(a.max_difference, 0.02) << what;
+      }
     }
 }
 

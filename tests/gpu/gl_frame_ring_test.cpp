@@ -4,12 +4,14 @@
 
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
 #include <vector>
 
 #include "gpu/gl_async_readback.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_frame_ring.hpp"
 #include "gpu/gl_objects.hpp"
+#include "gpu/gl_program.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -108,8 +110,13 @@ void main() { out_value[0] = scale * offsets[2].y; }
   EXPECT_GE(p.uniform("scale"), 0);
   EXPECT_EQ(p.uniform("offsets"), glGetUniformLocation(p.id(), "offsets"));
   EXPECT_EQ(p.uniform("offsets[0]"), glGetUniformLocation(p.id(), "offsets[0]"));
-  EXPECT_EQ(p.uniform("unused_by_the_code"), -1);  // optimised away
-  EXPECT_EQ(p.uniform("no_such_uniform"), -1);
+  // Optimised away: -1, or an exception under strict checks (gl_program_test.cpp).
+  if (strict_gl_checks()) {
+    EXPECT_THROW(p.uniform("unused_by_the_code"), std::logic_error);
+  } else {
+    EXPECT_EQ(p.uniform("unused_by_the_code"), -1);
+  }
+  EXPECT_THROW(p.uniform("no_such_uniform"), std::logic_error);  // not in the sources
 }
 
 }  // namespace

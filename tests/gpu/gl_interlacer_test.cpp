@@ -141,7 +141,9 @@ void expect_shader_matches_cpu(const std::string& name, const DisplayCalibration
       // within kLensViewTolerance of a view boundary (the phase in plain float32 would flip ~1e-4
       // of them anywhere). A correction field is sampled from a grid, which moves view
       // boundaries by up to kCorrectionGridTolerancePeriods more.
-      if (correction.empty()) EXPECT_EQ(a.outside_not_ties, 0u) << name << " " << describe(o);
+      if (correction.empty()) {
+        EXPECT_EQ(a.outside_not_ties, 0u) << name << " " << describe(o);
+      }
     }
 }
 

@@ -116,7 +116,7 @@ TEST(RendererFactory, ChecksTheOptionsAndTheCallsMade) {
   EXPECT_THROW(make_gl_renderer(o, scene::SceneKind::kGaussians, nullptr), std::logic_error);
 }
 
-TEST(scene::Scene, KnowsItsKindSizeAndFraming) {
+TEST(Scene, KnowsItsKindSizeAndFraming) {
   EXPECT_EQ(test_gaussians().kind(), scene::SceneKind::kGaussians);
   EXPECT_STREQ(test_gaussians().primitives(), "Gaussians");
   EXPECT_EQ(test_gaussians().size(), test_gaussians().gaussians().size());
