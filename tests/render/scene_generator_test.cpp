@@ -111,7 +111,7 @@ TEST(SceneGenerator, RejectsUnknownKindAndAbsurdCounts) {
   EXPECT_THROW(generate_scene({"tabletop", 10, 1, 4}), InputError);
 }
 
-TEST(scene::SceneBounds, IgnoresFarOutliers) {
+TEST(SceneBounds, IgnoresFarOutliers) {
   scene::GaussianScene s = generate_scene({"tabletop", 10000, 1, 0});
   s.positions[0] = {1e6f, 1e6f, 1e6f};
   const scene::SceneBounds robust = scene::robust_bounds(s);
