@@ -35,6 +35,15 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
+lightfield::ViewRequest strip_of_views(const GlVsCpuScene& s, int views) {
+  lightfield::ViewRequest request;
+  request.base_camera = s.base;
+  request.focal_distance = s.focal_distance;
+  request.views = views;
+  request.grid = display::QuiltGrid{views, 1};
+  return request;
+}
+
 GlVsCpuScene gl_vs_cpu_scene_file(const std::string& path, int size) {
   GlVsCpuScene s;
   s.scene = scene::load_gaussian_scene(path);
@@ -77,9 +86,9 @@ std::vector<render::G2lfOptions> gl_vs_cpu_configs() {
 }
 
 std::vector<GlVsCpuRow> run_gl_vs_cpu(const GlVsCpuScene& s, int views, const gpu::GlInfo& info) {
-  const auto geometry = render::make_quilt_geometry(s.base, s.focal_distance,
-                                                    float(kDefaultViewConeDeg), views);
-  const auto layout = render::make_quilt_layout(geometry, views, 1);
+  const lightfield::ViewPlan plan = lightfield::plan_views(strip_of_views(s, views));
+  const render::QuiltGeometry& geometry = plan.geometry;
+  const render::QuiltLayout& layout = plan.layout;
   const gpu::GlScene scene(s.scene, info);
   gpu::GlG2lfRenderer renderer(scene, info);
   const gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA32F);

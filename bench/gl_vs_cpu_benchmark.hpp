@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gpu/gl_context.hpp"
+#include "lightfield/view_plan.hpp"
 #include "render/camera.hpp"
 #include "render/g2lf.hpp"
 #include "scene/gaussian_scene.hpp"
@@ -22,6 +23,10 @@ struct GlVsCpuScene {
   render::Camera base;
   float focal_distance = 0;
 };
+
+// The views both GL benchmarks render of `s`: `views` views from its base camera, the default
+// cone, one row of tiles (the view plan, lightfield/view_plan.hpp).
+lightfield::ViewRequest strip_of_views(const GlVsCpuScene& s, int views);
 
 // A scene file framed by render::frame_scene, views of size x size.
 GlVsCpuScene gl_vs_cpu_scene_file(const std::string& path, int size);

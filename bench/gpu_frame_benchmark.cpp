@@ -10,7 +10,6 @@
 
 #include "bench/timing_stats.hpp"
 #include "gpu/gl_g2lf.hpp"
-#include "lightfield/view_plan.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_swizzle.hpp"
@@ -323,8 +322,9 @@ void append_v2lf_rows(const GpuFrameOptions& o, const render::Camera& gaussian_b
 }  // namespace
 
 std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOptions& o, const gpu::GlInfo& info) {
-  const auto geometry = render::make_quilt_geometry(s.base, s.focal_distance, float(kDefaultViewConeDeg), o.views);
-  const auto layout = render::make_quilt_layout(geometry, o.views, 1);
+  const lightfield::ViewPlan plan = lightfield::plan_views(strip_of_views(s, o.views));
+  const render::QuiltGeometry& geometry = plan.geometry;
+  const render::QuiltLayout& layout = plan.layout;
   const gpu::GlScene scene(s.scene, info);
   gpu::Texture quilt = gpu::make_quilt_texture(layout, GL_RGBA8);  // the quilt as displayed
   std::vector<GpuFrameRow> rows;

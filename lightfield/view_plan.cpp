@@ -49,17 +49,25 @@ ViewPlan plan_views(const ViewRequest& r, const scene::Scene* scene) {
                                                                    : kDefaultViewConeDeg) *
                        r.cone_scale;
 
-  const std::optional<display::ViewSize> size = fixed_size(r, plan.display_quilt);
-  if (r.camera) {
-    plan.camera = *r.camera;
+  render::Camera base;
+  float focal = 0.0f;
+  if (r.base_camera) {
+    if (!r.focal_distance) throw std::logic_error("plan_views: a base camera needs its focal distance");
+    base = *r.base_camera;
+    focal = *r.focal_distance * r.focal_scale;
   } else {
-    if (scene == nullptr) throw std::logic_error("plan_views: neither a camera nor a scene to frame");
-    const float aspect = r.framing_aspect.value_or(size ? float(size->width) / float(size->height) : 1.0f);
-    plan.camera = scene_framing(*scene, render::kDefaultFovYDeg, r.orbit_deg, aspect);
+    const std::optional<display::ViewSize> size = fixed_size(r, plan.display_quilt);
+    render::CameraSpec spec;
+    if (r.camera) {
+      spec = *r.camera;
+    } else {
+      if (scene == nullptr) throw std::logic_error("plan_views: neither a camera nor a scene to frame");
+      const float aspect = r.framing_aspect.value_or(size ? float(size->width) / float(size->height) : 1.0f);
+      spec = scene_framing(*scene, render::kDefaultFovYDeg, r.orbit_deg, aspect);
+    }
+    base = size ? render::camera_from_spec(spec, size->width, size->height) : render::camera_from_spec(spec);
+    focal = r.focal_distance.value_or(glm::length(spec.look_at - spec.position)) * r.focal_scale;
   }
-  const render::Camera base = size ? render::camera_from_spec(plan.camera, size->width, size->height)
-                                   : render::camera_from_spec(plan.camera);
-  const float focal = r.focal_distance.value_or(glm::length(plan.camera.look_at - plan.camera.position)) * r.focal_scale;
   plan.geometry = render::make_quilt_geometry(base, focal, float(plan.view_cone_deg), plan.views);
 
   const display::QuiltGrid grid = r.grid                 ? *r.grid

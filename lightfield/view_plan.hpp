@@ -13,16 +13,18 @@
 //              it), else the default 40 degrees; times cone_scale (the viewer's depthiness);
 //   size       request.size, else the camera's own (cam.json width/height), else the display's
 //              view size (view_height rows at the panel's aspect), else the camera's default;
-//   camera     request.camera, else the scene's framing (lightfield/scene_framing.hpp) for the
+//   camera     request.base_camera as it is (a benchmark's fixed camera; it has its size), else
+//              request.camera, else the scene's framing (lightfield/scene_framing.hpp) for the
 //              views' aspect (framing_aspect when given), turned by orbit_deg;
-//   focal      request.focal_distance, else the distance to the camera's look-at point; times
-//              focal_scale;
+//   focal      request.focal_distance (required with a base_camera), else the distance to the
+//              camera's look-at point; times focal_scale;
 //   grid       request.grid, else the display's, else display::quilt_grid_for_views for the
 //              views' aspect.
 #include <optional>
 
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
+#include "render/camera.hpp"
 #include "render/camera_json.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -36,6 +38,7 @@ struct ViewRequest {
   std::optional<double> view_cone_deg;
   double cone_scale = 1.0;
   std::optional<render::CameraSpec> camera;
+  std::optional<render::Camera> base_camera;   // a camera already made, its size included
   float orbit_deg = 0.0f;                      // turns the scene's framing (no camera given)
   std::optional<float> framing_aspect;         // the framing's aspect instead of the views'
   std::optional<display::ViewSize> size;
@@ -49,7 +52,6 @@ struct ViewPlan {
   std::optional<display::DisplayQuilt> display_quilt;  // what the display asked for, if one did
   int views = 0;
   double view_cone_deg = 0.0;
-  render::CameraSpec camera;  // the base camera's spec (the framing when none was given)
   render::QuiltGeometry geometry;
   render::QuiltLayout layout;
 };

@@ -1,6 +1,8 @@
 // Bad input to `lfd calibrate` (docs/calibration.md section 2): every case is an InputError that
 // names the file and says what to change, or a warning; nothing is estimated from bad captures.
 #include <unistd.h>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -10,13 +12,15 @@
 #include "calib/calibrate.hpp"
 #include "sim/synthetic_unit.hpp"
 #include "display/visual_json.hpp"
+#include "tests/calib/cached_captures.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
 namespace {
 
-// One simulated position of the Portrait at a small capture size, shared by the cases.
+// One simulated position of the Portrait at a small capture size, shared by the cases (and, on
+// disk, by their processes).
 struct Fixture {
   sim::SyntheticUnit unit;
   sim::PatternSet set;
@@ -31,7 +35,9 @@ const Fixture& fixture() {
         display::read_visual_json(test::fixture_calibration("LKG-PORT-portrait.visual.json")));
     x.set = sim::plan_patterns(x.unit.nominal);
     x.rig = sim::make_capture_rig(x.unit.truth.display, 480, 1, false, 7);
-    x.captures = sim::simulate_captures(x.set, x.unit.truth, x.rig);
+    // The same pixels in every test process of this build (tests/calib/cached_captures.hpp).
+    x.captures = test::cached_captures("bad-input-portrait-480",
+                                       [&x] { return sim::simulate_captures(x.set, x.unit.truth, x.rig); });
     return x;
   }();
   return f;
@@ -219,6 +225,35 @@ TEST_F(CaptureFolder, NoCapturesFolderSaysWhereToPutThem) {
   std::vector<std::string> warnings;
   expect_input_error([&] { sim::read_captures(dir_, sim::read_pattern_set(dir_), warnings); },
                      {"captures", "<position>"});
+}
+
+// The test cache hands back what was simulated, bit for bit, without simulating again.
+TEST(CachedCaptures, TheSecondAskReadsTheFirstSimulationBitForBit) {
+  int simulated = 0;
+  const auto simulate = [&simulated] {
+    ++simulated;
+    sim::PositionCaptures pc;
+    pc.name = "pos1";
+    cv::Mat image(7, 5, CV_32FC3);
+    cv::randu(image, -1.0f, 2.0f);
+    pc.images.emplace("00_white", image);
+    pc.paths.emplace("00_white", "pos1/00_white.png");
+    return std::vector<sim::PositionCaptures>{pc};
+  };
+  const std::string name = "cache-test-" + std::to_string(::getpid());
+  const auto first = test::cached_captures(name, simulate);
+  const auto second = test::cached_captures(name, simulate);
+  EXPECT_EQ(simulated, 1);
+  ASSERT_EQ(second.size(), 1u);
+  EXPECT_EQ(second[0].name, "pos1");
+  EXPECT_EQ(second[0].paths, first[0].paths);
+  const cv::Mat& a = first[0].images.at("00_white");
+  const cv::Mat& b = second[0].images.at("00_white");
+  ASSERT_EQ(b.type(), a.type());
+  ASSERT_EQ(b.size(), a.size());
+  EXPECT_EQ(std::memcmp(a.data, b.data, a.total() * a.elemSize()), 0);
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(LFD_BINARY_DIR) / "test-cache"))
+    if (entry.path().filename().string().rfind(name, 0) == 0) std::filesystem::remove(entry.path());
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 // Tiny scenes and quilts for the light-field renderer tests: a generated tabletop of Gaussians
 // and a generated voxel tabletop, 4 views of 32x24 in a 2x2 quilt (seconds on llvmpipe).
+#include "lightfield/renderer_options.hpp"
 #include "lightfield/scene_framing.hpp"
 #include "scene/scene.hpp"
 #include "render/default_camera.hpp"
