@@ -6,6 +6,8 @@ set -euo pipefail
 PACKAGES=(
   # toolchain
   build-essential cmake ninja-build pkg-config git clang
+  # the shader embedding (cmake/embed_shader.py: #includes and #line per file)
+  python3
   # math, vision, optimisation
   libeigen3-dev libopencv-dev libopencv-contrib-dev libceres-dev
   # device access
