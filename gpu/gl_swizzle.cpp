@@ -13,6 +13,18 @@
 namespace lfd::gpu {
 namespace {
 
+
+// The cameras a plane column is computed from: the table pass's, or the swizzle's without a table.
+void set_camera_uniforms(const Program& p, const render::QuiltGeometry& geometry, const render::ReferenceCamera& ref) {
+  glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
+  glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
+  glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
+  glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
+  glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
+  glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+}
+
+
 const char* image_format_qualifier(GLenum format) {
   switch (format) {
     case GL_RGBA8: return "rgba8";
@@ -66,12 +78,7 @@ void GlSwizzle::write_table(const GlPlanes& planes, const render::QuiltGeometry&
   view_plane_columns_.bind_storage(kSwizzleViewPlaneColumnsBinding);
   glUniform2i(p.uniform("view_size"), geometry.base.width, geometry.base.height);
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
-  glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
-  glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
-  glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
-  glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
-  glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
-  glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+  set_camera_uniforms(p, geometry, ref);
   glUniform1i(p.uniform("view_count"), V);
   // Every possible plane (the count is on the GPU); those past it return at once.
   glDispatchCompute((GLuint(V) + kSwizzleTableGroupSize - 1) / kSwizzleTableGroupSize,
@@ -110,12 +117,7 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
   glUniform3i(p.uniform("tiles"), layout.cols, layout.tile_width(), layout.tile_height());
   if (!options_.factor_table) {  // with the table, the table pass used the cameras
-    glUniform1f(p.uniform("focal_distance"), geometry.focal_distance);
-    glUniform1f(p.uniform("tan_x"), geometry.base.tan_half_fov_x());
-    glUniform1f(p.uniform("tan_y"), geometry.base.tan_half_fov_y());
-    glUniform1f(p.uniform("tan_rx"), ref.camera.tan_half_fov_x());
-    glUniform1f(p.uniform("tan_ry"), ref.camera.tan_half_fov_y());
-    glUniform1f(p.uniform("d_forward_eff"), ref.d_forward_eff);
+    set_camera_uniforms(p, geometry, ref);
   }
   glUniform3f(p.uniform("background"), background.x, background.y, background.z);
   glUniform1i(p.uniform("view_count"), V);
