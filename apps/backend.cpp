@@ -19,6 +19,15 @@ CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::str
   return app.add_option("--backend", name, help)->check(CLI::IsMember({"cpu", "gl", "auto"}))->capture_default_str();
 }
 
+CLI::Option* add_raster_option(CLI::App& app, std::string& name) {
+  return app.add_option("--raster", name,
+                        "GL backend, Gaussians: hardware (instanced quads through the raster pipeline), compute "
+                        "(a tile rasterizer in compute shaders) or auto (the faster on this device, measured once "
+                        "per run; docs/gpu.md)")
+      ->check(CLI::IsMember({"hardware", "compute", "auto"}))
+      ->capture_default_str();
+}
+
 std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend, bool verbose) {
   if (backend == Backend::kCpu) return nullptr;
   std::unique_ptr<gpu::HeadlessContext> context;
