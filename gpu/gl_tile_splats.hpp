@@ -1,0 +1,81 @@
+#pragma once
+// The compute tile rasterizer of Gaussians (--raster compute; docs/gpu.md "The compute tile
+// rasterizer"): the reference 3DGS forward pass (forward.cu: preprocess, (tile | depth) keys,
+// a sort, per-tile ranges, per-tile compositing in shared memory) in compute shaders, for every
+// view of a quilt at once: no per-view loop on the CPU, so the whole chip works where only a few
+// SMs rasterize (H100/H200). Per frame:
+//   preprocess  every (view, Gaussian) entry in one dispatch (z = view), projected exactly as the
+//               per-view preprocess (gpu/shaders/splat_project.glsl); its depth key
+//   depth sort  GlRadixSort of every entry's depth key, culled ones dropped: the items, front to
+//               back, all views mixed (32-bit float keys: the exact order, ties by entry)
+//   keys        per item the tiles its opacity-aware ellipse covers (tile_splat_cover.glsl),
+//               counted, scanned and written as slot keys (view * tiles + tile); items with big
+//               rectangles by a whole work group each (tile_splat_huge.comp.glsl)
+//   tile sort   GlTileKeys: a stable sort by slot, so each (view, tile) lists its splats front
+//               to back, and the ranges
+//   composite   one work group a (view, tile): batches of 256 splats in shared memory, the
+//               reference's alpha rules and early stop, written into the view's quilt cell
+// The one CPU read-back is GlTileKeys::scan's key total. Equal to the CPU rasterizer to rounding:
+// the depth order is the exact one and the keys skip only tiles the reference blends nothing in.
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <span>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_program.hpp"
+#include "gpu/gl_scene.hpp"
+#include "gpu/gl_tile_keys.hpp"
+#include "render/camera.hpp"
+#include "render/preprocess.hpp"
+
+namespace lfd::gpu {
+
+// Where the views go: view v into cell (v % cols, v / cols) of `texture` (cells cell_size,
+// bottom-up: cell row r starts at GL row r * cell height, the view's top row at the cell's top),
+// cropped to the cell; rgb = C + T background, alpha = T (keep_transmittance) or 1.
+struct TileViewsTarget {
+  Texture* texture = nullptr;  // RGBA32F, RGBA16F or RGBA8
+  int cols = 1;
+  glm::ivec2 cell_size{0, 0};
+  glm::vec3 background{0.0f};
+  bool keep_transmittance = false;
+};
+
+// What the last frame held (for the benchmarks and the tests).
+struct TileSplatCounts {
+  size_t entries = 0;  // views x Gaussians
+  uint32_t keys = 0;   // (slot, splat) keys after the ellipse test
+  uint32_t slots = 0;  // views x tiles
+};
+
+class GlTileSplats {
+ public:
+  GlTileSplats();  // needs a current context; compiles the passes
+
+  // Renders every camera (one image size) into its cell of `target`. `stamp(k)`, when given, is
+  // called after preprocess (k = 1), keys and sorts (2) and compositing (3), for GPU timers.
+  void render_views(const GlScene& scene, std::span<const render::Camera> cameras,
+                    const render::RasterSettings& settings, const TileViewsTarget& target,
+                    const std::function<void(int)>& stamp = {});
+
+  const TileSplatCounts& counts() const { return counts_; }
+  size_t bytes() const;
+
+ private:
+  // Counts (EMIT 0) or writes (EMIT 1) the keys of the first `items` items, small ones per
+  // invocation and huge ones per work group.
+  void run_keys(bool emit, uint32_t items, uint32_t gaussians, glm::ivec2 tile_grid);
+  const Program& composite_program(GLenum format);
+
+  Program preprocess_, count_, emit_, huge_count_, huge_emit_;
+  std::map<GLenum, Program> composite_;
+  GlTileKeys tiles_;
+  Buffer views_, records_, entry_keys_, entries_, huge_;
+  TileSplatCounts counts_;
+};
+
+}  // namespace lfd::gpu
