@@ -9,6 +9,7 @@
 
 #include "gpu/gl_splat_preprocess.hpp"
 #include "gpu/shaders/frame_io.h"
+#include "gpu/shaders/radix_sort_io.h"
 #include "gpu/shaders/tile_splat_composite.comp.glsl.hpp"
 #include "gpu/shaders/tile_splat_huge.comp.glsl.hpp"
 #include "gpu/shaders/tile_splat_io.h"
@@ -64,46 +65,56 @@ void dispatch_groups(size_t groups) {
 
 }  // namespace
 
+GlTileSplats::KeyPrograms::KeyPrograms(bool planes)
+    : count(keys_program("compute splats: count keys", tile_splat_keys_comp_glsl, false, planes)),
+      emit(keys_program("compute splats: write keys", tile_splat_keys_comp_glsl, true, planes)),
+      huge_count(keys_program("compute splats: count huge keys", tile_splat_huge_comp_glsl, false, planes)),
+      huge_emit(keys_program("compute splats: write huge keys", tile_splat_huge_comp_glsl, true, planes)) {}
+
 GlTileSplats::GlTileSplats()
     : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, tile_splat_preprocess_comp_glsl}}),
-      count_(keys_program("compute splats: count keys", tile_splat_keys_comp_glsl, false, false)),
-      emit_(keys_program("compute splats: write keys", tile_splat_keys_comp_glsl, true, false)),
-      huge_count_(keys_program("compute splats: count huge keys", tile_splat_huge_comp_glsl, false, false)),
-      huge_emit_(keys_program("compute splats: write huge keys", tile_splat_huge_comp_glsl, true, false)) {}
+      view_keys_(false),
+      plane_keys_(true) {}
 
-const Program& GlTileSplats::composite_program(GLenum format) {
-  auto it = composite_.find(format);
+const Program& GlTileSplats::composite_program(GLenum format, bool planes) {
+  auto it = composite_.find({format, planes});
   if (it == composite_.end()) {
     const std::string name = image_format_name(format);
+    const bool quantize = planes && format == GL_RGBA8;
     it = composite_
-             .emplace(format, Program("compute splats: composite into " + name,
-                                      {{GL_COMPUTE_SHADER, tile_splat_composite_comp_glsl}},
-                                      {"TARGET_ARRAY 0", "TARGET_FORMAT " + name, "QUANTIZE_U8 0"}))
+             .emplace(std::pair(format, planes),
+                      Program(std::string("compute splats: composite into ") + (planes ? "planes " : "views ") + name,
+                              {{GL_COMPUTE_SHADER, tile_splat_composite_comp_glsl}},
+                              {std::string("TARGET_ARRAY ") + (planes ? "1" : "0"), "TARGET_FORMAT " + name,
+                               std::string("QUANTIZE_U8 ") + (quantize ? "1" : "0")}))
              .first;
   }
   return it->second;
 }
 
-void GlTileSplats::run_keys(bool emit, uint32_t items, uint32_t gaussians, glm::ivec2 tile_grid) {
-  const Program& small = emit ? emit_ : count_;
-  const Program& huge = emit ? huge_emit_ : huge_count_;
+void GlTileSplats::run_keys(const KeyPrograms& programs, bool emit, const Items& items, uint32_t gaussians,
+                            glm::ivec2 tile_grid) {
+  const Program& small = emit ? programs.emit : programs.count;
+  const Program& huge = emit ? programs.huge_emit : programs.huge_count;
   if (emit)  // the counting passes need no slots
     for (const Program* p : {&small, &huge}) {
-      glProgramUniform1ui(p->id(), p->uniform("gaussian_count"), gaussians);
+      if (!items.layers) glProgramUniform1ui(p->id(), p->uniform("gaussian_count"), gaussians);
       glProgramUniform2i(p->id(), p->uniform("tile_grid"), tile_grid.x, tile_grid.y);
     }
-  glProgramUniform1ui(small.id(), small.uniform("item_capacity"), items);
-  records_.bind_storage(kSplatRecordsBinding);
-  entries_.bind_storage(kTileSplatEntriesBinding);
-  tiles_.sorter().kept_count_buffer().bind_storage(kTileSplatKeptBinding);
-  tiles_.counts(items).bind_storage(kTileCountsBinding);
+  glProgramUniform1ui(small.id(), small.uniform("item_capacity"), items.capacity);
+  glProgramUniform1ui(small.id(), small.uniform("kept_word"), items.kept_word);
+  items.records->bind_storage(kSplatRecordsBinding);
+  items.entries->bind_storage(kTileSplatEntriesBinding);
+  items.kept->bind_storage(kTileSplatKeptBinding);
+  if (items.layers) items.layers->bind_storage(kTileSplatLayersBinding);
+  tiles_.counts(items.capacity).bind_storage(kTileCountsBinding);
   huge_.bind_storage(kTileSplatHugeBinding);
   if (emit) {
     tiles_.keys().bind_storage(kTileKeysBinding);
     tiles_.values().bind_storage(kTileValuesBinding);
   }
   small.use();
-  small.dispatch_1d(items, int(kTileSplatItemsGroupSize));
+  small.dispatch_1d(items.capacity, int(kTileSplatItemsGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (!emit) {
     tiles_.write_dispatch(huge_, offsetof(TileHugeList, count) / 4, offsetof(TileHugeList, groups_x) / 4);
@@ -114,6 +125,25 @@ void GlTileSplats::run_keys(bool emit, uint32_t items, uint32_t gaussians, glm::
   glDispatchComputeIndirect(GLintptr(offsetof(TileHugeList, groups_x)));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+uint32_t GlTileSplats::make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians,
+                                 glm::ivec2 tile_grid, uint32_t slots) {
+  huge_.ensure((std::max<size_t>(items.capacity, 1) + kTileHugeListWords) * 4);
+  const TileHugeList no_huge{};
+  huge_.upload(&no_huge, sizeof(no_huge));
+  run_keys(programs, false, items, gaussians, tile_grid);
+  const uint32_t keys = tiles_.scan(items.capacity);
+  run_keys(programs, true, items, gaussians, tile_grid);
+  tiles_.sort_and_find_ranges(keys, slots);
+  return keys;
+}
+
+uint32_t GlTileSplats::read_huge_items() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  TileHugeList list;
+  huge_.download(&list, sizeof(list));
+  return list.count;
 }
 
 void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Camera> cameras,
@@ -141,7 +171,6 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
   records_.ensure(e * sizeof(SplatRecord));
   entry_keys_.ensure(e * 4);
   entries_.ensure(e * 4);
-  huge_.ensure((e + kTileHugeListWords) * 4);
   if (N > 0) {
     const int requested = settings.sh_degree < 0 ? scene.sh_degree() : settings.sh_degree;
     const GLuint p = preprocess_.id();
@@ -169,17 +198,13 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
   SortKeys depth_order;
   depth_order.drop_culled = true;
   tiles_.sorter().sort(entry_keys_, entries_, uint32_t(entries), depth_order);
-  const TileHugeList no_huge{};
-  huge_.upload(&no_huge, sizeof(no_huge));
-  run_keys(false, uint32_t(entries), N, tile_grid);
-  const uint32_t keys = tiles_.scan(uint32_t(entries));
-  counts_.keys = keys;
-  run_keys(true, uint32_t(entries), N, tile_grid);
-  tiles_.sort_and_find_ranges(keys, uint32_t(slots));
+  Items items{.records = &records_, .entries = &entries_, .kept = &tiles_.sorter().kept_count_buffer(),
+              .kept_word = offsetof(RadixSortParams, count) / 4, .layers = nullptr, .capacity = uint32_t(entries)};
+  counts_.keys = make_keys(view_keys_, items, N, tile_grid, uint32_t(slots));
   if (stamp) stamp(2);
 
   // Every (view, tile): the empty ones write the background.
-  const Program& composite = composite_program(target.texture->internal_format());
+  const Program& composite = composite_program(target.texture->internal_format(), false);
   const GLuint c = composite.id();
   glProgramUniform1ui(c, composite.uniform("slot_count"), uint32_t(slots));
   glProgramUniform1i(c, composite.uniform("cols"), target.cols);
@@ -198,6 +223,36 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
                   GL_FRAMEBUFFER_BARRIER_BIT);
   if (stamp) stamp(3);
   check_gl("the compute tile rasterizer");
+}
+
+void GlTileSplats::render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
+                                 const Buffer& draw, size_t gaussians, GlPlanes& planes,
+                                 const std::function<void(int)>& stamp) {
+  const glm::ivec2 tile_grid{(planes.width + render::kTileSize - 1) / render::kTileSize,
+                             (planes.height + render::kTileSize - 1) / render::kTileSize};
+  const uint64_t slots = uint64_t(tile_grid.x) * tile_grid.y * uint64_t(planes.max_planes);
+  if (slots >= (uint64_t(1) << 32)) throw std::length_error("compute tile rasterizer: planes x tiles over 2^32");
+  counts_ = {.entries = gaussians, .keys = 0, .slots = uint32_t(slots)};
+  Items items{.records = &records, .entries = &sorted_ids, .kept = &draw,
+              .kept_word = offsetof(DrawArraysIndirect, instance_count) / 4, .layers = &layers,
+              .capacity = uint32_t(gaussians)};
+  counts_.keys = make_keys(plane_keys_, items, uint32_t(gaussians), tile_grid, uint32_t(slots));
+  if (stamp) stamp(1);
+
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glClearTexImage(planes.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
+  const GLenum format = gl_internal_format(planes.format);
+  const Program& composite = composite_program(format, true);
+  glProgramUniform2i(composite.id(), composite.uniform("image_size"), planes.width, planes.height);
+  glProgramUniform2i(composite.id(), composite.uniform("tile_grid"), tile_grid.x, tile_grid.y);
+  tiles_.bind();
+  records.bind_storage(kSplatRecordsBinding);
+  glBindImageTexture(kTileSplatTargetImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+  composite.use();
+  tiles_.dispatch_work();
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  if (stamp) stamp(2);
+  check_gl("the compute tile rasterizer's planes");
 }
 
 size_t GlTileSplats::bytes() const {

@@ -26,6 +26,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl_objects.hpp"
+#include "gpu/gl_planes.hpp"
 #include "gpu/gl_program.hpp"
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_tile_keys.hpp"
@@ -62,17 +63,48 @@ class GlTileSplats {
                     const render::RasterSettings& settings, const TileViewsTarget& target,
                     const std::function<void(int)>& stamp = {});
 
+  // G2LF's planes (--raster compute; the twin of GlPlaneRaster::run): the items are the binned
+  // splats in `sorted_ids` (the binning's depth order), their records in `records` (preprocessed
+  // from the reference camera at the planes' size), their planes in `layers`, their count the
+  // instance count of `draw` (a DrawArraysIndirect). Keys (plane | tile); every layer of `planes`
+  // is cleared to (C, T) = (0, 0, 0, 1) and only the non-empty (plane, tile) slots are
+  // composited (the work list's indirect dispatch), each into its layer in the planes' format
+  // (RGBA8 rounded once from the float sums, as the CPU stores u8 planes).
+  void render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
+                     size_t gaussians, GlPlanes& planes, const std::function<void(int)>& stamp = {});
+
   const TileSplatCounts& counts() const { return counts_; }
+  // The items whose keys were written by a work group each in the last frame (waits for the GPU).
+  uint32_t read_huge_items() const;
   size_t bytes() const;
 
  private:
-  // Counts (EMIT 0) or writes (EMIT 1) the keys of the first `items` items, small ones per
-  // invocation and huge ones per work group.
-  void run_keys(bool emit, uint32_t items, uint32_t gaussians, glm::ivec2 tile_grid);
-  const Program& composite_program(GLenum format);
+  // The key passes of views (PLANES 0) or planes (PLANES 1).
+  struct KeyPrograms {
+    Program count, emit, huge_count, huge_emit;
+    explicit KeyPrograms(bool planes);
+  };
+  // What the key passes read: the records, the items (record indices, front to back), where the
+  // item count is (a uint of `kept`) and, for planes, each item's plane.
+  struct Items {
+    const Buffer* records = nullptr;
+    const Buffer* entries = nullptr;
+    const Buffer* kept = nullptr;
+    uint32_t kept_word = 0;
+    const Buffer* layers = nullptr;
+    uint32_t capacity = 0;  // items dispatched
+  };
+  // Counts, scans, writes, sorts and ranges the keys of `items`: small items per invocation,
+  // huge ones per work group. Returns the key count.
+  uint32_t make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid,
+                     uint32_t slots);
+  // Counts (EMIT 0) or writes (EMIT 1).
+  void run_keys(const KeyPrograms& programs, bool emit, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid);
+  const Program& composite_program(GLenum format, bool planes);
 
-  Program preprocess_, count_, emit_, huge_count_, huge_emit_;
-  std::map<GLenum, Program> composite_;
+  Program preprocess_;
+  KeyPrograms view_keys_, plane_keys_;
+  std::map<std::pair<GLenum, bool>, Program> composite_;
   GlTileKeys tiles_;
   Buffer views_, records_, entry_keys_, entries_, huge_;
   TileSplatCounts counts_;

@@ -14,7 +14,7 @@ layout(local_size_x = kTileSplatItemsGroupSize) in;
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileSplatEntriesBinding) readonly buffer Entries { uint entries[]; };
-layout(std430, binding = kTileSplatKeptBinding) readonly buffer Kept { uint kept_count; };
+layout(std430, binding = kTileSplatKeptBinding) readonly buffer Kept { uint kept_words[]; };
 #if EMIT
 layout(std430, binding = kTileCountsBinding) readonly buffer Counts { uint counts[]; };
 layout(std430, binding = kTileKeysBinding) writeonly buffer Keys { uint keys[]; };
@@ -27,13 +27,15 @@ layout(std430, binding = kTileSplatHugeBinding) buffer Huge { TileHugeList huge;
 layout(std430, binding = kTileSplatLayersBinding) readonly buffer Layers { uint layers[]; };
 #endif
 
-uniform uint item_capacity;  // items dispatched; those from kept_count on have no keys
+uniform uint item_capacity;  // items dispatched; those from the kept count on have no keys
+uniform uint kept_word;      // the kept count's index in kept_words (the sort's params or a draw)
 uniform uint gaussian_count;
 uniform ivec2 tile_grid;
 
 void main() {
   uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   if (j >= item_capacity) return;
+  uint kept_count = kept_words[kept_word];
 #if !EMIT
   if (j >= kept_count) {
     counts[j] = 0u;
