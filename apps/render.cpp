@@ -326,6 +326,7 @@ int RunRender(int argc, char** argv) {
     throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
   if (app.count("--raster") && parse_backend(f.backend_name) == Backend::kCpu)
     throw_input_error("--raster: chooses how the GL backend draws; --backend cpu has no raster paths");
+  if (device) options.gl.raster = resolve_raster(options.gl.raster);
 
   const auto t0 = std::chrono::steady_clock::now();
   const scene::Scene scene = scene::load_scene(f.scene_path);
