@@ -23,7 +23,10 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
     throw std::invalid_argument("per-view renderer: normalised depth keys need 8, 16 or 24 bits and sort_visible_only");
   if (options_.raster == RasterPath::kAuto)
     throw std::invalid_argument("per-view renderer: resolve --raster auto before making the renderer");
-  if (options_.raster == RasterPath::kCompute) tiles_ = std::make_unique<GlTileSplats>();
+  if (options_.raster == RasterPath::kCompute) {
+    tiles_ = std::make_unique<GlTileSplats>();
+    tiles_->set_max_entries_per_pass(options_.compute_entries_per_pass);
+  }
 }
 
 void GlPerViewRenderer::begin_timing(int views) {

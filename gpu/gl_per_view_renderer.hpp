@@ -45,6 +45,9 @@ struct GlPerViewOptions {
   // depth order, so the depth-key options below do not apply). kAuto must be resolved first
   // (gpu::resolve_raster_path).
   RasterPath raster = RasterPath::kHardware;
+  // kCompute: the most (view, Gaussian) entries one pass holds (GlTileSplats::
+  // set_max_entries_per_pass; 0: as the GPU's storage buffers allow).
+  size_t compute_entries_per_pass = 0;
   // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
   // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
   GLenum accumulation_format = GL_RGBA32F;

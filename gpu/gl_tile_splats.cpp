@@ -150,10 +150,42 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
                                 const render::RasterSettings& settings, const TileViewsTarget& target,
                                 const std::function<void(int)>& stamp) {
   if (!target.texture) throw std::invalid_argument("compute tile rasterizer: no target");
+  passes_ = 0;
   if (cameras.empty()) return;
   const int W = cameras[0].width, H = cameras[0].height;
   for (const render::Camera& c : cameras)
     if (c.width != W || c.height != H) throw std::invalid_argument("compute tile rasterizer: views of different sizes");
+  const size_t N = std::max<size_t>(scene.size(), 1);
+  size_t max_entries = max_entries_per_pass_;
+  if (max_entries == 0) {
+    GLint64 block = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+    max_entries = size_t(block) / sizeof(SplatRecord);
+  }
+  max_entries = std::min<size_t>(max_entries, (size_t(1) << 32) - 1);
+  if (N > max_entries)
+    throw_input_error("--raster compute: {} Gaussians need {:.0f} MiB of records a view, over the GPU's largest storage "
+                      "buffer; use --raster hardware",
+                      scene.size(), double(N * sizeof(SplatRecord)) / 1048576.0);
+  const size_t views_per_pass = std::max<size_t>(1, max_entries / N);
+  TileSplatCounts total{.entries = 0, .keys = 0, .slots = 0};
+  for (size_t first = 0; first < cameras.size(); first += views_per_pass) {
+    const size_t count = std::min(views_per_pass, cameras.size() - first);
+    render_pass(scene, cameras.subspan(first, count), uint32_t(first), settings, target,
+                first == 0 ? stamp : std::function<void(int)>());
+    total.entries += counts_.entries;
+    total.keys += counts_.keys;
+    total.slots += counts_.slots;
+    ++passes_;
+  }
+  counts_ = total;
+  if (stamp) stamp(3);
+}
+
+void GlTileSplats::render_pass(const GlScene& scene, std::span<const render::Camera> cameras, uint32_t first_view,
+                               const render::RasterSettings& settings, const TileViewsTarget& target,
+                               const std::function<void(int)>& stamp) {
+  const int W = cameras[0].width, H = cameras[0].height;
   const glm::ivec2 tile_grid{(W + render::kTileSize - 1) / render::kTileSize, (H + render::kTileSize - 1) / render::kTileSize};
   const uint32_t N = uint32_t(scene.size()), V = uint32_t(cameras.size());
   const size_t entries = size_t(N) * V;
@@ -207,6 +239,7 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
   const Program& composite = composite_program(target.texture->internal_format(), false);
   const GLuint c = composite.id();
   glProgramUniform1ui(c, composite.uniform("slot_count"), uint32_t(slots));
+  glProgramUniform1ui(c, composite.uniform("first_view"), first_view);
   glProgramUniform1i(c, composite.uniform("cols"), target.cols);
   glProgramUniform2i(c, composite.uniform("cell_size"), target.cell_size.x, target.cell_size.y);
   glProgramUniform3fv(c, composite.uniform("background"), 1, glm::value_ptr(target.background));
@@ -221,7 +254,6 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
   dispatch_groups(slots);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT);
-  if (stamp) stamp(3);
   check_gl("the compute tile rasterizer");
 }
 

@@ -57,8 +57,10 @@ class GlTileSplats {
  public:
   GlTileSplats();  // needs a current context; compiles the passes
 
-  // Renders every camera (one image size) into its cell of `target`. `stamp(k)`, when given, is
-  // called after preprocess (k = 1), keys and sorts (2) and compositing (3), for GPU timers.
+  // Renders every camera (one image size) into its cell of `target`, in one pass when the
+  // records fit a storage buffer, else in passes of as many views as fit. `stamp(k)`, when given,
+  // is called after the first pass's preprocess (k = 1) and keys and sorts (2), and at the end (3),
+  // for GPU timers.
   void render_views(const GlScene& scene, std::span<const render::Camera> cameras,
                     const render::RasterSettings& settings, const TileViewsTarget& target,
                     const std::function<void(int)>& stamp = {});
@@ -73,12 +75,24 @@ class GlTileSplats {
   void render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
                      size_t gaussians, GlPlanes& planes, const std::function<void(int)>& stamp = {});
 
+  // The most (view, Gaussian) entries one pass holds: the views of a frame go in as few passes as
+  // this allows (one when they fit). 0 (the default): as many as the largest storage buffer a
+  // shader may bind holds records (GL_MAX_SHADER_STORAGE_BLOCK_SIZE / 64 bytes; 2 GiB on NVIDIA:
+  // 45 views of 740k Gaussians).
+  void set_max_entries_per_pass(size_t entries) { max_entries_per_pass_ = entries; }
+  // Passes the last render_views took.
+  int passes() const { return passes_; }
+
   const TileSplatCounts& counts() const { return counts_; }
   // The items whose keys were written by a work group each in the last frame (waits for the GPU).
   uint32_t read_huge_items() const;
   size_t bytes() const;
 
  private:
+  // One pass: `cameras`, views first_view.. of the target.
+  void render_pass(const GlScene& scene, std::span<const render::Camera> cameras, uint32_t first_view,
+                   const render::RasterSettings& settings, const TileViewsTarget& target,
+                   const std::function<void(int)>& stamp);
   // The key passes of views (PLANES 0) or planes (PLANES 1).
   struct KeyPrograms {
     Program count, emit, huge_count, huge_emit;
@@ -108,6 +122,8 @@ class GlTileSplats {
   GlTileKeys tiles_;
   Buffer views_, records_, entry_keys_, entries_, huge_;
   TileSplatCounts counts_;
+  size_t max_entries_per_pass_ = 0;
+  int passes_ = 0;
 };
 
 }  // namespace lfd::gpu

@@ -29,6 +29,7 @@ layout(TARGET_FORMAT, binding = kTileSplatTargetImage) uniform writeonly image2D
 #else
 layout(TARGET_FORMAT, binding = kTileSplatTargetImage) uniform writeonly image2D target;
 uniform uint slot_count;
+uniform uint first_view;     // the pass's first view (the image index counts from it)
 uniform int cols;            // quilt columns
 uniform ivec2 cell_size;     // a quilt cell (a view larger than it is cropped at its right and bottom)
 uniform vec3 background;
@@ -102,8 +103,9 @@ void main() {
   imageStore(target, ivec3(pixel.x, image_size.y - 1 - pixel.y, int(image)), value);
 #else
   if (pixel.x >= cell_size.x || pixel.y >= cell_size.y) return;
-  ivec2 texel = ivec2(int(image % uint(cols)) * cell_size.x + pixel.x,
-                      int(image / uint(cols)) * cell_size.y + cell_size.y - 1 - pixel.y);
+  uint view = first_view + image;
+  ivec2 texel = ivec2(int(view % uint(cols)) * cell_size.x + pixel.x,
+                      int(view / uint(cols)) * cell_size.y + cell_size.y - 1 - pixel.y);
   imageStore(target, texel, vec4(C + T * background, keep_transmittance != 0 ? T : 1.0));
 #endif
 }
