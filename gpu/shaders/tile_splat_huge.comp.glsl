@@ -7,6 +7,7 @@
 #include "gpu/shaders/tile_io.h"
 #include "gpu/shaders/tile_splat_io.h"
 #include "gpu/shaders/tile_splat_cover.glsl"
+#include "gpu/shaders/tile_splat_item.glsl"
 #include "gpu/shaders/frame_io.h"
 
 layout(local_size_x = kTileSplatHugeGroupSize) in;
@@ -19,11 +20,7 @@ layout(std430, binding = kTileCountsBinding) buffer Counts { uint counts[]; };
 layout(std430, binding = kTileKeysBinding) writeonly buffer Keys { uint keys[]; };
 layout(std430, binding = kTileValuesBinding) writeonly buffer Values { uint values[]; };
 #endif
-#if PLANES
-layout(std430, binding = kTileSplatLayersBinding) readonly buffer Layers { uint layers[]; };
-#endif
 
-uniform uint gaussian_count;
 uniform ivec2 tile_grid;
 
 shared uint covered;
@@ -37,12 +34,7 @@ void main() {
   ivec4 rect = r.rect;
   int width = rect.z - rect.x;
   int area = width * (rect.w - rect.y);
-#if PLANES
-  uint image = layers[j];
-#else
-  uint image = entry / gaussian_count;
-#endif
-  uint first_slot = image * uint(tile_grid.x * tile_grid.y);
+  uint first_slot = item_first_slot(j, entry, tile_grid);
   if (gl_LocalInvocationIndex == 0u) covered = 0u;
   barrier();
 #if EMIT

@@ -8,6 +8,7 @@
 #include "gpu/shaders/tile_io.h"
 #include "gpu/shaders/tile_splat_io.h"
 #include "gpu/shaders/tile_splat_cover.glsl"
+#include "gpu/shaders/tile_splat_item.glsl"
 #include "gpu/shaders/frame_io.h"
 
 layout(local_size_x = kTileSplatItemsGroupSize) in;
@@ -23,13 +24,9 @@ layout(std430, binding = kTileValuesBinding) writeonly buffer Values { uint valu
 layout(std430, binding = kTileCountsBinding) writeonly buffer Counts { uint counts[]; };
 layout(std430, binding = kTileSplatHugeBinding) buffer Huge { TileHugeList huge; uint huge_items[]; };
 #endif
-#if PLANES
-layout(std430, binding = kTileSplatLayersBinding) readonly buffer Layers { uint layers[]; };
-#endif
 
 uniform uint item_capacity;  // items dispatched; those from the kept count on have no keys
 uniform uint kept_word;      // the kept count's index in kept_words (the sort's params or a draw)
-uniform uint gaussian_count;
 uniform ivec2 tile_grid;
 
 void main() {
@@ -54,12 +51,7 @@ void main() {
 #endif
     return;
   }
-#if PLANES
-  uint image = layers[j];
-#else
-  uint image = entry / gaussian_count;
-#endif
-  uint first_slot = image * uint(tile_grid.x * tile_grid.y);
+  uint first_slot = item_first_slot(j, entry, tile_grid);
   uint n = 0u;
 #if EMIT
   uint base = counts[j];

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "../test_data.hpp"
+#include "gl_view_compare.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_tile_keys.hpp"
@@ -24,13 +25,8 @@
 namespace lfd::gpu {
 namespace {
 
-constexpr double kMinPsnrDb = 40.0;  // the GL per-view tests' bar
-
-ImageF to_image(const std::vector<float>& values, int width, int height, int channels) {
-  ImageF image(width, height, channels);
-  image.pixels = values;
-  return image;
-}
+using testing::kMinPsnrDb;
+using testing::tabletop_camera;
 
 GlPerViewOptions compute_options() {
   GlPerViewOptions o;
@@ -38,31 +34,11 @@ GlPerViewOptions compute_options() {
   return o;
 }
 
-scene::GaussianScene generated_scene(int sh_degree, size_t count, uint32_t seed = 3) {
-  render::SceneGeneratorOptions options;
-  options.count = count;
-  options.sh_degree = sh_degree;
-  options.seed = seed;
-  return render::generate_scene(options);
-}
-
-render::Camera tabletop_camera(int width = 128, int height = 128) {
-  return render::make_look_at_camera({0, -1, -5}, {0, 0, 0}, {0, -1, 0}, 0.8f, width, height);
-}
+scene::GaussianScene generated_scene(int sh_degree, size_t count) { return testing::generated_scene(sh_degree, count); }
 
 double compare_view(GlPerViewRenderer& renderer, const scene::GaussianScene& scene, const render::Camera& camera,
                     const render::RasterSettings& settings, const std::string& what) {
-  const render::RasterImage cpu = render::rasterize(scene, camera, settings);
-  const render::RasterImage gl = renderer.render_view_image(camera, settings);
-  EXPECT_EQ(gl.width, cpu.width);
-  EXPECT_EQ(gl.height, cpu.height);
-  const double colour = render::psnr(to_image(gl.rgb, gl.width, gl.height, 3), to_image(cpu.rgb, cpu.width, cpu.height, 3));
-  const double transmittance = render::psnr(to_image(gl.transmittance, gl.width, gl.height, 1),
-                                            to_image(cpu.transmittance, cpu.width, cpu.height, 1));
-  std::printf("[ psnr ] compute %s: colour %.1f dB, transmittance %.1f dB\n", what.c_str(), colour, transmittance);
-  EXPECT_GE(colour, kMinPsnrDb) << what;
-  EXPECT_GE(transmittance, kMinPsnrDb) << what;
-  return colour;
+  return testing::compare_view(renderer, scene, camera, settings, "compute " + what);
 }
 
 TEST(GlTileKeys, SlotBitsHoldEverySlot) {
