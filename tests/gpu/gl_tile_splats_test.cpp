@@ -15,9 +15,11 @@
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "gpu/gl_tile_keys.hpp"
+#include "gpu/gl_tile_splats.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
+#include "render/preprocess.hpp"
 #include "render/rasterizer_cpu.hpp"
 #include "render/scene_generator.hpp"
 #include "scene/gaussian_io.hpp"
@@ -108,6 +110,22 @@ TEST(GlTileSplats, HugeSplatsMatchTheCpu) {
   GlPerViewRenderer renderer(gl_scene, compute_options());
   compare_view(renderer, scene, tabletop_camera(), {}, "200 huge splats in 2k");
   compare_view(renderer, scene, tabletop_camera(200, 150), {}, "200 huge splats in 2k, 200x150");
+
+  // The huge splats did take the per-work-group path, and the opacity-aware cover left out tiles
+  // of their rectangles: fewer keys than the rectangles' tiles.
+  GlTileSplats tiles;
+  const render::Camera camera = tabletop_camera();
+  Texture view(GL_RGBA32F, camera.width, camera.height);
+  tiles.render_views(gl_scene, std::span(&camera, 1), {},
+                     {.texture = &view, .cols = 1, .cell_size = {camera.width, camera.height}});
+  const uint32_t huge = tiles.read_huge_items();
+  std::printf("[ keys ] %u keys, %u items keyed by a work group each\n", tiles.counts().keys, huge);
+  EXPECT_GT(huge, 50u);
+  size_t rectangle_tiles = 0;
+  for (const render::ProjectedGaussian& g : render::preprocess(scene, camera, {}))
+    if (g.radius_px > 0) rectangle_tiles += size_t(g.rect_max.x - g.rect_min.x) * size_t(g.rect_max.y - g.rect_min.y);
+  EXPECT_LT(tiles.counts().keys, rectangle_tiles);
+  EXPECT_EQ(tiles.passes(), 1);
 }
 
 // Thousands of small splats in one 16x16 tile: its list spans many 256-splat batches.
