@@ -57,18 +57,7 @@ TEST(GlTileSplats, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
   const auto scene = generated_scene(3, 4000);
   GlScene gl_scene(scene, context.info());
   GlPerViewRenderer renderer(gl_scene, compute_options());
-  const auto base = tabletop_camera();
-  const auto geometry = render::make_quilt_geometry(base, 5.1f, 40.0f, 9);
-  for (int degree : {0, 3}) {
-    render::RasterSettings settings;
-    settings.sh_degree = degree;
-    const std::string d = " sh" + std::to_string(degree);
-    compare_view(renderer, scene, base, settings, "generated centre" + d);
-    compare_view(renderer, scene, geometry.view_camera(0), settings, "generated off-axis view 0/9" + d);
-    settings.background = {1.0f, 0.5f, 0.25f};
-    compare_view(renderer, scene, geometry.view_camera(8), settings, "generated off-axis view 8/9, background" + d);
-  }
-  compare_view(renderer, scene, tabletop_camera(100, 77), {}, "generated 100x77");
+  testing::compare_generated_views(renderer, scene, "compute ");
 }
 
 TEST(GlTileSplats, TheFixtureAndDemoScenesMatchTheCpu) {

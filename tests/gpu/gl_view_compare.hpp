@@ -11,6 +11,7 @@
 
 #include "gpu/gl_per_view_renderer.hpp"
 #include "render/image_metrics.hpp"
+#include "render/quilt_geometry.hpp"
 #include "render/rasterizer_cpu.hpp"
 #include "render/scene_generator.hpp"
 
@@ -53,6 +54,25 @@ inline double compare_view(GlPerViewRenderer& renderer, const scene::GaussianSce
   EXPECT_GE(colour, kMinPsnrDb) << what;
   EXPECT_GE(transmittance, kMinPsnrDb) << what;
   return colour;
+}
+
+// The generated scene's views both paths are checked on: centre, off-axis, a background, SH
+// degrees 0 and 3, and a size that is neither square nor a multiple of the 16-pixel tiles.
+inline void compare_generated_views(GlPerViewRenderer& renderer, const scene::GaussianScene& scene,
+                                    const std::string& prefix) {
+  const auto base = tabletop_camera();
+  const auto geometry = render::make_quilt_geometry(base, 5.1f, 40.0f, 9);
+  for (int degree : {0, 3}) {
+    render::RasterSettings settings;
+    settings.sh_degree = degree;
+    const std::string d = " sh" + std::to_string(degree);
+    compare_view(renderer, scene, base, settings, prefix + "generated centre" + d);
+    compare_view(renderer, scene, geometry.view_camera(0), settings, prefix + "generated off-axis view 0/9" + d);
+    settings.background = {1.0f, 0.5f, 0.25f};
+    compare_view(renderer, scene, geometry.view_camera(8), settings,
+                 prefix + "generated off-axis view 8/9, background" + d);
+  }
+  compare_view(renderer, scene, tabletop_camera(100, 77), {}, prefix + "generated 100x77");
 }
 
 }  // namespace lfd::gpu::testing
