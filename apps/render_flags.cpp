@@ -44,7 +44,7 @@ lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, s
 void add_scene_and_plane_options(CLI::App& app, RenderFlags& f) {
   app.add_option("--scene", f.scene_path,
                  "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
-                 "svraster-webgl .ply)")->required();
+                 "svraster-webgl .ply); a moving scene: name_%04d.ply, a folder or a .txt list of frames")->required();
   app.add_option("--method", f.method,
                  "per-view (baseline) or g2lf (sweeping planes); v2lf for voxel scenes (the default there)")
       ->check(CLI::IsMember({"per-view", "g2lf", "v2lf"}))->capture_default_str();
