@@ -2,13 +2,42 @@
 //   lfd view scene.ply --device auto
 //   lfd view scene.ply --calibration visual.json --monitor LKG
 //   lfd view scene.ply --calibration visual.json --frames 30 --screenshot panel.png --quilt q.png
+#include <filesystem>
 #include <iostream>
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "util/error.hpp"
 #include "viewer/viewer.hpp"
+#ifndef LFD_NO_PLAYBACK
+#include "apps/quilt_file_name.hpp"
+#include "record/video_file.hpp"
+#endif
 
 namespace lfd::apps {
+namespace {
+
+#ifndef LFD_NO_PLAYBACK
+// The viewer's recordings as lfd record writes them (record/video_file.hpp): NAME_qsCxRaA.mp4,
+// H.264 at `fps`, a partial file until stopped.
+class ViewerVideo : public viewer::QuiltRecording {
+ public:
+  ViewerVideo(const render::QuiltLayout& layout, const std::filesystem::path& path, int fps)
+      : file_(quilt_file_name(path.string(), layout, "--record"), layout.width, layout.height, options(fps)) {}
+  void add(const Image8& quilt) override { file_.add(quilt); }
+  std::filesystem::path finish() override { return file_.finish(); }
+
+ private:
+  static media::EncoderOptions options(int fps) {
+    media::EncoderOptions o;
+    o.frame_rate = fps;
+    return o;
+  }
+  record::VideoFile file_;
+};
+#endif
+
+}  // namespace
 
 int RunView(int argc, char** argv) {
   CLI::App app{"Show a Gaussian scene (G2LF or per view) or a sparse-voxel scene (V2LF or per view)\n"
@@ -16,7 +45,8 @@ int RunView(int argc, char** argv) {
                "monitor, with a control window.\n"
                "Without the display's monitor: a simulated display in a window.\n"
                "Mouse: drag orbits, right drag pans, wheel zooms; keys: arrows, WASD, +/-, R resets,\n"
-               "Esc quits; drop a scene file on a window to load it.\n"
+               "V starts and stops a quilt video of the frames shown, Esc quits; drop a scene file on a\n"
+               "window to load it.\n"
                "Examples:\n"
                "  lfd view scene.ply --device auto\n"
                "  lfd view scene.ply --calibration visual.json --method per-view\n"
@@ -47,7 +77,22 @@ int RunView(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync,
                "swap without waiting for vsync (swap interval 0): to measure the frame; a scripted run "
                "prints the frame pacing (median, p99)");
+  std::string record_path;
+  int record_fps = 30;
+  app.add_option("--record", record_path,
+                 "record the quilts shown into this video from the first frame (NAME.mp4: _qsCxRaA added); "
+                 "the V key starts and stops one any time (lfd-view-TIME_qs....mp4)");
+  app.add_option("--record-fps", record_fps, "the recordings' frame rate (each shown frame is one video frame)")
+      ->check(CLI::Range(1, 240))->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
+#ifndef LFD_NO_PLAYBACK
+  options.start_recording = [record_fps](const render::QuiltLayout& layout, const std::filesystem::path& path) {
+    return std::make_unique<ViewerVideo>(layout, path, record_fps);
+  };
+#endif
+  if (!record_path.empty() && std::filesystem::path(record_path).extension() != ".mp4")
+    throw_input_error("--record: '{}' must end in .mp4", record_path);
+  options.record_path = record_path;
 
   options.scene_path = scene;
   options.calibration = display_source.load();

@@ -42,6 +42,7 @@ struct InputCollector {
   GLFWwindow* control_window = nullptr;
   std::optional<std::string> dropped;
   bool toggle_controls = false;  // C pressed on the display window
+  bool toggle_recording = false;  // V pressed on the display window
 
   bool ignore(GLFWwindow* w) const { return controls && w == control_window && controls->wants_mouse(); }
 };
@@ -77,6 +78,7 @@ void install_callbacks(GLFWwindow* w, InputCollector* in, bool chain_imgui) {
     if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(win, GLFW_TRUE);
     if (action == GLFW_PRESS && key == GLFW_KEY_R) collector(win)->events.reset = true;
     if (action == GLFW_PRESS && key == GLFW_KEY_C) collector(win)->toggle_controls = true;
+    if (action == GLFW_PRESS && key == GLFW_KEY_V) collector(win)->toggle_recording = true;
   });
   glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
     if (count > 0) collector(win)->dropped = paths[0];
@@ -213,6 +215,7 @@ struct FrameLoop {
   FrameReport report{};
   FramePacing pacing{};
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  std::unique_ptr<QuiltRecording> recording{};  // V pressed (or --record): the frames shown go here
 };
 
 // Seconds since the last frame; the control window shows the median and p99 of the recent
@@ -312,6 +315,43 @@ void run_control_actions(FrameLoop& loop) {
   }
 }
 
+void stop_recording(FrameLoop& loop) {
+  if (!loop.recording) return;
+  std::cout << fmt::format("wrote {}\n", loop.recording->finish().string());
+  loop.recording.reset();
+}
+
+// Recording: V (or --record from the first frame) starts a quilt video of the frames shown, V
+// stops it; a quilt that changes size (other views) ends it, as a video keeps one size.
+void record_shown_frame(FrameLoop& loop, int frame_index) {
+  const ViewerOptions& options = loop.options;
+  const bool toggle = loop.input.toggle_recording || (frame_index == 0 && !options.record_path.empty());
+  loop.input.toggle_recording = false;
+  if (toggle && loop.recording) {
+    stop_recording(loop);
+  } else if (toggle) {
+    if (!options.start_recording) {
+      std::cerr << "notice: this lfd has no video encoder (built without playback): nothing recorded\n";
+    } else if (!loop.frame.quilt().id()) {
+      std::cerr << "notice: the g2lf-direct method renders no quilt: nothing to record\n";
+    } else {
+      const std::filesystem::path path =
+          options.record_path.empty() ? std::filesystem::path("lfd-view-" + timestamp() + ".mp4") : options.record_path;
+      loop.recording = options.start_recording(loop.frame.layout(), path);
+      std::cout << "recording the quilts shown (V stops)\n";
+    }
+  }
+  if (!loop.recording) return;
+  loop.display.make_current();
+  const Image8 quilt = to_uint8(gpu::image_from_texture(loop.frame.quilt()));
+  try {
+    loop.recording->add(quilt);
+  } catch (const std::invalid_argument&) {
+    std::cerr << "notice: the quilt changed size: the recording ends here\n";
+    stop_recording(loop);
+  }
+}
+
 // What a scripted run asked for after its last frame: the quilt and the camera.
 void write_final_outputs(const ViewerOptions& options, const LightFieldFrame& frame, const OrbitCamera& camera) {
   if (!options.quilt_path.empty()) write_quilt(frame, options.quilt_path);
@@ -366,8 +406,10 @@ int run_viewer(const ViewerOptions& options) {
     apply_frame_input(loop, dt);
     reload_dropped_scene(loop);
     render_frame(loop, frame_index);
+    record_shown_frame(loop, frame_index);
     run_control_actions(loop);
   }
+  stop_recording(loop);
   display.make_current();
   write_final_outputs(options, frame, camera);
   // A scripted run says how its frames were paced (the intervals after the first frame).

@@ -116,6 +116,43 @@ TEST(ViewerWindow, ControlStateChangesTheFrame) {
   EXPECT_LT(render::psnr(a, c), 40.0) << "moving the focal plane left the frame unchanged";
 }
 
+// A recording that keeps what it is given (the program's writer is lfd record's video file).
+struct KeptRecording : QuiltRecording {
+  std::vector<Image8>* quilts;
+  int* finished;
+  KeptRecording(std::vector<Image8>* q, int* f) : quilts(q), finished(f) {}
+  void add(const Image8& quilt) override { quilts->push_back(quilt); }
+  std::filesystem::path finish() override {
+    ++*finished;
+    return "kept.mp4";
+  }
+};
+
+TEST(ViewerWindow, ARecordingGetsEveryShownFramesQuilt) {
+  const ViewerSettings s = small_settings();
+  const Files f = write_inputs(s, "record");
+  ViewerOptions o = scripted(f);
+  o.quilt_path = kDir / "record-quilt.png";
+  o.record_path = kDir / "shown.mp4";
+  std::vector<Image8> quilts;
+  int finished = 0;
+  render::QuiltLayout started;
+  o.start_recording = [&](const render::QuiltLayout& layout, const std::filesystem::path& path) {
+    started = layout;
+    EXPECT_EQ(path, kDir / "shown.mp4");
+    return std::make_unique<KeptRecording>(&quilts, &finished);
+  };
+  ASSERT_EQ(run_viewer(o), 0);
+  EXPECT_EQ(finished, 1);
+  ASSERT_EQ(quilts.size(), 3u) << "one quilt per frame shown";
+  EXPECT_EQ(quilts[0].width, started.width);
+  EXPECT_EQ(quilts[0].height, started.height);
+  // The last one is the quilt the run writes after its last frame.
+  for (const auto& e : fs::directory_iterator(kDir))
+    if (e.path().filename().string().starts_with("record-quilt_qs"))
+      EXPECT_GE(render::psnr(to_float(quilts.back()), to_float(read_image(e.path(), 3))), 60.0);
+}
+
 TEST(ViewerWindow, BadSceneIsOneLineNamingTheFile) {
   const Files f = write_inputs(small_settings(), "bad");
   std::ofstream(kDir / "broken.ply") << "ply\nformat nonsense\n";
