@@ -57,7 +57,8 @@ int RunView(int argc, char** argv) {
   std::string scene, method, camera, settings, screenshot, quilt, camera_out;
   app.add_option("scene", scene,
                  "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
-                 "svraster-webgl .ply; --method g2lf renders them with V2LF)")->required();
+                 "svraster-webgl .ply; --method g2lf renders them with V2LF); a moving scene: name_%04d.ply, a "
+                 "folder or a .txt list of frames, played at --scene-fps")->required();
   DisplaySource display_source;
   display_source.add(app, "--calibration", "the display: visual.json or calibration.json");
   app.add_option("--monitor", options.monitor_prefix, "the display's monitor name prefix")->capture_default_str();
@@ -77,6 +78,12 @@ int RunView(int argc, char** argv) {
   app.add_flag("--no-vsync", no_vsync,
                "swap without waiting for vsync (swap interval 0): to measure the frame; a scripted run "
                "prints the frame pacing (median, p99)");
+  app.add_option("--scene-fps", options.scene_fps,
+                 "a moving scene (name_%04d.ply, a folder or a .txt list of frames): its frames per second")
+      ->check(CLI::Range(0.01, 1000.0))->capture_default_str();
+  app.add_option("--ahead", options.frames_ahead,
+                 "a moving scene: frames read ahead of the one shown (memory holds this many + 1)")
+      ->check(CLI::Range(1, 64))->capture_default_str();
   std::string record_path;
   int record_fps = 30;
   app.add_option("--record", record_path,

@@ -16,6 +16,8 @@
 #include "lightfield/scene_framing.hpp"
 #include "render/default_camera.hpp"
 #include "scene/gaussian_io.hpp"
+#include "scene/scene_sequence.hpp"
+#include "scene/scene_stream.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
@@ -216,6 +218,10 @@ struct FrameLoop {
   FramePacing pacing{};
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
   std::unique_ptr<QuiltRecording> recording{};  // V pressed (or --record): the frames shown go here
+  scene::SceneStream* stream = nullptr;          // a moving scene's frames, read ahead
+  std::shared_ptr<const scene::Scene> shown{};   // the moving scene's frame on the GPU
+  int shown_index = 0;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
 // Seconds since the last frame; the control window shows the median and p99 of the recent
@@ -255,11 +261,30 @@ void reload_dropped_scene(FrameLoop& loop) {
     loop.frame.replace_scene(loop.scene);
     report_fit(loop.frame.scene_fit_notice());
     loop.camera = OrbitCamera(lightfield::scene_framing(loop.scene));
+    loop.stream = nullptr;  // a dropped scene stops a moving one
     std::cout << fmt::format("loaded {} ({})\n", *input.dropped, fmt::format("{} {}", loop.scene.size(), loop.scene.primitives()));
   } catch (const InputError& e) {
     std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
   }
   input.dropped.reset();
+}
+
+// A moving scene: the frame its clock says (a scripted run: one scene frame per frame shown,
+// waited for), uploaded when it is read; one not read yet keeps the last one on screen. The
+// camera stays: the framing is the first frame's.
+void advance_moving_scene(FrameLoop& loop, int frame_index) {
+  if (!loop.stream) return;
+  const bool scripted = loop.options.frames > 0;
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop.started).count();
+  const int index =
+      (scripted ? frame_index : int(elapsed_s * loop.options.scene_fps)) % loop.stream->count();
+  if (index == loop.shown_index) return;
+  std::shared_ptr<const scene::Scene> next = loop.stream->frame(index, scripted);
+  if (!next) return;  // not read yet: a dropped scene frame
+  loop.display.make_current();
+  loop.frame.replace_scene(*next);
+  loop.shown = std::move(next);
+  loop.shown_index = index;
 }
 
 // Render: the light field for the camera, interlaced onto the display; settings the controls
@@ -365,7 +390,11 @@ void write_final_outputs(const ViewerOptions& options, const LightFieldFrame& fr
 
 int run_viewer(const ViewerOptions& options) {
   const auto& d = options.calibration.display;
-  scene::Scene scene = scene::load_scene(options.scene_path);
+  // A moving scene starts from its first frame, read ahead from then on; it frames the camera.
+  std::optional<scene::SceneStream> stream;
+  if (scene::is_scene_sequence(options.scene_path.string()))
+    stream.emplace(scene::find_scene_sequence(options.scene_path.string()), options.frames_ahead);
+  scene::Scene scene = stream ? *stream->frame(0, true) : scene::load_scene(options.scene_path);
   const std::filesystem::path settings_path =
       options.settings_path.value_or(settings_path_for_display(options.display_name));
   ViewerSettings settings = load_settings(settings_path, ViewerSettings{});
@@ -396,6 +425,7 @@ int run_viewer(const ViewerOptions& options) {
   FrameLoop loop{.options = options, .settings_path = settings_path, .settings = settings,
                  .scene = scene, .camera = camera, .display = display, .controls = controls,
                  .frame = frame, .input = input, .previewer = SeenFromPreviewer(frame.calibration())};
+  if (stream) loop.stream = &*stream;
   loop.report.renderer = info.summary();
   loop.report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
   for (int frame_index = 0; options.frames == 0 || frame_index < options.frames; ++frame_index) {
@@ -405,6 +435,7 @@ int run_viewer(const ViewerOptions& options) {
     const double dt = time_frame(loop, frame_index);
     apply_frame_input(loop, dt);
     reload_dropped_scene(loop);
+    advance_moving_scene(loop, frame_index);
     render_frame(loop, frame_index);
     record_shown_frame(loop, frame_index);
     run_control_actions(loop);

@@ -32,7 +32,9 @@ using StartRecording =
     std::function<std::unique_ptr<QuiltRecording>(const render::QuiltLayout& layout, const std::filesystem::path& path)>;
 
 struct ViewerOptions {
-  std::filesystem::path scene_path;
+  std::filesystem::path scene_path;  // a scene, or a moving one (scene/scene_sequence.hpp)
+  double scene_fps = 24.0;           // a moving scene's frames per second (scripted runs: one per frame)
+  int frames_ahead = 3;              // a moving scene's frames read ahead (memory: this + 1 frames)
   display::Calibration calibration;
   std::string display_name;          // for messages and the settings file's name
   std::string monitor_prefix = "LKG";
