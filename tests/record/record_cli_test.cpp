@@ -247,6 +247,24 @@ TEST(Record, CtrlCLeavesAPlayableVideoOfTheFramesDone) {
   EXPECT_LT(decoded.frames.size(), 500u);
 }
 
+TEST(Record, ACrashLeavesAPlayablePartialVideo) {
+  // kill -9 (no chance to close the file) once some fragments are written: the partial file is a
+  // fragmented MP4 that plays up to its last whole fragment (one per keyframe: every frame at 1 fps;
+  // x264 hands its first packets over some frames late). The header is 782 bytes, a fragment ~5 KB.
+  const fs::path dir = test::temp_dir("record_crash");
+  const fs::path partial = dir / "crash_qs2x2a1.5.partial.mp4";
+  const auto r = test::run_command(fmt::format(
+      "{} record --scene {} {} --path turntable --frames 500 --fps 1 --out {} >/dev/null 2>&1 & pid=$!; "
+      "while [ \"$(stat -c %s {} 2>/dev/null || echo 0)\" -lt 2000 ] && kill -0 $pid 2>/dev/null; do sleep 0.05; done; "
+      "kill -9 $pid; wait $pid; echo rc=$?",
+      LFD_EXE, test::kRecordScene, test::kRecordSmall, (dir / "crash.mp4").string(), partial.string()));
+  EXPECT_NE(r.output.find("rc=137"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "crash_qs2x2a1.5.mp4")) << "nothing under the final name";
+  const test::DecodedVideo decoded = test::decode_video(partial);
+  EXPECT_GE(decoded.frames.size(), 1u);
+  EXPECT_LT(decoded.frames.size(), 500u);
+}
+
 TEST(Record, TheBenchmarkReportsBothSidesOfEachRenderer) {
   // A tiny run on the CPU: the JSON has both rates per run and the encoder's share (no timing
   // is asserted; lfd bench record measures, docs/record.md "Speed").
