@@ -233,13 +233,16 @@ int RunRecord(int argc, char** argv) {
       display.calibration ? &*display.calibration : nullptr, o, &record::StopRequest::flag(),
       [&](int) { progress.advance(); });
   progress.finish();
-  for (const fs::path& written : result.written)
-    std::cout << fmt::format("wrote {} ({} frames at {} fps, {} {} on the {}, {} views of {}x{}) in {:.1f} s, {:.2f} frames/s\n",
-                             written.string(), result.frames_done, o.fps, r.codec,
-                             lightfield::method_name(choice.options.method, kind),
-                             lightfield::processor_name(choice.options.backend), plan.views,
-                             plan.geometry.base.width, plan.geometry.base.height, result.seconds,
-                             result.frames_done / std::max(result.seconds, 1e-9));
+  for (const fs::path& written : result.written) {
+    const bool panel = written == o.panel_video;
+    std::cout << fmt::format(
+        "wrote {} ({} frames at {} fps, {}, {} {} on the {}, {} views of {}x{}{}) in {:.1f} s, {:.2f} frames/s\n",
+        written.string(), result.frames_done, o.fps, r.codec, panel ? "the panel of" : "quilts of",
+        lightfield::method_name(choice.options.method, kind), lightfield::processor_name(choice.options.backend),
+        plan.views, plan.geometry.base.width, plan.geometry.base.height,
+        panel ? fmt::format(", interlaced for {}", display.path) : "", result.seconds,
+        result.frames_done / std::max(result.seconds, 1e-9));
+  }
   if (result.stopped) {
     std::cerr << fmt::format("interrupted: {} of {} frames recorded\n", result.frames_done, count);
     return 130;
