@@ -27,6 +27,7 @@ const std::vector<Bench>& benches() {
       {"gpu-probe", RunBenchGpuProbe, "compute FMA rate and bandwidth vs raster fill rate; which --raster auto picks"},
 #ifndef LFD_NO_PLAYBACK  // a renderer-only build without FFmpeg (-DLFD_WITH_PLAYBACK=OFF)
       {"play", RunBenchPlay, "quilt video playback: decoded, shown and dropped frames per second (4K)"},
+      {"record", RunBenchRecord, "lfd record: frames/s of render + encode against render alone, CPU and GL"},
       {"serve", RunBenchServe, "load test of a running lfd serve: many clients at once (docs/serve.md)"},
 #endif
       {"direct", RunBenchDirect, "the direct panel pass against swizzle + interlace (times, memory, PSNR)"},

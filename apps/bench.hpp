@@ -17,5 +17,6 @@ int RunBenchCalibration(int argc, char** argv);  // apps/bench_calibration.cpp
 int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp
 int RunBenchDirectPhotos(int argc, char** argv);  // apps/bench_direct_photos.cpp
 int RunBenchPlay(int argc, char** argv);  // apps/bench_play.cpp (also renderer-only)
+int RunBenchRecord(int argc, char** argv);  // apps/bench_record.cpp (also renderer-only)
 
 }  // namespace lfd::apps

@@ -21,5 +21,6 @@ int RunCamera(int argc, char** argv);
 int RunPlay(int argc, char** argv);
 int RunRgbdQuilt(int argc, char** argv);
 int RunServe(int argc, char** argv);
+int RunRecord(int argc, char** argv);
 
 }  // namespace lfd::apps

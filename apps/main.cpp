@@ -45,6 +45,7 @@ const std::vector<Command>& commands() {
       {"view", RunView, "show a Gaussian scene on the display in real time (GL, with controls)"},
 #ifndef LFD_NO_PLAYBACK  // a renderer-only build without FFmpeg (-DLFD_WITH_PLAYBACK=OFF)
       {"play", RunPlay, "play quilt images and quilt videos on the display (playlists, keys)"},
+      {"record", RunRecord, "record a quilt video of a scene along a camera path (turntable, keyframes)"},
 #endif
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},

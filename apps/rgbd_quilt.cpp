@@ -51,15 +51,19 @@ int RunRgbdQuilt(int argc, char** argv) {
 
   const rgbd::RgbdOptions options = rgbd_flags.options();
   int view_count = views.value_or(kDefaultViewCount);
+  std::optional<double> display_aspect;
   if (display.given()) {
     const display::DisplayQuilt quilt = display::quilt_for_display(display.load(), views);
     view_count = quilt.views;
     view_cone_deg = quilt.view_cone_deg;
+    display_aspect = quilt.view_aspect;
     std::cout << quilt.describe() << "\n";
   }
   const ImageF frame = to_float(read_image(in_path, 3));
-  const render::QuiltLayout layout =
+  render::QuiltLayout layout =
       rgbd::rgbd_quilt_layout(frame.width, frame.height, options.depth_loc, view_count, tile_height);
+  // Tiles within a pixel of the display's aspect are named with it (no pillarbox column).
+  if (display_aspect) layout.aspect = render::snap_to_display_aspect(layout.aspect, layout.tile_height(), *display_aspect);
   const std::string written = quilt_file_name(out_path, layout, "out");
   const auto gl_context = open_backend(parse_backend(backend_name));
   const ImageF quilt = gl_context ? rgbd::render_rgbd_quilt_on_gpu(frame, options, layout, view_cone_deg)

@@ -166,6 +166,7 @@ set(_lfd_dependency_table
   "^nlohmann_json::|find_dependency(nlohmann_json)|nlohmann-json3-dev"
   "^CLI11::|find_dependency(CLI11)|libcli11-dev"
   "^OpenMP::|find_dependency(OpenMP)|"
+  "^Threads::|find_dependency(Threads)|"
   "^ZLIB::|find_dependency(ZLIB)|zlib1g-dev"
   "^Eigen3::|find_dependency(Eigen3)|libeigen3-dev"
   "^Ceres::|find_dependency(Ceres)|libceres-dev"

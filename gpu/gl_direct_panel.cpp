@@ -53,7 +53,8 @@ void GlDirectPanel::draw(const GlPlanes& planes, const render::QuiltGeometry& ge
   glProgramUniform1f(id, at("two_focal_distance"), 2.0f * geometry.focal_distance);
   glProgramUniform1f(id, at("tan_half_cone"), std::tan(0.5f * geometry.view_cone_rad));
   const interlace::AspectFit fit = interlace::aspect_fit(
-      calibration_, double(geometry.base.width) / double(geometry.base.height), options.overscan);
+      calibration_, double(geometry.base.width) / double(geometry.base.height), options.overscan,
+      geometry.base.height);
   glProgramUniform2f(id, at("aspect_scale"), float(fit.scale_u), float(fit.scale_v));
   glProgramUniform1i(id, at("invert_views"), options.invert_views ? 1 : 0);
   glProgramUniform1f(id, at("fringe"), float(calibration_.fringe));

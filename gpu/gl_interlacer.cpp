@@ -33,7 +33,7 @@ GlInterlacer::GlInterlacer(const display::LensModel& lens, const render::QuiltLa
   glProgramUniform2i(p, at("tile_size"), layout_.tile_width(), layout_.tile_height());
   // Interlacer::sample_for's aspect fit as a scale of (u - 0.5, v - 0.5) (docs/display-model.md
   // "Vendor interlacing rules").
-  const interlace::AspectFit fit = interlace::aspect_fit(cal, layout_.aspect, options.overscan);
+  const interlace::AspectFit fit = interlace::aspect_fit(cal, layout_.aspect, options.overscan, layout_.tile_height());
   glProgramUniform2f(p, at("aspect_scale"), float(fit.scale_u), float(fit.scale_v));
   glProgramUniform1i(p, at("invert_views"), options.invert_views ? 1 : 0);
   glProgramUniform1i(p, at("linear_blend"), options.blend == interlace::ViewBlend::kLinear);

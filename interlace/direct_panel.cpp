@@ -23,7 +23,8 @@ ImageF render_direct_panel(const render::SweepingPlanes& planes, const render::Q
   ImageF panel(cal.screen_w, cal.screen_h, 3, 0.0f);
   const render::PlaneRays rays(planes, geometry, ref, options.filter, options.background, options.kernel);
   const AspectFit fit =
-      aspect_fit(cal, double(geometry.base.width) / double(geometry.base.height), options.overscan);
+      aspect_fit(cal, double(geometry.base.width) / double(geometry.base.height), options.overscan,
+                 geometry.base.height);
   // Fractions lie in [0, 1]: offsets within the cone's edges s = +-1/2.
   const float max_abs_dx = std::abs(geometry.view_offset_at(0.5f));
   // view_offset_at is linear in the position: its slope once, not a tan() per subpixel.

@@ -22,11 +22,12 @@ Interlacer::Interlacer(const display::LensModel& lens, const render::QuiltLayout
                        InterlaceOptions options)
     : lens_(lens), layout_(layout), options_(options) {
   layout_.check("quilt");
-  fit_ = aspect_fit(lens.calibration(), layout_.aspect, options_.overscan);
+  fit_ = aspect_fit(lens.calibration(), layout_.aspect, options_.overscan, layout_.tile_height());
 }
 
-AspectFit aspect_fit(const display::DisplayCalibration& cal, double view_aspect, bool overscan) {
+AspectFit aspect_fit(const display::DisplayCalibration& cal, double view_aspect, bool overscan, int tile_height_px) {
   const double display_aspect = double(cal.screen_w) / cal.screen_h;
+  view_aspect = render::snap_to_display_aspect(view_aspect, tile_height_px, display_aspect);
   const bool fit_x = (display_aspect >= view_aspect && !overscan) || (display_aspect <= view_aspect && overscan);
   return fit_x ? AspectFit{display_aspect / view_aspect, 1.0} : AspectFit{1.0, view_aspect / display_aspect};
 }

@@ -45,7 +45,11 @@ struct SubpixelSample {
 struct AspectFit {
   double scale_u = 1, scale_v = 1;
 };
-AspectFit aspect_fit(const display::DisplayCalibration& calibration, double view_aspect, bool overscan);
+// Views `tile_height_px` rows tall whose aspect is within a pixel of the panel's are fitted as the
+// panel's (render::snap_to_display_aspect: no black column for a 910x512 view of a 16:9 panel);
+// 0 takes `view_aspect` as it is.
+AspectFit aspect_fit(const display::DisplayCalibration& calibration, double view_aspect, bool overscan,
+                     int tile_height_px = 0);
 
 struct TilePoint {
   bool inside = true;

@@ -76,6 +76,11 @@ ViewPlan plan_views(const ViewRequest& r, const scene::Scene* scene) {
   if (grid.cols < 1 || grid.rows < 1 || grid.cols * grid.rows < plan.views)
     throw_input_error("grid: {}x{} tiles cannot hold {} views", grid.cols, grid.rows, plan.views);
   plan.layout = render::make_quilt_layout(plan.geometry, grid.cols, grid.rows);
+  // The quilt names the display's view aspect, not its tiles' rounded one (the interlacer would
+  // pillarbox those by a column); the camera's when there is no display.
+  if (plan.display_quilt)
+    plan.layout.aspect =
+        render::snap_to_display_aspect(plan.layout.aspect, base.height, plan.display_quilt->view_aspect);
   return plan;
 }
 

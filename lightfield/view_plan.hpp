@@ -20,6 +20,8 @@
 //              camera's look-at point; times focal_scale;
 //   grid       request.grid, else the display's, else display::quilt_grid_for_views for the
 //              views' aspect.
+//   aspect     (the quilt's named view aspect, layout.aspect) the display's view aspect when the
+//              views are within a pixel of it (render::snap_to_display_aspect), else the views'.
 #include <optional>
 
 #include "display/calibration_file.hpp"

@@ -11,6 +11,19 @@ extern "C" {
 
 namespace lfd::media {
 
+void check_video_size(const std::string& codec, int width, int height, const std::string& what) {
+  if (width < 16 || height < 16 || width % 2 || height % 2)
+    throw_input_error("{}: video frames of {}x{} must have even sides of at least 16 pixels", what, width, height);
+  // H.264 and H.265 level 6.2: MaxFS 139264 macroblocks (35,651,584 luma samples); x264 and x265
+  // refuse sides over 16384.
+  constexpr long long kMaxPixels = 35651584;
+  const bool avc_or_hevc = codec == "libx264" || codec == "libx265";
+  if (avc_or_hevc && (static_cast<long long>(width) * height > kMaxPixels || width > 16384 || height > 16384))
+    throw_input_error("{}: video frames of {}x{} exceed what {} encodes (level 6.2: {} pixels, sides up to 16384); "
+                      "make the views smaller (--size)",
+                      what, width, height, codec, kMaxPixels);
+}
+
 struct VideoEncoder::Impl {
   std::string name;
   EncoderOptions options;
@@ -46,8 +59,7 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, const EncoderOptio
   Impl& e = *impl_;
   e.name = path.string();
   e.options = o;
-  if (o.width < 2 || o.height < 2 || o.width % 2 || o.height % 2)
-    throw_input_error("{}: video size {}x{} must be even and at least 2x2", e.name, o.width, o.height);
+  check_video_size(o.codec, o.width, o.height, e.name);
   av_log_set_level(AV_LOG_ERROR);  // x264 prints its statistics at info level
   if (avformat_alloc_output_context2(&e.format, nullptr, nullptr, e.name.c_str()) < 0 || !e.format)
     throw_input_error("{}: no container for this extension", e.name);
@@ -72,11 +84,17 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, const EncoderOptio
   av_opt_set(c->priv_data, "x265-params", "log-level=error", 0);  // x265 logs on its own otherwise
   if (avcodec_open2(c, encoder, nullptr) < 0) throw_input_error("{}: cannot open the {} encoder", e.name, o.codec);
   avcodec_parameters_from_context(e.stream->codecpar, c);
+  // Apple's players and browsers take H.265 in MP4 only under the hvc1 tag.
+  if (c->codec_id == AV_CODEC_ID_HEVC) e.stream->codecpar->codec_tag = MKTAG('h', 'v', 'c', '1');
   e.stream->time_base = c->time_base;
   e.stream->avg_frame_rate = c->framerate;
   if (!(e.format->oformat->flags & AVFMT_NOFILE) && avio_open(&e.format->pb, e.name.c_str(), AVIO_FLAG_WRITE) < 0)
     throw_input_error("{}: cannot create", e.name);
-  if (avformat_write_header(e.format, nullptr) < 0) throw_input_error("{}: cannot write the header", e.name);
+  AVDictionary* muxer_options = nullptr;
+  if (o.fragmented) av_dict_set(&muxer_options, "movflags", "frag_keyframe+empty_moov+default_base_moof", 0);
+  const int header = avformat_write_header(e.format, &muxer_options);
+  av_dict_free(&muxer_options);
+  if (header < 0) throw_input_error("{}: cannot write the header", e.name);
   e.sws = sws_getContext(o.width, o.height, AV_PIX_FMT_RGB24, o.width, o.height, AV_PIX_FMT_YUV420P, SWS_BICUBIC,
                          nullptr, nullptr, nullptr);
   // RGB -> BT.709 limited range (what the stream is tagged with).

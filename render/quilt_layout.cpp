@@ -42,4 +42,9 @@ std::string quilt_suffix(int cols, int rows, double aspect) {
   return fmt::format("_qs{}x{}a{}", cols, rows, a);
 }
 
+double snap_to_display_aspect(double aspect, int tile_height, double display_aspect) {
+  if (tile_height <= 0 || !(display_aspect > 0)) return aspect;
+  return std::abs(aspect - display_aspect) * tile_height <= 1.0 ? display_aspect : aspect;
+}
+
 }  // namespace lfd::render

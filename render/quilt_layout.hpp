@@ -34,4 +34,10 @@ std::optional<QuiltLayout> parse_quilt_name(const std::string& filename);
 // `_qs{C}x{R}a{aspect}` with the aspect written with up to 4 decimals, trailing zeros dropped.
 std::string quilt_suffix(int cols, int rows, double aspect);
 
+// The aspect a quilt of a display is named and interlaced with (docs/file-formats.md "Quilts"):
+// `display_aspect` when tiles `tile_height` rows tall at `aspect` are within a pixel of it in
+// width (a 16:9 panel's views of 910x512 pixels are 1.7778, not 910/512 = 1.7773, which the
+// interlacer would pillarbox by a column), else `aspect` itself; `tile_height` <= 0 snaps nothing.
+double snap_to_display_aspect(double aspect, int tile_height, double display_aspect);
+
 }  // namespace lfd::render

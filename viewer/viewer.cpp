@@ -16,6 +16,8 @@
 #include "lightfield/scene_framing.hpp"
 #include "render/default_camera.hpp"
 #include "scene/gaussian_io.hpp"
+#include "scene/scene_sequence.hpp"
+#include "scene/scene_stream.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "util/progress.hpp"
@@ -42,6 +44,7 @@ struct InputCollector {
   GLFWwindow* control_window = nullptr;
   std::optional<std::string> dropped;
   bool toggle_controls = false;  // C pressed on the display window
+  bool toggle_recording = false;  // V pressed on the display window
 
   bool ignore(GLFWwindow* w) const { return controls && w == control_window && controls->wants_mouse(); }
 };
@@ -77,6 +80,7 @@ void install_callbacks(GLFWwindow* w, InputCollector* in, bool chain_imgui) {
     if (action == GLFW_PRESS && key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(win, GLFW_TRUE);
     if (action == GLFW_PRESS && key == GLFW_KEY_R) collector(win)->events.reset = true;
     if (action == GLFW_PRESS && key == GLFW_KEY_C) collector(win)->toggle_controls = true;
+    if (action == GLFW_PRESS && key == GLFW_KEY_V) collector(win)->toggle_recording = true;
   });
   glfwSetDropCallback(w, [](GLFWwindow* win, int count, const char** paths) {
     if (count > 0) collector(win)->dropped = paths[0];
@@ -213,6 +217,11 @@ struct FrameLoop {
   FrameReport report{};
   FramePacing pacing{};
   std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+  std::unique_ptr<QuiltRecording> recording{};  // V pressed (or --record): the frames shown go here
+  scene::SceneStream* stream = nullptr;          // a moving scene's frames, read ahead
+  std::shared_ptr<const scene::Scene> shown{};   // the moving scene's frame on the GPU
+  int shown_index = 0;
+  std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 
 // Seconds since the last frame; the control window shows the median and p99 of the recent
@@ -252,11 +261,30 @@ void reload_dropped_scene(FrameLoop& loop) {
     loop.frame.replace_scene(loop.scene);
     report_fit(loop.frame.scene_fit_notice());
     loop.camera = OrbitCamera(lightfield::scene_framing(loop.scene));
+    loop.stream = nullptr;  // a dropped scene stops a moving one
     std::cout << fmt::format("loaded {} ({})\n", *input.dropped, fmt::format("{} {}", loop.scene.size(), loop.scene.primitives()));
   } catch (const InputError& e) {
     std::cerr << fmt::format("notice: {}\n", e.what());  // the old scene stays
   }
   input.dropped.reset();
+}
+
+// A moving scene: the frame its clock says (a scripted run: one scene frame per frame shown,
+// waited for), uploaded when it is read; one not read yet keeps the last one on screen. The
+// camera stays: the framing is the first frame's.
+void advance_moving_scene(FrameLoop& loop, int frame_index) {
+  if (!loop.stream) return;
+  const bool scripted = loop.options.frames > 0;
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - loop.started).count();
+  const int index =
+      (scripted ? frame_index : int(elapsed_s * loop.options.scene_fps)) % loop.stream->count();
+  if (index == loop.shown_index) return;
+  std::shared_ptr<const scene::Scene> next = loop.stream->frame(index, scripted);
+  if (!next) return;  // not read yet: a dropped scene frame
+  loop.display.make_current();
+  loop.frame.replace_scene(*next);
+  loop.shown = std::move(next);
+  loop.shown_index = index;
 }
 
 // Render: the light field for the camera, interlaced onto the display; settings the controls
@@ -312,6 +340,43 @@ void run_control_actions(FrameLoop& loop) {
   }
 }
 
+void stop_recording(FrameLoop& loop) {
+  if (!loop.recording) return;
+  std::cout << fmt::format("wrote {}\n", loop.recording->finish().string());
+  loop.recording.reset();
+}
+
+// Recording: V (or --record from the first frame) starts a quilt video of the frames shown, V
+// stops it; a quilt that changes size (other views) ends it, as a video keeps one size.
+void record_shown_frame(FrameLoop& loop, int frame_index) {
+  const ViewerOptions& options = loop.options;
+  const bool toggle = loop.input.toggle_recording || (frame_index == 0 && !options.record_path.empty());
+  loop.input.toggle_recording = false;
+  if (toggle && loop.recording) {
+    stop_recording(loop);
+  } else if (toggle) {
+    if (!options.start_recording) {
+      std::cerr << "notice: this lfd has no video encoder (built without playback): nothing recorded\n";
+    } else if (!loop.frame.quilt().id()) {
+      std::cerr << "notice: the g2lf-direct method renders no quilt: nothing to record\n";
+    } else {
+      const std::filesystem::path path =
+          options.record_path.empty() ? std::filesystem::path("lfd-view-" + timestamp() + ".mp4") : options.record_path;
+      loop.recording = options.start_recording(loop.frame.layout(), path);
+      std::cout << "recording the quilts shown (V stops)\n";
+    }
+  }
+  if (!loop.recording) return;
+  loop.display.make_current();
+  const Image8 quilt = to_uint8(gpu::image_from_texture(loop.frame.quilt()));
+  try {
+    loop.recording->add(quilt);
+  } catch (const std::invalid_argument&) {
+    std::cerr << "notice: the quilt changed size: the recording ends here\n";
+    stop_recording(loop);
+  }
+}
+
 // What a scripted run asked for after its last frame: the quilt and the camera.
 void write_final_outputs(const ViewerOptions& options, const LightFieldFrame& frame, const OrbitCamera& camera) {
   if (!options.quilt_path.empty()) write_quilt(frame, options.quilt_path);
@@ -325,7 +390,11 @@ void write_final_outputs(const ViewerOptions& options, const LightFieldFrame& fr
 
 int run_viewer(const ViewerOptions& options) {
   const auto& d = options.calibration.display;
-  scene::Scene scene = scene::load_scene(options.scene_path);
+  // A moving scene starts from its first frame, read ahead from then on; it frames the camera.
+  std::optional<scene::SceneStream> stream;
+  if (scene::is_scene_sequence(options.scene_path.string()))
+    stream.emplace(scene::find_scene_sequence(options.scene_path.string()), options.frames_ahead);
+  scene::Scene scene = stream ? *stream->frame(0, true) : scene::load_scene(options.scene_path);
   const std::filesystem::path settings_path =
       options.settings_path.value_or(settings_path_for_display(options.display_name));
   ViewerSettings settings = load_settings(settings_path, ViewerSettings{});
@@ -357,6 +426,7 @@ int run_viewer(const ViewerOptions& options) {
   FrameLoop loop{.options = options, .settings_path = settings_path, .settings = settings,
                  .scene = scene, .camera = camera, .display = display, .controls = controls,
                  .frame = frame, .input = input, .previewer = SeenFromPreviewer(frame.calibration())};
+  if (stream) loop.stream = &*stream;
   loop.report.renderer = info.summary();
   loop.report.display = fmt::format("{} ({}x{})", options.display_name, d.screen_w, d.screen_h);
   for (int frame_index = 0; options.frames == 0 || frame_index < options.frames; ++frame_index) {
@@ -366,9 +436,12 @@ int run_viewer(const ViewerOptions& options) {
     const double dt = time_frame(loop, frame_index);
     apply_frame_input(loop, dt);
     reload_dropped_scene(loop);
+    advance_moving_scene(loop, frame_index);
     render_frame(loop, frame_index);
+    record_shown_frame(loop, frame_index);
     run_control_actions(loop);
   }
+  stop_recording(loop);
   display.make_current();
   write_final_outputs(options, frame, camera);
   // A scripted run says how its frames were paced (the intervals after the first frame).

@@ -186,6 +186,47 @@ TEST(RenderForADisplay, PanelEqualsInterlaceForTilesOfAnotherAspect) {
   expect_panel_equals_interlace(write_calibration_json(dir), dir, "", "56x24");
 }
 
+// The 16" landscape Gen3 unit (data/displays/) at a tenth of its pixels, DPI and lens pitch.
+fs::path write_small_gen3(const fs::path& dir) {
+  auto j = nlohmann::ordered_json::parse(
+      read_text_file(test::project_data() / "displays" / "16in-landscape-gen3.visual.json"));
+  j["screenW"]["value"] = 384;
+  j["screenH"]["value"] = 216;
+  j["DPI"]["value"] = 28.3;
+  j["pitch"]["value"] = 4.472;
+  const fs::path path = dir / "gen3.visual.json";
+  std::ofstream(path) << j.dump(1);
+  return path;
+}
+
+TEST(RenderForADisplay, AGen3QuiltNamesThePanelAspectAndInterlacesWithNoBlackColumn) {
+  // 30 rows at 16:9 round to 53 columns (aspect 1.7667): the quilt still names the panel's
+  // 1.7778, and `lfd interlace` of it fills the panel to its first and last column (taken as
+  // 1.7667 it would be fitted 0.6 % narrower: a black column at each edge of the 384 columns).
+  const fs::path dir = test::temp_dir("render_display_gen3_aspect");
+  const fs::path gen3 = write_small_gen3(dir);
+  const auto r = test::run_lfd("render --scene " + kScene + " --calibration " + gen3.string() +
+                               " --views 8 --size 53x30 --chunks 8 --background 1,1,1 --out " +
+                               (dir / "q.png").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const display::QuiltGrid grid = display::quilt_grid_for_views(8, 384.0 / 216.0);
+  const fs::path quilt = written_quilt(dir, "q", grid.cols, grid.rows);
+  EXPECT_NE(quilt.filename().string().find("a1.7778."), std::string::npos) << quilt;
+  const fs::path panel = dir / "panel.png";
+  const auto i = test::run_lfd("interlace --calibration " + gen3.string() + " --quilt " + quilt.string() +
+                               " --out " + panel.string());
+  ASSERT_EQ(i.exit_code, 0) << i.output;
+  const Image8 p = read_image(panel.string(), 3);
+  ASSERT_EQ(p.width, 384);
+  for (int x : {0, p.width - 1}) {
+    int black = 0;
+    for (int y = 0; y < p.height; ++y)
+      black += p.pixels[(size_t(y) * p.width + x) * 3] == 0 && p.pixels[(size_t(y) * p.width + x) * 3 + 1] == 0 &&
+               p.pixels[(size_t(y) * p.width + x) * 3 + 2] == 0;
+    EXPECT_EQ(black, 0) << "column " << x << " has " << black << " black pixels";
+  }
+}
+
 TEST(RenderForADisplay, PanelNeedsADisplayAndAWholeQuilt) {
   const fs::path dir = test::temp_dir("render_display_bad");
   auto r = test::run_lfd("render --scene " + kScene + kRenderSmall + "--panel " +

@@ -132,6 +132,23 @@ TEST(Interlacer, SquareQuiltOnAWidePanelGetsBlackBarsUnlessOverscan) {
   EXPECT_EQ(filled.at(0, 100, 1), 1.f);
 }
 
+TEST(Interlacer, TilesWithinAPixelOfThePanelAspectFillItWithNoBlackColumn) {
+  const DisplayCalibration c = small_display();  // 320x200, aspect 1.6
+  const LensModel lens(c);
+  // 5 x 3: tiles of 83x52 pixels (1.5962; 1.6 would be 83.2 wide), named by their pixels.
+  const QuiltLayout q = layout(5, 3, 415, 156, 83.0 / 52.0);
+  const ImageF filled = interlace(constant_tile_quilt(q, [](int) { return 1.f; }), q, lens);
+  for (int row = 0; row < c.screen_h; ++row) {
+    EXPECT_EQ(filled.at(0, row, 1), 1.f) << "row " << row;
+    EXPECT_EQ(filled.at(c.screen_w - 1, row, 1), 1.f) << "row " << row;
+  }
+  const AspectFit fit = aspect_fit(c, q.aspect, false, q.tile_height());
+  EXPECT_EQ(fit.scale_u, 1.0);
+  EXPECT_EQ(fit.scale_v, 1.0);
+  // Two pixels off is a different view aspect: fitted with bars, as before.
+  EXPECT_GT(aspect_fit(c, 81.0 / 52.0, false, 52).scale_u, 1.0);
+}
+
 TEST(Interlacer, EveryRealCalibrationInterlacesToItsPanelSize) {
   for (const auto& file : test::fixture_calibrations()) {
     SCOPED_TRACE(file.string());

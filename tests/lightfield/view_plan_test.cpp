@@ -126,5 +126,22 @@ TEST(ViewPlan, BadRequestsNameTheirField) {
   EXPECT_THROW(plan_views(nothing_to_frame), std::logic_error);
 }
 
+TEST(ViewPlan, TheQuiltNamesTheDisplaysViewAspectNotItsRoundedTiles) {
+  const display::Calibration gen3 =
+      display::read_calibration(test::project_data() / "displays" / "16in-landscape-gen3.visual.json");
+  ViewRequest request;
+  request.display = &gen3;
+  const ViewPlan plan = plan_views(request, &test_gaussians());
+  EXPECT_EQ(plan.geometry.base.width, 910);  // 512 rows at 16:9 round to 910 columns (1.7773)
+  EXPECT_EQ(plan.geometry.base.height, 512);
+  EXPECT_DOUBLE_EQ(plan.layout.aspect, 3840.0 / 2160.0);
+  EXPECT_TRUE(render::quilt_suffix(plan.layout.cols, plan.layout.rows, plan.layout.aspect).ends_with("a1.7778"));
+  // A size the user chose far from the panel's keeps its own aspect (the interlacer bars it).
+  request.size = display::ViewSize{512, 512};
+  EXPECT_DOUBLE_EQ(plan_views(request, &test_gaussians()).layout.aspect, 1.0);
+  // Without a display the quilt names the camera's aspect.
+  EXPECT_DOUBLE_EQ(plan_views(square_views(render::CameraSpec{}, 64, 40.0, 8)).layout.aspect, 1.0);
+}
+
 }  // namespace
 }  // namespace lfd::lightfield

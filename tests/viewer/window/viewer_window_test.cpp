@@ -116,6 +116,67 @@ TEST(ViewerWindow, ControlStateChangesTheFrame) {
   EXPECT_LT(render::psnr(a, c), 40.0) << "moving the focal plane left the frame unchanged";
 }
 
+// A recording that keeps what it is given (the program's writer is lfd record's video file).
+struct KeptRecording : QuiltRecording {
+  std::vector<Image8>* quilts;
+  int* finished;
+  KeptRecording(std::vector<Image8>* q, int* f) : quilts(q), finished(f) {}
+  void add(const Image8& quilt) override { quilts->push_back(quilt); }
+  std::filesystem::path finish() override {
+    ++*finished;
+    return "kept.mp4";
+  }
+};
+
+TEST(ViewerWindow, ARecordingGetsEveryShownFramesQuilt) {
+  const ViewerSettings s = small_settings();
+  const Files f = write_inputs(s, "record");
+  ViewerOptions o = scripted(f);
+  o.quilt_path = kDir / "record-quilt.png";
+  o.record_path = kDir / "shown.mp4";
+  std::vector<Image8> quilts;
+  int finished = 0;
+  render::QuiltLayout started;
+  o.start_recording = [&](const render::QuiltLayout& layout, const std::filesystem::path& path) {
+    started = layout;
+    EXPECT_EQ(path, kDir / "shown.mp4");
+    return std::make_unique<KeptRecording>(&quilts, &finished);
+  };
+  ASSERT_EQ(run_viewer(o), 0);
+  EXPECT_EQ(finished, 1);
+  ASSERT_EQ(quilts.size(), 3u) << "one quilt per frame shown";
+  EXPECT_EQ(quilts[0].width, started.width);
+  EXPECT_EQ(quilts[0].height, started.height);
+  // The last one is the quilt the run writes after its last frame.
+  for (const auto& e : fs::directory_iterator(kDir))
+    if (e.path().filename().string().starts_with("record-quilt_qs"))
+      EXPECT_GE(render::psnr(to_float(quilts.back()), to_float(read_image(e.path(), 3))), 60.0);
+}
+
+TEST(ViewerWindow, AMovingSceneShowsItsFramesInTurn) {
+  // Two frames: the test scene, and the same with red and blue swapped. A scripted run shows one
+  // scene frame per frame: the recorded quilts alternate, 0 1 0.
+  const ViewerSettings s = small_settings();
+  const Files f = write_inputs(s, "moving");
+  scene::GaussianScene swapped = test_scene();
+  for (size_t i = 0; i < swapped.size(); ++i) std::swap(swapped.sh[i * swapped.sh_coeffs() * 3], swapped.sh[i * swapped.sh_coeffs() * 3 + 2]);
+  fs::copy_file(f.scene, kDir / "moving_0000.ply", fs::copy_options::overwrite_existing);
+  write_text_atomic(kDir / "moving_0001.ply", scene::encode_ply(swapped));
+  ViewerOptions o = scripted(f);
+  o.scene_path = kDir / "moving_%04d.ply";
+  o.record_path = kDir / "moving.mp4";
+  std::vector<Image8> quilts;
+  int finished = 0;
+  o.start_recording = [&](const render::QuiltLayout&, const std::filesystem::path&) {
+    return std::make_unique<KeptRecording>(&quilts, &finished);
+  };
+  ASSERT_EQ(run_viewer(o), 0);
+  ASSERT_EQ(quilts.size(), 3u);
+  const auto db = [](const Image8& a, const Image8& b) { return render::psnr(to_float(a), to_float(b)); };
+  EXPECT_LT(db(quilts[0], quilts[1]), 30.0) << "frame 1 shows the second scene frame";
+  EXPECT_GT(db(quilts[0], quilts[2]), 60.0) << "frame 2 loops back to the first";
+}
+
 TEST(ViewerWindow, BadSceneIsOneLineNamingTheFile) {
   const Files f = write_inputs(small_settings(), "bad");
   std::ofstream(kDir / "broken.ply") << "ply\nformat nonsense\n";
