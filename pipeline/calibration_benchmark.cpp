@@ -201,6 +201,19 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
 // then one row per camera mode.
 namespace {
 
+// What both camera modes' rows share.
+CalibrationBenchmarkRow shared_row(const CalibrationBenchmarkOptions& o, const BenchmarkDisplay& d,
+                                   int seed, const sim::CaptureRig& rig) {
+  CalibrationBenchmarkRow row;
+  row.display = d.label;
+  row.file = d.file;
+  row.seed = seed;
+  row.positions = o.positions;
+  row.capture_width = rig.intrinsics.width;
+  row.capture_height = rig.intrinsics.height;
+  return row;
+}
+
 // A panel nobody described: its probes from the first position, the fine set for the lens
 // they find, one row per camera mode (a probe measurement that fails is a row too).
 void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& bars,
@@ -219,13 +232,7 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
   sim::CaptureRig first = rig;
   first.poses.resize(1);
 
-  CalibrationBenchmarkRow measured;
-  measured.display = d.label;
-  measured.file = d.file;
-  measured.seed = seed;
-  measured.positions = o.positions;
-  measured.capture_width = rig.intrinsics.width;
-  measured.capture_height = rig.intrinsics.height;
+  CalibrationBenchmarkRow measured = shared_row(o, d, seed, rig);
   const auto t0 = std::chrono::steady_clock::now();
   const auto coarse_captures = cached_captures(
       o.cache_dir, capture_cache_key(o, d, seed, coarse, unit) + "-probes", coarse, unit.truth, first);
@@ -290,13 +297,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       sim::PatternSet set = sim::plan_patterns(unit.nominal, po);
       const sim::CaptureRig rig = benchmark_rig(o, unit, seed);
 
-      CalibrationBenchmarkRow measured;  // what both camera modes share
-      measured.display = d.label;
-      measured.file = d.file;
-      measured.seed = seed;
-      measured.positions = o.positions;
-      measured.capture_width = rig.intrinsics.width;
-      measured.capture_height = rig.intrinsics.height;
+      CalibrationBenchmarkRow measured = shared_row(o, d, seed, rig);
       const auto t0 = std::chrono::steady_clock::now();
       const auto captures =
           cached_captures(o.cache_dir, capture_cache_key(o, d, seed, set, unit), set, unit.truth, rig);
