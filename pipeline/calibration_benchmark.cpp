@@ -259,8 +259,11 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
                      {"strength", lens.chosen.strength}};
   const sim::PatternSet fine =
       calib::plan_fine_patterns(coarse, calib::description_from_probes(coarse, lens, {}));
-  const auto captures =
-      cached_captures(o.cache_dir, capture_cache_key(o, d, seed, fine, unit) + "-fine", fine, unit.truth, rig);
+  // The fine set is drawn for what the probes found: that is in its key too.
+  const std::string fine_key = fmt::format("{}-fine-lpi{:.6f}-slope{:.6f}-{}",
+                                           capture_cache_key(o, d, seed, fine, unit),
+                                           lens.pitch_lpi, lens.slope, lens.bgr ? "bgr" : "rgb");
+  const auto captures = cached_captures(o.cache_dir, fine_key, fine, unit.truth, rig);
   measured.simulate_s = seconds_since(t0);
   for (const bool self_calibrate : {false, true}) {
     if (self_calibrate && !o.self_calibrated) break;
