@@ -6,6 +6,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "display/calibration_file.hpp"
+#include "device/drm_monitors.hpp"
 #include "display/cover_layer.hpp"
 #include "sim/patterns.hpp"
 #include "util/error.hpp"
@@ -15,18 +16,12 @@ namespace lfd::apps {
 namespace {
 
 // A panel nobody described: the coarse set (board, white, black, fringes, lens probes).
-int write_undescribed_patterns(const std::string& screen, std::optional<double> dpi,
-                               sim::PatternOptions options, const sim::ProbeOptions& probes,
-                               const std::string& out_dir, bool force) {
-  int w = 0, h = 0;
-  char tail = 0;
-  if (std::sscanf(screen.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 64 || h < 64 ||
-      w > 20000 || h > 20000)
-    throw_input_error("--screen {}: must be WxH in pixels, e.g. 1920x1200", screen);
-  if (!dpi) throw_input_error("--screen needs --dpi (the panel's pixels per inch)");
+int write_undescribed_patterns(int w, int h, double dpi, sim::PatternOptions options,
+                               const sim::ProbeOptions& probes, const std::string& out_dir,
+                               bool force) {
   // Coarse sheets: the board's marker cells must span several lenses of 10 LPI.
   options.board_squares_short = std::min(options.board_squares_short, 4);
-  const sim::PatternSet set = sim::plan_undescribed_patterns(w, h, *dpi, options, probes);
+  const sim::PatternSet set = sim::plan_undescribed_patterns(w, h, dpi, options, probes);
   sim::write_pattern_set(out_dir, set, force);
   std::printf("wrote %zu patterns (%dx%d: board, white, black, %d fringes, %zu lens probes of %d "
               "steps) and manifest.json to %s/patterns\n",
@@ -67,6 +62,11 @@ int RunPatterns(int argc, char** argv) {
   app.add_option("--screen", screen,
                  "a panel nobody described: its resolution WxH (with --dpi; instead of "
                  "--display): the lens probes, no lens description needed");
+  std::optional<std::string> monitor;
+  app.add_option("--monitor", monitor,
+                 "a panel nobody described, attached: the connected monitor whose EDID name "
+                 "starts with this (\"\" for the only one) gives the resolution and, from its "
+                 "physical size, the DPI (instead of --screen and --dpi)");
   app.add_option("--dpi", dpi, "the undescribed panel's pixels per inch (diagonal px / inches)")
       ->check(CLI::Range(20.0, 2000.0));
   app.add_option("--min-lpi", probes.min_lpi,
@@ -101,9 +101,24 @@ int RunPatterns(int argc, char** argv) {
       ->check(CLI::Range(1.0, 3.0));
   app.add_flag("--force", force, "replace existing patterns");
   if (auto code = parse(app, argc, argv)) return *code;
-  if (!screen.empty()) return write_undescribed_patterns(screen, dpi, options, probes, out_dir, force);
+  if (monitor) {
+    const device::MonitorPanel panel =
+        device::monitor_panel(device::connected_monitors("/"), *monitor);
+    std::printf("monitor %s: %.1f dpi\n", panel.monitor.c_str(), panel.dpi);
+    return write_undescribed_patterns(panel.width_px, panel.height_px, panel.dpi, options, probes,
+                                      out_dir, force);
+  }
+  if (!screen.empty()) {
+    int w = 0, h = 0;
+    char tail = 0;
+    if (std::sscanf(screen.c_str(), "%dx%d%c", &w, &h, &tail) != 2 || w < 64 || h < 64 ||
+        w > 20000 || h > 20000)
+      throw_input_error("--screen {}: must be WxH in pixels, e.g. 1920x1200", screen);
+    if (!dpi) throw_input_error("--screen needs --dpi (the panel's pixels per inch)");
+    return write_undescribed_patterns(w, h, *dpi, options, probes, out_dir, force);
+  }
   if (!display_source.given())
-    throw_input_error("--display, --device or --screen WxH --dpi D is required");
+    throw_input_error("--display, --device, --screen WxH --dpi D or --monitor NAME is required");
 
   display::Calibration nominal = display_source.load();
   // visual.json cannot say what covers the lenses: the family's block unless told.
