@@ -17,11 +17,15 @@ namespace {
 
 // A panel nobody described: the coarse set (board, white, black, fringes, lens probes).
 int write_undescribed_patterns(int w, int h, double dpi, sim::PatternOptions options,
-                               const sim::ProbeOptions& probes, const std::string& out_dir,
-                               bool force) {
+                               const sim::ProbeOptions& probes, const display::CoverLayer& cover,
+                               const std::string& out_dir, bool force) {
   // Coarse sheets: the board's marker cells must span several lenses of 10 LPI.
   options.board_squares_short = std::min(options.board_squares_short, 4);
-  const sim::PatternSet set = sim::plan_undescribed_patterns(w, h, dpi, options, probes);
+  sim::PatternSet set = sim::plan_undescribed_patterns(w, h, dpi, options, probes);
+  // Nothing is known of a cover unless given: a bare sheet (the fine set keeps what is here).
+  set.nominal.display.cover = cover;
+  std::printf("cover layer: %.4g m at n = %.3g (%s)\n", cover.thickness_m, cover.refractive_index,
+              cover.present() ? "given" : "none given: a bare sheet");
   sim::write_pattern_set(out_dir, set, force);
   std::printf("wrote %zu patterns (%dx%d: board, white, black, %d fringes, %zu lens probes of %d "
               "steps) and manifest.json to %s/patterns\n",
@@ -101,12 +105,15 @@ int RunPatterns(int argc, char** argv) {
       ->check(CLI::Range(1.0, 3.0));
   app.add_flag("--force", force, "replace existing patterns");
   if (auto code = parse(app, argc, argv)) return *code;
+  display::CoverLayer given_cover;
+  if (cover_thickness_m) given_cover.thickness_m = *cover_thickness_m;
+  if (cover_index) given_cover.refractive_index = *cover_index;
   if (monitor) {
     const device::MonitorPanel panel =
         device::monitor_panel(device::connected_monitors("/"), *monitor);
     std::printf("monitor %s: %.1f dpi\n", panel.monitor.c_str(), panel.dpi);
     return write_undescribed_patterns(panel.width_px, panel.height_px, panel.dpi, options, probes,
-                                      out_dir, force);
+                                      given_cover, out_dir, force);
   }
   if (!screen.empty()) {
     int w = 0, h = 0;
@@ -115,7 +122,7 @@ int RunPatterns(int argc, char** argv) {
         w > 20000 || h > 20000)
       throw_input_error("--screen {}: must be WxH in pixels, e.g. 1920x1200", screen);
     if (!dpi) throw_input_error("--screen needs --dpi (the panel's pixels per inch)");
-    return write_undescribed_patterns(w, h, *dpi, options, probes, out_dir, force);
+    return write_undescribed_patterns(w, h, *dpi, options, probes, given_cover, out_dir, force);
   }
   if (!display_source.given())
     throw_input_error("--display, --device, --screen WxH --dpi D or --monitor NAME is required");
