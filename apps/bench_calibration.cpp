@@ -81,6 +81,10 @@ void add_bench_calibration_options(CLI::App& app, BenchCalibrationArgs& a) {
                "calibrate each unit twice from the same photos: with the camera given, then "
                "self-calibrated (no camera file); the camera column shows the focal length's "
                "error and sigma");
+  app.add_flag("--undescribed", o.undescribed,
+               "panels nobody described (a 10\" tablet with a positive slant, a 15.6\" 4K BGR "
+               "monitor, a 20 LPI sheet): lens probes from the first position, then the fine "
+               "set for the lens they find");
   app.add_flag("--show-poses", a.show_poses,
                "diagnostic: print each position's camera error (registration, refined)");
 }
@@ -120,6 +124,7 @@ void print_row(const pipeline::CalibrationBenchmarkRow& r, bool show_poses, int&
     return;
   }
   if (show_poses) print_poses(r);
+  if (!r.probes.is_null()) std::fprintf(stderr, "  probes: %s\n", r.probes.dump().c_str());
   failures += r.within_bars ? 0 : 1;
   const auto& e = *r.errors;
   std::string ratios;

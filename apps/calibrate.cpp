@@ -7,6 +7,8 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibrate.hpp"
+#include "calib/undescribed.hpp"
+#include "util/atomic_file.hpp"
 #include "live/hardware_live_calibration.hpp"
 #include "live/live_calibration.hpp"
 #include "live/live_session.hpp"
@@ -156,6 +158,32 @@ calib::CalibrationOutcome calibrate_from_folder(
   return outcome;
 }
 
+// A panel nobody described, step 1 (DIR holds the probes' photos, DIR/fine nothing yet): the
+// lens from the probes, and the fine set drawn for it in DIR/fine. Nothing else is written.
+void measure_probes_and_draw_fine_set(const std::string& dir, const sim::PatternSet& coarse) {
+  calib::check_probe_photos(dir, coarse);
+  std::vector<std::string> warnings;
+  const auto captures = sim::read_captures(dir, coarse, warnings);
+  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  const calib::ProbeLensEstimate lens = calib::measure_lens_from_probes(coarse, captures.front());
+  calib::UndescribedAssumptions assumptions;
+  assumptions.cover = coarse.nominal.display.cover;
+  assumptions.cover_given = assumptions.cover.present();
+  const display::Calibration description = calib::description_from_probes(coarse, lens, assumptions);
+  const sim::PatternSet fine = calib::plan_fine_patterns(coarse, description);
+  const auto fine_dir = calib::fine_folder(dir);
+  sim::write_pattern_set(fine_dir, fine, false);
+  std::printf("lens from the probes (%s): pitch %.4f lpi, slant %+.4f deg (slope %.5f), %s "
+              "stripes; probe %d, moire %.1f times its surroundings\n",
+              lens.position.c_str(), lens.pitch_lpi, lens.slant_deg, lens.slope,
+              lens.bgr ? "BGR" : "RGB", lens.chosen.probe, lens.chosen.strength);
+  std::printf("wrote the fine set for it to %s/patterns (%zu patterns)\nnext: photograph them "
+              "from 2-3 positions at clearly different distances (%s/captures/<position>/), "
+              "then run `lfd calibrate %s` again\n",
+              fine_dir.string().c_str(), fine.patterns.size(), fine_dir.string().c_str(),
+              dir.c_str());
+}
+
 // Printing: the warnings, the report (written even when a gate fails, to show why), the
 // gates, then the calibration files and its figures.
 void report_and_write(const CalibrateArgs& a, const calib::CalibrationOutcome& outcome,
@@ -210,11 +238,39 @@ int RunCalibrate(int argc, char** argv) {
   add_calibrate_options(app, args);
   if (auto code = parse(app, argc, argv)) return *code;
   check_outputs_and_read_camera(args);
+  // A panel nobody described: its probes first, then (DIR/fine photographed) the fine set.
+  std::optional<calib::UndescribedAssumptions> undescribed;
+  if (!args.live && !args.dir.empty() &&
+      std::filesystem::exists(std::filesystem::path(args.dir) / "patterns" / "manifest.json")) {
+    const sim::PatternSet coarse = sim::read_pattern_set(args.dir);
+    if (coarse.undescribed) {
+      const auto fine = calib::fine_folder(args.dir);
+      if (!std::filesystem::exists(fine / "captures")) {
+        measure_probes_and_draw_fine_set(args.dir, coarse);
+        return 0;
+      }
+      undescribed = calib::UndescribedAssumptions{};
+      undescribed->cover = coarse.nominal.display.cover;
+      undescribed->cover_given = undescribed->cover.present();
+      args.dir = fine.string();
+      args.options.colour_order.estimate = true;  // the probes' reading, checked by the photos
+    }
+  }
   // The unit's own description (its factory calibration with --device): the report compares
   // the recovered lens with it.
   std::optional<report::ReferenceCalibration> reference;
   const calib::CalibrationOutcome outcome =
       args.live ? calibrate_live(args, reference) : calibrate_from_folder(args, reference);
+  if (undescribed) {
+    const sim::PatternSet fine = sim::read_pattern_set(args.dir);
+    const auto what = calib::undescribed_report(fine.nominal, *undescribed);
+    std::printf("undescribed panel: %s\n", what.dump().c_str());
+    if (!args.report_dir.empty()) {
+      std::filesystem::create_directories(args.report_dir);
+      write_text_atomic(std::filesystem::path(args.report_dir) / "undescribed.json",
+                        what.dump(2) + "\n");
+    }
+  }
   report_and_write(args, outcome, reference);
   return 0;
 }

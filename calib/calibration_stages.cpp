@@ -235,7 +235,7 @@ void identify_patterns(const PositionContext& ctx, const PositionState& state) {
       const cv::Point2d centre = (corners[0] + corners[1] + corners[2] + corners[3]) * 0.25;
       if (cv::norm(centre - predicted_markers[size_t(id % 4)]) > options.marker_search_fraction * diag)
         continue;
-      if (id / 4 == p.index) {
+      if (id / 4 == sim::marker_group(p.index)) {
         own[id % 4] = centre;
       } else if (id / 4 < int(set.patterns.size())) {
         others.insert(id / 4);
@@ -269,7 +269,9 @@ void identify_patterns(const PositionContext& ctx, const PositionState& state) {
     if (moved.empty()) continue;
     std::sort(moved.begin(), moved.end());
     const double median = moved[moved.size() / 2];
-    if (median > std::max(options.max_motion_px, options.max_motion_diag_fraction * diag))
+    // Plus a lens: the markers are seen through the lens array, whose sampling moves their
+    // edges by up to a lens between patterns (a coarse sheet's lens spans several pixels).
+    if (median > std::max(options.max_motion_px, options.max_motion_diag_fraction * diag) + lens_px)
       throw_input_error(
           "{}: the camera moved between the captures of position {} (the corner markers are "
           "{:.1f} px away from where {} shows them); use a tripod and a remote release",

@@ -25,6 +25,8 @@ std::optional<EdidSummary> parse_edid(std::span<const uint8_t> edid) {
       if (summary.width_px == 0) {
         summary.width_px = d[2] | ((d[4] & 0xf0) << 4);
         summary.height_px = d[5] | ((d[7] & 0xf0) << 4);
+        summary.width_mm = d[12] | ((d[14] & 0xf0) << 4);
+        summary.height_mm = d[13] | ((d[14] & 0x0f) << 8);
       }
     } else if (d[3] == 0xfc) {
       std::string name;
@@ -32,6 +34,10 @@ std::optional<EdidSummary> parse_edid(std::span<const uint8_t> edid) {
       while (!name.empty() && name.back() == ' ') name.pop_back();
       summary.name = name;
     }
+  }
+  if (summary.width_mm == 0 || summary.height_mm == 0) {  // the basic block's centimetres
+    summary.width_mm = 10 * edid[21];
+    summary.height_mm = 10 * edid[22];
   }
   return summary;
 }
@@ -51,7 +57,8 @@ std::vector<ConnectedMonitor> connected_monitors(const fs::path& root) {
     const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const auto edid = parse_edid(bytes);
     if (!edid) continue;
-    found.push_back({entry.substr(dash + 1), {edid->name, edid->width_px, edid->height_px}});
+    found.push_back({entry.substr(dash + 1), {edid->name, edid->width_px, edid->height_px},
+                     edid->width_mm, edid->height_mm});
   }
   std::sort(found.begin(), found.end(),
             [](const ConnectedMonitor& a, const ConnectedMonitor& b) { return a.connector < b.connector; });
@@ -84,6 +91,34 @@ MonitorMatch match_monitor(const std::vector<ConnectedMonitor>& monitors,
     match.problem = e.what();
   }
   return match;
+}
+
+MonitorPanel monitor_panel(const std::vector<ConnectedMonitor>& monitors,
+                           const std::string& name_prefix) {
+  std::vector<const ConnectedMonitor*> fit;
+  std::string all;
+  for (const ConnectedMonitor& m : monitors) {
+    all += fmt::format("{}{} \"{}\" {}x{}", all.empty() ? "" : ", ", m.connector, m.monitor.name,
+                       m.monitor.width_px, m.monitor.height_px);
+    if (m.monitor.name.starts_with(name_prefix)) fit.push_back(&m);
+  }
+  if (fit.size() != 1)
+    throw_input_error("--monitor {}: {} connected monitors fit ({}); name one by the start of "
+                      "its name, or give --screen WxH --dpi D",
+                      name_prefix.empty() ? "\"\"" : name_prefix, fit.size(),
+                      all.empty() ? "none connected" : all);
+  const ConnectedMonitor& m = *fit.front();
+  if (m.width_mm <= 0 || m.height_mm <= 0 || m.monitor.width_px <= 0)
+    throw_input_error("--monitor {}: {} \"{}\" does not say its physical size in its EDID; give "
+                      "--screen WxH --dpi D",
+                      name_prefix, m.connector, m.monitor.name);
+  MonitorPanel p;
+  p.width_px = m.monitor.width_px;
+  p.height_px = m.monitor.height_px;
+  p.dpi = m.monitor.width_px / (m.width_mm / 25.4);
+  p.monitor = fmt::format("{} \"{}\" {}x{}, {} x {} mm", m.connector, m.monitor.name,
+                          p.width_px, p.height_px, m.width_mm, m.height_mm);
+  return p;
 }
 
 }  // namespace lfd::device

@@ -8,6 +8,8 @@
 #include "display/cover_layer.hpp"
 #include "display/visual_json.hpp"
 #include "pipeline/capture_cache.hpp"
+#include "calib/undescribed.hpp"
+#include "sim/undescribed_units.hpp"
 #include "util/error.hpp"
 
 namespace lfd::pipeline {
@@ -100,6 +102,7 @@ nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
   row["gate_values"] = gate_values;
   row["uncertainty"] = uncertainty;
   row["error_over_sigma"] = error_over_sigma;
+  if (!probes.is_null()) row["probes"] = probes;
   row["seconds"] = {{"simulate", simulate_s}, {"calibrate", calibrate_s}, {"solve", solve_s}};
   return row;
 }
@@ -152,6 +155,8 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
   row.camera_self_calibrated = self_calibrate;
   calib::CalibrateOptions options;
   if (!self_calibrate) options.camera = rig.intrinsics;
+  // The probes' subpixel order is a measurement too: the photos confirm or replace it.
+  options.colour_order.estimate = calib::from_probes(set);
   options.decode.correct_exposure_drift = !o.no_exposure_fix;
   options.decode.exposure_row_gain = !o.no_row_exposure_fix;
   options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
@@ -194,11 +199,94 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
 
 // Per display kind and seed: a synthetic unit, its photographs (simulated or from the cache),
 // then one row per camera mode.
+namespace {
+
+// What both camera modes' rows share.
+CalibrationBenchmarkRow shared_row(const CalibrationBenchmarkOptions& o, const BenchmarkDisplay& d,
+                                   int seed, const sim::CaptureRig& rig) {
+  CalibrationBenchmarkRow row;
+  row.display = d.label;
+  row.file = d.file;
+  row.seed = seed;
+  row.positions = o.positions;
+  row.capture_width = rig.intrinsics.width;
+  row.capture_height = rig.intrinsics.height;
+  return row;
+}
+
+// A panel nobody described: its probes from the first position, the fine set for the lens
+// they find, one row per camera mode (a probe measurement that fails is a row too).
+void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& bars,
+                     const sim::UndescribedPanel& panel, int seed,
+                     std::vector<CalibrationBenchmarkRow>& rows,
+                     const std::function<void(const CalibrationBenchmarkRow&)>& on_row) {
+  sim::SyntheticUnitOptions so;
+  so.seed = uint64_t(seed);
+  const sim::SyntheticUnit unit = sim::make_synthetic_unit(panel.display, so);
+  const BenchmarkDisplay d{panel.label, "undescribed-" + std::to_string(std::hash<std::string>{}(panel.label) % 100000)};
+  const auto& t = unit.truth.display;
+  sim::PatternOptions po;
+  po.board_squares_short = std::min(o.board_squares, 4);  // as `lfd patterns --screen` draws it
+  const sim::PatternSet coarse = sim::plan_undescribed_patterns(t.screen_w, t.screen_h, t.dpi, po);
+  const sim::CaptureRig rig = benchmark_rig(o, unit, seed);
+  sim::CaptureRig first = rig;
+  first.poses.resize(1);
+
+  CalibrationBenchmarkRow measured = shared_row(o, d, seed, rig);
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto coarse_captures = cached_captures(
+      o.cache_dir, capture_cache_key(o, d, seed, coarse, unit) + "-probes", coarse, unit.truth, first);
+  calib::ProbeLensEstimate lens;
+  try {
+    lens = calib::measure_lens_from_probes(coarse, coarse_captures.front());
+  } catch (const std::exception& ex) {
+    measured.failure = std::string("probes: ") + ex.what();
+    measured.simulate_s = seconds_since(t0);
+    if (on_row) on_row(measured);
+    rows.push_back(measured);
+    return;
+  }
+  const double true_slant = display::slant_deg_of_slope(t.slope);
+  measured.probes = {{"probes", coarse.probes.size()},
+                     {"photos", coarse.patterns.size()},
+                     {"pitch_lpi", lens.pitch_lpi},
+                     {"pitch_rel_error", lens.pitch_lpi / t.pitch_lpi - 1},
+                     {"slant_deg", lens.slant_deg},
+                     {"slant_error_deg", lens.slant_deg - true_slant},
+                     {"bgr", lens.bgr},
+                     {"subpixel_order_right", lens.bgr == t.flip_subp},
+                     {"probe", lens.chosen.probe},
+                     {"strength", lens.chosen.strength}};
+  const sim::PatternSet fine =
+      calib::plan_fine_patterns(coarse, calib::description_from_probes(coarse, lens, {}));
+  // The fine set is drawn for what the probes found: that is in its key too.
+  const std::string fine_key = fmt::format("{}-fine-lpi{:.6f}-slope{:.6f}-{}",
+                                           capture_cache_key(o, d, seed, fine, unit),
+                                           lens.pitch_lpi, lens.slope, lens.bgr ? "bgr" : "rgb");
+  const auto captures = cached_captures(o.cache_dir, fine_key, fine, unit.truth, rig);
+  measured.simulate_s = seconds_since(t0);
+  for (const bool self_calibrate : {false, true}) {
+    if (self_calibrate && !o.self_calibrated) break;
+    CalibrationBenchmarkRow row = calibrate_row(o, bars, fine, captures, unit, rig, measured, self_calibrate);
+    if (on_row) on_row(row);
+    rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace
+
 std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
     const CalibrationBenchmarkOptions& o, const AccuracyBars& bars,
     const std::function<void(const CalibrationBenchmarkRow&)>& on_row) {
   o.check();
   std::vector<CalibrationBenchmarkRow> rows;
+  if (o.undescribed) {
+    for (const auto& panel : sim::undescribed_panels()) {
+      if (!o.only.empty() && panel.label.find(o.only) == std::string::npos) continue;
+      for (int seed = 1; seed <= o.seeds; ++seed) run_undescribed(o, bars, panel, seed, rows, on_row);
+    }
+    return rows;
+  }
   for (const auto& d : benchmark_displays()) {
     if (!o.only.empty() && d.label.find(o.only) == std::string::npos) continue;
     auto real = display::read_visual_json(o.data_dir / "calibrations" / d.file);
@@ -212,13 +300,7 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       sim::PatternSet set = sim::plan_patterns(unit.nominal, po);
       const sim::CaptureRig rig = benchmark_rig(o, unit, seed);
 
-      CalibrationBenchmarkRow measured;  // what both camera modes share
-      measured.display = d.label;
-      measured.file = d.file;
-      measured.seed = seed;
-      measured.positions = o.positions;
-      measured.capture_width = rig.intrinsics.width;
-      measured.capture_height = rig.intrinsics.height;
+      CalibrationBenchmarkRow measured = shared_row(o, d, seed, rig);
       const auto t0 = std::chrono::steady_clock::now();
       const auto captures =
           cached_captures(o.cache_dir, capture_cache_key(o, d, seed, set, unit), set, unit.truth, rig);

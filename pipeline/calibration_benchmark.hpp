@@ -63,6 +63,10 @@ struct CalibrationBenchmarkOptions {
   // (photos keep the cover), to measure what ignoring it costs.
   bool bare_panels = false;
   bool solver_without_cover = false;
+  // Panels nobody described (sim/undescribed_units.hpp) instead of the shared calibrations:
+  // the lens probes photographed from the first position, the fine set drawn for the lens
+  // they find, then the same pipeline (docs/calibration.md, "A panel nobody described").
+  bool undescribed = false;
   // Throws InputError("calibration benchmark: <field>: ...") for values out of range.
   void check() const;
 };
@@ -89,6 +93,8 @@ struct CalibrationBenchmarkRow {
   // sigmas cover the errors (issue #12); absent where a sigma is missing or zero.
   std::map<std::string, double> error_over_sigma;
   std::vector<PoseError> poses;
+  // Undescribed panels: what the probes found (pitch, slant, subpixel order) against the truth.
+  nlohmann::ordered_json probes;
   double simulate_s = 0, calibrate_s = 0, solve_s = 0;
   nlohmann::ordered_json to_json() const;
 };

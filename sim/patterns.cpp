@@ -22,7 +22,8 @@ constexpr int kManifestVersion = 1;
 
 PatternKind kind_from_string(const std::string& s, const std::string& where) {
   for (PatternKind k : {PatternKind::kBoard, PatternKind::kWhite, PatternKind::kBlack,
-                        PatternKind::kPhase, PatternKind::kFringeX, PatternKind::kFringeY})
+                        PatternKind::kPhase, PatternKind::kFringeX, PatternKind::kFringeY,
+                        PatternKind::kProbe})
     if (s == to_string(k)) return k;
   throw_input_error("{}: patterns: unknown pattern kind '{}'", where, s);
 }
@@ -66,7 +67,7 @@ void draw_corner_markers(const PatternSet& set, int index, Image8& image) {
   auto dict = marker_dictionary();
   for (int corner = 0; corner < 4; ++corner) {
     cv::Mat marker;
-    cv::aruco::drawMarker(dict, 4 * index + corner, m.side_px, marker, 1);
+    cv::aruco::drawMarker(dict, 4 * marker_group(index) + corner, m.side_px, marker, 1);
     const int x0 = int(std::lround(m.centres_px[corner].x + 0.5 - m.side_px / 2.0));
     const int y0 = int(std::lround(m.centres_px[corner].y + 0.5 - m.side_px / 2.0));
     for (int y = y0 - m.quiet_px; y < y0 + m.side_px + m.quiet_px; ++y)
@@ -89,6 +90,7 @@ const char* to_string(PatternKind kind) {
     case PatternKind::kPhase: return "phase";
     case PatternKind::kFringeX: return "fringe_x";
     case PatternKind::kFringeY: return "fringe_y";
+    case PatternKind::kProbe: return "probe";
   }
   return "?";
 }
@@ -128,14 +130,11 @@ bool PatternSet::under_marker(double u, double v, double margin_px) const {
   return false;
 }
 
-PatternSet plan_patterns(const display::Calibration& nominal, const PatternOptions& options) {
-  if (options.phase_steps < 3 || options.phase_steps > 32)
-    throw_input_error("patterns: phase steps must be between 3 and 32 (got {})",
-                      options.phase_steps);
-  PatternSet set;
-  set.nominal = nominal;
-  set.phase_steps = options.phase_steps;
-  const auto& d = nominal.display;
+namespace {
+
+// The board and the corner markers: the same for every set of a screen.
+void plan_layout(PatternSet& set, const PatternOptions& options) {
+  const auto& d = set.nominal.display;
   const int short_px = std::min(d.screen_w, d.screen_h);
   const int long_px = std::max(d.screen_w, d.screen_h);
 
@@ -160,15 +159,18 @@ PatternSet plan_patterns(const display::Calibration& nominal, const PatternOptio
                   {d.screen_w - 1 - inset, inset},
                   {d.screen_w - 1 - inset, d.screen_h - 1 - inset},
                   {inset, d.screen_h - 1 - inset}};
+}
 
+void add_pattern(PatternSet& set, std::string file, PatternKind kind, int step, int probe = 0) {
+  set.patterns.push_back({std::move(file), kind, step, probe, int(set.patterns.size())});
+}
+
+void add_fringes(PatternSet& set, const PatternOptions& options) {
+  const auto& d = set.nominal.display;
+  const int short_px = std::min(d.screen_w, d.screen_h);
   auto add = [&](std::string file, PatternKind kind, int step) {
-    set.patterns.push_back({std::move(file), kind, step, int(set.patterns.size())});
+    add_pattern(set, std::move(file), kind, step);
   };
-  add("00_board.png", PatternKind::kBoard, 0);
-  add("01_white.png", PatternKind::kWhite, 0);
-  add("02_black.png", PatternKind::kBlack, 0);
-  for (int k = 0; k < set.phase_steps; ++k)
-    add(fmt::format("{:02d}_phase_{}of{}.png", 3 + k, k, set.phase_steps), PatternKind::kPhase, k);
   if (options.fringes) {
     // A period long against the board registration's error (a few pixels, so the fringe
     // order follows from it) and against a lens, short enough for a precise phase.
@@ -182,6 +184,55 @@ PatternSet plan_patterns(const display::Calibration& nominal, const PatternOptio
   } else {
     set.fringe_steps = 0;
   }
+}
+
+void add_board_white_black(PatternSet& set) {
+  add_pattern(set, "00_board.png", PatternKind::kBoard, 0);
+  add_pattern(set, "01_white.png", PatternKind::kWhite, 0);
+  add_pattern(set, "02_black.png", PatternKind::kBlack, 0);
+}
+
+}  // namespace
+
+PatternSet plan_patterns(const display::Calibration& nominal, const PatternOptions& options) {
+  if (options.phase_steps < 3 || options.phase_steps > 32)
+    throw_input_error("patterns: phase steps must be between 3 and 32 (got {})",
+                      options.phase_steps);
+  PatternSet set;
+  set.nominal = nominal;
+  set.phase_steps = options.phase_steps;
+  plan_layout(set, options);
+  add_board_white_black(set);
+  for (int k = 0; k < set.phase_steps; ++k)
+    add_pattern(set, fmt::format("{:02d}_phase_{}of{}.png", 3 + k, k, set.phase_steps),
+                PatternKind::kPhase, k);
+  add_fringes(set, options);
+  return set;
+}
+
+PatternSet plan_undescribed_patterns(int screen_w, int screen_h, double dpi,
+                                     const PatternOptions& options, const ProbeOptions& probes) {
+  PatternSet set;
+  set.undescribed = true;
+  set.probes = plan_lens_probes(screen_w, screen_h, dpi, probes);
+  set.probe_steps = probes.steps;
+  set.phase_steps = options.phase_steps;
+  // The screen alone: no lens is known (the lens fields are placeholders nothing reads).
+  display::DisplayCalibration& d = set.nominal.display;
+  d.serial = "undescribed";
+  d.screen_w = screen_w;
+  d.screen_h = screen_h;
+  d.dpi = dpi;
+  d.check("patterns: --screen/--dpi");
+  plan_layout(set, options);
+  add_board_white_black(set);
+  add_fringes(set, options);
+  for (size_t j = 0; j < set.probes.size(); ++j)
+    for (int k = 0; k < set.probe_steps; ++k)
+      add_pattern(set,
+                  fmt::format("{:02d}_probe_{:02d}_{}of{}.png", int(set.patterns.size()), j, k,
+                              set.probe_steps),
+                  PatternKind::kProbe, k, int(j));
   return set;
 }
 
@@ -217,6 +268,21 @@ Image8 render_pattern(const PatternSet& set, const PatternInfo& pattern) {
             const double f = lens.subpixel_view_fraction(x, row, c);
             const double value = 0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * (f - shift));
             image.at(x, row, c) = uint8_t(std::lround(255.0 * value));
+          }
+      break;
+    }
+    case PatternKind::kProbe: {
+      // sim/lens_probes.hpp: every subpixel at its place in RGB stripes.
+      const LensProbe& probe = set.probes.at(size_t(pattern.probe));
+      const double shift = double(pattern.step) / set.probe_steps;
+      for (int row = 0; row < d.screen_h; ++row)
+        for (int x = 0; x < d.screen_w; ++x)
+          for (int c = 0; c < 3; ++c) {
+            const double u = (x + (c + 0.5) / 3.0) / d.screen_w;
+            const double v = 1.0 - (row + 0.5) / d.screen_h;
+            const double t = probe.fu * u + probe.fv * v - shift;
+            image.at(x, row, c) =
+                uint8_t(std::lround(255.0 * (0.5 + 0.5 * std::cos(2.0 * std::numbers::pi * t))));
           }
       break;
     }
@@ -279,6 +345,15 @@ void write_pattern_set(const std::filesystem::path& dir, const PatternSet& set, 
   j["format"] = kManifestFormat;
   j["version"] = kManifestVersion;
   j["nominal"] = display::to_json(set.nominal);
+  if (set.undescribed) {
+    j["undescribed"] = true;
+    j["probe_steps"] = set.probe_steps;
+    ojson probes = ojson::array();
+    for (const auto& p : set.probes)
+      probes.push_back({{"fu", p.fu}, {"fv", p.fv}, {"window_u", p.window_u},
+                        {"window_v", p.window_v}});
+    j["probes"] = probes;
+  }
   j["phase_steps"] = set.phase_steps;
   j["fringe_steps"] = set.fringe_steps;
   j["fringe_period_px"] = set.fringe_period_px;
@@ -291,7 +366,7 @@ void write_pattern_set(const std::filesystem::path& dir, const PatternSet& set, 
                          {"side_px", set.markers.side_px},
                          {"quiet_px", set.markers.quiet_px},
                          {"centres_px", points_to_json(set.markers.centres_px)},
-                         {"ids", "4 * pattern index + corner (TL, TR, BR, BL)"}};
+                         {"ids", "4 * (pattern index mod 62) + corner (TL, TR, BR, BL)"}};
   ojson list = ojson::array();
   for (const auto& p : set.patterns) {
     ojson e = {{"file", p.file}, {"kind", to_string(p.kind)}, {"index", p.index}};
@@ -306,6 +381,12 @@ void write_pattern_set(const std::filesystem::path& dir, const PatternSet& set, 
       e["shows"] = p.kind == PatternKind::kFringeX
                        ? "0.5 + 0.5 cos(2 pi (x / fringe_period_px - step/steps)) per pixel"
                        : "0.5 + 0.5 cos(2 pi (row / fringe_period_px - step/steps)) per pixel";
+    }
+    if (p.kind == PatternKind::kProbe) {
+      e["probe"] = p.probe;
+      e["step"] = p.step;
+      e["steps"] = set.probe_steps;
+      e["shows"] = "0.5 + 0.5 cos(2 pi (fu u + fv v - step/steps)) per subpixel (RGB stripes)";
     }
     list.push_back(e);
   }
@@ -334,6 +415,29 @@ PatternSet read_pattern_set(const std::filesystem::path& dir) {
     require_field(j.contains("nominal"), where, "nominal", "is missing");
     set.nominal = display::parse_calibration(j["nominal"].dump(), where + ": nominal");
     set.phase_steps = int_field(j.value("phase_steps", ojson(0)), where, "phase_steps", 3, 32);
+    set.undescribed = j.contains("undescribed");
+    if (set.undescribed) {
+      require_field(j["undescribed"] == true, where, "undescribed", "must be true if present");
+      set.probe_steps = int_field(j.value("probe_steps", ojson(0)), where, "probe_steps", 3, 32);
+      const auto& probes = j.at("probes");
+      require_field(probes.is_array() && !probes.empty() && probes.size() <= 200, where,
+                    "probes", "must be an array of 1..200 probes");
+      for (const auto& e : probes) {
+        LensProbe p;
+        double* fields[] = {&p.fu, &p.fv, &p.window_u, &p.window_v};
+        const char* names[] = {"fu", "fv", "window_u", "window_v"};
+        for (int i = 0; i < 4; ++i) {
+          require_field(e.contains(names[i]) && e[names[i]].is_number(), where,
+                        std::string("probes.") + names[i], "must be a number");
+          *fields[i] = e[names[i]].get<double>();
+          require_field(std::isfinite(*fields[i]) && std::abs(*fields[i]) <= 1e5 &&
+                            (i < 2 || *fields[i] > 0),
+                        where, std::string("probes.") + names[i],
+                        i < 2 ? "must be finite, at most 1e5" : "must be positive, at most 1e5");
+        }
+        set.probes.push_back(p);
+      }
+    }
     // Manifests written before the fringe patterns existed have none: board-only registration.
     set.fringe_steps = int_field(j.value("fringe_steps", ojson(0)), where, "fringe_steps", 0, 32);
     require_field(!j.contains("fringe_period_px") || j["fringe_period_px"].is_number(), where,
@@ -366,6 +470,10 @@ PatternSet read_pattern_set(const std::filesystem::path& dir) {
       p.kind = kind_from_string(e.at("kind").get<std::string>(), where);
       p.index = int_field(e.at("index"), where, "patterns.index", 0, 1000);
       p.step = int_field(e.value("step", ojson(0)), where, "patterns.step", 0, 31);
+      p.probe = int_field(e.value("probe", ojson(0)), where, "patterns.probe", 0,
+                          std::max(0, int(set.probes.size()) - 1));
+      require_field(p.kind != PatternKind::kProbe || set.undescribed, where, "patterns",
+                    "a probe pattern in a set that is not undescribed");
       set.patterns.push_back(p);
     }
   } catch (const nlohmann::json::exception& e) {
@@ -375,8 +483,16 @@ PatternSet read_pattern_set(const std::filesystem::path& dir) {
                 "needs 4 points");
   require_field(set.of_kind(PatternKind::kBoard).size() == 1, where, "patterns",
                 "needs exactly one board pattern");
-  require_field(int(set.of_kind(PatternKind::kPhase).size()) == set.phase_steps, where,
-                "patterns", "needs phase_steps phase patterns");
+  if (set.undescribed) {
+    require_field(set.of_kind(PatternKind::kPhase).empty(), where, "patterns",
+                  "an undescribed set has probes, no phase patterns");
+    require_field(set.of_kind(PatternKind::kProbe).size() ==
+                      set.probes.size() * size_t(set.probe_steps),
+                  where, "patterns", "needs probe_steps patterns of every probe");
+  } else {
+    require_field(int(set.of_kind(PatternKind::kPhase).size()) == set.phase_steps, where,
+                  "patterns", "needs phase_steps phase patterns");
+  }
   for (PatternKind kind : {PatternKind::kFringeX, PatternKind::kFringeY})
     require_field(int(set.of_kind(kind).size()) == set.fringe_steps, where, "patterns",
                   fmt::format("needs fringe_steps {} patterns", to_string(kind)));

@@ -14,6 +14,7 @@
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
+#include "util/error.hpp"
 
 namespace lfd::device {
 namespace {
@@ -183,6 +184,9 @@ TEST(DeviceDiscovery, EachUnitGetsItsMonitorByEdidName) {
     e[58] = char((w >> 8) << 4);
     e[59] = char(h & 0xff);
     e[61] = char((h >> 8) << 4);
+    e[66] = char(344 & 0xff);  // image size 344 x 194 mm (a 15.6" panel)
+    e[67] = char(194);
+    e[68] = char((344 >> 8) << 4);
     e[72 + 3] = char(0xfc);
     std::string text = name + "\n";
     for (size_t i = 0; i < 13; ++i) e[72 + 5 + i] = i < text.size() ? text[i] : ' ';
@@ -205,6 +209,15 @@ TEST(DeviceDiscovery, EachUnitGetsItsMonitorByEdidName) {
             std::string::npos);
   EXPECT_NE(match_monitor(monitors, "HDMI", 3840, 2160).problem.find("no monitor"), std::string::npos);
   EXPECT_NE(match_monitor({}, "LKG", 3840, 2160).problem.find("no connected monitor"), std::string::npos);
+
+  // A panel nobody described (`lfd patterns --monitor`): size and DPI from the EDID.
+  const MonitorPanel panel = monitor_panel(monitors, "Panel");
+  EXPECT_EQ(panel.width_px, 1920);
+  EXPECT_EQ(panel.height_px, 1080);
+  EXPECT_NEAR(panel.dpi, 1920 / (344 / 25.4), 1e-9);
+  EXPECT_NE(panel.monitor.find("344 x 194 mm"), std::string::npos) << panel.monitor;
+  EXPECT_THROW(monitor_panel(monitors, ""), InputError);  // two fit
+  EXPECT_THROW(monitor_panel(monitors, "HDMI"), InputError);
 }
 
 TEST(Edid, ShortOrHeaderlessDataIsNoEdid) {
