@@ -14,10 +14,15 @@
 #   render-gl   per view vs G2LF at the paper's sizes: 100k/1M/3M Gaussians, 45 views of 512x512
 #   gpu-frame   the frame with timers waited for vs read late, swizzle variants, plane formats
 #   gpu-sort    the sort rows: all N against the visible Gaussians, float against normalised keys
-#   voxels-gl   per view vs V2LF
-#   direct-gl   the direct panel pass against swizzle + interlace on the three displays (bilinear
-#               planes filtered by the texture unit, the GL default)
+#   voxels-gl   per view vs V2LF on the level-7 tabletop (15,688 voxels)
+#   voxels-gl-1m  the same on the generated level-10 tabletop (>= 1M voxels), 45 views of 512x512
+#   direct-gl   the direct panel pass against swizzle + interlace on the three displays at 16/64/256
+#               planes (bilinear planes filtered by the texture unit, the GL default): the compute
+#               passes the offscreen paths use, and in the same run the fragment stages of the
+#               interlacer and the direct pass (what a window draws with)
 #   direct-gl-shader  the same at 1M Gaussians with the planes filtered by hand (four texelFetch)
+#   direct-v2lf-gl  the direct pass against swizzle + interlace on V2LF planes: the tabletop and
+#               the level-10 one, the three displays, 16/64/256 planes
 # The script's mechanics are tested without a GPU on a stub bundle (tests/scripts/gpu_table_test.sh).
 # LFD_GPU_TABLE_LIMIT (seconds, default 150) bounds each step; LFD_GPU_TABLE_RUNS (default 10) is
 # the timed frames per row, LFD_GPU_TABLE_SIZES (default 100000,1000000,3000000) render-gl's scenes.
@@ -25,7 +30,7 @@ set -uo pipefail
 out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
 shift
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl direct-gl direct-gl-shader)
+[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl)
 limit=${LFD_GPU_TABLE_LIMIT:-150}
 runs=${LFD_GPU_TABLE_RUNS:-10}
 sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
@@ -88,14 +93,20 @@ for s in "${steps[@]}"; do
     voxels-gl)
       step voxels-gl "$run" bench voxels --backend gl --level 7 --views 45 --size 512 --runs "$runs" \
         --json "$out/voxels-gl.json" ;;
+    voxels-gl-1m)
+      step voxels-gl-1m "$run" bench voxels --backend gl --level 10 --views 45 --size 512 --runs "$runs" \
+        --json "$out/voxels-gl-1m.json" ;;
     direct-gl)
       step direct-gl "$run" bench direct --backend gl --generated 100000,1000000 --chunks 16,64,256 --runs "$runs" \
         --reference-views 0 --json "$out/direct-gl.json" ;;
     direct-gl-shader)
       step direct-gl-shader "$run" bench direct --backend gl --generated 1000000 --chunks 16,64 --runs "$runs" \
         --reference-views 0 --direct-sampler shader --json "$out/direct-gl-shader.json" ;;
-    *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, direct-gl," \
-         "direct-gl-shader)" >&2; exit 2 ;;
+    direct-v2lf-gl)
+      step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level 7,10 --chunks 16,64,256 \
+        --runs "$runs" --reference-views 0 --json "$out/direct-v2lf-gl.json" ;;
+    *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, voxels-gl-1m," \
+         "direct-gl, direct-gl-shader, direct-v2lf-gl)" >&2; exit 2 ;;
   esac
 done
 cat "$out/steps.txt"

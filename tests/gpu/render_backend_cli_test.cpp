@@ -1,9 +1,12 @@
 // `lfd render --backend gl` through the real program: the GL quilt is the CPU's (PSNR >= 40 dB)
 // for each plane storage, including f16 (RGBA16F planes), which exists only on the GPU; asking
-// the CPU for f16 is one line and exit 2, with nothing written. Voxel scenes likewise.
+// the CPU for f16 is one line and exit 2, with nothing written. Voxel scenes likewise. The direct
+// panel on the GPU (its compute pass over panel tiles) is the CPU's, G2LF and V2LF.
+#include <cstdio>
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -70,6 +73,31 @@ TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {
     ASSERT_EQ(gl.exit_code, 0) << gl.output;
     EXPECT_NE(gl.output.find("on the GPU"), std::string::npos) << gl.output;
     EXPECT_GE(render::psnr(quilt(method + "_gl_qs2x2a1.5.png"), quilt(method + "_cpu_qs2x2a1.5.png")), 40.0);
+  }
+}
+
+// `lfd render --direct --backend gl`: the panel from the compute direct pass against the CPU's
+// direct pass on the same options (f32 planes, the default bilinear filter), for a Gaussian and a
+// voxel scene on the Go.
+TEST_F(RenderBackendCli, DirectPanelsOnTheGpuMatchTheCpu) {
+  const std::string voxels = (dir_ / "scene.voxels").string();
+  ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + voxels + "'").exit_code, 0);
+  const std::string go = (test::project_data() / "displays" / "go.visual.json").string();
+  for (const auto& [scene, method] : {std::pair<std::string, std::string>{(test::project_data() / "scenes" / "demo.ply").string(), "g2lf"},
+                                      std::pair<std::string, std::string>{voxels, "v2lf"}}) {
+    SCOPED_TRACE(method);
+    const std::string common = "render --scene '" + scene + "' --calibration '" + go +
+                               "' --size 72x128 --views 8 --chunks 16 --precision f32 --direct --panel '";
+    const auto cpu = test::run_lfd(common + (dir_ / (method + "_cpu.png")).string() + "' --backend cpu");
+    ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+    const auto gl = test::run_lfd(common + (dir_ / (method + "_gl.png")).string() + "' --backend gl");
+    ASSERT_EQ(gl.exit_code, 0) << gl.output;
+    const ImageF a = quilt(method + "_gl.png"), b = quilt(method + "_cpu.png");
+    ASSERT_EQ(a.width, 1440);
+    ASSERT_EQ(a.height, 2560);
+    const double db = render::psnr(a, b);
+    std::printf("  lfd render --direct, %s, GL against CPU: %.1f dB\n", method.c_str(), db);
+    EXPECT_GE(db, 40.0);
   }
 }
 
