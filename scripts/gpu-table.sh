@@ -39,7 +39,9 @@ mkdir -p "$out"
 bundle=${LFD_BUNDLE_DIR:-bundle/lfd-renderer}  # another bundle folder (tests/scripts: a stub)
 run=$bundle/run.sh
 [ -x "$run" ] || { echo "gpu-table: $run missing: run scripts/bundle-renderer.sh first" >&2; exit 2; }
-if ! ldconfig -p | grep -q 'libEGL.so.1 '; then
+# grep reads all of ldconfig's output (no -q): under pipefail, grep -q leaving early would let
+# ldconfig die of SIGPIPE and the test fail at random.
+if ! ldconfig -p | grep 'libEGL.so.1 ' > /dev/null; then
   ls .gl/*.deb >/dev/null 2>&1 || { echo "gpu-table: no libEGL and no .gl/*.deb (docs/performance.md)" >&2; exit 2; }
   for f in .gl/*.deb; do dpkg -x "$f" /; done
   ldconfig
