@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "gpu/gl_raster_probe.hpp"
 #include "util/error.hpp"
 
 namespace lfd::apps {
@@ -17,6 +18,24 @@ Backend parse_backend(const std::string& name) {
 
 CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::string& help) {
   return app.add_option("--backend", name, help)->check(CLI::IsMember({"cpu", "gl", "auto"}))->capture_default_str();
+}
+
+CLI::Option* add_raster_option(CLI::App& app, std::string& name) {
+  return app.add_option("--raster", name,
+                        "GL backend, Gaussians: hardware (instanced quads through the raster pipeline), compute "
+                        "(a tile rasterizer in compute shaders) or auto (the faster on this device, measured once "
+                        "per run; docs/gpu.md)")
+      ->check(CLI::IsMember({"hardware", "compute", "auto"}))
+      ->capture_default_str();
+}
+
+gpu::RasterPath resolve_raster(gpu::RasterPath path) {
+  if (path != gpu::RasterPath::kAuto) return path;
+  const gpu::RasterPath chosen = gpu::resolve_raster_path(path);
+  const gpu::RasterProbe probe = *gpu::last_raster_probe();
+  std::cout << fmt::format("raster: auto chose {} (probe quilt: compute {:.1f} ms, hardware {:.1f} ms)\n",
+                           gpu::raster_path_name(chosen), 1e3 * probe.compute_s, 1e3 * probe.hardware_s);
+  return chosen;
 }
 
 std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend, bool verbose) {

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "gpu/gl_context.hpp"
+#include "gpu/raster_path.hpp"
 
 namespace lfd::apps {
 
@@ -17,6 +18,14 @@ Backend parse_backend(const std::string& name);  // InputError for another name
 
 // Adds `--backend` (choices cpu, gl, auto) to `app`, bound to `name`.
 CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::string& help);
+
+// Adds `--raster` (choices compute, hardware, auto) to `app`, bound to `name`: how the GL
+// backend draws Gaussians (gpu/raster_path.hpp).
+CLI::Option* add_raster_option(CLI::App& app, std::string& name);
+
+// `path`, or for auto the measured choice (gpu::resolve_raster_path; a GL context must be
+// current), printing "raster: auto chose compute (probe quilt: compute 12.3 ms, hardware 45.6 ms)".
+gpu::RasterPath resolve_raster(gpu::RasterPath path);
 
 // What will run: a headless context for gl (GlUnavailable propagates: exit 2), for auto a context
 // or, when none can be made, null with a notice on stderr naming the reason; null for cpu.

@@ -24,6 +24,7 @@ const std::vector<Bench>& benches() {
       {"voxels", RunBenchVoxels, "per-view voxel quilts vs V2LF: the paper's Table 1, V2LF half (CPU)"},
       {"gl-vs-cpu", RunBenchGlVsCpu, "GL G2LF against the CPU reference on large scenes (PSNR, times)"},
       {"gpu-frame", RunBenchGpuFrame, "the GL frame: timers waited for vs read late, swizzle variants"},
+      {"gpu-probe", RunBenchGpuProbe, "compute FMA rate and bandwidth vs raster fill rate; which --raster auto picks"},
 #ifndef LFD_NO_PLAYBACK  // a renderer-only build without FFmpeg (-DLFD_WITH_PLAYBACK=OFF)
       {"play", RunBenchPlay, "quilt video playback: decoded, shown and dropped frames per second (4K)"},
       {"serve", RunBenchServe, "load test of a running lfd serve: many clients at once (docs/serve.md)"},

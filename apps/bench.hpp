@@ -9,6 +9,7 @@ int RunBenchRender(int argc, char** argv);  // apps/bench_render.cpp (also rende
 int RunBenchVoxels(int argc, char** argv);  // apps/bench_voxels.cpp (also renderer-only)
 int RunBenchGlVsCpu(int argc, char** argv);  // apps/bench_gl_vs_cpu.cpp (also renderer-only)
 int RunBenchGpuFrame(int argc, char** argv);  // apps/bench_gpu_frame.cpp (also renderer-only)
+int RunBenchGpuProbe(int argc, char** argv);  // apps/bench_gpu_probe.cpp (also renderer-only)
 int RunBenchServe(int argc, char** argv);  // apps/bench_serve.cpp (also renderer-only)
 int RunBenchDirect(int argc, char** argv);  // apps/bench_direct.cpp (also renderer-only)
 int RunBenchSimulate(int argc, char** argv);  // apps/bench_simulate.cpp

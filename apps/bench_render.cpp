@@ -9,6 +9,7 @@
 #include "bench/bench_renderers.hpp"
 #include "bench/render_benchmark.hpp"
 #include "util/atomic_file.hpp"
+#include "util/error.hpp"
 
 namespace lfd::apps {
 
@@ -24,15 +25,23 @@ int RunBenchRender(int argc, char** argv) {
       "\nExamples:\n"
       "  lfd bench render --quick\n"
       "  lfd bench render --generated 100000,1000000,3000000 --json render.json\n"
-      "  lfd bench render --scene guitar.compressed.ply --generated 0 --views 45 --configs table1",
+      "  lfd bench render --scene guitar.compressed.ply --generated 0 --views 45 --configs table1\n"
+      "  lfd bench render --backend gl --raster hardware,compute --quick   (both GL raster paths, one run)",
       "render"};
   bench::RenderBenchOptions o;
   std::string backend = "cpu", json_path;
   std::vector<std::string> scene_files;
   std::vector<size_t> generated = {100000, 1000000};
   bool quick = false, no_per_view = false;
+  std::vector<std::string> rasters{"hardware"};
   app.add_option("--backend", backend, "renderer: cpu, or gl (OpenGL 4.5 through headless EGL; exit 2 without it)")
       ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
+  app.add_option("--raster", rasters,
+                 "--backend gl: how Gaussians are drawn, hardware, compute or auto, comma-separated: each in turn "
+                 "in this run, on the same scenes")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
   app.add_option("--scene", scene_files, "scene files to render (repeatable)");
   app.add_option("--generated", generated,
                  "Gaussians of generated tabletop scenes, comma-separated (0: none)")
@@ -77,8 +86,21 @@ int RunBenchRender(int argc, char** argv) {
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
-  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, scene::SceneKind::kGaussians);
-  const nlohmann::ordered_json result = bench::run_render_benchmark(*renderers.per_view, *renderers.sweeping, o);
+  if (app.count("--raster") && backend == "cpu")
+    throw_input_error("--raster: chooses how the GL backend draws; --backend cpu has no raster paths");
+  // One table per raster path (one: the table alone, as before; several: {"rasters": [...]}).
+  nlohmann::ordered_json result;
+  for (const std::string& name : rasters) {
+    if (rasters.size() > 1) std::printf("\n## --raster %s\n\n", name.c_str());
+    const bench::BenchRenderers renderers =
+        bench::make_bench_renderers(backend, scene::SceneKind::kGaussians, gpu::parse_raster_path(name));
+    nlohmann::ordered_json one = bench::run_render_benchmark(*renderers.per_view, *renderers.sweeping, o);
+    if (rasters.size() == 1) {
+      result = std::move(one);
+    } else {
+      result["rasters"].push_back({{"raster", name}, {"result", std::move(one)}});
+    }
+  }
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");
     std::printf("\nwrote %s\n", json_path.c_str());

@@ -1,6 +1,7 @@
 // lfd demo: the main job end to end on the embedded defaults.
 #include <iostream>
 
+#include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "pipeline/demo.hpp"
@@ -27,7 +28,10 @@ int RunDemo(int argc, char** argv) {
   app.add_option("--points", options.validation_points,
                  "panel points per validation profile")->check(CLI::Range(10, 100000))
       ->capture_default_str();
+  std::string raster = "hardware";
+  add_raster_option(app, raster);
   if (auto code = parse(app, argc, argv)) return *code;
+  options.raster = gpu::parse_raster_path(raster);
   options.out_dir = out;
   options.unit_calibration = unit;
   options.scene = scene;

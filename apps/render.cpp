@@ -42,6 +42,7 @@ struct RenderFlags {
   std::string scene_path, method = "g2lf", size_text, out, camera_path;
   std::string filter, precision = "u8", binning = "mixed", background_text = "0,0,0";
   std::string panel_path, blend = "nearest", backend_name = "cpu";
+  std::string raster = "hardware";
   std::optional<int> views_opt, cols_opt, rows_opt;
   int view = -1;
   bool overscan = false;
@@ -121,6 +122,7 @@ void add_camera_display_and_output_options(CLI::App& app, RenderFlags& f) {
   add_backend_option(app, f.backend_name,
                      "cpu (the reference), gl (OpenGL 4.5 through headless EGL; exit 2 without it) or "
                      "auto (gl when a context can be made, else the CPU with a notice)");
+  add_raster_option(app, f.raster);
   app.add_option("--out", f.out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix (required unless --direct)");
   app.add_flag("--direct", f.direct,
                "G2LF and V2LF: render --panel straight from the sweeping planes, every subpixel at its own "
@@ -136,6 +138,7 @@ lightfield::RendererOptions plane_options(const RenderFlags& f) {
   if (f.precision == "f16") options.gl.plane_format = gpu::PlaneFormat::kRgba16f;
   options.planes.precision = render::parse_plane_precision(f.precision == "f16" ? "f32" : f.precision);
   options.planes.binning = render::parse_chunk_binning(f.binning);
+  options.gl.raster = gpu::parse_raster_path(f.raster);
   options.planes.check();
   return options;
 }
@@ -323,6 +326,9 @@ int RunRender(int argc, char** argv) {
   options.backend = lightfield::backend_for(device);
   if (options.gl.plane_format && options.backend == lightfield::Backend::kCpu)
     throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
+  if (app.count("--raster") && parse_backend(f.backend_name) == Backend::kCpu)
+    throw_input_error("--raster: chooses how the GL backend draws; --backend cpu has no raster paths");
+  if (device) options.gl.raster = resolve_raster(options.gl.raster);
 
   const auto t0 = std::chrono::steady_clock::now();
   const scene::Scene scene = scene::load_scene(f.scene_path);

@@ -4,6 +4,7 @@
 //   lfd view scene.ply --calibration visual.json --frames 30 --screenshot panel.png --quilt q.png
 #include <iostream>
 
+#include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "viewer/viewer.hpp"
@@ -41,6 +42,8 @@ int RunView(int argc, char** argv) {
   app.add_option("--screenshot", screenshot, "after the last frame: the panel as shown (PNG)");
   app.add_option("--quilt", quilt, "after the last frame: the quilt (PNG; _qs suffix added)");
   app.add_option("--camera-out", camera_out, "after the last frame: the camera as cam.json");
+  std::string raster = "hardware";
+  add_raster_option(app, raster);
   bool no_controls = false;
   app.add_flag("--no-controls", no_controls, "only the display window");
   bool no_vsync = false;
@@ -54,6 +57,7 @@ int RunView(int argc, char** argv) {
   options.display_name = display_source.name();
   options.controls = !no_controls;
   options.vsync = !no_vsync;
+  options.raster = gpu::parse_raster_path(raster);
   if (!method.empty()) options.method = viewer::parse_method(method);
   if (!camera.empty()) options.camera_path = camera;
   if (!settings.empty()) options.settings_path = settings;

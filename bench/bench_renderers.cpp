@@ -5,13 +5,14 @@
 
 namespace lfd::bench {
 
-BenchRenderers make_bench_renderers(const std::string& backend, scene::SceneKind kind) {
+BenchRenderers make_bench_renderers(const std::string& backend, scene::SceneKind kind, gpu::RasterPath raster) {
   lightfield::RendererOptions options;
   if (backend == "gl")
     options.backend = lightfield::Backend::kGl;
   else if (backend != "cpu")
     throw_input_error("--backend: '{}' is neither cpu nor gl", backend);
   options.gl.quilt_format = GL_RGBA8;
+  options.gl.raster = raster;
   // V2LF bins on the GPU: its plane and binned counts (the table's figures) come with timed
   // frames, read when the frame ends (gpu::GlV2lfStats).
   options.gl.gpu_timers = kind == scene::SceneKind::kVoxels;

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "gpu/raster_path.hpp"
 #include "lightfield/light_field_renderer.hpp"
 
 namespace lfd::bench {
@@ -15,7 +16,9 @@ struct BenchRenderers {
   std::unique_ptr<lightfield::LightFieldRenderer> per_view, sweeping;
 };
 
-// `backend`: "cpu" or "gl" (InputError for another; gpu::GlUnavailable, exit 2, without GL).
-BenchRenderers make_bench_renderers(const std::string& backend, scene::SceneKind kind);
+// `backend`: "cpu" or "gl" (InputError for another; gpu::GlUnavailable, exit 2, without GL);
+// `raster`: how the GL renderers draw Gaussians (auto: measured once per process).
+BenchRenderers make_bench_renderers(const std::string& backend, scene::SceneKind kind,
+                                    gpu::RasterPath raster = gpu::RasterPath::kHardware);
 
 }  // namespace lfd::bench

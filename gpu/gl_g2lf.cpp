@@ -15,7 +15,7 @@ namespace {
 double mib(double bytes) { return bytes / 1048576.0; }
 
 int batch_layers_for(const GlG2lfOptions& options, const render::QuiltGeometry& geometry) {
-  if (options.plane_raster == PlaneRaster::kLayered) return 0;
+  if (options.plane_raster == PlaneRaster::kLayered || options.raster == RasterPath::kCompute) return 0;
   const int s = options.g2lf.plane_scale;
   return plane_batch_layers(options.format(), options.g2lf.chunks, geometry.base.width * s,
                             geometry.base.height * s, options.accumulation_budget_bytes);
@@ -84,7 +84,7 @@ GlG2lfOptions g2lf_fitting_options(const GlG2lfOptions& options, const render::Q
   GlG2lfOptions fitting = options;
   const std::optional<double> budget = budget_bytes(options, free_bytes);
   const bool u8_as_rgba16f = !options.plane_format && options.g2lf.precision == render::PlanePrecision::kU8 &&
-                             options.plane_raster == PlaneRaster::kLayered;
+                             options.plane_raster == PlaneRaster::kLayered && options.raster != RasterPath::kCompute;
   if (u8_as_rgba16f && budget && g2lf_bytes(options, geometry, gaussians) > *budget)
     fitting.plane_raster = PlaneRaster::kBatched;  // RGBA8 planes: half the plane bytes
   return fitting;
@@ -97,14 +97,17 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
   const int wp = geometry.base.width * o.plane_scale, hp = geometry.base.height * o.plane_scale;
   // A request as the last frame's keeps its planes as drawn then (the fallback included): no
   // driver query, no new fit.
-  const PlaneRequest request{requested.format(), requested.plane_raster, o.chunks, wp, hp,
+  if (requested.raster == RasterPath::kAuto)
+    throw std::invalid_argument("G2LF on the GPU: resolve --raster auto before rendering");
+  const PlaneRequest request{requested.format(), requested.plane_raster, requested.raster, o.chunks, wp, hp,
                              requested.accumulation_budget_bytes, requested.memory_budget_bytes};
   if (request_ && *request_ == request) {
     GlG2lfOptions drawn = requested;
     drawn.plane_raster = raster_;
     return check_g2lf_fits(drawn, geometry, scene_.size(), info_, std::nullopt);
   }
-  const size_t held = sweeping_.bytes() + buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() + plane_raster_.bytes();
+  const size_t held = sweeping_.bytes() + buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() +
+                      plane_raster_.bytes() + (tile_splats_ ? tile_splats_->bytes() : 0);
   // What the driver says is free, plus what this renderer would give back before allocating.
   std::optional<long long> free_bytes;
   if (requested.memory_budget_bytes == 0) {
@@ -116,6 +119,8 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
   if (!sweeping_.has_planes(options.format(), o.chunks, wp, hp)) sweeping_.allocate_planes(options.format(), o.chunks, wp, hp);
   batch_layers_ = batch_layers_for(options, geometry);  // GlPlaneRaster sizes its accumulation array to it
   raster_ = options.plane_raster;
+  raster_path_ = options.raster;
+  if (raster_path_ == RasterPath::kCompute && !tile_splats_) tile_splats_ = std::make_unique<GlTileSplats>();
   request_ = request;
 }
 
@@ -140,6 +145,9 @@ void GlG2lfRenderer::bin(const render::ReferenceCamera& ref, const render::G2lfO
 }
 
 void GlG2lfRenderer::draw_planes(GlPlanes& planes) {
+  if (raster_path_ == RasterPath::kCompute)
+    return tile_splats_->render_planes(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(),
+                                       planes);
   plane_raster_.run(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(), batch_layers_,
                     planes);
 }
@@ -152,7 +160,7 @@ void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   stats_.plane_format = planes.format;
   stats_.plane_raster = raster_;
   stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
-                     sort_.scratch_bytes() + plane_raster_.bytes();
+                     sort_.scratch_bytes() + plane_raster_.bytes() + (tile_splats_ ? tile_splats_->bytes() : 0);
   stats_.gpu_bytes_peak = gpu_bytes_peak();
   if (!timed) return;
   const std::optional<GlSweepingPlaneReadout> r = sweeping_.readout(reads);

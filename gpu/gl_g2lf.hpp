@@ -17,6 +17,7 @@
 // stay on the GPU, so nothing waits for a read-back (the stage times and counts come through
 // gpu/gl_frame_ring.hpp, read frames late; docs/gpu.md "A frame that never waits").
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -27,6 +28,8 @@
 #include "gpu/gl_direct_panel.hpp"
 #include "gpu/gl_objects.hpp"
 #include "gpu/gl_plane_raster.hpp"
+#include "gpu/gl_tile_splats.hpp"
+#include "gpu/raster_path.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_radix_sort.hpp"
 #include "gpu/gl_scene.hpp"
@@ -49,6 +52,11 @@ struct GlG2lfOptions {
   // rounds T at every step), and fall back to kBatched RGBA8 planes (float accumulation,
   // rounded once) when the RGBA16F ones exceed the memory budget (docs/gpu.md "Planes").
   PlaneRaster plane_raster = PlaneRaster::kLayered;
+  // kHardware: the planes drawn as plane_raster says; kCompute: by the compute tile rasterizer
+  // (GlTileSplats::render_planes: keys (plane | tile), the non-empty pairs only), which sums in
+  // float registers and writes each texel once, so u8-precision planes are RGBA8 (the CPU's,
+  // rounded once) with no batches. kAuto must be resolved first (gpu::resolve_raster_path).
+  RasterPath raster = RasterPath::kHardware;
   // GPU bytes G2LF may allocate (planes + per-Gaussian buffers); 0: the free memory the driver
   // reports, no limit beyond the texture limits when it reports none (llvmpipe).
   size_t memory_budget_bytes = 0;
@@ -71,7 +79,8 @@ struct GlG2lfOptions {
 
   PlaneFormat format() const {
     if (plane_format) return *plane_format;
-    if (g2lf.precision == render::PlanePrecision::kU8 && plane_raster == PlaneRaster::kLayered)
+    if (g2lf.precision == render::PlanePrecision::kU8 && plane_raster == PlaneRaster::kLayered &&
+        raster != RasterPath::kCompute)
       return PlaneFormat::kRgba16f;
     return plane_format_for(g2lf.precision);
   }
@@ -146,6 +155,8 @@ class GlG2lfRenderer {
   GlRadixSort sort_;
   GlDepthBinning binning_;
   GlPlaneRaster plane_raster_;
+  std::unique_ptr<GlTileSplats> tile_splats_;  // --raster compute, made on first use
+  RasterPath raster_path_ = RasterPath::kHardware;  // as drawn
   GlSweepingPlanes sweeping_;
   SplatBuffers buffers_;
   Buffer layers_;
@@ -155,6 +166,7 @@ class GlG2lfRenderer {
   struct PlaneRequest {
     PlaneFormat format;
     PlaneRaster raster;
+    RasterPath path;
     int chunks, width, height;
     size_t accumulation_budget, budget;
     bool operator==(const PlaneRequest&) const = default;

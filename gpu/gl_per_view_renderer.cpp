@@ -21,6 +21,12 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
     throw std::invalid_argument("per-view renderer: depth_key_bits must be 8, 16, 24 or 32");
   if (options_.normalised_depth_keys && (options_.depth_key_bits > 24 || !options_.sort_visible_only))
     throw std::invalid_argument("per-view renderer: normalised depth keys need 8, 16 or 24 bits and sort_visible_only");
+  if (options_.raster == RasterPath::kAuto)
+    throw std::invalid_argument("per-view renderer: resolve --raster auto before making the renderer");
+  if (options_.raster == RasterPath::kCompute) {
+    tiles_ = std::make_unique<GlTileSplats>();
+    tiles_->set_max_entries_per_pass(options_.compute_entries_per_pass);
+  }
 }
 
 void GlPerViewRenderer::begin_timing(int views) {
@@ -63,7 +69,7 @@ void GlPerViewRenderer::ensure_view_target(int width, int height) {
   view_framebuffer_.finish(1);
 }
 
-void GlPerViewRenderer::finish_stats(int views) {
+void GlPerViewRenderer::finish_stats(int views, int timed) {
   const GlPerViewStats last = stats_;
   stats_ = {};
   stats_.views = views;
@@ -72,7 +78,7 @@ void GlPerViewRenderer::finish_stats(int views) {
     const std::optional<GlFrameReadout> frame =
         options_.timer_reads == TimerReads::kWait ? timers_->wait_newest() : timers_->newest_ready();
     if (frame) {
-      for (size_t v = 0; v < size_t(views); ++v) {
+      for (size_t v = 0; v < size_t(timed); ++v) {
         stats_.preprocess_s += frame->seconds(4 * v, 4 * v + 1);
         stats_.sort_s += frame->seconds(4 * v + 1, 4 * v + 2);
         stats_.raster_s += frame->seconds(4 * v + 2, 4 * v + 3);
@@ -83,13 +89,21 @@ void GlPerViewRenderer::finish_stats(int views) {
       stats_.raster_s = last.raster_s;
     }
   }
-  stats_.memory_bytes = scene_.bytes() + buffers_.bytes() + sort_.scratch_bytes() + view_target_.bytes();
+  stats_.memory_bytes = scene_.bytes() + buffers_.bytes() + sort_.scratch_bytes() + view_target_.bytes() +
+                        (tiles_ ? tiles_->bytes() : 0);
 }
 
 const Texture& GlPerViewRenderer::render_view(const render::Camera& camera, const render::RasterSettings& settings) {
   if (camera.width <= 0 || camera.height <= 0)
     throw_input_error("per-view renderer: image size {}x{} is not positive", camera.width, camera.height);
   ensure_view_target(camera.width, camera.height);
+  if (tiles_) {
+    render_compute(std::span(&camera, 1), settings,
+                   {.texture = &view_target_, .cols = 1, .cell_size = {camera.width, camera.height},
+                    .background = settings.background, .keep_transmittance = true});
+    finish_stats(1, 1);
+    return view_target_;
+  }
   begin_timing(1);
   prepare(camera, settings, 0);
   SplatRasterTarget target;
@@ -99,7 +113,7 @@ const Texture& GlPerViewRenderer::render_view(const render::Camera& camera, cons
   raster_.draw(buffers_, target);
   raster_.composite_background(target, settings.background, /*keep_transmittance=*/true);
   stamp(3);
-  finish_stats(1);
+  finish_stats(1, 1);
   return view_target_;
 }
 
@@ -121,6 +135,17 @@ render::RasterImage GlPerViewRenderer::render_view_image(const render::Camera& c
 void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
                                      const render::RasterSettings& settings, Texture& quilt) {
   check_quilt_target("per-view renderer", geometry, layout, quilt);
+  if (tiles_) {
+    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, empty);
+    std::vector<render::Camera> cameras;
+    for (int view = 0; view < geometry.views; ++view) cameras.push_back(geometry.view_camera(view));
+    render_compute(cameras, settings,
+                   {.texture = &quilt, .cols = layout.cols, .cell_size = {layout.tile_width(), layout.tile_height()},
+                    .background = settings.background, .keep_transmittance = false});
+    finish_stats(geometry.views, 1);
+    return;
+  }
   const bool direct = is_float_format(quilt.internal_format());
   const int W = geometry.base.width, H = geometry.base.height;
   if (!direct) ensure_view_target(W, H);
@@ -156,7 +181,14 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
     }
     stamp(4 * size_t(view) + 3);
   }
-  finish_stats(geometry.views);
+  finish_stats(geometry.views, geometry.views);
+}
+
+void GlPerViewRenderer::render_compute(std::span<const render::Camera> cameras, const render::RasterSettings& settings,
+                                       const TileViewsTarget& target) {
+  begin_timing(1);
+  stamp(0);
+  tiles_->render_views(scene_, cameras, settings, target, [this](int k) { stamp(size_t(k)); });
 }
 
 ImageF read_image_top_down(const Texture& texture, int channels) {

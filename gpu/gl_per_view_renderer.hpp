@@ -9,7 +9,9 @@
 // with no CPU round trip inside a view or a quilt. The scene (GlScene) is uploaded once and
 // shared with other renderers.
 #include <cstddef>
+#include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -20,6 +22,8 @@
 #include "gpu/gl_scene.hpp"
 #include "gpu/gl_splat_preprocess.hpp"
 #include "gpu/gl_splat_raster.hpp"
+#include "gpu/gl_tile_splats.hpp"
+#include "gpu/raster_path.hpp"
 #include "render/blend.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -36,6 +40,14 @@ struct GlPerViewStats {
 };
 
 struct GlPerViewOptions {
+  // kHardware: per view, the three passes below with the raster pipeline's instanced quads;
+  // kCompute: every view in one pass of the compute tile rasterizer (GlTileSplats; exact 32-bit
+  // depth order, so the depth-key options below do not apply). kAuto must be resolved first
+  // (gpu::resolve_raster_path).
+  RasterPath raster = RasterPath::kHardware;
+  // kCompute: the most (view, Gaussian) entries one pass holds (GlTileSplats::
+  // set_max_entries_per_pass; 0: as the GPU's storage buffers allow).
+  size_t compute_entries_per_pass = 0;
   // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
   // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
   GLenum accumulation_format = GL_RGBA32F;
@@ -91,7 +103,11 @@ class GlPerViewRenderer {
   // sorted, drawn); records timestamp `index`; ends the frame and reads its stats.
   void begin_timing(int views);
   void stamp(size_t index);
-  void finish_stats(int views);
+  // `timed` views of stamps (the compute path times its one pass as one view).
+  void finish_stats(int views, int timed);
+  // --raster compute: every camera of `cameras` into `target` in one pass.
+  void render_compute(std::span<const render::Camera> cameras, const render::RasterSettings& settings,
+                      const TileViewsTarget& target);
   // The framebuffer of `quilt` (made once per renderer, not per frame).
   GLuint quilt_framebuffer(const Texture& quilt);
 
@@ -104,6 +120,7 @@ class GlPerViewRenderer {
   Texture view_target_;
   Framebuffer view_framebuffer_;
   Framebuffer quilt_framebuffer_;
+  std::unique_ptr<GlTileSplats> tiles_;  // --raster compute
   std::optional<GlFrameRing> timers_;
   GlPerViewStats stats_;
 };

@@ -2,6 +2,7 @@
 // (gpu::GlG2lfRenderer), on the device's uploaded scene.
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl_raster_probe.hpp"
 #include "lightfield/gl_renderer_base.hpp"
 #include "lightfield/gl_renderers.hpp"
 #include "lightfield/renderer_checks.hpp"
@@ -36,14 +37,16 @@ class GlGaussianViews final : public GlRendererBase {
     o.depth_key_bits = options_.gl.depth_key_bits;
     o.normalised_depth_keys = options_.gl.normalised_depth_keys;
     o.accumulation_format = options_.gl.per_view_accumulation_format;
+    o.raster = gpu::resolve_raster_path(options_.gl.raster);
     views_ = std::make_unique<gpu::GlPerViewRenderer>(*scene_, o);
   }
   void options_changed(const RendererOptions& old) override {
     if (old.gl.gpu_timers != options_.gl.gpu_timers || old.gl.timer_reads != options_.gl.timer_reads ||
         old.gl.depth_key_bits != options_.gl.depth_key_bits ||
         old.gl.normalised_depth_keys != options_.gl.normalised_depth_keys ||
-        old.gl.per_view_accumulation_format != options_.gl.per_view_accumulation_format)
-      forget_binding();  // the timers, the sort's key bits and the blending target are made with it
+        old.gl.per_view_accumulation_format != options_.gl.per_view_accumulation_format ||
+        old.gl.raster != options_.gl.raster)
+      forget_binding();  // the timers, the sort's key bits, the blending target and the path are made with it
   }
 
   std::shared_ptr<const gpu::GlScene> scene_;
@@ -79,7 +82,9 @@ class GlG2lf final : public GlRendererBase {
   // G2LF renders whole quilts: one view is the per-view renderer's.
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     ensure_bound();
-    gpu::GlPerViewRenderer views(*scene_);
+    gpu::GlPerViewOptions o;
+    o.raster = gpu::resolve_raster_path(options_.gl.raster);
+    gpu::GlPerViewRenderer views(*scene_, o);
     return rgb_image(views.render_view_image(geometry.view_camera(view), options_.raster_settings()));
   }
 

@@ -1,5 +1,6 @@
 #include "lightfield/renderer_options.hpp"
 
+#include "gpu/gl_raster_probe.hpp"
 #include "util/error.hpp"
 
 namespace lfd::lightfield {
@@ -40,6 +41,7 @@ gpu::GlG2lfOptions RendererOptions::gl_g2lf() const {
   gpu::GlG2lfOptions o;
   o.g2lf = planes;
   o.plane_format = gl.plane_format;
+  o.raster = gpu::resolve_raster_path(gl.raster);  // auto: measured once per process
   o.gpu_timers = gl.gpu_timers;
   o.timer_reads = gl.timer_reads;
   o.memory_budget_bytes = gl.memory_budget_bytes;

@@ -14,6 +14,7 @@
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_v2lf.hpp"
 #include "interlace/direct_panel.hpp"
+#include "gpu/raster_path.hpp"
 #include "scene/scene.hpp"
 #include "render/g2lf.hpp"
 #include "render/plane_samples.hpp"
@@ -35,6 +36,10 @@ std::string method_name(Method method, scene::SceneKind kind);
 
 // What only the GL renderers read.
 struct GlRenderOptions {
+  // How Gaussians are drawn, per view and into G2LF's planes: the hardware raster pipeline, the
+  // compute tile rasterizer, or auto (resolved once per device by a measurement:
+  // gpu::resolve_raster_path; docs/gpu.md "Two ways to draw Gaussians").
+  gpu::RasterPath raster = gpu::RasterPath::kHardware;
   // Plane texel format; unset: the CPU precision's. RGBA16F exists only on the GPU.
   std::optional<gpu::PlaneFormat> plane_format;
   // The quilt the renderer renders into and read_quilt reads back: RGBA32F (the CPU's floats to

@@ -175,6 +175,7 @@ void render_quilts(DemoRun& run) {
     options.planes.filter = render::PlaneFilter::kBilinear;
     const auto device = gl ? lightfield::GlDevice::on_current_context(gl->info()) : nullptr;
     options.backend = lightfield::backend_for(device);
+    options.gl.raster = o.raster;
     const auto renderer = lightfield::make_renderer(options, scene::SceneKind::kGaussians, device);
     renderer->set_scene(light_field_scene);
     renderer->render_quilt(geometry, layout);

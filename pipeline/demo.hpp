@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <string>
 
+#include "gpu/raster_path.hpp"
+
 namespace lfd::pipeline {
 
 struct DemoOptions {
@@ -23,6 +25,8 @@ struct DemoOptions {
   // Render and interlace on the GPU when an OpenGL context can be made (headless EGL), else on
   // the CPU with a notice; false: the CPU always.
   bool use_gpu = true;
+  // How the GPU draws the scene's Gaussians (`lfd demo --raster`; auto: measured, docs/gpu.md).
+  gpu::RasterPath raster = gpu::RasterPath::kHardware;
 };
 
 // Runs the demo; returns the path of the report's index.html.

@@ -23,6 +23,11 @@
 #   direct-gl-shader  the same at 1M Gaussians with the planes filtered by hand (four texelFetch)
 #   direct-v2lf-gl  the direct pass against swizzle + interlace on V2LF planes: the tabletop and
 #               the level-10 one, the three displays, 16/64/256 planes
+#   gpu-probe   compute FMA rate and bandwidth against the raster fill rate, and --raster auto's
+#               probe and choice (docs/gpu.md "Choosing the path: auto")
+#   raster-gl   per view and G2LF (N_chunk 64, 128, 256) drawn by the hardware raster and by the
+#               compute tile rasterizer, both in one run: 100k and 1M Gaussians, 45 views of 512x512
+#   raster-gl-large  the same at 3M and a generated 6M, N_chunk 64, at most 3 timed frames a row
 # The script's mechanics are tested without a GPU on a stub bundle (tests/scripts/gpu_table_test.sh).
 # LFD_GPU_TABLE_LIMIT (seconds, default 150) bounds each step; LFD_GPU_TABLE_RUNS (default 10) is
 # the timed frames per row, LFD_GPU_TABLE_SIZES (default 100000,1000000,3000000) render-gl's scenes.
@@ -30,7 +35,8 @@ set -uo pipefail
 out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
 shift
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl)
+[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl \
+  gpu-probe raster-gl raster-gl-large)
 limit=${LFD_GPU_TABLE_LIMIT:-150}
 runs=${LFD_GPU_TABLE_RUNS:-10}
 sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
@@ -107,8 +113,17 @@ for s in "${steps[@]}"; do
     direct-v2lf-gl)
       step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level 7,10 --chunks 16,64,256 \
         --runs "$runs" --reference-views 0 --json "$out/direct-v2lf-gl.json" ;;
+    gpu-probe)
+      step gpu-probe "$run" bench gpu-probe --runs "$runs" --json "$out/gpu-probe.json" ;;
+    raster-gl)
+      step raster-gl "$run" bench render --backend gl --raster hardware,compute --generated 100000,1000000 --views 45 \
+        --size 512 --configs table1,chunks --runs "$runs" --png-runs 0 --json "$out/raster-gl.json" ;;
+    raster-gl-large)
+      step raster-gl-large "$run" bench render --backend gl --raster hardware,compute --generated 3000000,6000000 \
+        --views 45 --size 512 --configs table1 --chunks 64 --runs "$(( runs < 3 ? runs : 3 ))" --warmup 1 --png-runs 0 \
+        --json "$out/raster-gl-large.json" ;;
     *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, voxels-gl-1m," \
-         "direct-gl, direct-gl-shader, direct-v2lf-gl)" >&2; exit 2 ;;
+         "direct-gl, direct-gl-shader, direct-v2lf-gl, gpu-probe, raster-gl, raster-gl-large)" >&2; exit 2 ;;
   esac
 done
 cat "$out/steps.txt"

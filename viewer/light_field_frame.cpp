@@ -158,6 +158,7 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
   o.gl.per_view_accumulation_format = GL_RGBA16F;
   o.gl.memory_budget_bytes = options_.g2lf_memory_budget_bytes;
   o.gl.accumulation_budget_bytes = options_.g2lf_accumulation_budget_bytes;
+  o.gl.raster = options_.raster;
   const scene::SceneKind kind = shows_voxels() ? scene::SceneKind::kVoxels : scene::SceneKind::kGaussians;
   std::unique_ptr<lightfield::GlLightFieldRenderer>& renderer = sweeping ? sweeping_ : per_view_;
   if (!renderer)

@@ -12,6 +12,7 @@
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
+#include "gpu/raster_path.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_frame_ring.hpp"
 #include "gpu/gl_g2lf.hpp"
@@ -44,6 +45,8 @@ struct FrameOptions {
   size_t g2lf_memory_budget_bytes = 0;
   // The float accumulation array of RGBA8 planes (gpu::GlG2lfOptions).
   size_t g2lf_accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
+  // How Gaussians are drawn (`lfd view --raster`; auto: measured once per run, docs/gpu.md).
+  gpu::RasterPath raster = gpu::RasterPath::kHardware;
 };
 
 class LightFieldFrame {

@@ -348,6 +348,7 @@ int run_viewer(const ViewerOptions& options) {
   display.make_current();
   FrameOptions frame_options;
   frame_options.upload_progress = upload_progress(controls ? &*controls : nullptr, display.handle());
+  frame_options.raster = options.raster;
   LightFieldFrame frame(scene, options.calibration, info, frame_options);
   report_fit(frame.scene_fit_notice());
 

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "display/calibration_file.hpp"
+#include "gpu/raster_path.hpp"
 #include "viewer/viewer_settings.hpp"
 
 namespace lfd::viewer {
@@ -24,6 +25,7 @@ struct ViewerOptions {
   std::optional<std::filesystem::path> settings_path;  // default: per display (viewer_settings.hpp)
   int frames = 0;                    // 0: until the window is closed
   bool vsync = true;                 // false: swap interval 0 (measuring the frame, --no-vsync)
+  gpu::RasterPath raster = gpu::RasterPath::kHardware;  // --raster (docs/gpu.md)
   std::filesystem::path screenshot_path, quilt_path, camera_out_path;  // written after the last frame
 };
 

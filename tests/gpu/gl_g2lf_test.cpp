@@ -320,13 +320,14 @@ struct RendererCase {
   float d_shift;
   bool adaptive_filter = true;
   PlaneRaster raster = PlaneRaster::kLayered;
+  RasterPath path = RasterPath::kHardware;
 };
 
 std::string describe(const RendererCase& c) {
-  return fmt::format("{} N={} {} {} P_s={} {} {} D_shift={}{}", c.setup().name, c.chunks,
+  return fmt::format("{} N={} {} {} P_s={} {} {} {} D_shift={}{}", c.setup().name, c.chunks,
                      c.binning == ChunkBinning::kMixed ? "mixed" : "quantile",
                      c.filter == PlaneFilter::kNearest ? "nearest" : "bilinear", c.plane_scale,
-                     c.precision == PlanePrecision::kU8 ? "u8" : "f32", plane_raster_name(c.raster), c.d_shift,
+                     c.precision == PlanePrecision::kU8 ? "u8" : "f32", plane_raster_name(c.raster), raster_path_name(c.path), c.d_shift,
                      c.adaptive_filter ? "" : " constant filter");
 }
 
@@ -352,6 +353,7 @@ TEST_P(GlG2lfRendering, MatchesTheCpuG2lfQuilt) {
   options.g2lf = g2lf_options(c);
   options.gpu_timers = true;
   options.plane_raster = c.raster;
+  options.raster = c.path;
   render::RasterSettings settings;
   settings.background = s.background;
   render::G2lfStats cpu_stats;
@@ -391,7 +393,20 @@ INSTANTIATE_TEST_SUITE_P(
         RendererCase{tabletop, 64, ChunkBinning::kMixed, PlaneFilter::kBilinear, 1, PlanePrecision::kU8, -1.0f, true,
                      PlaneRaster::kBatched},
         RendererCase{tabletop, 24, ChunkBinning::kMixed, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f, false,
-                     PlaneRaster::kBatched}));
+                     PlaneRaster::kBatched},
+        // The compute tile rasterizer's planes (--raster compute): RGBA8 for u8, RGBA32F for f32.
+        RendererCase{cloud, 64, ChunkBinning::kQuantile, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f, true,
+                     PlaneRaster::kLayered, RasterPath::kCompute},
+        RendererCase{cloud, 64, ChunkBinning::kMixed, PlaneFilter::kBilinear, 2, PlanePrecision::kF32, 1.0f, true,
+                     PlaneRaster::kLayered, RasterPath::kCompute},
+        RendererCase{tabletop, 64, ChunkBinning::kMixed, PlaneFilter::kBilinear, 1, PlanePrecision::kU8, -1.0f, true,
+                     PlaneRaster::kLayered, RasterPath::kCompute},
+        RendererCase{tabletop, 24, ChunkBinning::kMixed, PlaneFilter::kNearest, 2, PlanePrecision::kF32, 0.0f, false,
+                     PlaneRaster::kLayered, RasterPath::kCompute},
+        RendererCase{three_points, 4, ChunkBinning::kMixed, PlaneFilter::kBilinear, 1, PlanePrecision::kU8, -1.0f, true,
+                     PlaneRaster::kLayered, RasterPath::kCompute},
+        RendererCase{tabletop, 2, ChunkBinning::kQuantile, PlaneFilter::kNearest, 1, PlanePrecision::kU8, -1.0f, true,
+                     PlaneRaster::kLayered, RasterPath::kCompute}));
 
 // ---- The planes themselves against the CPU's f32 planes ----
 
@@ -502,6 +517,47 @@ TEST(GlG2lfPlanes, EachRasterAgainstTheCpuFloatPlanes) {
     EXPECT_LE(planes["layered RGBA16F"].max_error, 3.0 / 255.0) << s->name;
     EXPECT_LT(planes["layered RGBA8"].psnr, planes["layered RGBA16F"].psnr) << s->name;
     EXPECT_GE(planes["layered RGBA32F"].psnr, planes["layered RGBA16F"].psnr) << s->name;
+  }
+}
+
+// The compute tile rasterizer's planes (--raster compute) against the CPU's own planes of the
+// same precision: f32 planes in RGBA32F equal the CPU's to float rounding, u8 planes in RGBA8
+// (summed in float, rounded once, as the CPU stores them) to at most one 8-bit step where a sum
+// lands next to a rounding boundary; the planes in use only, the rest stay empty (0, 0, 0, 1).
+TEST(GlG2lfPlanes, ComputePlanesEqualTheCpuPlanes) {
+  HeadlessContext& ctx = context();
+  for (const TestScene* s : {&tabletop(), &cloud()}) {
+    for (PlanePrecision precision : {PlanePrecision::kF32, PlanePrecision::kU8}) {
+      GlG2lfOptions options;
+      options.g2lf.chunks = 32;
+      options.g2lf.precision = precision;
+      options.gpu_timers = true;
+      options.raster = RasterPath::kCompute;
+      render::RasterSettings settings;
+      settings.background = s->background;
+      const render::ReferenceCamera ref = render::reference_camera(options.g2lf, s->geometry);
+      const render::DepthChunks chunks = render::bin_by_depth(s->scene, s->geometry, ref, 32, options.g2lf.binning);
+      render::RasterSettings plane_settings;
+      plane_settings.dilation_px2 = render::adaptive_filter_variance(s->geometry, ref, 1);
+      const std::vector<float> cpu = cpu_planes_as_float(
+          render::render_sweeping_planes(s->scene, s->geometry, ref, chunks, precision, plane_settings));
+      const GlScene scene(s->scene, ctx.info());
+      GlG2lfRenderer renderer(scene, ctx.info());
+      const Texture quilt = make_quilt_texture(s->layout, GL_RGBA32F);
+      renderer.render_quilt(s->geometry, s->layout, options, settings, quilt);
+      ASSERT_EQ(size_t(renderer.stats().planes), chunks.members.size());
+      const GlPlanes& planes = renderer.planes();
+      EXPECT_EQ(planes.format, precision == PlanePrecision::kU8 ? PlaneFormat::kRgba8 : PlaneFormat::kRgba32f);
+      const PlaneError e = compare_planes(read_planes_top_down(planes, renderer.stats().planes), cpu);
+      const double q = render::psnr(read_image_top_down(quilt),
+                                    render::render_quilt_g2lf(s->scene, s->geometry, s->layout, options.g2lf, settings));
+      std::printf("%s: compute %s planes vs CPU %s planes: PSNR %.2f dB, max |error| %.2e; quilt %.2f dB\n",
+                  s->name.c_str(), plane_format_name(planes.format), precision == PlanePrecision::kU8 ? "u8" : "f32",
+                  e.psnr, e.max_error, q);
+      EXPECT_LE(e.max_error, precision == PlanePrecision::kU8 ? 1.0 / 255.0 + 1e-6 : 1e-4) << s->name;
+      EXPECT_GE(e.psnr, 60.0) << s->name;
+      EXPECT_GE(q, 40.0) << s->name;
+    }
   }
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../test_data.hpp"
+#include "gl_view_compare.hpp"
 #include "gpu/gl_context.hpp"
 #include "gpu/gl_per_view_renderer.hpp"
 #include "render/default_camera.hpp"
@@ -22,44 +23,12 @@
 namespace lfd::gpu {
 namespace {
 
-constexpr double kMinPsnrDb = 40.0;
-
-ImageF to_image(const std::vector<float>& values, int width, int height, int channels) {
-  ImageF image(width, height, channels);
-  image.pixels = values;
-  return image;
-}
-
-ImageF rgb_of(const render::RasterImage& r) { return to_image(r.rgb, r.width, r.height, 3); }
-
-scene::GaussianScene generated_scene(int sh_degree, size_t count = 4000) {
-  render::SceneGeneratorOptions options;
-  options.count = count;
-  options.sh_degree = sh_degree;
-  options.seed = 3;
-  return render::generate_scene(options);
-}
-
-render::Camera tabletop_camera(int width = 128, int height = 128) {
-  return render::make_look_at_camera({0, -1, -5}, {0, 0, 0}, {0, -1, 0}, 0.8f, width, height);
-}
-
-// GL and CPU images of one view; PSNR of the colour (printed for docs/gpu.md) and the
-// transmittance.
-double compare_view(GlPerViewRenderer& renderer, const scene::GaussianScene& scene,
-                    const render::Camera& camera, const render::RasterSettings& settings, const std::string& what) {
-  const render::RasterImage cpu = render::rasterize(scene, camera, settings);
-  const render::RasterImage gl = renderer.render_view_image(camera, settings);
-  EXPECT_EQ(gl.width, cpu.width);
-  EXPECT_EQ(gl.height, cpu.height);
-  const double colour = render::psnr(rgb_of(gl), rgb_of(cpu));
-  const double transmittance = render::psnr(to_image(gl.transmittance, gl.width, gl.height, 1),
-                                            to_image(cpu.transmittance, cpu.width, cpu.height, 1));
-  std::printf("[ psnr ] %s: colour %.1f dB, transmittance %.1f dB\n", what.c_str(), colour, transmittance);
-  EXPECT_GE(colour, kMinPsnrDb) << what;
-  EXPECT_GE(transmittance, kMinPsnrDb) << what;
-  return colour;
-}
+using testing::compare_view;
+using testing::generated_scene;
+using testing::kMinPsnrDb;
+using testing::rgb_of;
+using testing::tabletop_camera;
+using testing::to_image;
 
 TEST(GlPerView, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
   HeadlessContext context;

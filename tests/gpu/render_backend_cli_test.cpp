@@ -58,6 +58,34 @@ TEST_F(RenderBackendCli, F16OnTheCpuIsOneLineAndExit2) {
   EXPECT_FALSE(fs::exists(dir_ / "cpu16_qs3x2a1.5.png"));
 }
 
+// --raster: the compute tile rasterizer and the hardware raster give the same quilt of the
+// bundled demo scene, per view (12 views of 64x48) and through
+// G2LF, from the command line; both equal the CPU's; auto says what it measured and chose; the
+// CPU backend has no raster paths (one line, exit 2).
+TEST_F(RenderBackendCli, ComputeAndHardwareRasterGiveTheSameQuilt) {
+  const std::string scene = (test::project_data() / "scenes" / "demo.ply").string();
+  for (const std::string method : {"per-view", "g2lf"}) {
+    SCOPED_TRACE(method);
+    const std::string common = "render --scene '" + scene + "' --method " + method +
+                               " --views 12 --cols 4 --rows 3 --size 64x48 --chunks 32 --precision f32 --out '";
+    const auto name = [&](const std::string& path) { return method + "_" + path + ".png"; };
+    const auto cpu = test::run_lfd(common + (dir_ / name("cpu")).string() + "' --backend cpu");
+    ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+    for (const std::string path : {"hardware", "compute", "auto"}) {
+      const auto r = test::run_lfd(common + (dir_ / name(path)).string() + "' --backend gl --raster " + path);
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+      if (path == "auto") EXPECT_NE(r.output.find("raster: auto chose "), std::string::npos) << r.output;
+    }
+    const auto q = [&](const std::string& path) { return quilt(method + "_" + path + "_qs4x3a1.3333.png"); };
+    EXPECT_GE(render::psnr(q("compute"), q("hardware")), 40.0);
+    EXPECT_GE(render::psnr(q("compute"), q("cpu")), 40.0);
+    EXPECT_GE(render::psnr(q("auto"), q("cpu")), 40.0);
+  }
+  const auto r = render("cpu_raster.png", "--backend cpu --raster compute");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--raster"), std::string::npos) << r.output;
+}
+
 // A generated voxel scene through the real program: per-view and V2LF quilts on the GPU are the
 // CPU's (the GL voxel path, issue #13).
 TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {

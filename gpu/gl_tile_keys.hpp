@@ -1,0 +1,61 @@
+#pragma once
+// The generic half of a compute tile rasterizer (docs/gpu.md "The compute tile rasterizer";
+// contract gpu/shaders/tile_io.h): whatever is drawn (Gaussians, voxels) into whatever images
+// (a quilt's views, G2LF's planes), the client's passes count and write (slot, item) keys, and
+// this class does the rest on the GPU:
+//   scan    each item's tile count into its first key: three passes (block sums, one group over
+//           the block sums, the items), so the keys of item j come before item j + 1's
+//   sort    GlRadixSort of the keys by slot (image * tiles_per_image + tile) over the bits the
+//           slot count needs: stable, so inside a slot the items keep their order (the client
+//           gives them front to back: the depth order of the reference's (tile | depth) keys)
+//   ranges  each slot's run of sorted keys, and the list of non-empty slots with a
+//           DispatchIndirectCommand of one work group each (dispatch_work), so empty (image,
+//           tile) pairs cost nothing
+// The one read-back is the key total after the scan (it sizes the key buffers and the sort).
+#include <cstddef>
+#include <cstdint>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_program.hpp"
+#include "gpu/gl_radix_sort.hpp"
+#include "gpu/shaders/tile_io.h"
+
+namespace lfd::gpu {
+
+class GlTileKeys {
+ public:
+  GlTileKeys();  // needs a current context; compiles the passes
+
+  // The per-item counts the client's count pass writes, at least `items` long.
+  Buffer& counts(size_t items);
+  // Scans counts[0, items) in place into each item's first key; returns the key total (waits for
+  // the GPU to get it) and grows the key buffers to it.
+  uint32_t scan(uint32_t items);
+  // Sorts the `keys` keys by slot (slots < `slots`) and finds every slot's range and the
+  // non-empty slots.
+  void sort_and_find_ranges(uint32_t keys, uint32_t slots);
+
+  // Binds keys, values, ranges, the work list and the state at their bindings (tile_io.h).
+  void bind() const;
+  // One work group per non-empty slot (groups x + y * gl_NumWorkGroups.x index the work list;
+  // those past state.work_count do nothing). The consuming program must be in use.
+  void dispatch_work() const;
+  // Writes words[dispatch_word..+2] = a DispatchIndirectCommand of words[count_word] groups in
+  // `buffer` (bound at kTileStateBinding): the same spreading for a client's own lists.
+  void write_dispatch(const Buffer& buffer, uint32_t count_word, uint32_t dispatch_word) const;
+
+  Buffer& keys() { return keys_; }
+  Buffer& values() { return values_; }
+  GlRadixSort& sorter() { return sort_; }  // for a client's own sorts (one set of scratch buffers)
+  size_t bytes() const;
+
+ private:
+  Program blocks_, totals_, items_, ranges_, dispatch_;
+  GlRadixSort sort_;
+  Buffer counts_, block_sums_, state_, keys_, values_, ranges_buffer_, work_;
+};
+
+// Bits that hold slots 0 .. slots - 1 (at least 1).
+int slot_bits(uint32_t slots);
+
+}  // namespace lfd::gpu

@@ -1,0 +1,129 @@
+#pragma once
+// The compute tile rasterizer of Gaussians (--raster compute; docs/gpu.md "The compute tile
+// rasterizer"): the reference 3DGS forward pass (forward.cu: preprocess, (tile | depth) keys,
+// a sort, per-tile ranges, per-tile compositing in shared memory) in compute shaders, for every
+// view of a quilt at once: no per-view loop on the CPU, so the whole chip works where only a few
+// SMs rasterize (H100/H200). Per frame:
+//   preprocess  every (view, Gaussian) entry in one dispatch (z = view), projected exactly as the
+//               per-view preprocess (gpu/shaders/splat_project.glsl); its depth key
+//   depth sort  GlRadixSort of every entry's depth key, culled ones dropped: the items, front to
+//               back, all views mixed (32-bit float keys: the exact order, ties by entry)
+//   keys        per item the tiles its opacity-aware ellipse covers (tile_splat_cover.glsl),
+//               counted, scanned and written as slot keys (view * tiles + tile); items with big
+//               rectangles by a whole work group each (tile_splat_huge.comp.glsl)
+//   tile sort   GlTileKeys: a stable sort by slot, so each (view, tile) lists its splats front
+//               to back, and the ranges
+//   composite   one work group a (view, tile): batches of 256 splats in shared memory, the
+//               reference's alpha rules and early stop, written into the view's quilt cell
+// The one CPU read-back is GlTileKeys::scan's key total. Equal to the CPU rasterizer to rounding:
+// the depth order is the exact one and the keys skip only tiles the reference blends nothing in.
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <span>
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include "gpu/gl_objects.hpp"
+#include "gpu/gl_planes.hpp"
+#include "gpu/gl_program.hpp"
+#include "gpu/gl_scene.hpp"
+#include "gpu/gl_tile_keys.hpp"
+#include "render/camera.hpp"
+#include "render/preprocess.hpp"
+
+namespace lfd::gpu {
+
+// Where the views go: view v into cell (v % cols, v / cols) of `texture` (cells cell_size,
+// bottom-up: cell row r starts at GL row r * cell height, the view's top row at the cell's top),
+// cropped to the cell; rgb = C + T background, alpha = T (keep_transmittance) or 1.
+struct TileViewsTarget {
+  Texture* texture = nullptr;  // RGBA32F, RGBA16F or RGBA8
+  int cols = 1;
+  glm::ivec2 cell_size{0, 0};
+  glm::vec3 background{0.0f};
+  bool keep_transmittance = false;
+};
+
+// What the last frame held (for the benchmarks and the tests).
+struct TileSplatCounts {
+  size_t entries = 0;  // views x Gaussians
+  uint32_t keys = 0;   // (slot, splat) keys after the ellipse test
+  uint32_t slots = 0;  // views x tiles
+};
+
+class GlTileSplats {
+ public:
+  GlTileSplats();  // needs a current context; compiles the passes
+
+  // Renders every camera (one image size) into its cell of `target`, in one pass when the
+  // records fit a storage buffer, else in passes of as many views as fit. `stamp(k)`, when given,
+  // is called after the first pass's preprocess (k = 1) and keys and sorts (2), and at the end (3),
+  // for GPU timers.
+  void render_views(const GlScene& scene, std::span<const render::Camera> cameras,
+                    const render::RasterSettings& settings, const TileViewsTarget& target,
+                    const std::function<void(int)>& stamp = {});
+
+  // G2LF's planes (--raster compute; the twin of GlPlaneRaster::run): the items are the binned
+  // splats in `sorted_ids` (the binning's depth order), their records in `records` (preprocessed
+  // from the reference camera at the planes' size), their planes in `layers`, their count the
+  // instance count of `draw` (a DrawArraysIndirect). Keys (plane | tile); every layer of `planes`
+  // is cleared to (C, T) = (0, 0, 0, 1) and only the non-empty (plane, tile) slots are
+  // composited (the work list's indirect dispatch), each into its layer in the planes' format
+  // (RGBA8 rounded once from the float sums, as the CPU stores u8 planes).
+  void render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
+                     size_t gaussians, GlPlanes& planes, const std::function<void(int)>& stamp = {});
+
+  // The most (view, Gaussian) entries one pass holds: the views of a frame go in as few passes as
+  // this allows (one when they fit). 0 (the default): as many as the largest storage buffer a
+  // shader may bind holds records (GL_MAX_SHADER_STORAGE_BLOCK_SIZE / 64 bytes; 2 GiB on NVIDIA:
+  // 45 views of 740k Gaussians).
+  void set_max_entries_per_pass(size_t entries) { max_entries_per_pass_ = entries; }
+  // Passes the last render_views took.
+  int passes() const { return passes_; }
+
+  const TileSplatCounts& counts() const { return counts_; }
+  // The items whose keys were written by a work group each in the last frame (waits for the GPU).
+  uint32_t read_huge_items() const;
+  size_t bytes() const;
+
+ private:
+  // One pass: `cameras`, views first_view.. of the target.
+  void render_pass(const GlScene& scene, std::span<const render::Camera> cameras, uint32_t first_view,
+                   const render::RasterSettings& settings, const TileViewsTarget& target,
+                   const std::function<void(int)>& stamp);
+  // The key passes of views (PLANES 0) or planes (PLANES 1).
+  struct KeyPrograms {
+    Program count, emit, huge_count, huge_emit;
+    explicit KeyPrograms(bool planes);
+  };
+  // What the key passes read: the records, the items (record indices, front to back), where the
+  // item count is (a uint of `kept`) and, for planes, each item's plane.
+  struct Items {
+    const Buffer* records = nullptr;
+    const Buffer* entries = nullptr;
+    const Buffer* kept = nullptr;
+    uint32_t kept_word = 0;
+    const Buffer* layers = nullptr;
+    uint32_t capacity = 0;  // items dispatched
+  };
+  // Counts, scans, writes, sorts and ranges the keys of `items`: small items per invocation,
+  // huge ones per work group. Returns the key count.
+  uint32_t make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid,
+                     uint32_t slots);
+  // Counts (EMIT 0) or writes (EMIT 1).
+  void run_keys(const KeyPrograms& programs, bool emit, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid);
+  const Program& composite_program(GLenum format, bool planes);
+
+  Program preprocess_;
+  KeyPrograms view_keys_, plane_keys_;
+  std::map<std::pair<GLenum, bool>, Program> composite_;
+  GlTileKeys tiles_;
+  Buffer views_, records_, entry_keys_, entries_, huge_;
+  TileSplatCounts counts_;
+  size_t max_entries_per_pass_ = 0;
+  int passes_ = 0;
+};
+
+}  // namespace lfd::gpu
