@@ -14,7 +14,8 @@
 #   render-gl   per view vs G2LF at the paper's sizes: 100k/1M/3M Gaussians, 45 views of 512x512
 #   gpu-frame   the frame with timers waited for vs read late, swizzle variants, plane formats
 #   gpu-sort    the sort rows: all N against the visible Gaussians, float against normalised keys
-#   voxels-gl   per view vs V2LF on the level-7 tabletop (15,688 voxels)
+#   voxels-gl   per view vs V2LF on the level-7 tabletop (15,688 voxels), drawn by the hardware
+#               raster and by the compute tile rasterizer, both in one run
 #   voxels-gl-1m  the same on the generated level-10 tabletop (>= 1M voxels), 45 views of 512x512
 #   direct-gl   the direct panel pass against swizzle + interlace on the three displays at 16/64/256
 #               planes (bilinear planes filtered by the texture unit, the GL default): the compute
@@ -99,10 +100,10 @@ for s in "${steps[@]}"; do
       step gpu-sort "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs "$runs" --warmup 2 \
         --sort-only --zoom 2 --json "$out/gpu-sort.json" ;;
     voxels-gl)
-      step voxels-gl "$run" bench voxels --backend gl --level 7 --views 45 --size 512 --runs "$runs" \
+      step voxels-gl "$run" bench voxels --backend gl --raster hardware,compute --level 7 --views 45 --size 512 --runs "$runs" \
         --json "$out/voxels-gl.json" ;;
     voxels-gl-1m)
-      step voxels-gl-1m "$run" bench voxels --backend gl --level 10 --views 45 --size 512 --runs "$runs" \
+      step voxels-gl-1m "$run" bench voxels --backend gl --raster hardware,compute --level 10 --views 45 --size 512 --runs "$runs" \
         --json "$out/voxels-gl-1m.json" ;;
     direct-gl)
       step direct-gl "$run" bench direct --backend gl --generated 100000,1000000 --chunks 16,64,256 --runs "$runs" \

@@ -1,6 +1,7 @@
 // `lfd render --backend gl` through the real program: the GL quilt is the CPU's (PSNR >= 40 dB)
 // for each plane storage, including f16 (RGBA16F planes), which exists only on the GPU; asking
-// the CPU for f16 is one line and exit 2, with nothing written. Voxel scenes likewise. The direct
+// the CPU for f16 is one line and exit 2, with nothing written. Voxel scenes likewise, with
+// --raster compute and hardware too. The direct
 // panel on the GPU (its compute pass over panel tiles) is the CPU's, G2LF and V2LF.
 #include <cstdio>
 #include <filesystem>
@@ -101,6 +102,33 @@ TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {
     ASSERT_EQ(gl.exit_code, 0) << gl.output;
     EXPECT_NE(gl.output.find("on the GPU"), std::string::npos) << gl.output;
     EXPECT_GE(render::psnr(quilt(method + "_gl_qs2x2a1.5.png"), quilt(method + "_cpu_qs2x2a1.5.png")), 40.0);
+  }
+}
+
+// --raster for voxel scenes: `lfd render --scene F.voxels --backend gl --raster compute` (the
+// compute tile rasterizer, per view and V2LF's planes) gives the quilt of --raster hardware (the
+// raster pipeline) and of the CPU.
+TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
+  const std::string scene = (dir_ / "raster.voxels").string();
+  ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + scene + "'").exit_code, 0);
+  for (const std::string method : {"per-view", "v2lf"}) {
+    SCOPED_TRACE(method);
+    const std::string common = "render --scene '" + scene + "' --method " + method +
+                               " --views 4 --cols 2 --rows 2 --size 48x32 --chunks 16 --precision f32 --out '";
+    const auto name = [&](const std::string& path) { return method + "_" + path + ".png"; };
+    const auto cpu = test::run_lfd(common + (dir_ / name("cpu")).string() + "' --backend cpu");
+    ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
+    for (const std::string path : {"hardware", "compute"}) {
+      const auto r = test::run_lfd(common + (dir_ / name(path)).string() + "' --backend gl --raster " + path);
+      ASSERT_EQ(r.exit_code, 0) << r.output;
+    }
+    const auto q = [&](const std::string& path) { return quilt(method + "_" + path + "_qs2x2a1.5.png"); };
+    const double compute_hardware = render::psnr(q("compute"), q("hardware"));
+    const double compute_cpu = render::psnr(q("compute"), q("cpu"));
+    std::printf("voxels %s: compute vs hardware %.1f dB, compute vs CPU %.1f dB\n", method.c_str(), compute_hardware,
+                compute_cpu);
+    EXPECT_GE(compute_hardware, 40.0);
+    EXPECT_GE(compute_cpu, 40.0);
   }
 }
 
