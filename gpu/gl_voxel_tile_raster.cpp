@@ -52,8 +52,9 @@ bool GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, const render::Camer
   // The items: the ranges of the octants some pixel's ray takes, one after another.
   const uint32_t octants = octants_in_view(camera);
   std::array<GLuint, 8> end_item{}, offset{};
-  std::array<GLint, 8> octant_of{};
-  int range_count = 0;
+  range_octant_ = {};
+  int& range_count = range_count_;
+  range_count = 0;
   uint32_t items = 0;
   for (int octant = 0; octant < 8; ++octant) {
     const VoxelOrderRange& range = ranges[size_t(octant)];
@@ -61,12 +62,12 @@ bool GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, const render::Camer
     items += range.count;
     end_item[size_t(range_count)] = items;
     offset[size_t(range_count)] = range.offset;
-    octant_of[size_t(range_count)] = octant;
+    range_octant_[size_t(range_count)] = octant;
     ++range_count;
   }
   if (items == 0) return false;
   const uint32_t images = chunk_of ? uint32_t(plane_capacity) : 1u;
-  const uint32_t slots = images * kVoxelTileOctants * uint32_t(tile_grid_.x * tile_grid_.y);
+  const uint32_t slots = images * uint32_t(range_count) * uint32_t(tile_grid_.x * tile_grid_.y);
 
   const Program& count = chunk_of ? count_planes_ : count_;
   const Program& emit = chunk_of ? emit_planes_ : emit_;
@@ -77,7 +78,7 @@ bool GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, const render::Camer
     glProgramUniform1i(p, program->uniform("range_count"), range_count);
     glProgramUniform1uiv(p, program->uniform("range_end_item"), 8, end_item.data());
     glProgramUniform1uiv(p, program->uniform("range_offset"), 8, offset.data());
-    glProgramUniform1iv(p, program->uniform("range_octant"), 8, octant_of.data());
+    glProgramUniform1iv(p, program->uniform("range_octant"), 8, range_octant_.data());
     if (chunk_of) glProgramUniform1ui(p, program->uniform("plane_capacity"), GLuint(plane_capacity));
   }
   const auto bind_inputs = [&] {
@@ -117,6 +118,8 @@ void GlVoxelTileRaster::march(const Texture& target, glm::ivec2 origin, uint32_t
   glProgramUniform1i(p, march_.uniform("sh_stride"), sh_vec4_stride(scene.sh_degree));
   glProgramUniform1ui(p, march_.uniform("slot_base"), slot_base);
   glProgramUniform1ui(p, march_.uniform("slot_run"), slot_run);
+  glProgramUniform1i(p, march_.uniform("range_count"), range_count_);
+  glProgramUniform1iv(p, march_.uniform("range_octant"), 8, range_octant_.data());
   scene_->bind();
   keys_.bind();
   glBindImageTexture(kVoxelTileTargetImage, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
@@ -161,7 +164,7 @@ void GlVoxelTileRaster::begin_planes(const GlVoxelScene& scene, const render::Ca
 
 void GlVoxelTileRaster::draw_plane(int plane, const Texture& target) {
   if (!planes_ready_) return;  // no voxel has a key: every plane stays empty
-  const uint32_t run = kVoxelTileOctants * uint32_t(tile_grid_.x * tile_grid_.y);
+  const uint32_t run = uint32_t(range_count_) * uint32_t(tile_grid_.x * tile_grid_.y);
   march(target, glm::ivec2(0), uint32_t(plane) * run, run);
 }
 

@@ -2,7 +2,8 @@
 // SVRaster's forward pass as a compute tile rasterizer (issue #33; docs/gpu.md "Voxels on the
 // GPU"), the twin of GlVoxelRaster for devices where few SMs run the raster pipeline (H100/H200):
 //   keys    one invocation per voxel of each octant range drawn (gpu/shaders/voxel_tile_keys.comp.glsl):
-//           its footprint's tiles whose rays can take that octant, one key (octant | tile) each
+//           its footprint's tiles whose rays can take that octant, one key (image | octant | tile)
+//           each (image: V2LF's plane; the octants in view only)
 //   sort    GlTileKeys: scan, stable radix sort by slot, per-slot ranges, the non-empty slots;
 //           stable, so a slot keeps its octant's front-to-back order
 //   march   one work group per non-empty slot (voxel_tile_march.comp.glsl): every pixel whose ray
@@ -11,6 +12,8 @@
 //           stops at T < 1e-4, as voxel::rasterize_voxels_exact does
 // Targets are RGBA32F images holding (C, T) (cleared to (0, 0, 0, 1)); the pass composites over
 // what they hold, as the raster pipeline's front-to-back blend does.
+#include <array>
+
 #include <glm/glm.hpp>
 
 #include "gpu/gl_objects.hpp"
@@ -58,6 +61,8 @@ class GlVoxelTileRaster {
   const GlVoxelScene* scene_ = nullptr;
   render::Camera camera_;
   glm::ivec2 tile_grid_{0};
+  int range_count_ = 0;                 // the octants drawn: an image's slots are range_count_ * tiles
+  std::array<GLint, 8> range_octant_{};
   bool planes_ready_ = false;
 };
 

@@ -10,9 +10,9 @@ LFD_IO_BEGIN(gpu)
 
 LFD_IO_INT(kVoxelTileTargetImage, 0)         // image unit of the (C, T) target (rgba32f), read and written
 LFD_IO_UINT(kVoxelTileItemsGroupSize, 128u)  // count and emit: one invocation an item (a voxel of an octant's order)
-// Slots: (octant * tiles_per_image + tile); a tile whose rays take several octants has a list per
-// octant, each in that octant's front-to-back order, and a pixel reads its own ray's.
-LFD_IO_UINT(kVoxelTileOctants, 8u)
+// Slots: ((image * octants drawn + octant's index) * tiles_per_image + tile); a tile whose rays
+// take several octants has a list per octant, each in that octant's front-to-back order, and a
+// pixel reads its own ray's.
 
 LFD_IO_END
 

@@ -1,12 +1,13 @@
 // The voxel tile rasterizer's keys (gpu/gl_voxel_tile_raster.hpp), one invocation an item: the
 // j-th voxel of the items' octant ranges (each range a run of an octant's front-to-back order, the
 // ranges one after another). EMIT 0 counts the tiles of its footprint (voxel_footprint.glsl) whose
-// rays can take its range's octant into counts[j]; EMIT 1 writes their keys (slot = octant *
-// tiles + tile, value = the voxel) from its first key, counts[j] after the scan. The stable sort
-// then leaves every slot's voxels in its octant's order. PLANES 1 (V2LF's planes, all at once):
-// the ranges are GlVoxelBinning's grouped orders (each octant's order grouped by chunk), the
-// voxel's plane is chunk_of[voxel] (plane_capacity or more: not binned, no keys) and the slot
-// (plane * 8 + octant) * tiles + tile, so each plane's slots are one contiguous run.
+// rays can take its range's octant into counts[j]; EMIT 1 writes their keys (slot = r * tiles +
+// tile for range r, one range per octant drawn; value = the voxel) from its first key, counts[j]
+// after the scan. The stable sort then leaves every slot's voxels in its octant's order. PLANES 1
+// (V2LF's planes, all at once): the ranges are GlVoxelBinning's grouped orders (each octant's
+// order grouped by chunk), the voxel's plane is chunk_of[voxel] (plane_capacity or more: not
+// binned, no keys) and the slot (plane * range_count + r) * tiles + tile, so each plane's slots
+// are one contiguous run.
 #include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/tile_io.h"
 #include "gpu/shaders/voxel_tile_io.h"
@@ -43,7 +44,7 @@ void main() {
   uint begin = r == 0 ? 0u : range_end_item[r - 1];
   uint voxel = order[range_offset[r] + (j - begin)];
   uint octant = uint(range_octant[r]);
-  uint first_slot = octant;  // in units of whole images' tiles
+  uint first_slot = uint(r);  // in units of whole images' tiles
 #if PLANES
   uint plane = chunk_of[voxel];
   if (plane >= plane_capacity) {
@@ -52,7 +53,7 @@ void main() {
 #endif
     return;
   }
-  first_slot += kVoxelTileOctants * plane;
+  first_slot += uint(range_count) * plane;
 #endif
   ivec4 footprint = voxel_footprint(boxes[voxel], world_to_camera, camera_position, tan_half_fov, shift_ndc, image_size);
   uint n = 0u;

@@ -1,5 +1,6 @@
 // The voxel tile rasterizer's ray marching (gpu/gl_voxel_tile_raster.hpp): SVRaster's forward
-// pass per tile, one work group a non-empty (octant, tile) slot, one invocation a pixel. The
+// pass per tile, one work group a non-empty (octant, tile) slot (slot = (image * range_count + r)
+// * tiles + tile, range r's octant range_octant[r]), one invocation a pixel. The
 // slot's voxels, front to back in the octant's order, are loaded kTilePixels at a time into shared
 // memory (box, densities and the SH colour seen from sh_origin, once per voxel and tile), then
 // every pixel whose ray takes the slot's octant composites the batch with the CPU's rules
@@ -32,6 +33,8 @@ uniform ivec2 viewport_origin;
 uniform int samples_per_voxel;
 uniform uint slot_base;
 uniform uint slot_run;
+uniform int range_count;       // the octants drawn (voxel_tile_keys.comp.glsl's ranges)
+uniform int range_octant[8];
 
 shared vec4 batch_box[kTilePixels];
 shared vec4 batch_c0123[kTilePixels];
@@ -52,7 +55,7 @@ void main() {
   uvec2 range = ranges[slot];
   if (range.x == range.y) return;  // the same for the whole group
   uint tiles = uint(tile_grid.x * tile_grid.y);
-  int octant = int((slot / tiles) % kVoxelTileOctants);
+  int octant = range_octant[(slot / tiles) % uint(range_count)];
   uint tile = slot % tiles;
   ivec2 pixel = ivec2(int(tile % uint(tile_grid.x)) * int(kTileSide) + int(gl_LocalInvocationID.x),
                       int(tile / uint(tile_grid.x)) * int(kTileSide) + int(gl_LocalInvocationID.y));
