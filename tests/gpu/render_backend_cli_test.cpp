@@ -5,11 +5,13 @@
 // panel on the GPU (its compute pass over panel tiles) is the CPU's, G2LF and V2LF.
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "render/image_metrics.hpp"
 #include "tests/apps/run_lfd.hpp"
@@ -130,6 +132,27 @@ TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
     EXPECT_GE(compute_hardware, 40.0);
     EXPECT_GE(compute_cpu, 40.0);
   }
+}
+
+// `lfd bench voxels --raster hardware,compute`: both paths in one run, one table each in the
+// JSON; V2LF's PSNR against each path's own per-view quilt is the same (both quilts are the
+// CPU's); the CPU has no raster paths (exit 2).
+TEST_F(RenderBackendCli, BenchVoxelsRunsBothRasterPaths) {
+  const fs::path json = dir_ / "voxels.json";
+  const auto r = test::run_lfd("bench voxels --backend gl --raster hardware,compute --level 5 --views 2 --size 32 "
+                               "--chunks 64 --runs 1 --warmup 0 --json '" + json.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json result = nlohmann::json::parse(in);
+  ASSERT_EQ(result["rasters"].size(), 2u);
+  EXPECT_EQ(result["rasters"][0]["raster"], "hardware");
+  EXPECT_EQ(result["rasters"][1]["raster"], "compute");
+  const auto v2lf_db = [&](int path) {
+    return result["rasters"][path]["result"]["tables"][0]["rows"][1]["psnr_db"].get<double>();
+  };
+  EXPECT_NEAR(v2lf_db(0), v2lf_db(1), 0.05);
+  const auto cpu = test::run_lfd("bench voxels --backend cpu --raster compute --level 5 --views 2 --size 32");
+  EXPECT_EQ(cpu.exit_code, 2) << cpu.output;
 }
 
 // `lfd render --direct --backend gl`: the panel from the compute direct pass against the CPU's
