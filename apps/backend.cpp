@@ -1,5 +1,6 @@
 #include "apps/backend.hpp"
 
+#include <cstdio>
 #include <iostream>
 
 #include <fmt/format.h>
@@ -22,11 +23,34 @@ CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::str
 
 CLI::Option* add_raster_option(CLI::App& app, std::string& name) {
   return app.add_option("--raster", name,
-                        "GL backend, Gaussians: hardware (instanced quads through the raster pipeline), compute "
+                        "GL backend, Gaussians and per-view voxels: hardware (the raster pipeline), compute "
                         "(a tile rasterizer in compute shaders) or auto (the faster on this device, measured once "
                         "per run; docs/gpu.md)")
       ->check(CLI::IsMember({"hardware", "compute", "auto"}))
       ->capture_default_str();
+}
+
+CLI::Option* add_bench_raster_option(CLI::App& app, std::vector<std::string>& names, const std::string& what) {
+  return app.add_option("--raster", names,
+                        "--backend gl: how " + what + " are drawn, hardware, compute or auto, comma-separated: each "
+                        "in turn in this run, on the same scenes")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
+}
+
+nlohmann::ordered_json run_per_raster(const CLI::App& app, const std::vector<std::string>& names,
+                                      const std::string& backend,
+                                      const std::function<nlohmann::ordered_json(gpu::RasterPath)>& run) {
+  if (app.count("--raster") && backend == "cpu")
+    throw_input_error("--raster: chooses how the GL backend draws; --backend cpu has no raster paths");
+  nlohmann::ordered_json result;
+  for (const std::string& name : names) {
+    if (names.size() == 1) return run(gpu::parse_raster_path(name));
+    std::printf("\n## --raster %s\n\n", name.c_str());
+    result["rasters"].push_back({{"raster", name}, {"result", run(gpu::parse_raster_path(name))}});
+  }
+  return result;
 }
 
 gpu::RasterPath resolve_raster(gpu::RasterPath path) {

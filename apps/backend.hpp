@@ -2,10 +2,13 @@
 // `--backend cpu|gl|auto` for the commands that render or interlace: which implementation runs.
 // gl needs an OpenGL 4.5 core context (headless EGL); without one it is an input error (exit 2,
 // one line). auto takes the GPU when a context can be made and otherwise the CPU, saying why.
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "gpu/gl_context.hpp"
 #include "gpu/raster_path.hpp"
@@ -22,6 +25,16 @@ CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::str
 // Adds `--raster` (choices compute, hardware, auto) to `app`, bound to `name`: how the GL
 // backend draws Gaussians (gpu/raster_path.hpp).
 CLI::Option* add_raster_option(CLI::App& app, std::string& name);
+
+// A benchmark's `--raster` (bench render, bench voxels): paths comma-separated, each run in turn
+// on the same scenes; `what` says what the paths draw.
+CLI::Option* add_bench_raster_option(CLI::App& app, std::vector<std::string>& names, const std::string& what);
+// Runs `run` once per path of `names` (a heading per path when there are several) and returns its
+// figures: one path, its result alone; several, {"rasters": [{"raster", "result"}, ...]}.
+// `--raster` given with `backend` cpu is an InputError (the CPU has no raster paths).
+nlohmann::ordered_json run_per_raster(const CLI::App& app, const std::vector<std::string>& names,
+                                      const std::string& backend,
+                                      const std::function<nlohmann::ordered_json(gpu::RasterPath)>& run);
 
 // `path`, or for auto the measured choice (gpu::resolve_raster_path; a GL context must be
 // current), printing "raster: auto chose compute (probe quilt: compute 12.3 ms, hardware 45.6 ms)".

@@ -96,6 +96,7 @@ int RunBenchDirect(int argc, char** argv) {
   app.add_option("--generated", generated, "Gaussians of generated tabletop scenes, comma-separated (0: none)")
       ->delimiter(',')->capture_default_str();
   app.add_option("--chunks", o.chunks, "N_chunk of each row, comma-separated")->delimiter(',')->capture_default_str();
+  app.add_option("--plane-scale", o.plane_scale, "the planes' resolution scale P_s of every row")->capture_default_str();
   app.add_option("--runs", o.runs, "timed frames per side and row (0: the backend's default)")->capture_default_str();
   app.add_option("--warmup", o.warmup, "untimed frames of each side first")->capture_default_str();
   app.add_option("--reference-views", o.reference_views,

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "util/default_display.hpp"
+#include "apps/backend.hpp"
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/bench_renderers.hpp"
@@ -36,12 +37,7 @@ int RunBenchRender(int argc, char** argv) {
   std::vector<std::string> rasters{"hardware"};
   app.add_option("--backend", backend, "renderer: cpu, or gl (OpenGL 4.5 through headless EGL; exit 2 without it)")
       ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
-  app.add_option("--raster", rasters,
-                 "--backend gl: how Gaussians are drawn, hardware, compute or auto, comma-separated: each in turn "
-                 "in this run, on the same scenes")
-      ->delimiter(',')
-      ->capture_default_str()
-      ->check(CLI::IsMember({"hardware", "compute", "auto"}));
+  add_bench_raster_option(app, rasters, "Gaussians");
   app.add_option("--scene", scene_files, "scene files to render (repeatable)");
   app.add_option("--generated", generated,
                  "Gaussians of generated tabletop scenes, comma-separated (0: none)")
@@ -86,21 +82,11 @@ int RunBenchRender(int argc, char** argv) {
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
-  if (app.count("--raster") && backend == "cpu")
-    throw_input_error("--raster: chooses how the GL backend draws; --backend cpu has no raster paths");
   // One table per raster path (one: the table alone, as before; several: {"rasters": [...]}).
-  nlohmann::ordered_json result;
-  for (const std::string& name : rasters) {
-    if (rasters.size() > 1) std::printf("\n## --raster %s\n\n", name.c_str());
-    const bench::BenchRenderers renderers =
-        bench::make_bench_renderers(backend, scene::SceneKind::kGaussians, gpu::parse_raster_path(name));
-    nlohmann::ordered_json one = bench::run_render_benchmark(*renderers.per_view, *renderers.sweeping, o);
-    if (rasters.size() == 1) {
-      result = std::move(one);
-    } else {
-      result["rasters"].push_back({{"raster", name}, {"result", std::move(one)}});
-    }
-  }
+  const nlohmann::ordered_json result = run_per_raster(app, rasters, backend, [&](gpu::RasterPath raster) {
+    const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, scene::SceneKind::kGaussians, raster);
+    return bench::run_render_benchmark(*renderers.per_view, *renderers.sweeping, o);
+  });
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");
     std::printf("\nwrote %s\n", json_path.c_str());

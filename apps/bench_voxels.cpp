@@ -1,8 +1,11 @@
 // lfd bench voxels: per-view voxel quilts against V2LF (bench/voxel_benchmark.hpp).
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "apps/backend.hpp"
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/bench_renderers.hpp"
@@ -21,6 +24,7 @@ int RunBenchVoxels(int argc, char** argv) {
       "\nExamples:\n"
       "  lfd bench voxels --views 9 --size 256\n"
       "  lfd bench voxels --backend gl --views 45 --size 512\n"
+      "  lfd bench voxels --backend gl --raster hardware,compute --views 9 --size 128   (both GL raster paths, one run)\n"
       "  lfd bench voxels --scene demo.voxels --camera cam.json --views 45 --size 512 --json v2lf.json",
       "voxels"};
   bench::VoxelBenchOptions o;
@@ -48,13 +52,18 @@ int RunBenchVoxels(int argc, char** argv) {
   std::string backend = "cpu";
   app.add_option("--backend", backend, "renderer: cpu, or gl (the GL voxel path through headless EGL; exit 2 without it)")
       ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
+  std::vector<std::string> rasters{"hardware"};
+  add_bench_raster_option(app, rasters, "voxels (per view and V2LF's planes)");
   if (auto code = parse(app, argc, argv)) return *code;
   o.plane_lowpass = !no_lowpass;
   o.check();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // rows appear as they finish, also in a log file
 
-  const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, scene::SceneKind::kVoxels);
-  const nlohmann::ordered_json result = bench::run_voxel_benchmark(*renderers.per_view, *renderers.sweeping, o);
+  // One table per raster path (one: the table alone; several: {"rasters": [...]}).
+  const nlohmann::ordered_json result = run_per_raster(app, rasters, backend, [&](gpu::RasterPath raster) {
+    const bench::BenchRenderers renderers = bench::make_bench_renderers(backend, scene::SceneKind::kVoxels, raster);
+    return bench::run_voxel_benchmark(*renderers.per_view, *renderers.sweeping, o);
+  });
   if (!json_path.empty()) {
     write_text_atomic(json_path, result.dump(2) + "\n");
     std::printf("\nwrote %s\n", json_path.c_str());

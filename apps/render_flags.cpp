@@ -17,7 +17,7 @@ namespace {
 lightfield::RendererOptions plane_options(const RenderFlags& f) {
   lightfield::RendererOptions options;
   options.planes = f.g2lf;
-  options.planes.filter = render::parse_plane_filter(f.filter);
+  if (!f.filter.empty()) options.planes.filter = options.direct_filter = render::parse_plane_filter(f.filter);
   // f16 exists only as a GPU texture format; the CPU planes are u8 or f32.
   if (f.precision == "f16") options.gl.plane_format = gpu::PlaneFormat::kRgba16f;
   options.planes.precision = render::parse_plane_precision(f.precision == "f16" ? "f32" : f.precision);
@@ -61,8 +61,10 @@ void add_scene_and_plane_options(CLI::App& app, RenderFlags& f) {
                  "aspect, else 512x512)");
   app.add_option("--chunks", f.g2lf.chunks, "G2LF and V2LF: number of depth chunks N_chunk")->capture_default_str();
   app.add_option("--plane-scale", f.g2lf.plane_scale, "G2LF and V2LF: plane resolution scale P_s")->capture_default_str();
-  app.add_option("--filter", f.filter, "G2LF and V2LF: plane sampling, nearest or bilinear")
-      ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
+  app.add_option("--filter", f.filter,
+                 "G2LF and V2LF: plane sampling, nearest or bilinear (default: nearest for the quilt's swizzle, "
+                 "bilinear for --direct, which is closer to the continuous views there: docs/rendering.md)")
+      ->check(CLI::IsMember({"nearest", "bilinear"}));
   app.add_option("--precision", f.precision,
                  "G2LF and V2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F; G2LF on the GPU blends u8 planes "
                  "in RGBA16F, RGBA8 only where those exceed the memory), or f16 (RGBA16F, --backend gl only)")

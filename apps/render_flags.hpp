@@ -20,7 +20,7 @@ namespace lfd::apps {
 // The command line, as given.
 struct RenderFlags {
   std::string scene_path, method = "g2lf", size_text, out, camera_path;
-  std::string filter = "nearest", precision = "u8", binning = "mixed", background_text = "0,0,0";
+  std::string filter, precision = "u8", binning = "mixed", background_text = "0,0,0";
   std::string panel_path, blend = "nearest", backend_name = "cpu";
   std::string raster = "hardware";  // --raster (docs/gpu.md)
   std::optional<int> views_opt, cols_opt, rows_opt;

@@ -56,16 +56,18 @@ Frame make_frame(const std::string& path, const scene::Scene& scene, int view_he
 }
 
 // The quilt path's interlacing on the renderer's backend: the CPU reference interlacer on the
-// quilt image, or the interlacing shader on the GL device's quilt texture.
+// quilt image, or the interlacing shader on the GL device's quilt texture (its compute pass, as
+// the offscreen paths, or the fragment pass a window uses).
 class QuiltInterlacer {
  public:
   QuiltInterlacer(lightfield::LightFieldRenderer& renderer, const display::LensModel& lens,
-                  const render::QuiltLayout& layout, interlace::ViewBlend blend)
+                  const render::QuiltLayout& layout, interlace::ViewBlend blend,
+                  gpu::InterlacePass pass = gpu::InterlacePass::kCompute)
       : renderer_(renderer), lens_(lens), layout_(layout) {
     options_.blend = blend;
     gl_ = dynamic_cast<lightfield::GlLightFieldRenderer*>(&renderer);
     if (gl_) {
-      gl_interlacer_ = std::make_unique<gpu::GlInterlacer>(lens, layout, options_);
+      gl_interlacer_ = std::make_unique<gpu::GlInterlacer>(lens, layout, options_, pass);
       gl_panel_ = gpu::Texture(renderer.options().gl.quilt_format, lens.calibration().screen_w,
                                lens.calibration().screen_h);
     }
@@ -144,6 +146,7 @@ class Runner {
     nlohmann::ordered_json out = {{"benchmark", "direct"},       {"backend", sweeping_.name()},
                                   {"device", sweeping_.device()}, {"memory", sweeping_.memory_kind()},
                                   {"runs", runs_},                {"warmup", options_.warmup},
+                                  {"plane_scale", options_.plane_scale},
                                   {"reference_views", options_.reference_views},
                                   {"direct_filter", options_.direct_filter == render::PlaneFilter::kBilinear
                                                         ? "bilinear" : "nearest"},
@@ -209,8 +212,9 @@ class Runner {
     }
     std::printf("| N_chunk | swizzle [s] | interlace [s] | after planes: quilt [s] | direct pass [s] | speed-up "
                 "| frame: quilt [s] | frame: direct [s] | speed-up | quilt [MB] | PSNR direct [dB] "
-                "| PSNR quilt nearest [dB] | PSNR quilt linear [dB] |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                "| PSNR quilt nearest [dB] | PSNR quilt linear [dB] | GL fragment stages: interlace [s] "
+                "| direct pass [s] |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     nlohmann::ordered_json table = {{"scene", label(source)},
                                     {"method", options_.kind == scene::SceneKind::kVoxels ? "V2LF" : "G2LF"},
                                     {"primitives", scene.size()},
@@ -228,25 +232,44 @@ class Runner {
                                  const std::optional<ImageF>& reference) {
     lightfield::RendererOptions o = sweeping_.options();
     o.planes.chunks = chunks;
+    o.planes.plane_scale = options_.plane_scale;
     o.gl.gpu_timers = true;  // the stage times (they wait at the end of a frame, as glFinish does)
     sweeping_.set_options(o);
     lightfield::RendererOptions direct = o;
-    direct.planes.filter = options_.direct_filter;
+    direct.direct_filter = options_.direct_filter;
     direct.gl.direct_hardware_bilinear = options_.direct_hardware_bilinear;
     direct.direct_kernel = options_.direct_kernel;
     QuiltInterlacer nearest(sweeping_, lens, f.layout, interlace::ViewBlend::kNearest);
+    // GL: the fragment stages of the interlacer and the direct pass (what a window draws with),
+    // timed in the same rounds as the compute passes the offscreen paths use.
+    const bool gl = dynamic_cast<lightfield::GlLightFieldRenderer*>(&sweeping_) != nullptr;
+    std::optional<QuiltInterlacer> nearest_fragment;
+    if (gl) nearest_fragment.emplace(sweeping_, lens, f.layout, interlace::ViewBlend::kNearest, gpu::InterlacePass::kFragment);
+    lightfield::RendererOptions direct_fragment = direct;
+    direct_fragment.gl.direct_compute = false;
     std::vector<double> swizzle, interlace_s, after_quilt, direct_pass, frame_quilt, frame_direct;
+    std::vector<double> interlace_fragment, direct_pass_fragment;
     for (int i = 0; i < options_.warmup + runs_; ++i) {
       auto t0 = Clock::now();
       const lightfield::QuiltStats q = sweeping_.render_quilt(f.geometry, f.layout);
       const double il = nearest.interlace();
       const double quilt_frame = seconds_since(t0);
+      const double il_fragment = gl ? nearest_fragment->interlace() : 0.0;
+      double direct_fragment_seconds = 0;
+      if (gl) {  // first, so the compute pass's panel is the one read back below
+        sweeping_.set_options(direct_fragment);
+        direct_fragment_seconds = sweeping_.render_panel(f.geometry, lens, {}).seconds_swizzle;
+      }
       sweeping_.set_options(direct);
       t0 = Clock::now();
       const lightfield::QuiltStats d = sweeping_.render_panel(f.geometry, lens, {});
       const double direct_frame = seconds_since(t0);
       sweeping_.set_options(o);
       if (i < options_.warmup) continue;
+      if (gl) {
+        interlace_fragment.push_back(il_fragment);
+        direct_pass_fragment.push_back(direct_fragment_seconds);
+      }
       swizzle.push_back(q.seconds_swizzle);
       interlace_s.push_back(il);
       after_quilt.push_back(q.seconds_swizzle + il);
@@ -256,6 +279,11 @@ class Runner {
     }
     const TimingStats sw = summarize(swizzle), il = summarize(interlace_s), aq = summarize(after_quilt),
                       dp = summarize(direct_pass), fq = summarize(frame_quilt), fd = summarize(frame_direct);
+    std::optional<TimingStats> il_fragment, dp_fragment;
+    if (gl) {
+      il_fragment = summarize(interlace_fragment);
+      dp_fragment = summarize(direct_pass_fragment);
+    }
     const double quilt_mb = double(f.layout.width) * f.layout.height *
                             (dynamic_cast<lightfield::GlLightFieldRenderer*>(&sweeping_) ? 4.0 : 12.0) / 1e6;
     std::optional<double> psnr_direct, psnr_nearest, psnr_linear;
@@ -269,10 +297,13 @@ class Runner {
       psnr_linear = render::psnr(linear.panel(), *reference);
     }
     const auto opt = [](const std::optional<double>& v) { return v ? fmt::format("{:.2f}", *v) : std::string("-"); };
-    std::printf("| %d | %.3f | %.3f | %.3f | %.3f | %.2fx | %.3f | %.3f | %.2fx | %.0f | %s | %s | %s |\n", chunks,
-                sw.median, il.median, aq.median, dp.median, aq.median / dp.median, fq.median, fd.median,
+    const auto seconds = [](const std::optional<TimingStats>& t) {
+      return t ? fmt::format("{:.3f}", t->median) : std::string("-");
+    };
+    std::printf("| %d | %.3f | %.3f | %.3f | %.3f | %.2fx | %.3f | %.3f | %.2fx | %.0f | %s | %s | %s | %s | %s |\n",
+                chunks, sw.median, il.median, aq.median, dp.median, aq.median / dp.median, fq.median, fd.median,
                 fq.median / fd.median, quilt_mb, opt(psnr_direct).c_str(), opt(psnr_nearest).c_str(),
-                opt(psnr_linear).c_str());
+                opt(psnr_linear).c_str(), seconds(il_fragment).c_str(), seconds(dp_fragment).c_str());
     std::fflush(stdout);
     const auto json_opt = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; };
     return {{"chunks", chunks},
@@ -287,7 +318,9 @@ class Runner {
             {"quilt_bytes", quilt_mb * 1e6},
             {"psnr_direct_db", json_opt(psnr_direct)},
             {"psnr_quilt_nearest_db", json_opt(psnr_nearest)},
-            {"psnr_quilt_linear_db", json_opt(psnr_linear)}};
+            {"psnr_quilt_linear_db", json_opt(psnr_linear)},
+            {"interlace_fragment_seconds", il_fragment ? il_fragment->to_json() : nlohmann::ordered_json(nullptr)},
+            {"direct_pass_fragment_seconds", dp_fragment ? dp_fragment->to_json() : nlohmann::ordered_json(nullptr)}};
   }
 
   lightfield::LightFieldRenderer& sweeping_;
@@ -307,6 +340,7 @@ void DirectBenchOptions::check() const {
   if (chunks.empty()) fail("chunks", "no plane count");
   for (int c : chunks)
     if (c < 1 || c > 4096) fail("chunks", fmt::format("{} is outside 1..4096", c));
+  if (plane_scale < 1 || plane_scale > 8) fail("plane_scale", fmt::format("{} is outside 1..8", plane_scale));
   if (runs < 0 || runs > 1000) fail("runs", fmt::format("{} is outside 0..1000", runs));
   if (warmup < 0 || warmup > 100) fail("warmup", fmt::format("{} is outside 0..100", warmup));
   if (reference_views != 0 && (reference_views < 2 || reference_views > 4096))

@@ -23,6 +23,7 @@ struct DirectBenchOptions {
   std::vector<std::string> calibrations;  // visual.json / calibration.json files
   std::vector<SceneSource> scenes;
   std::vector<int> chunks = {64};  // N_chunk of each row (quality and time against the planes)
+  int plane_scale = 1;             // P_s of every row (render::G2lfOptions::plane_scale)
   int runs = 0;                    // timed frames per side and row; 0: the backend's default
   int warmup = 1;                  // untimed frames of each side first
   int reference_views = 256;       // views of the continuous reference; 0: no quality figures

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gpu/shaders/interlace.comp.glsl.hpp"
 #include "gpu/shaders/interlace.frag.glsl.hpp"
 #include "gpu/shaders/interlace.vert.glsl.hpp"
 #include "gpu/shaders/lens_view_io.h"
@@ -15,30 +16,46 @@
 namespace lfd::gpu {
 
 GlInterlacer::GlInterlacer(const display::LensModel& lens, const render::QuiltLayout& layout,
-                           interlace::InterlaceOptions options)
+                           interlace::InterlaceOptions options, InterlacePass pass)
     : layout_(layout),
+      options_(options),
+      pass_(pass),
+      calibration_(lens.calibration()),
       panel_width_(lens.calibration().screen_w),
       panel_height_(lens.calibration().screen_h),
       program_("interlace", {{GL_VERTEX_SHADER, interlace_vert_glsl},
                              {GL_FRAGMENT_SHADER, interlace_frag_glsl}}),
       lens_view_(lens) {
   layout_.check("quilt");
-  const auto& cal = lens.calibration();
-  const GLuint p = program_.id();
-  const auto at = [&](const char* name) { return program_.uniform(name); };
+  set_uniforms(program_);
+}
 
-  lens_view_.set_uniforms(program_);
+void GlInterlacer::set_uniforms(const Program& program) const {
+  const GLuint p = program.id();
+  const auto at = [&](const char* name) { return program.uniform(name); };
+  lens_view_.set_uniforms(program);
   glProgramUniform1i(p, at("views"), layout_.views);
   glProgramUniform1i(p, at("quilt_cols"), layout_.cols);
   glProgramUniform2i(p, at("tile_size"), layout_.tile_width(), layout_.tile_height());
   // Interlacer::sample_for's aspect fit as a scale of (u - 0.5, v - 0.5) (docs/display-model.md
   // "Vendor interlacing rules").
-  const interlace::AspectFit fit = interlace::aspect_fit(cal, layout_.aspect, options.overscan, layout_.tile_height());
+  const interlace::AspectFit fit = interlace::aspect_fit(calibration_, layout_.aspect, options_.overscan, layout_.tile_height());
   glProgramUniform2f(p, at("aspect_scale"), float(fit.scale_u), float(fit.scale_v));
-  glProgramUniform1i(p, at("invert_views"), options.invert_views ? 1 : 0);
-  glProgramUniform1i(p, at("linear_blend"), options.blend == interlace::ViewBlend::kLinear);
-  glProgramUniform1f(p, at("fringe"), float(cal.fringe));
+  glProgramUniform1i(p, at("invert_views"), options_.invert_views ? 1 : 0);
+  glProgramUniform1i(p, at("linear_blend"), options_.blend == interlace::ViewBlend::kLinear);
+  glProgramUniform1f(p, at("fringe"), float(calibration_.fringe));
   check_gl("setting up the interlacing shader");
+}
+
+const Program& GlInterlacer::compute_program(GLenum panel_format) {
+  auto it = compute_programs_.find(panel_format);
+  if (it == compute_programs_.end()) {
+    Program p("interlace (compute)", {{GL_COMPUTE_SHADER, interlace_comp_glsl}},
+              {std::string("PANEL_FORMAT ") + image_format_qualifier(panel_format, "panel texture")});
+    set_uniforms(p);
+    it = compute_programs_.emplace(panel_format, std::move(p)).first;
+  }
+  return it->second;
 }
 
 void GlInterlacer::check_quilt(const Texture& quilt) const {
@@ -66,11 +83,26 @@ void GlInterlacer::interlace(const Texture& quilt, Texture& panel) {
   if (panel.width() != panel_width_ || panel.height() != panel_height_ || panel.layers())
     throw_input_error("panel: texture is {}x{} but the display is {}x{}", panel.width(),
                       panel.height(), panel_width_, panel_height_);
-  target_.attach(0, panel);
-  target_.finish(1);
-  glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
-  draw(quilt);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  if (pass_ == InterlacePass::kFragment) {
+    target_.attach(0, panel);
+    target_.finish(1);
+    glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
+    draw(quilt);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return;
+  }
+  check_quilt(quilt);
+  const Program& p = compute_program(panel.internal_format());
+  p.use();
+  glBindTextureUnit(kInterlaceQuiltUnit, quilt.id());
+  lens_view_.bind();
+  glBindImageTexture(kInterlacePanelImage, panel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, panel.internal_format());
+  glDispatchCompute((GLuint(panel_width_) + kInterlaceGroupWidth - 1) / kInterlaceGroupWidth,
+                    (GLuint(panel_height_) + kInterlaceGroupHeight - 1) / kInterlaceGroupHeight, 1);
+  // The panel is read next by texture fetches (a window's blit), image loads or a read-back.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  check_gl("interlacing (compute)");
 }
 
 Texture texture_from_image(const ImageF& image) {
@@ -107,7 +139,8 @@ ImageF image_from_texture(const Texture& texture) {
 }
 
 ImageF interlace_on_gpu(const ImageF& quilt, const render::QuiltLayout& layout,
-                        const display::LensModel& lens, const interlace::InterlaceOptions& options) {
+                        const display::LensModel& lens, const interlace::InterlaceOptions& options,
+                        InterlacePass pass) {
   if (quilt.width != layout.width || quilt.height != layout.height)
     throw_input_error("quilt: image is {}x{} but the layout says {}x{}", quilt.width,
                       quilt.height, layout.width, layout.height);
@@ -118,7 +151,7 @@ ImageF interlace_on_gpu(const ImageF& quilt, const render::QuiltLayout& layout,
       std::max(cal.screen_w, cal.screen_h) > max_size)
     throw_input_error("quilt {}x{} or panel {}x{}: larger than this GL's textures ({} pixels)",
                       quilt.width, quilt.height, cal.screen_w, cal.screen_h, max_size);
-  GlInterlacer interlacer(lens, layout, options);
+  GlInterlacer interlacer(lens, layout, options, pass);
   const Texture quilt_texture = texture_from_image(quilt);
   Texture panel(GL_RGBA32F, cal.screen_w, cal.screen_h);
   interlacer.interlace(quilt_texture, panel);

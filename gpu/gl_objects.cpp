@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <stdexcept>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -114,6 +115,15 @@ void Buffer::bind_storage(GLuint binding) const {
 }
 
 // ---- Texture ----
+
+const char* image_format_qualifier(GLenum internal_format, const char* what) {
+  switch (internal_format) {
+    case GL_RGBA8: return "rgba8";
+    case GL_RGBA16F: return "rgba16f";
+    case GL_RGBA32F: return "rgba32f";
+    default: throw std::logic_error(std::string(what) + ": use GL_RGBA8, GL_RGBA16F or GL_RGBA32F");
+  }
+}
 
 size_t bytes_per_texel(GLenum f) {
   switch (f) {

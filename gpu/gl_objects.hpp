@@ -70,6 +70,9 @@ class Texture {
 
 // Bytes per texel of the internal formats lfd uses (RGBA8, RGBA16F, RGBA32F, R32F, RG32F, ...).
 size_t bytes_per_texel(GLenum internal_format);
+// The GLSL image format qualifier of an RGBA8, RGBA16F or RGBA32F texture, for a compute pass
+// that writes it with imageStore; std::logic_error naming `what` for another format.
+const char* image_format_qualifier(GLenum internal_format, const char* what);
 
 // Bytes of buffers and textures alive now and the most since reset_gpu_peak().
 size_t gpu_bytes_allocated();

@@ -25,15 +25,6 @@ void set_camera_uniforms(const Program& p, const render::QuiltGeometry& geometry
 }
 
 
-const char* image_format_qualifier(GLenum format) {
-  switch (format) {
-    case GL_RGBA8: return "rgba8";
-    case GL_RGBA16F: return "rgba16f";
-    case GL_RGBA32F: return "rgba32f";
-    default: throw std::logic_error("quilt texture: use GL_RGBA8, GL_RGBA16F or GL_RGBA32F");
-  }
-}
-
 }  // namespace
 
 GlSwizzle::GlSwizzle(int views_per_invocation)
@@ -58,7 +49,7 @@ const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_forma
               {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
                std::string("HW_BILINEAR ") + (options_.hardware_bilinear ? "1" : "0"),
                std::string("TABLE ") + (options_.factor_table ? "1" : "0"),
-               std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format),
+               std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format, "quilt texture"),
                "VIEWS " + std::to_string(options_.views_per_invocation)});
     it = programs_.emplace(key, std::move(p)).first;
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -239,12 +240,17 @@ GlSweepingPlaneStages GlV2lfRenderer::cpu_binned_stages(const render::QuiltGeome
     const std::vector<uint8_t> table = plane_table(cpu_binned_.chunks, o.chunks);
     planes.table.buffer.upload(table.data(), table.size());
   };
-  stages.draw_planes = [this, &geometry, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
+  stages.draw_planes = [this, &geometry, &o, &options](const render::ReferenceCamera& ref, GlPlanes& planes) {
     const GlVoxelScene& scene = split_scene_ ? *split_scene_ : scene_;
+    const glm::vec3& sh_origin = geometry.base.position_world;
     draw_planes(
         int(ranges_.size()),
         [&](int k, const SplatRasterTarget& target) {
-          raster_.draw(scene, ref.camera, geometry.base.position_world, chunk_orders_, ranges_[size_t(k)], target);
+          if (options.raster == RasterPath::kCompute)
+            tile_raster_->draw(scene, ref.camera, sh_origin, chunk_orders_, ranges_[size_t(k)], accumulation_,
+                               glm::ivec2(0));
+          else
+            raster_.draw(scene, ref.camera, sh_origin, chunk_orders_, ranges_[size_t(k)], target);
         },
         lowpass_variance(geometry, ref, o), nullptr, planes);
   };
@@ -259,8 +265,17 @@ GlSweepingPlaneStages GlV2lfRenderer::gpu_binned_stages(const render::QuiltGeome
   stages.bin = [this, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
     binning_.run(scene_, ref, o.chunks, o.binning, plane_groups(planes.width, planes.height), planes.table);
   };
-  stages.draw_planes = [this, &geometry, &o](const render::ReferenceCamera& ref, GlPlanes& planes) {
-    raster_.begin_indirect(scene_, ref.camera, geometry.base.position_world, binning_.orders(), binning_.draws(),
+  stages.draw_planes = [this, &geometry, &o, &options](const render::ReferenceCamera& ref, GlPlanes& planes) {
+    const glm::vec3& sh_origin = geometry.base.position_world;
+    if (options.raster == RasterPath::kCompute) {
+      // Every plane's keys in one sort (one read-back: the key total), then a plane's run of slots a plane.
+      tile_raster_->begin_planes(scene_, ref.camera, sh_origin, binning_.orders(), binning_.chunk_of(), planes.max_planes);
+      draw_planes(
+          o.chunks, [&](int k, const SplatRasterTarget&) { tile_raster_->draw_plane(k, accumulation_); },
+          lowpass_variance(geometry, ref, o), &binning_.draws(), planes);
+      return;
+    }
+    raster_.begin_indirect(scene_, ref.camera, sh_origin, binning_.orders(), binning_.draws(),
                            accumulation_target(planes));
     draw_planes(
         o.chunks, [&](int k, const SplatRasterTarget& target) { raster_.draw_indirect(k, target); },
@@ -279,6 +294,8 @@ void GlV2lfRenderer::run_frame(const render::QuiltGeometry& geometry, const GlV2
   check_g2lf_fits(plane_options, geometry, 0, info_, std::nullopt);
   ensure_planes(options.format(), o.chunks, geometry.base.width * o.plane_scale,
                 geometry.base.height * o.plane_scale);
+  if (options.raster == RasterPath::kAuto) throw std::logic_error("V2LF on the GPU: resolve the raster path first (auto)");
+  if (options.raster == RasterPath::kCompute && !tile_raster_) tile_raster_ = std::make_unique<GlVoxelTileRaster>();
   run(options.bins_on_gpu() ? gpu_binned_stages(geometry, options) : cpu_binned_stages(geometry, options));
   record_stats(options);
 }
@@ -290,7 +307,7 @@ void GlV2lfRenderer::record_stats(const GlV2lfOptions& options) {
   const GlVoxelScene& scene = split_scene_ && !stats_.binned_on_gpu ? *split_scene_ : scene_;
   stats_.plane_bytes = sweeping_.planes().texels.bytes();
   stats_.gpu_bytes = scene.bytes() + sweeping_.bytes() + accumulation_.bytes() + lowpass_scratch_.bytes() +
-                     chunk_orders_.bytes() + binning_.bytes();
+                     chunk_orders_.bytes() + binning_.bytes() + (tile_raster_ ? tile_raster_->bytes() : 0);
   if (!stats_.binned_on_gpu) {
     stats_.planes = int(cpu_binned_.chunks.members.size());
     stats_.voxels_binned = chunk_starts(cpu_binned_.chunks).back();

@@ -20,6 +20,7 @@
 // and the draw sizes stay on the GPU, so every possible plane (N_chunk) gets its draws and its
 // filter and convert dispatches, all indirect: empty past the frame's plane count.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,8 @@
 #include "gpu/gl_voxel_binning.hpp"
 #include "gpu/gl_voxel_raster.hpp"
 #include "gpu/gl_voxel_scene.hpp"
+#include "gpu/gl_voxel_tile_raster.hpp"
+#include "gpu/raster_path.hpp"
 #include "util/image.hpp"
 #include "voxel/v2lf.hpp"
 
@@ -46,6 +49,10 @@ struct GlV2lfOptions {
   // the path before it (`lfd bench gpu-frame` compares both). Split voxels (v2lf.split_levels >
   // 0) always bin on the CPU: the split scene is made there.
   bool gpu_binning = true;
+  // How the planes are drawn: the raster pipeline (GlVoxelRaster) or the compute tile rasterizer
+  // (GlVoxelTileRaster; with the GPU binning, every plane's keys in one sort a frame). Not kAuto:
+  // the caller resolves it (gpu::resolve_raster_path).
+  RasterPath raster = RasterPath::kHardware;
   // GL_TIMESTAMP stage times and the plane table's counts through the frame ring, as G2LF's
   // (GlG2lfOptions::gpu_timers, timer_reads; docs/gpu.md "A frame that never waits").
   bool gpu_timers = false;
@@ -116,6 +123,7 @@ class GlV2lfRenderer {
   const GlVoxelScene& scene_;
   GlInfo info_;
   GlVoxelRaster raster_;
+  std::unique_ptr<GlVoxelTileRaster> tile_raster_;  // made when a frame asks for RasterPath::kCompute
   GlSplatRaster targets_;
   GlSweepingPlanes sweeping_;
   Program convert_u8_, convert_f16_, convert_f32_, lowpass_;

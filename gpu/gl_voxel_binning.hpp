@@ -51,6 +51,7 @@ class GlVoxelBinning {
 
   const Buffer& orders() const { return group_values_; }  // uint voxel ids, slot s at [s n, (s + 1) n)
   const Buffer& draws() const { return draws_; }          // DrawArraysIndirect commands
+  const Buffer& chunk_of() const { return chunk_of_buffer_; }  // uint plane per voxel (capacity: not binned)
   size_t bytes() const;
 
  private:

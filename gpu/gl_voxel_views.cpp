@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -30,11 +31,14 @@ float supersampling_of(const scene::VoxelScene& scene, const voxel::VoxelRenderS
 
 }  // namespace
 
-GlVoxelViews::GlVoxelViews(const GlVoxelScene& scene)
+GlVoxelViews::GlVoxelViews(const GlVoxelScene& scene, RasterPath raster)
     : scene_(scene),
+      tile_raster_(raster == RasterPath::kCompute ? std::make_unique<GlVoxelTileRaster>() : nullptr),
       downsample_rgba8_(downsample_program("rgba8")),
       downsample_rgba16f_(downsample_program("rgba16f")),
-      downsample_rgba32f_(downsample_program("rgba32f")) {}
+      downsample_rgba32f_(downsample_program("rgba32f")) {
+  if (raster == RasterPath::kAuto) throw std::logic_error("GlVoxelViews: resolve the raster path before (auto)");
+}
 
 const Program& GlVoxelViews::downsample(GLenum format) {
   switch (format) {
@@ -62,7 +66,10 @@ void GlVoxelViews::render_into(const render::Camera& camera, const voxel::VoxelR
   hi.framebuffer = supersampled_framebuffer_.id();
   hi.image_size = {big.width, big.height};
   targets_.clear(hi);
-  raster_.draw(scene_, big, big.position_world, hi);
+  if (tile_raster_)
+    tile_raster_->draw(scene_, big, big.position_world, supersampled_, glm::ivec2(0));
+  else
+    raster_.draw(scene_, big, big.position_world, hi);
   targets_.composite_background(hi, settings.background.value_or(scene.background), /*keep_transmittance=*/true);
 
   const Program& program = downsample(target.internal_format());
@@ -120,19 +127,21 @@ render::RasterImage GlVoxelViews::render_view(const render::Camera& camera, cons
 }
 
 ImageF render_voxel_quilt_per_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
-                                      const render::QuiltLayout& layout, const voxel::VoxelRenderSettings& settings) {
+                                      const render::QuiltLayout& layout, const voxel::VoxelRenderSettings& settings,
+                                      RasterPath raster) {
   const GlVoxelScene gl_scene(scene, query_gl_info("current context"));
-  GlVoxelViews views(gl_scene);
+  GlVoxelViews views(gl_scene, raster);
   const Texture quilt(GL_RGBA32F, layout.width, layout.height);
   views.render_quilt(geometry, layout, settings, quilt);
   return read_image_top_down(quilt, 3);
 }
 
 render::RasterImage render_voxel_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
-                                         int view, const voxel::VoxelRenderSettings& settings) {
+                                         int view, const voxel::VoxelRenderSettings& settings,
+                                         RasterPath raster) {
   if (view < 0 || view >= geometry.views) throw_input_error("view {} is outside 0..{}", view, geometry.views - 1);
   const GlVoxelScene gl_scene(scene, query_gl_info("current context"));
-  GlVoxelViews views(gl_scene);
+  GlVoxelViews views(gl_scene, raster);
   return views.render_view(geometry.view_camera(view), settings);
 }
 

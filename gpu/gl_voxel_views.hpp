@@ -4,6 +4,9 @@
 // RGBA32F (C, T) target, the background composited), then downsampled with SVRaster's
 // antialiasing filter (gpu/shaders/voxel_downsample.comp.glsl) straight into its quilt tile,
 // cropped as render::place_view crops. The ground truth V2LF is measured against on the GPU.
+// RasterPath::kCompute draws with the compute tile rasterizer (GlVoxelTileRaster) instead of the
+// raster pipeline (docs/gpu.md "Voxels on the GPU").
+#include <memory>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -12,6 +15,8 @@
 #include "gpu/gl_splat_raster.hpp"
 #include "gpu/gl_voxel_raster.hpp"
 #include "gpu/gl_voxel_scene.hpp"
+#include "gpu/gl_voxel_tile_raster.hpp"
+#include "gpu/raster_path.hpp"
 #include "render/blend.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/quilt_layout.hpp"
@@ -22,7 +27,9 @@ namespace lfd::gpu {
 
 class GlVoxelViews {
  public:
-  explicit GlVoxelViews(const GlVoxelScene& scene);  // needs a current context; `scene` outlives this
+  // Needs a current context; `scene` outlives this. `raster`: hardware or compute (auto is the
+  // caller's to resolve: gpu::resolve_raster_path).
+  explicit GlVoxelViews(const GlVoxelScene& scene, RasterPath raster = RasterPath::kHardware);
 
   // Every view of `geometry` into its tile of `quilt` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F of the
   // layout's size; rows bottom-up, view 0 bottom-left); texels outside the tiles are cleared to 0.
@@ -40,6 +47,7 @@ class GlVoxelViews {
 
   const GlVoxelScene& scene_;
   GlVoxelRaster raster_;
+  std::unique_ptr<GlVoxelTileRaster> tile_raster_;  // RasterPath::kCompute
   GlSplatRaster targets_;  // clear and background composite of (C, T) targets
   Texture supersampled_;
   Framebuffer supersampled_framebuffer_;
@@ -50,8 +58,10 @@ class GlVoxelViews {
 // render_voxel_quilt_per_view (RGB, rows top-down) and render_voxel_view.
 ImageF render_voxel_quilt_per_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
                                       const render::QuiltLayout& layout,
-                                      const voxel::VoxelRenderSettings& settings = {});
+                                      const voxel::VoxelRenderSettings& settings = {},
+                                      RasterPath raster = RasterPath::kHardware);
 render::RasterImage render_voxel_view_gl(const scene::VoxelScene& scene, const render::QuiltGeometry& geometry,
-                                         int view, const voxel::VoxelRenderSettings& settings = {});
+                                         int view, const voxel::VoxelRenderSettings& settings = {},
+                                         RasterPath raster = RasterPath::kHardware);
 
 }  // namespace lfd::gpu

@@ -20,7 +20,10 @@
 namespace lfd::interlace {
 
 struct DirectPanelOptions {
-  render::PlaneFilter filter = render::PlaneFilter::kNearest;
+  // Bilinear: closer to the continuous views than nearest, whose box reconstruction on the
+  // plane's texel grid is off by up to half a texel's change at every subpixel, decorrelated
+  // between neighbours by their view offsets (docs/rendering.md "Which plane filter").
+  render::PlaneFilter filter = render::PlaneFilter::kBilinear;
   glm::vec3 background{0.0f};
   bool overscan = false;      // InterlaceOptions::overscan
   bool invert_views = false;  // InterlaceOptions::invert_views

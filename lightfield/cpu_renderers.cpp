@@ -52,7 +52,7 @@ class CpuRenderer : public LightFieldRenderer {
   render::PlaneConsumer direct_pass(const render::QuiltGeometry& geometry, const display::LensModel& lens,
                                     const PanelOptions& panel, const glm::vec3& background) {
     interlace::DirectPanelOptions o;
-    o.filter = options_.planes.filter;
+    o.filter = options_.direct_filter;
     o.background = background;
     o.overscan = panel.overscan;
     o.invert_views = panel.invert_views;

@@ -44,9 +44,12 @@ QuiltStats GlRendererBase::render_quilt(const render::QuiltGeometry& geometry, c
 gpu::GlDirectPanel& GlRendererBase::direct_pass(const display::LensModel& lens) {
   // Another lens (even one at the same address) needs its own constants: compare the panel too.
   const bool hardware_bilinear = options_.gl.direct_hardware_bilinear;
+  const gpu::DirectPanelPass stage =
+      options_.gl.direct_compute ? gpu::DirectPanelPass::kCompute : gpu::DirectPanelPass::kFragment;
   if (!direct_ || direct_lens_ != &lens || direct_->panel_width() != lens.calibration().screen_w ||
-      direct_->panel_height() != lens.calibration().screen_h || direct_->hardware_bilinear() != hardware_bilinear) {
-    direct_ = std::make_unique<gpu::GlDirectPanel>(lens, hardware_bilinear);
+      direct_->panel_height() != lens.calibration().screen_h || direct_->hardware_bilinear() != hardware_bilinear ||
+      direct_->pass() != stage) {
+    direct_ = std::make_unique<gpu::GlDirectPanel>(lens, hardware_bilinear, stage);
     direct_lens_ = &lens;
   }
   return *direct_;
@@ -55,7 +58,7 @@ gpu::GlDirectPanel& GlRendererBase::direct_pass(const display::LensModel& lens) 
 interlace::DirectPanelOptions GlRendererBase::direct_options(const PanelOptions& panel,
                                                              const glm::vec3& background) const {
   interlace::DirectPanelOptions o;
-  o.filter = options_.planes.filter;
+  o.filter = options_.direct_filter;
   o.background = background;
   o.overscan = panel.overscan;
   o.invert_views = panel.invert_views;

@@ -1,5 +1,7 @@
-// The GL renderers of voxel scenes: every view alone (gpu::GlVoxelViews) and V2LF
-// (gpu::GlV2lfRenderer), on the device's uploaded scene.
+// The GL renderers of voxel scenes: every view alone (gpu::GlVoxelViews, drawn by the raster
+// pipeline or the compute tile rasterizer: options.gl.raster) and V2LF (gpu::GlV2lfRenderer), on
+// the device's uploaded scene.
+#include "gpu/gl_raster_probe.hpp"
 #include "gpu/gl_v2lf.hpp"
 #include "gpu/gl_voxel_views.hpp"
 #include "lightfield/gl_renderer_base.hpp"
@@ -37,7 +39,10 @@ class GlVoxelViewsRenderer final : public GlRendererBase {
   void bind() override {
     views_.reset();  // it holds the old scene by reference
     scene_ = device_->voxels();
-    views_ = std::make_unique<gpu::GlVoxelViews>(*scene_);
+    views_ = std::make_unique<gpu::GlVoxelViews>(*scene_, gpu::resolve_raster_path(options_.gl.raster));
+  }
+  void options_changed(const RendererOptions& old) override {
+    if (old.gl.raster != options_.gl.raster) forget_binding();  // the path is made with the views
   }
 
   std::shared_ptr<const gpu::GlVoxelScene> scene_;
@@ -76,7 +81,7 @@ class GlV2lf final : public GlRendererBase {
   // V2LF renders whole quilts: one view is the per-view renderer's.
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     ensure_bound();
-    gpu::GlVoxelViews views(*scene_);
+    gpu::GlVoxelViews views(*scene_, gpu::resolve_raster_path(options_.gl.raster));
     return render_voxel_view(views, geometry, view, options_.voxel_settings());
   }
 

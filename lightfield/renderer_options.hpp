@@ -13,6 +13,7 @@
 #include "gpu/gl_g2lf.hpp"
 #include "gpu/gl_planes.hpp"
 #include "gpu/gl_v2lf.hpp"
+#include "interlace/direct_panel.hpp"
 #include "gpu/raster_path.hpp"
 #include "scene/scene.hpp"
 #include "render/g2lf.hpp"
@@ -64,6 +65,9 @@ struct GlRenderOptions {
   // The direct panel pass samples bilinear planes with the texture unit (gpu::GlDirectPanel;
   // off: four texelFetch with the CPU's weights, its exact twin).
   bool direct_hardware_bilinear = true;
+  // The direct panel pass into a texture as the compute pass over panel tiles (gpu::DirectPanelPass;
+  // docs/gpu.md "The direct panel pass on the GPU"); off: the fragment pass (the benchmark's other side).
+  bool direct_compute = true;
   size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
   size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
 };
@@ -78,6 +82,9 @@ struct RendererOptions {
   // Unset: black behind Gaussians, the scene's own background behind voxels.
   std::optional<glm::vec3> background;
   GlRenderOptions gl;
+  // The direct pass's plane sampling (interlace::DirectPanelOptions::filter, bilinear unless told;
+  // planes.filter is the swizzle's).
+  render::PlaneFilter direct_filter = interlace::DirectPanelOptions{}.filter;
   // The CPU direct pass's sampling loop (interlace::DirectPanelOptions::kernel).
   render::SampleKernel direct_kernel = render::sample_window_kernel();
 

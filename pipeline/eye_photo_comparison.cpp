@@ -42,7 +42,7 @@ Panels render_panels(lightfield::LightFieldRenderer& sweeping, const scene::Scen
   io.blend = interlace::ViewBlend::kLinear;
   p.linear = interlace::interlace(quilt, layout, lens, io);
   lightfield::RendererOptions direct = o;
-  direct.planes.filter = options.direct_filter;
+  direct.direct_filter = options.direct_filter;
   sweeping.set_options(direct);
   sweeping.render_panel(geometry, lens, {});
   p.direct = sweeping.read_panel();

@@ -14,10 +14,16 @@
 #   render-gl   per view vs G2LF at the paper's sizes: 100k/1M/3M Gaussians, 45 views of 512x512
 #   gpu-frame   the frame with timers waited for vs read late, swizzle variants, plane formats
 #   gpu-sort    the sort rows: all N against the visible Gaussians, float against normalised keys
-#   voxels-gl   per view vs V2LF
-#   direct-gl   the direct panel pass against swizzle + interlace on the three displays (bilinear
-#               planes filtered by the texture unit, the GL default)
+#   voxels-gl   per view vs V2LF on the level-7 tabletop (15,688 voxels), drawn by the hardware
+#               raster and by the compute tile rasterizer, both in one run
+#   voxels-gl-1m  the same on the generated level-10 tabletop (>= 1M voxels), 45 views of 512x512
+#   direct-gl   the direct panel pass against swizzle + interlace on the three displays at 16/64/256
+#               planes (bilinear planes filtered by the texture unit, the GL default): the compute
+#               passes the offscreen paths use, and in the same run the fragment stages of the
+#               interlacer and the direct pass (what a window draws with)
 #   direct-gl-shader  the same at 1M Gaussians with the planes filtered by hand (four texelFetch)
+#   direct-v2lf-gl  the direct pass against swizzle + interlace on V2LF planes: the tabletop and
+#               the level-10 one, the three displays, 16/64/256 planes
 #   gpu-probe   compute FMA rate and bandwidth against the raster fill rate, and --raster auto's
 #               probe and choice (docs/gpu.md "Choosing the path: auto")
 #   raster-gl   per view and G2LF (N_chunk 64, 128, 256) drawn by the hardware raster and by the
@@ -30,8 +36,8 @@ set -uo pipefail
 out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
 shift
 steps=("$@")
-[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl direct-gl direct-gl-shader gpu-probe raster-gl \
-  raster-gl-large)
+[ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl \
+  gpu-probe raster-gl raster-gl-large)
 limit=${LFD_GPU_TABLE_LIMIT:-150}
 runs=${LFD_GPU_TABLE_RUNS:-10}
 sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
@@ -40,7 +46,9 @@ mkdir -p "$out"
 bundle=${LFD_BUNDLE_DIR:-bundle/lfd-renderer}  # another bundle folder (tests/scripts: a stub)
 run=$bundle/run.sh
 [ -x "$run" ] || { echo "gpu-table: $run missing: run scripts/bundle-renderer.sh first" >&2; exit 2; }
-if ! ldconfig -p | grep -q 'libEGL.so.1 '; then
+# grep reads all of ldconfig's output (no -q): under pipefail, grep -q leaving early would let
+# ldconfig die of SIGPIPE and the test fail at random.
+if ! ldconfig -p | grep 'libEGL.so.1 ' > /dev/null; then
   ls .gl/*.deb >/dev/null 2>&1 || { echo "gpu-table: no libEGL and no .gl/*.deb (docs/performance.md)" >&2; exit 2; }
   for f in .gl/*.deb; do dpkg -x "$f" /; done
   ldconfig
@@ -92,14 +100,20 @@ for s in "${steps[@]}"; do
       step gpu-sort "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs "$runs" --warmup 2 \
         --sort-only --zoom 2 --json "$out/gpu-sort.json" ;;
     voxels-gl)
-      step voxels-gl "$run" bench voxels --backend gl --level 7 --views 45 --size 512 --runs "$runs" \
+      step voxels-gl "$run" bench voxels --backend gl --raster hardware,compute --level 7 --views 45 --size 512 --runs "$runs" \
         --json "$out/voxels-gl.json" ;;
+    voxels-gl-1m)
+      step voxels-gl-1m "$run" bench voxels --backend gl --raster hardware,compute --level 10 --views 45 --size 512 --runs "$runs" \
+        --json "$out/voxels-gl-1m.json" ;;
     direct-gl)
       step direct-gl "$run" bench direct --backend gl --generated 100000,1000000 --chunks 16,64,256 --runs "$runs" \
         --reference-views 0 --json "$out/direct-gl.json" ;;
     direct-gl-shader)
       step direct-gl-shader "$run" bench direct --backend gl --generated 1000000 --chunks 16,64 --runs "$runs" \
         --reference-views 0 --direct-sampler shader --json "$out/direct-gl-shader.json" ;;
+    direct-v2lf-gl)
+      step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level 7,10 --chunks 16,64,256 \
+        --runs "$runs" --reference-views 0 --json "$out/direct-v2lf-gl.json" ;;
     gpu-probe)
       step gpu-probe "$run" bench gpu-probe --runs "$runs" --json "$out/gpu-probe.json" ;;
     raster-gl)
@@ -109,8 +123,8 @@ for s in "${steps[@]}"; do
       step raster-gl-large "$run" bench render --backend gl --raster hardware,compute --generated 3000000,6000000 \
         --views 45 --size 512 --configs table1 --chunks 64 --runs "$(( runs < 3 ? runs : 3 ))" --warmup 1 --png-runs 0 \
         --json "$out/raster-gl-large.json" ;;
-    *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, direct-gl," \
-         "direct-gl-shader, gpu-probe, raster-gl, raster-gl-large)" >&2; exit 2 ;;
+    *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, voxels-gl-1m," \
+         "direct-gl, direct-gl-shader, direct-v2lf-gl, gpu-probe, raster-gl, raster-gl-large)" >&2; exit 2 ;;
   esac
 done
 cat "$out/steps.txt"

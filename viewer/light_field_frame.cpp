@@ -141,6 +141,7 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
   const bool sweeping = settings.method != Method::kPerView;
   o.method = sweeping ? lightfield::Method::kSweepingPlanes : lightfield::Method::kPerView;
   o.planes = settings.g2lf;
+  o.direct_filter = settings.g2lf.filter;  // the control window's one plane filter toggle
   o.split_levels = 0;  // V2LF: a split re-uploads the scene every frame
   o.background = settings.background;
   o.gl.gpu_timers = timed;

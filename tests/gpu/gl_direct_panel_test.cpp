@@ -1,16 +1,22 @@
 // The direct panel pass on the GPU (gpu/gl_direct_panel.hpp) against the CPU's
 // (interlace::render_direct_panel) on the same planes of flat-coloured layers: u8 and f32
-// planes, nearest and bilinear, invView both ways, overscan, Gen3 cells, fringe.
+// planes, nearest and bilinear, invView both ways, overscan, Gen3 cells, fringe; each case
+// through both stages (the compute pass over panel tiles and the fragment pass), which must
+// agree bit for bit, and the compute pass over more planes than one batch of its tile walk.
 #include "gpu/gl_direct_panel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "display/visual_json.hpp"
 #include "gpu/gl_context.hpp"
+#include "gpu/shaders/lens_view_io.h"
 #include "tests/interlace/flat_layer_planes.hpp"
 #include "tests/test_data.hpp"
 
@@ -48,7 +54,8 @@ void expect_gpu_matches_cpu(const std::string& name, const display::LensModel& l
       o.overscan = variant == 1;
       o.invert_views = variant == 2;
       const ImageF cpu = interlace::render_direct_panel(s.planes, s.geometry, s.ref, lens, o);
-      const ImageF gpu = direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o);
+      const ImageF fragment = direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o, false, DirectPanelPass::kFragment);
+      const ImageF gpu = direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o, false, DirectPanelPass::kCompute);
       const Agreement a = compare(gpu, cpu);
       const std::string what = name + (filter == render::PlaneFilter::kBilinear ? " bilinear" : " nearest") +
                                (o.overscan ? " overscan" : "") + (o.invert_views ? " invert" : "");
@@ -58,6 +65,10 @@ void expect_gpu_matches_cpu(const std::string& name, const display::LensModel& l
       if (filter == render::PlaneFilter::kBilinear) {
         EXPECT_LT(a.max_difference, 0.02) << what;
       }
+      // One definition of a ray (direct_panel_rays.glsl) in both stages: the same floats.
+      ASSERT_EQ(gpu.pixels.size(), fragment.pixels.size());
+      EXPECT_EQ(0, std::memcmp(gpu.pixels.data(), fragment.pixels.data(), gpu.pixels.size() * sizeof(float)))
+          << what << ": the compute pass differs from the fragment pass";
     }
 }
 
@@ -112,14 +123,69 @@ TEST(GlDirectPanel, HardwareBilinearStaysWithinTheBarsOfTheCpuFilter) {
   }
 }
 
+// `layers` thin layers (transmittance 0.98, so a ray stays open through all 300 of them: 0.98^300
+// = 2.3e-3 > 0.5/255) between depths 1.2 and 3.5, bands of three widths, and an opaque layer in
+// the left quarter after the first third: rays of some tiles stop early, others not at all.
+test_planes::FlatLayerScene many_layer_scene(int width, int height, int views, int layers) {
+  test_planes::FlatLayerScene s = test_planes::flat_layer_scene(width, height, views);
+  std::vector<float> depths;
+  for (int k = 0; k < layers; ++k) depths.push_back(1.2f + 2.3f * float(k) / float(layers - 1));
+  const int w = s.ref.camera.width, h = s.ref.camera.height;
+  s.planes = render::make_sweeping_planes(s.ref, depths, render::PlanePrecision::kF32, [&](int k) {
+    render::RasterImage image;
+    image.width = w;
+    image.height = h;
+    image.rgb.assign(size_t(w) * h * 3, 0.0f);
+    image.transmittance.assign(size_t(w) * h, 1.0f);
+    const int x0 = (k * 7) % w, x1 = std::min(w, x0 + w / (2 + k % 3));
+    const bool wall = k == layers / 3;
+    for (int y = 0; y < h; ++y)
+      for (int x = wall ? 0 : x0; x < (wall ? w / 4 : x1); ++x) {
+        const size_t i = size_t(y) * w + x;
+        const float t = wall ? 0.0f : 0.98f;
+        image.transmittance[i] = t;
+        for (int c = 0; c < 3; ++c) image.rgb[i * 3 + size_t(c)] = (1.0f - t) * float((k + c) % 5) / 4.0f;
+      }
+    return image;
+  });
+  return s;
+}
+
+// More planes than one batch of the compute pass's tile walk (kDirectPanelPlaneBatch), some tiles
+// closing early, a panel whose width is no multiple of the tile.
+TEST(GlDirectPanel, TheComputeTilesWalkEveryBatchOfPlanes) {
+  HeadlessContext context;
+  display::DisplayCalibration c =
+      display::read_visual_json(test::fixture_calibration("template-16in-portrait-gen3.visual.json"));
+  c.screen_w /= 8;
+  c.screen_h /= 8;
+  ASSERT_NE(c.screen_w % int(kDirectPanelTileWidth), 0);
+  const display::LensModel lens(c);
+  const int layers = int(kDirectPanelPlaneBatch) * 2 + 44;
+  const test_planes::FlatLayerScene s = many_layer_scene(68, 120, 16, layers);
+  for (const render::PlaneFilter filter : {render::PlaneFilter::kNearest, render::PlaneFilter::kBilinear}) {
+    interlace::DirectPanelOptions o;
+    o.filter = filter;
+    o.background = s.background;
+    const ImageF cpu = interlace::render_direct_panel(s.planes, s.geometry, s.ref, lens, o);
+    const Agreement a = compare(direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o), cpu);
+    std::printf("  %d planes, compute, %s: max |GL - CPU| %.2e  within 1/255: %.4f %%\n", layers,
+                filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest", a.max_difference,
+                100 * a.fraction_within);
+    EXPECT_GE(a.fraction_within, 0.999);
+  }
+}
+
 TEST(GlDirectPanel, APanelTextureOfTheWrongSizeIsAnInputError) {
   HeadlessContext context;
   const display::LensModel lens(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")));
   const test_planes::FlatLayerScene s = test_planes::flat_layer_scene(32, 20, 4);
   const GlPlanes planes = upload_planes(s.planes);
-  GlDirectPanel pass(lens);
-  Texture panel(GL_RGBA8, 100, 100);
-  EXPECT_THROW(pass.run(planes, s.geometry, s.ref, {}, panel), InputError);
+  for (const DirectPanelPass stage : {DirectPanelPass::kFragment, DirectPanelPass::kCompute}) {
+    GlDirectPanel pass(lens, true, stage);
+    Texture panel(GL_RGBA8, 100, 100);
+    EXPECT_THROW(pass.run(planes, s.geometry, s.ref, {}, panel), InputError);
+  }
 }
 
 }  // namespace

@@ -1,11 +1,14 @@
 // The interlacing shader against the CPU reference interlacer (interlace::interlace): within 1/255
-// on >= 99.9 % of subpixels (docs/gpu.md "The interlacing shader") on every calibration fixture,
-// both blends, overscan, invert, a correction field, BGR panels, Gen3 cell patterns and fringe.
+// on >= 99.9 % of subpixels (docs/gpu.md "The interlacing shader") on every calibration fixture
+// and the bundled Go and 8K templates, both blends, overscan, invert, a correction field, BGR
+// panels, Gen3 cell patterns and fringe; each case through both stages (the fragment pass and
+// the compute pass), which must also agree with each other bit for bit.
 #include "gpu/gl_interlacer.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <numbers>
 #include <string>
@@ -130,19 +133,29 @@ void expect_shader_matches_cpu(const std::string& name, const DisplayCalibration
       o.overscan = variant == 1;
       o.invert_views = variant == 2;
       const ImageF cpu = interlace::interlace(quilt, q, lens, o);
-      const ImageF gpu = interlace_on_gpu(quilt, q, lens, o);
-      const Agreement a = compare(gpu, cpu, &lens, q.views);
-      std::printf("  %-38s %4dx%-4d %-24s max |GL - CPU| %.2e  within 1/255: %.5f %% (%zu ties)\n",
-                  name.c_str(), display.screen_w, display.screen_h, describe(o).c_str(),
-                  a.max_difference, 100 * a.fraction_within, a.outside);
-      EXPECT_GE(a.fraction_within, 0.999) << name << " " << describe(o);
-      // Stricter than the tolerance: with the phase's large part reduced in double on the CPU
-      // (lens_view.glsl), a subpixel shows another view than on the CPU only where its phase lies
-      // within kLensViewTolerance of a view boundary (the phase in plain float32 would flip ~1e-4
-      // of them anywhere). A correction field is sampled from a grid, which moves view
-      // boundaries by up to kCorrectionGridTolerancePeriods more.
-      if (correction.empty()) {
-        EXPECT_EQ(a.outside_not_ties, 0u) << name << " " << describe(o);
+      const ImageF fragment = interlace_on_gpu(quilt, q, lens, o, InterlacePass::kFragment);
+      for (const InterlacePass pass : {InterlacePass::kFragment, InterlacePass::kCompute}) {
+        const bool compute = pass == InterlacePass::kCompute;
+        const ImageF gpu = compute ? interlace_on_gpu(quilt, q, lens, o, pass) : fragment;
+        const Agreement a = compare(gpu, cpu, &lens, q.views);
+        const std::string what = describe(o) + (compute ? " (compute)" : "");
+        std::printf("  %-38s %4dx%-4d %-24s max |GL - CPU| %.2e  within 1/255: %.5f %% (%zu ties)\n",
+                    name.c_str(), display.screen_w, display.screen_h, what.c_str(), a.max_difference,
+                    100 * a.fraction_within, a.outside);
+        EXPECT_GE(a.fraction_within, 0.999) << name << " " << what;
+        // Stricter than the tolerance: with the phase's large part reduced in double on the CPU
+        // (lens_view.glsl), a subpixel shows another view than on the CPU only where its phase
+        // lies within kLensViewTolerance of a view boundary (the phase in plain float32 would
+        // flip ~1e-4 of them anywhere). A correction field is sampled from a grid, which moves
+        // view boundaries by up to kCorrectionGridTolerancePeriods more.
+        if (correction.empty()) {
+          EXPECT_EQ(a.outside_not_ties, 0u) << name << " " << what;
+        }
+        // One function (interlace_pixel.glsl) in both stages: the same floats.
+        if (compute) {
+          EXPECT_EQ(0, std::memcmp(gpu.pixels.data(), fragment.pixels.data(), gpu.pixels.size() * sizeof(float)))
+              << name << " " << what << ": the compute pass differs from the fragment pass";
+        }
       }
     }
 }
@@ -158,8 +171,17 @@ TEST_P(GlInterlacerOnFixture, MatchesTheCpuInterlacer) {
                             quilt_layout(5, 9, 0.8 * display_aspect));
 }
 
+// The calibration fixtures (Gen1, Gen2, the Portrait, the 16" Gen3 template with cells) and the
+// bundled templates of the Go and the 8K panels (32" Gen2, 32" portrait Gen3 with cells).
+std::vector<std::filesystem::path> calibrations() {
+  std::vector<std::filesystem::path> files = test::fixture_calibrations();
+  for (const char* name : {"go", "32in-gen2", "32in-portrait-gen3"})
+    files.push_back(test::project_data() / "displays" / (std::string(name) + ".visual.json"));
+  return files;
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryCalibration, GlInterlacerOnFixture,
-                         testing::ValuesIn(test::fixture_calibrations()),
+                         testing::ValuesIn(calibrations()),
                          [](const testing::TestParamInfo<std::filesystem::path>& info) {
                            std::string name = info.param.stem().stem().string();
                            for (char& ch : name)
@@ -221,22 +243,24 @@ TEST(GlInterlacer, MatchesAFullSizePanel) {
 
 TEST(GlInterlacer, Rgba8PanelTextureHoldsTheCpuPanelsBytes) {
   // The texture-to-texture path a frame uses (quilt texture in, RGBA8 panel out), compared
-  // with the 8-bit image the CPU path writes.
+  // with the 8-bit image the CPU path writes, through either stage.
   HeadlessContext context;
   const DisplayCalibration c =
       shrunk(display::read_visual_json(test::fixture_calibration("gen1-hid-00297.visual.json")), 4);
   const LensModel lens(c);
   const QuiltLayout q = quilt_layout(5, 9, 1.6);
   const ImageF quilt = varying_quilt(q);
-  GlInterlacer interlacer(lens, q);
-  const Texture quilt_texture = texture_from_image(quilt);
-  Texture panel(GL_RGBA8, c.screen_w, c.screen_h);
-  interlacer.interlace(quilt_texture, panel);
-  const Image8 gpu = to_uint8(image_from_texture(panel));
   const Image8 cpu = to_uint8(interlace::interlace(quilt, q, lens));
-  size_t equal = 0;
-  for (size_t i = 0; i < cpu.pixels.size(); ++i) equal += std::abs(gpu.pixels[i] - cpu.pixels[i]) <= 1;
-  EXPECT_GE(double(equal) / double(cpu.pixels.size()), 0.999);
+  for (const InterlacePass pass : {InterlacePass::kFragment, InterlacePass::kCompute}) {
+    GlInterlacer interlacer(lens, q, {}, pass);
+    const Texture quilt_texture = texture_from_image(quilt);
+    Texture panel(GL_RGBA8, c.screen_w, c.screen_h);
+    interlacer.interlace(quilt_texture, panel);
+    const Image8 gpu = to_uint8(image_from_texture(panel));
+    size_t equal = 0;
+    for (size_t i = 0; i < cpu.pixels.size(); ++i) equal += std::abs(gpu.pixels[i] - cpu.pixels[i]) <= 1;
+    EXPECT_GE(double(equal) / double(cpu.pixels.size()), 0.999) << (pass == InterlacePass::kCompute ? "compute" : "fragment");
+  }
 }
 
 TEST(GlInterlacer, TheCorrectionGridInterpolatesTheFieldWithinItsTolerance) {
@@ -274,11 +298,13 @@ TEST(GlInterlacer, AQuiltOrPanelOfTheWrongSizeIsAnInputError) {
       shrunk(display::read_visual_json(test::fixture_calibration("LKG-2K-04409.visual.json")), 8);
   const LensModel lens(c);
   const QuiltLayout q = quilt_layout(5, 9, 1.6);
-  GlInterlacer interlacer(lens, q);
-  Texture panel(GL_RGBA8, c.screen_w, c.screen_h);
-  EXPECT_THROW(interlacer.interlace(Texture(GL_RGBA8, q.width - 1, q.height), panel), InputError);
-  Texture wrong_panel(GL_RGBA8, c.screen_w, c.screen_h + 1);
-  EXPECT_THROW(interlacer.interlace(Texture(GL_RGBA8, q.width, q.height), wrong_panel), InputError);
+  for (const InterlacePass pass : {InterlacePass::kFragment, InterlacePass::kCompute}) {
+    GlInterlacer interlacer(lens, q, {}, pass);
+    Texture panel(GL_RGBA8, c.screen_w, c.screen_h);
+    EXPECT_THROW(interlacer.interlace(Texture(GL_RGBA8, q.width - 1, q.height), panel), InputError);
+    Texture wrong_panel(GL_RGBA8, c.screen_w, c.screen_h + 1);
+    EXPECT_THROW(interlacer.interlace(Texture(GL_RGBA8, q.width, q.height), wrong_panel), InputError);
+  }
   EXPECT_THROW(interlace_on_gpu(ImageF(q.width, q.height + 1, 3), q, lens), InputError);
 }
 

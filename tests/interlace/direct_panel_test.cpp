@@ -39,6 +39,7 @@ Comparison compare_on_views(const test_planes::FlatLayerScene& s, const display:
   const Interlacer interlacer(lens, layout, io);
   const ImageF via_quilt = interlacer.interlace(quilt);
   DirectPanelOptions dopt;
+  dopt.filter = render::PlaneFilter::kNearest;  // as the swizzle above
   dopt.background = s.background;
   dopt.invert_views = invert;
   const ImageF direct = render_direct_panel(s.planes, s.geometry, s.ref, lens, dopt);

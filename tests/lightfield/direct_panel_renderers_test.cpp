@@ -32,7 +32,7 @@ ImageF cpu_reference(const scene::Scene& scene, const RendererOptions& o, const 
   const auto pass = [&](const glm::vec3& background) {
     return [&, background](const render::SweepingPlanes& planes, const render::ReferenceCamera& ref) {
       interlace::DirectPanelOptions d;
-      d.filter = o.planes.filter;
+      d.filter = o.direct_filter;
       d.background = background;
       panel = interlace::render_direct_panel(planes, g, ref, lens, d);
     };

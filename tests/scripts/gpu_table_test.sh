@@ -19,7 +19,7 @@ for a in "$@"; do
 done
 case "$*" in
   *--sort-only*) sleep 30 ;;     # outlasts the limit
-  "bench voxels"*) exit 3 ;;     # fails
+  "bench voxels --backend gl --raster hardware,compute --level 7 "*) exit 3 ;;     # fails
 esac
 exit 0
 EOF
@@ -36,21 +36,25 @@ out=$work/out
 LFD_BUNDLE_DIR=$bundle LFD_GPU_TABLE_LIMIT=2 LFD_GPU_TABLE_RUNS=3 bash "$root/scripts/gpu-table.sh" "$out" > "$work/log" 2>&1 \
   || fail "the table exited $? (a failing step must not stop it): $(tail -3 "$work/log")"
 for expected in "tests: exit 0" "render-gl: exit 0" "gpu-frame: exit 0" "gpu-sort: exit 124" "voxels-gl: exit 3" \
-                "direct-gl: exit 0" "direct-gl-shader: exit 0" "gpu-probe: exit 0" "raster-gl: exit 0" \
-                "raster-gl-large: exit 0"; do
+                "voxels-gl-1m: exit 0" "direct-gl: exit 0" "direct-gl-shader: exit 0" "direct-v2lf-gl: exit 0" \
+                "gpu-probe: exit 0" "raster-gl: exit 0" "raster-gl-large: exit 0"; do
   grep -q "== $expected after" "$out/steps.txt" || fail "steps.txt lacks '$expected': $(cat "$out/steps.txt")"
 done
 grep -q -- "--gtest_filter=-\*Cli\*" "$out/tests.md" || fail "the bundled tests ran without the CLI filter"
 grep -q -- "bench render --backend gl --generated 100000,1000000,3000000 .*--runs 3" "$out/render-gl.md" \
   || fail "render-gl did not get the sizes and LFD_GPU_TABLE_RUNS: $(head -1 "$out/render-gl.md")"
 grep -q -- "--direct-sampler shader" "$out/direct-gl-shader.md" || fail "direct-gl-shader did not filter by hand"
+grep -q -- "bench voxels --backend gl --raster hardware,compute --level 10 --views 45 --size 512 --runs 3" "$out/voxels-gl-1m.md" \
+  || fail "voxels-gl-1m did not render the level-10 (>= 1M voxel) tabletop: $(head -1 "$out/voxels-gl-1m.md")"
+grep -q -- "--method v2lf --voxel-level 7,10 --chunks 16,64,256" "$out/direct-v2lf-gl.md" \
+  || fail "direct-v2lf-gl did not take both voxel scenes and the three plane counts: $(head -1 "$out/direct-v2lf-gl.md")"
 for step in raster-gl raster-gl-large; do
   grep -q -- "bench render --backend gl --raster hardware,compute " "$out/$step.md" \
     || fail "$step did not run both raster paths: $(head -1 "$out/$step.md")"
 done
 grep -q -- "--generated 3000000,6000000 .*--runs 3 " "$out/raster-gl-large.md" \
   || fail "raster-gl-large: $(head -1 "$out/raster-gl-large.md")"
-for json in render-gl gpu-frame gpu-sort voxels-gl direct-gl direct-gl-shader gpu-probe raster-gl raster-gl-large; do
+for json in render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl gpu-probe raster-gl raster-gl-large; do
   [ -s "$out/$json.json" ] || fail "$json.json was not written"
 done
 grep -q "stub lfd version" "$out/version.txt" || fail "version.txt: $(cat "$out/version.txt")"
