@@ -13,6 +13,7 @@
 #include "gpu/shaders/probe_fill.frag.glsl.hpp"
 #include "gpu/shaders/probe_fill.vert.glsl.hpp"
 #include "gpu/shaders/probe_fma.comp.glsl.hpp"
+#include "gpu/shaders/probe_io.h"
 
 namespace lfd::gpu {
 namespace {
@@ -40,9 +41,9 @@ ThroughputProbe probe_throughput(const ThroughputProbeOptions& o) {
     glProgramUniform1ui(fma.id(), fma.uniform("iterations"), o.fma_iterations);
     glProgramUniform1f(fma.id(), fma.uniform("seed"), 1e-3f);
     p.fma_s = median_seconds(o, [&] {
-      out.bind_storage(0);
+      out.bind_storage(kProbeTargetBinding);
       fma.use();
-      fma.dispatch_1d(o.invocations, 256);
+      fma.dispatch_1d(o.invocations, int(kProbeGroupSize));
     });
     p.fma_gflops = double(o.invocations) * o.fma_iterations * 8 * 2 / p.fma_s / 1e9;
   }
@@ -52,10 +53,10 @@ ThroughputProbe probe_throughput(const ThroughputProbeOptions& o) {
     Buffer source(count * 16), target(count * 16);
     glProgramUniform1ui(copy.id(), copy.uniform("count"), GLuint(count));
     p.copy_s = median_seconds(o, [&] {
-      source.bind_storage(0);
-      target.bind_storage(1);
+      source.bind_storage(kProbeSourceBinding);
+      target.bind_storage(kProbeTargetBinding);
       copy.use();
-      copy.dispatch_1d(count, 256);
+      copy.dispatch_1d(count, int(kProbeGroupSize));
     });
     p.bandwidth_gbs = 2.0 * double(count * 16) / p.copy_s / 1e9;
   }

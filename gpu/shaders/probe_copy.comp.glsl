@@ -1,8 +1,10 @@
 // The throughput probe's memory bandwidth (gpu/gl_throughput_probe.hpp): one vec4 read and one
 // written per invocation, so a dispatch moves 32 bytes an invocation through DRAM.
-layout(local_size_x = 256) in;
-layout(std430, binding = 0) readonly buffer In { vec4 source[]; };
-layout(std430, binding = 1) writeonly buffer Out { vec4 target[]; };
+#include "gpu/shaders/probe_io.h"
+
+layout(local_size_x = kProbeGroupSize) in;
+layout(std430, binding = kProbeSourceBinding) readonly buffer In { vec4 source[]; };
+layout(std430, binding = kProbeTargetBinding) writeonly buffer Out { vec4 target[]; };
 uniform uint count;
 
 void main() {

@@ -1,8 +1,10 @@
 // The throughput probe's arithmetic rate (gpu/gl_throughput_probe.hpp): per invocation
 // `iterations` steps of 8 independent fused multiply-adds (2 FLOPs each), chains the compiler
 // cannot fold, summed into one store so none is dropped.
-layout(local_size_x = 256) in;
-layout(std430, binding = 0) writeonly buffer Out { float result[]; };
+#include "gpu/shaders/probe_io.h"
+
+layout(local_size_x = kProbeGroupSize) in;
+layout(std430, binding = kProbeTargetBinding) writeonly buffer Out { float result[]; };
 uniform uint iterations;
 uniform float seed;
 

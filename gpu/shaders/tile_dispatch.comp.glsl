@@ -4,7 +4,7 @@
 // and skip those past the count.
 #include "gpu/shaders/tile_io.h"
 
-layout(local_size_x = 1) in;
+layout(local_size_x = kTileDispatchGroupSize) in;
 layout(std430, binding = kTileStateBinding) buffer Target { uint words[]; };
 uniform uint count_word;     // the count's index in words
 uniform uint dispatch_word;  // where groups x, y, z go

@@ -32,6 +32,7 @@ LFD_IO_UINT(kTileScanPerInvocation, 4u)
 LFD_IO_UINT(kTileScanBlockItems, 1024u)
 LFD_IO_UINT(kTileScanMaxBlocks, 1048576u)
 LFD_IO_UINT(kTileRangesGroupSize, 256u)
+LFD_IO_UINT(kTileDispatchGroupSize, 1u)  // tile_dispatch: one invocation writes the command
 // 16 x 16 pixels a tile (render::kTileSize), one invocation each in the compositing passes.
 LFD_IO_UINT(kTileSide, 16u)
 LFD_IO_UINT(kTilePixels, 256u)
