@@ -20,13 +20,14 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "apps/quilt_file_name.hpp"
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "scene/scene.hpp"
+#include "interlace/quilt_file_name.hpp"
+#include "lightfield/render_settings.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"
 #include "render/camera_json.hpp"
@@ -37,71 +38,67 @@
 namespace lfd::apps {
 namespace {
 
-// `lfd render`'s command line, as given.
+// `lfd render`'s command line: the render settings (lightfield/render_settings.hpp, shared with
+// Python's lfd.render_quilt) and what only the command has (files, the panel, the backend).
 struct RenderFlags {
-  std::string scene_path, method = "g2lf", size_text, out, camera_path;
-  std::string filter = "nearest", precision = "u8", binning = "mixed", background_text = "0,0,0";
+  lightfield::RenderSettings s;
+  std::string scene_path, size_text, out, camera_path, background_text = "0,0,0";
   std::string panel_path, blend = "nearest", backend_name = "cpu";
-  std::optional<int> views_opt, cols_opt, rows_opt;
   int view = -1;
   bool overscan = false;
   bool direct = false;  // --direct: the panel straight from the planes, no quilt
-  float orbit_deg = 0.0f, focal_distance = 0.0f;
-  std::optional<float> view_cone_opt;
-  render::G2lfOptions g2lf;
-  int split_levels = 0;
-  bool no_plane_lowpass = false;
   DisplaySource display_source;
-  glm::vec3 background{0.0f};  // --background, parsed
 };
+
+constexpr auto kFlags = lightfield::SettingNames::kFlags;
 
 void add_scene_and_plane_options(CLI::App& app, RenderFlags& f) {
   app.add_option("--scene", f.scene_path,
                  "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
                  "svraster-webgl .ply)")->required();
-  app.add_option("--method", f.method,
+  app.add_option("--method", f.s.method,
                  "per-view (baseline) or g2lf (sweeping planes); v2lf for voxel scenes (the default there)")
       ->check(CLI::IsMember({"per-view", "g2lf", "v2lf"}))->capture_default_str();
-  app.add_option("--views", f.views_opt,
+  app.add_option("--views", f.s.views,
                  fmt::format("number of views (default: the calibration's recommendation, else {})",
                              kDefaultViewCount));
-  auto* cols_o = app.add_option("--cols", f.cols_opt, "quilt columns (default: chosen for the views)");
-  auto* rows_o = app.add_option("--rows", f.rows_opt, "quilt rows (default: chosen for the views)");
+  auto* cols_o = app.add_option("--cols", f.s.cols, "quilt columns (default: chosen for the views)");
+  auto* rows_o = app.add_option("--rows", f.s.rows, "quilt rows (default: chosen for the views)");
   cols_o->needs(rows_o);
   rows_o->needs(cols_o);
   app.add_option("--size", f.size_text,
                  "size of one view, WxH (default: cam.json's, else 512 tall at the display's "
                  "aspect, else 512x512)");
-  app.add_option("--chunks", f.g2lf.chunks, "G2LF and V2LF: number of depth chunks N_chunk")->capture_default_str();
-  app.add_option("--plane-scale", f.g2lf.plane_scale, "G2LF and V2LF: plane resolution scale P_s")->capture_default_str();
-  app.add_option("--filter", f.filter, "G2LF and V2LF: plane sampling, nearest or bilinear")
+  app.add_option("--chunks", f.s.planes.chunks, "G2LF and V2LF: number of depth chunks N_chunk")->capture_default_str();
+  app.add_option("--plane-scale", f.s.planes.plane_scale, "G2LF and V2LF: plane resolution scale P_s")->capture_default_str();
+  app.add_option("--filter", f.s.filter, "G2LF and V2LF: plane sampling, nearest or bilinear")
       ->check(CLI::IsMember({"nearest", "bilinear"}))->capture_default_str();
-  app.add_option("--precision", f.precision,
+  app.add_option("--precision", f.s.precision,
                  "G2LF and V2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F; G2LF on the GPU blends u8 planes "
                  "in RGBA16F, RGBA8 only where those exceed the memory), or f16 (RGBA16F, --backend gl only)")
       ->check(CLI::IsMember({"u8", "f16", "f32"}))->capture_default_str();
-  app.add_option("--binning", f.binning,
+  app.add_option("--binning", f.s.binning,
                  "G2LF and V2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
                  "quantile (the paper's equal counts)")
       ->check(CLI::IsMember({"mixed", "quantile"}))->capture_default_str();
-  app.add_option("--shift", f.g2lf.d_shift,
+  app.add_option("--shift", f.s.planes.d_shift,
                  "G2LF and V2LF: D_shift, move the reference camera back by this (scene units; default: by "
                  "D_forward, to the base camera; 0 = the paper's setting)");
-  app.add_option("--split-levels", f.split_levels,
+  app.add_option("--split-levels", f.s.split_levels,
                  "V2LF: split a voxel whose depth extent straddles a chunk boundary into its 8 children, "
                  "up to this many levels deeper (0: never; measured: helps at 8 samples per voxel, hurts at 1, docs/voxels.md)")
-      ->capture_default_str();
-  app.add_flag("--no-plane-lowpass", f.no_plane_lowpass,
+      ->default_str("0");
+  app.add_flag("--no-plane-lowpass", f.s.no_plane_lowpass,
                "V2LF: leave out the low-pass filter on the planes (the paper's stand-in for supersampling)");
 }
 
 void add_camera_display_and_output_options(CLI::App& app, RenderFlags& f) {
   auto* camera_opt = app.add_option("--camera", f.camera_path, "cam.json with position, look_at, up, fov_y_deg");
-  app.add_option("--orbit", f.orbit_deg, "turn the default camera about the scene centre (degrees)")
+  app.add_option("--orbit", f.s.orbit_deg, "turn the default camera about the scene centre (degrees)")
       ->excludes(camera_opt);
-  app.add_option("--focal-distance", f.focal_distance,
+  app.add_option("--focal-distance", f.s.focal_distance,
                  "distance to the focal (zero-parallax) plane (default |look_at - position|)");
-  auto* cone_opt = app.add_option("--view-cone", f.view_cone_opt,
+  auto* cone_opt = app.add_option("--view-cone", f.s.view_cone_deg,
                                   fmt::format("display view cone in degrees (default {}, or the calibration's)",
                                               kDefaultViewConeDeg));
   f.display_source.add(app, "--calibration",
@@ -125,19 +122,6 @@ void add_camera_display_and_output_options(CLI::App& app, RenderFlags& f) {
                "view angle, with no quilt (needs --calibration or --device and --panel; no --out)");
 }
 
-// The planes' options of the flags (the method, the backend and the background come later).
-lightfield::RendererOptions plane_options(const RenderFlags& f) {
-  lightfield::RendererOptions options;
-  options.planes = f.g2lf;
-  options.planes.filter = render::parse_plane_filter(f.filter);
-  // f16 exists only as a GPU texture format; the CPU planes are u8 or f32.
-  if (f.precision == "f16") options.gl.plane_format = gpu::PlaneFormat::kRgba16f;
-  options.planes.precision = render::parse_plane_precision(f.precision == "f16" ? "f32" : f.precision);
-  options.planes.binning = render::parse_chunk_binning(f.binning);
-  options.planes.check();
-  return options;
-}
-
 // --direct makes only the panel: the options of a quilt do not apply to it.
 void check_direct_flags(const RenderFlags& f, const CLI::App& app) {
   if (!f.direct) {
@@ -150,21 +134,26 @@ void check_direct_flags(const RenderFlags& f, const CLI::App& app) {
     if (app.count(quilt_only))
       throw_input_error("{}: a quilt option; --direct renders the panel with no quilt (every subpixel shows its own view)",
                         quilt_only);
-  if (f.method == "per-view")
+  if (f.s.method == "per-view")
     throw_input_error("--direct: needs the sweeping planes (g2lf or v2lf), not --method per-view");
 }
 
-// What the flags ask of the output, checked before anything is read.
-void check_output_flags(RenderFlags& f) {
+// What the flags ask, checked before anything is read; the texts parsed into the settings.
+void check_flags(RenderFlags& f, const CLI::App& app) {
   if (!f.panel_path.empty() && !f.display_source.given())
     throw_input_error("--panel: needs the display (--calibration or --device)");
   if (f.view >= 0 && !f.panel_path.empty()) throw_input_error("--panel: needs a whole quilt; leave out --view");
   const auto bg = parse_numbers(f.background_text, ',', 3, "--background");
-  f.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
-  if (f.views_opt && (*f.views_opt < 1 || *f.views_opt > 256))
-    throw_input_error("--views: {} is outside 1..256", *f.views_opt);
-  if (f.view_cone_opt && !(*f.view_cone_opt > 0.0f && *f.view_cone_opt < 170.0f))
-    throw_input_error("--view-cone: {} must lie in (0, 170) degrees", *f.view_cone_opt);
+  if (app.count("--background")) f.s.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
+  if (!f.size_text.empty()) {
+    const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
+    if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
+      throw_input_error("--size: '{}' must be two integers in [1, 16384]", f.size_text);
+    f.s.size = display::ViewSize{int(wh[0]), int(wh[1])};
+  }
+  if (!f.camera_path.empty()) f.s.camera = render::read_camera_json(f.camera_path);
+  f.s.method_given = app.count("--method") > 0;
+  lightfield::check_render_settings(f.s, kFlags);
 }
 
 // The display when one is given (--calibration or --device).
@@ -180,51 +169,6 @@ DisplayChoice choose_display(RenderFlags& f) {
     d.path = f.display_source.name();
   }
   return d;
-}
-
-// --method for a scene of `kind`: g2lf names V2LF for voxels when it is only the default.
-lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, scene::SceneKind kind) {
-  const bool voxels = kind == scene::SceneKind::kVoxels;
-  if (voxels && f.method == "g2lf" && app.count("--method"))
-    throw_input_error("--method: g2lf is for Gaussian scenes; {} is a voxel scene (per-view or v2lf)", f.scene_path);
-  if (!voxels && f.method == "v2lf")
-    throw_input_error("--method: v2lf is for voxel scenes; {} holds Gaussians (g2lf)", f.scene_path);
-  if (!voxels && (app.count("--split-levels") || f.no_plane_lowpass))
-    throw_input_error("--split-levels, --no-plane-lowpass: V2LF options for voxel scenes; {} holds Gaussians",
-                      f.scene_path);
-  return f.method == "per-view" ? lightfield::Method::kPerView : lightfield::Method::kSweepingPlanes;
-}
-
-// The flags' request of the view plan (lightfield/view_plan.hpp decides what is not given).
-lightfield::ViewRequest view_request(const RenderFlags& f, const DisplayChoice& display) {
-  lightfield::ViewRequest r;
-  if (display.calibration) r.display = &*display.calibration;
-  r.views = f.views_opt;
-  if (f.view_cone_opt) r.view_cone_deg = *f.view_cone_opt;
-  if (!f.camera_path.empty()) r.camera = render::read_camera_json(f.camera_path);
-  r.orbit_deg = f.orbit_deg;
-  if (!f.size_text.empty()) {
-    const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
-    if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
-      throw_input_error("--size: '{}' must be two integers in [1, 16384]", f.size_text);
-    r.size = display::ViewSize{int(wh[0]), int(wh[1])};
-  }
-  if (f.focal_distance > 0.0f) r.focal_distance = f.focal_distance;
-  if (f.cols_opt) r.grid = display::QuiltGrid{*f.cols_opt, *f.rows_opt};
-  return r;
-}
-
-// The plan, with the grid's refusal named by the flags that chose it.
-lightfield::ViewPlan plan_render_views(const RenderFlags& f, const DisplayChoice& display, const scene::Scene& scene) {
-  const lightfield::ViewRequest request = view_request(f, display);
-  try {
-    return lightfield::plan_views(request, &scene);
-  } catch (const InputError& e) {
-    // The plan names its field ("grid: ..."); the user gave it as --cols/--rows.
-    const std::string why = e.what();
-    if (f.cols_opt && why.starts_with("grid: ")) throw_input_error("--cols/--rows: {}", why.substr(6));
-    throw;
-  }
 }
 
 void print_display(const DisplayChoice& display, const lightfield::ViewPlan& plan) {
@@ -279,7 +223,7 @@ std::string render_and_write(const RenderFlags& f, const DisplayChoice& display,
     return f.out;
   }
   const render::QuiltLayout& layout = plan.layout;
-  const std::string written = quilt_file_name(f.out, layout);
+  const std::string written = interlace::quilt_file_name(f.out, layout);
   renderer.render_quilt(plan.geometry, layout);
   const Image8 quilt8 = to_uint8(renderer.read_quilt());
   write_png(written, quilt8);
@@ -307,24 +251,19 @@ int RunRender(int argc, char** argv) {
   add_camera_display_and_output_options(app, f);
   if (auto code = parse(app, argc, argv)) return *code;
 
-  lightfield::RendererOptions options = plane_options(f);
   check_direct_flags(f, app);
-  check_output_flags(f);
+  check_flags(f, app);
   const DisplayChoice display = choose_display(f);
   const scene::SceneKind kind = scene::scene_kind_of_file(f.scene_path);
-  options.method = method_for_scene(f, app, kind);
-  options.split_levels = f.split_levels;
-  options.planes.adaptive_filter = !f.no_plane_lowpass;
-  if (app.count("--background")) options.background = f.background;
   const std::shared_ptr<lightfield::GlDevice> device =
       lightfield::GlDevice::adopt(open_backend(parse_backend(f.backend_name)));
-  options.backend = lightfield::backend_for(device);
-  if (options.gl.plane_format && options.backend == lightfield::Backend::kCpu)
-    throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
+  const lightfield::RendererOptions options =
+      lightfield::renderer_options(f.s, kind, f.scene_path, lightfield::backend_for(device), kFlags);
 
   const auto t0 = std::chrono::steady_clock::now();
   const scene::Scene scene = scene::load_scene(f.scene_path);
-  const lightfield::ViewPlan plan = plan_render_views(f, display, scene);
+  const lightfield::ViewPlan plan =
+      lightfield::plan_render_views(f.s, display.calibration ? &*display.calibration : nullptr, scene, kFlags);
   print_display(display, plan);
   const std::unique_ptr<lightfield::LightFieldRenderer> renderer = lightfield::make_renderer(options, kind, device);
   renderer->set_scene(scene);

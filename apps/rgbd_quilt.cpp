@@ -9,9 +9,9 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "apps/quilt_file_name.hpp"
 #include "apps/rgbd_cli.hpp"
 #include "display/display_quilt.hpp"
+#include "interlace/quilt_file_name.hpp"
 #include "render/quilt_layout.hpp"
 #include "rgbd/gl_rgbd_views.hpp"
 #include "rgbd/rgbd_quilt.hpp"
@@ -60,7 +60,7 @@ int RunRgbdQuilt(int argc, char** argv) {
   const ImageF frame = to_float(read_image(in_path, 3));
   const render::QuiltLayout layout =
       rgbd::rgbd_quilt_layout(frame.width, frame.height, options.depth_loc, view_count, tile_height);
-  const std::string written = quilt_file_name(out_path, layout, "out");
+  const std::string written = interlace::quilt_file_name(out_path, layout, "out");
   const auto gl_context = open_backend(parse_backend(backend_name));
   const ImageF quilt = gl_context ? rgbd::render_rgbd_quilt_on_gpu(frame, options, layout, view_cone_deg)
                                   : rgbd::render_rgbd_quilt(frame, options, layout, view_cone_deg);
