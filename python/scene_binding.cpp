@@ -96,6 +96,15 @@ py::array float_view(const float* data, std::vector<py::ssize_t> shape, const py
 
 const scene::GaussianScene& gaussians_of(const PyScene& s) { return s.scene->gaussians(); }
 
+// A scene file that must hold `kind` (the class asked for); InputError naming the other class.
+PyScene load_kind(const std::filesystem::path& path, scene::SceneKind kind) {
+  if (scene::scene_kind_of_file(path) != kind)
+    throw_input_error("{}: holds {}; read it with lfd.{}.load", path.string(),
+                      kind == scene::SceneKind::kGaussians ? "sparse voxels" : "Gaussians",
+                      kind == scene::SceneKind::kGaussians ? "Voxels" : "Gaussians");
+  return PyScene{std::make_shared<const scene::Scene>(scene::load_scene(path)), path.string()};
+}
+
 }  // namespace
 
 void bind_scenes(py::module_& m) {
@@ -128,11 +137,7 @@ void bind_scenes(py::module_& m) {
            "rotations (w, x, y, z), sh N x K x 3 with the DC first.")
       .def_static(
           "load",
-          [](const std::filesystem::path& path) {
-            if (scene::scene_kind_of_file(path) != scene::SceneKind::kGaussians)
-              throw_input_error("{}: holds sparse voxels; read it with lfd.Voxels.load", path.string());
-            return PyGaussians{{std::make_shared<const scene::Scene>(scene::load_scene(path)), path.string()}};
-          },
+          [](const std::filesystem::path& path) { return PyGaussians{load_kind(path, scene::SceneKind::kGaussians)}; },
           py::arg("path"), "PLY, compressed PLY, .splat, SPZ, SOG, glTF/GLB, .ksplat.")
       .def_property_readonly("sh_degree", [](const PyScene& s) { return gaussians_of(s).sh_degree; })
       .def_property_readonly("means", [](py::object self) {
@@ -159,11 +164,7 @@ void bind_scenes(py::module_& m) {
   py::class_<PyVoxels, PyScene>(m, "Voxels", "A sparse-voxel radiance field (SVRaster's representation).")
       .def_static(
           "load",
-          [](const std::filesystem::path& path) {
-            if (scene::scene_kind_of_file(path) != scene::SceneKind::kVoxels)
-              throw_input_error("{}: holds Gaussians; read it with lfd.Gaussians.load", path.string());
-            return PyVoxels{{std::make_shared<const scene::Scene>(scene::load_scene(path)), path.string()}};
-          },
+          [](const std::filesystem::path& path) { return PyVoxels{load_kind(path, scene::SceneKind::kVoxels)}; },
           py::arg("path"), ".voxels or the svraster-webgl PLY.")
       .def_property_readonly("sh_degree", [](const PyScene& s) { return s.scene->voxels().sh_degree; });
 }

@@ -108,3 +108,6 @@ def test_voxels_render_with_v2lf(tmp_path):
     assert np.array_equal(quilt.image, read_png(path))
     with pytest.raises(ValueError, match="^method: g2lf is for Gaussian scenes"):
         lfd.render_quilt(voxels, method="g2lf")
+    with pytest.raises(ValueError, match="holds sparse voxels; read it with lfd.Voxels.load$"):
+        lfd.Gaussians.load(tmp_path / "v.voxels")
+    assert isinstance(lfd.load(tmp_path / "v.voxels"), lfd.Voxels)
