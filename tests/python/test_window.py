@@ -65,3 +65,13 @@ def test_training_loop_example_shows_its_gaussians_every_n_steps():
                              "--count", "60", "--views", "4"], capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stdout + result.stderr
     assert [line.split(":")[0] for line in result.stdout.splitlines()] == ["step 3", "step 6"]
+
+
+def test_simulated_window_shows_the_same_panel():
+    display = lfd.Display.load(PORTRAIT)
+    quilt = lfd.render_quilt(lfd.Gaussians(**scene_arrays()), display, views=6, size=(48, 64), chunks=8)
+    with lfd.Window(display, simulated=True) as window:
+        assert not window.on_display  # the simulated display, in a window of its own
+        shown = window.update(quilt).wait().screenshot()  # the interlaced panel it shows, scaled
+    assert shown.shape == (2048, 1536, 3)
+    assert psnr(shown, lfd.interlace(quilt, display)) >= 40.0
