@@ -12,8 +12,9 @@
 
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "apps/quilt_file_name.hpp"
 #include "apps/render_flags.hpp"
+#include "interlace/quilt_file_name.hpp"
+#include "lightfield/render_settings.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "media/quilt_name.hpp"
 #include "media/video_concat.hpp"
@@ -123,7 +124,7 @@ fs::path video_name(const RecordFlags& r, const std::string& out, const render::
                     const record::RecordOptions& o) {
   fs::path p(out);
   if (p.extension() != ".mp4") throw_input_error("--out: '{}' must end in .mp4", out);
-  p = quilt_file_name(out, layout);
+  p = interlace::quilt_file_name(out, layout);
   if (!r.frames_text.empty() && r.frames_text.find('-') != std::string::npos)
     p.replace_filename(fmt::format("{}_f{:04d}-{:04d}{}", p.stem().string(), o.first, o.last, p.extension().string()));
   return p;
@@ -186,7 +187,7 @@ int RunRecord(int argc, char** argv) {
   if (f.out.empty() && f.panel_path.empty()) throw_input_error("--out: required (or --panel for the panel's video)");
   if (!f.panel_path.empty() && fs::path(f.panel_path).extension() != ".mp4")
     throw_input_error("--panel: '{}' must end in .mp4", f.panel_path);
-  check_output_flags(f);
+  check_output_flags(f, app);
   const DisplayChoice display = choose_display(f);
   const scene::SceneSequence sequence = scene::find_scene_sequence(f.scene_path);
   const bool moving = scene::is_scene_sequence(f.scene_path);
@@ -194,10 +195,8 @@ int RunRecord(int argc, char** argv) {
     throw_input_error("--scene-fps: {} is one scene; a moving one is a pattern (name_%04d.ply), a folder or a list",
                       f.scene_path);
   const scene::SceneKind kind = scene::scene_kind_of_file(sequence.frames.front());
-  const RendererChoice choice = choose_renderer(f, app, kind);
-  std::optional<render::CameraSpec> still;
-  if (!f.camera_path.empty()) still = render::read_camera_json(f.camera_path);
-  const record::CameraMotion motion = record::parse_camera_motion(r.path, still);
+  const RendererChoice choice = choose_renderer(f, kind);
+  const record::CameraMotion motion = record::parse_camera_motion(r.path, f.s.camera);
 
   record::RecordOptions o;
   o.fps = choose_fps(r, motion);
@@ -210,11 +209,12 @@ int RunRecord(int argc, char** argv) {
   o.panel.overscan = f.overscan;
   o.panel_video = f.panel_path;
   const scene::Scene& scene = scenes.first();  // the framing: the first frame's
-  const lightfield::ViewRequest request = view_request(f, display);
+  const lightfield::ViewRequest request =
+      lightfield::view_request(f.s, display.calibration ? &*display.calibration : nullptr);
   // The first frame's plan names the video (and reports the grid's refusal by its flags).
   lightfield::ViewRequest first = request;
   first.camera = record::plan_frame(request, motion, scene, o.first, o).camera;
-  const lightfield::ViewPlan plan = plan_render_views(f, first, scene);
+  const lightfield::ViewPlan plan = lightfield::plan_render_views(f.s, first, scene, kFlags);
   print_display(display, plan);
   if (!f.out.empty()) o.quilt_video = video_name(r, f.out, plan.layout, o);
   o.check();

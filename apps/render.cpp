@@ -20,19 +20,19 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "apps/quilt_file_name.hpp"
 #include "apps/render_flags.hpp"
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
 #include "gpu/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
-#include "scene/scene.hpp"
-#include "scene/scene_sequence.hpp"
+#include "interlace/quilt_file_name.hpp"
+#include "lightfield/render_settings.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"
-#include "render/camera_json.hpp"
 #include "render/quilt_layout.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_sequence.hpp"
 #include "util/default_display.hpp"
 #include "util/error.hpp"
 
@@ -40,12 +40,12 @@ namespace lfd::apps {
 namespace {
 
 // --orbit, --view, --out, --direct, --frame: what `lfd render` writes.
-void add_render_output_options(CLI::App& app, RenderFlags& f, int& frame) {
-  app.add_option("--frame", frame,
+void add_render_output_options(CLI::App& app, RenderFlags& f) {
+  app.add_option("--frame", f.s.frame,
                  "a moving scene (--scene name_%04d.ply, a folder or a .txt list): render its frame K (0: the first), "
                  "framed as its first frame (as lfd record frames it)")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--orbit", f.orbit_deg, "turn the default camera about the scene centre (degrees)")
+  app.add_option("--orbit", f.s.orbit_deg, "turn the default camera about the scene centre (degrees)")
       ->excludes(f.camera_option);
   app.add_option("--view", f.view, "render only this view (0 = leftmost) into --out");
   app.add_option("--out", f.out, "output PNG; quilts get the _qs{C}x{R}a{aspect} suffix (required unless --direct)");
@@ -66,7 +66,7 @@ void check_direct_flags(const RenderFlags& f, const CLI::App& app) {
     if (app.count(quilt_only))
       throw_input_error("{}: a quilt option; --direct renders the panel with no quilt (every subpixel shows its own view)",
                         quilt_only);
-  if (f.method == "per-view")
+  if (f.s.method == "per-view")
     throw_input_error("--direct: needs the sweeping planes (g2lf or v2lf), not --method per-view");
 }
 
@@ -111,7 +111,7 @@ std::string render_and_write(const RenderFlags& f, const DisplayChoice& display,
     return f.out;
   }
   const render::QuiltLayout& layout = plan.layout;
-  const std::string written = quilt_file_name(f.out, layout);
+  const std::string written = interlace::quilt_file_name(f.out, layout);
   renderer.render_quilt(plan.geometry, layout);
   const Image8 quilt8 = to_uint8(renderer.read_quilt());
   write_png(written, quilt8);
@@ -137,28 +137,25 @@ int RunRender(int argc, char** argv) {
   RenderFlags f;
   add_scene_and_plane_options(app, f);
   add_camera_and_display_options(app, f, "also write the quilt interlaced for the --calibration (or --device) display (PNG)");
-  int frame = 0;
-  add_render_output_options(app, f, frame);
+  add_render_output_options(app, f);
   if (auto code = parse(app, argc, argv)) return *code;
 
   check_direct_flags(f, app);
-  check_output_flags(f);
+  check_output_flags(f, app);
   const DisplayChoice display = choose_display(f);
   const scene::SceneSequence sequence = scene::find_scene_sequence(f.scene_path);
-  if (app.count("--frame") && !scene::is_scene_sequence(f.scene_path))
-    throw_input_error("--frame: {} is one scene; a moving one is a pattern (name_%04d.ply), a folder or a list",
-                      f.scene_path);
-  if (frame >= int(sequence.frames.size()))
-    throw_input_error("--frame: {} is outside the {} frames of {}", frame, sequence.frames.size(), f.scene_path);
+  const std::filesystem::path& frame_file =
+      lightfield::scene_frame_file(f.s, sequence, scene::is_scene_sequence(f.scene_path), kFlags);
   const scene::SceneKind kind = scene::scene_kind_of_file(sequence.frames.front());
-  const RendererChoice choice = choose_renderer(f, app, kind);
+  const RendererChoice choice = choose_renderer(f, kind);
   const lightfield::RendererOptions& options = choice.options;
 
   const auto t0 = std::chrono::steady_clock::now();
   // A moving scene is framed by its first frame (nothing jumps as it plays), and shows frame K.
   const scene::Scene first = scene::load_scene(sequence.frames.front());
-  const scene::Scene scene = frame == 0 ? first : scene::load_scene(sequence.frames[size_t(frame)]);
-  const lightfield::ViewPlan plan = plan_render_views(f, view_request(f, display), first);
+  const scene::Scene scene = f.s.frame == 0 ? first : scene::load_scene(frame_file);
+  const lightfield::ViewPlan plan =
+      lightfield::plan_render_views(f.s, display.calibration ? &*display.calibration : nullptr, first, kFlags);
   print_display(display, plan);
   const std::unique_ptr<lightfield::LightFieldRenderer> renderer = lightfield::make_renderer(options, kind, choice.device);
   renderer->set_scene(scene);

@@ -11,84 +11,54 @@
 #include "util/error.hpp"
 
 namespace lfd::apps {
-namespace {
-
-// The planes' options of the flags (the method, the backend and the background come later).
-lightfield::RendererOptions plane_options(const RenderFlags& f) {
-  lightfield::RendererOptions options;
-  options.planes = f.g2lf;
-  if (!f.filter.empty()) options.planes.filter = options.direct_filter = render::parse_plane_filter(f.filter);
-  // f16 exists only as a GPU texture format; the CPU planes are u8 or f32.
-  if (f.precision == "f16") options.gl.plane_format = gpu::PlaneFormat::kRgba16f;
-  options.planes.precision = render::parse_plane_precision(f.precision == "f16" ? "f32" : f.precision);
-  options.planes.binning = render::parse_chunk_binning(f.binning);
-  options.gl.raster = gpu::parse_raster_path(f.raster);
-  options.planes.check();
-  return options;
-}
-
-// --method for a scene of `kind`: g2lf names V2LF for voxels when it is only the default.
-lightfield::Method method_for_scene(const RenderFlags& f, const CLI::App& app, scene::SceneKind kind) {
-  const bool voxels = kind == scene::SceneKind::kVoxels;
-  if (voxels && f.method == "g2lf" && app.count("--method"))
-    throw_input_error("--method: g2lf is for Gaussian scenes; {} is a voxel scene (per-view or v2lf)", f.scene_path);
-  if (!voxels && f.method == "v2lf")
-    throw_input_error("--method: v2lf is for voxel scenes; {} holds Gaussians (g2lf)", f.scene_path);
-  if (!voxels && (app.count("--split-levels") || f.no_plane_lowpass))
-    throw_input_error("--split-levels, --no-plane-lowpass: V2LF options for voxel scenes; {} holds Gaussians",
-                      f.scene_path);
-  return f.method == "per-view" ? lightfield::Method::kPerView : lightfield::Method::kSweepingPlanes;
-}
-
-}  // namespace
 
 void add_scene_and_plane_options(CLI::App& app, RenderFlags& f) {
   app.add_option("--scene", f.scene_path,
                  "scene file: Gaussians (.ply, compressed .ply, .splat, .spz) or sparse voxels (.voxels, "
                  "svraster-webgl .ply); a moving scene: name_%04d.ply, a folder or a .txt list of frames")->required();
-  app.add_option("--method", f.method,
+  app.add_option("--method", f.s.method,
                  "per-view (baseline) or g2lf (sweeping planes); v2lf for voxel scenes (the default there)")
       ->check(CLI::IsMember({"per-view", "g2lf", "v2lf"}))->capture_default_str();
-  app.add_option("--views", f.views_opt,
+  app.add_option("--views", f.s.views,
                  fmt::format("number of views (default: the calibration's recommendation, else {})",
                              kDefaultViewCount));
-  auto* cols_o = app.add_option("--cols", f.cols_opt, "quilt columns (default: chosen for the views)");
-  auto* rows_o = app.add_option("--rows", f.rows_opt, "quilt rows (default: chosen for the views)");
+  auto* cols_o = app.add_option("--cols", f.s.cols, "quilt columns (default: chosen for the views)");
+  auto* rows_o = app.add_option("--rows", f.s.rows, "quilt rows (default: chosen for the views)");
   cols_o->needs(rows_o);
   rows_o->needs(cols_o);
   app.add_option("--size", f.size_text,
                  "size of one view, WxH (default: cam.json's, else 512 tall at the display's "
                  "aspect, else 512x512)");
-  app.add_option("--chunks", f.g2lf.chunks, "G2LF and V2LF: number of depth chunks N_chunk")->capture_default_str();
-  app.add_option("--plane-scale", f.g2lf.plane_scale, "G2LF and V2LF: plane resolution scale P_s")->capture_default_str();
-  app.add_option("--filter", f.filter,
+  app.add_option("--chunks", f.s.planes.chunks, "G2LF and V2LF: number of depth chunks N_chunk")->capture_default_str();
+  app.add_option("--plane-scale", f.s.planes.plane_scale, "G2LF and V2LF: plane resolution scale P_s")->capture_default_str();
+  app.add_option("--filter", f.s.filter,
                  "G2LF and V2LF: plane sampling, nearest or bilinear (default: nearest for the quilt's swizzle, "
                  "bilinear for --direct, which is closer to the continuous views there: docs/rendering.md)")
       ->check(CLI::IsMember({"nearest", "bilinear"}));
-  app.add_option("--precision", f.precision,
+  app.add_option("--precision", f.s.precision,
                  "G2LF and V2LF: plane storage, u8 or f32 (RGBA8 / RGBA32F; G2LF on the GPU blends u8 planes "
                  "in RGBA16F, RGBA8 only where those exceed the memory), or f16 (RGBA16F, --backend gl only)")
       ->check(CLI::IsMember({"u8", "f16", "f32"}))->capture_default_str();
-  app.add_option("--binning", f.binning,
+  app.add_option("--binning", f.s.binning,
                  "G2LF and V2LF: depth chunks, mixed (count quantiles + cuts uniform in disparity) or "
                  "quantile (the paper's equal counts)")
       ->check(CLI::IsMember({"mixed", "quantile"}))->capture_default_str();
-  app.add_option("--shift", f.g2lf.d_shift,
+  app.add_option("--shift", f.s.planes.d_shift,
                  "G2LF and V2LF: D_shift, move the reference camera back by this (scene units; default: by "
                  "D_forward, to the base camera; 0 = the paper's setting)");
-  app.add_option("--split-levels", f.split_levels,
+  app.add_option("--split-levels", f.s.split_levels,
                  "V2LF: split a voxel whose depth extent straddles a chunk boundary into its 8 children, "
                  "up to this many levels deeper (0: never; measured: helps at 8 samples per voxel, hurts at 1, docs/voxels.md)")
-      ->capture_default_str();
-  app.add_flag("--no-plane-lowpass", f.no_plane_lowpass,
+      ->default_str("0");
+  app.add_flag("--no-plane-lowpass", f.s.no_plane_lowpass,
                "V2LF: leave out the low-pass filter on the planes (the paper's stand-in for supersampling)");
 }
 
 void add_camera_and_display_options(CLI::App& app, RenderFlags& f, const std::string& panel_help) {
   f.camera_option = app.add_option("--camera", f.camera_path, "cam.json with position, look_at, up, fov_y_deg");
-  app.add_option("--focal-distance", f.focal_distance,
+  app.add_option("--focal-distance", f.s.focal_distance,
                  "distance to the focal (zero-parallax) plane (default |look_at - position|)");
-  auto* cone_opt = app.add_option("--view-cone", f.view_cone_opt,
+  auto* cone_opt = app.add_option("--view-cone", f.s.view_cone_deg,
                                   fmt::format("display view cone in degrees (default {}, or the calibration's)",
                                               kDefaultViewConeDeg));
   f.display_source.add(app, "--calibration",
@@ -104,20 +74,28 @@ void add_camera_and_display_options(CLI::App& app, RenderFlags& f, const std::st
   add_backend_option(app, f.backend_name,
                      "cpu (the reference), gl (OpenGL 4.5 through headless EGL; exit 2 without it) or "
                      "auto (gl when a context can be made, else the CPU with a notice)");
-  add_raster_option(app, f.raster);
+  add_raster_option(app, f.s.raster);
 }
-void check_output_flags(RenderFlags& f) {
+void check_output_flags(RenderFlags& f, const CLI::App& app) {
   if (!f.panel_path.empty() && !f.display_source.given())
     throw_input_error("--panel: needs the display (--calibration or --device)");
   if (f.view >= 0 && !f.panel_path.empty()) throw_input_error("--panel: needs a whole quilt; leave out --view");
   const auto bg = parse_numbers(f.background_text, ',', 3, "--background");
-  f.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
-  if (f.views_opt && (*f.views_opt < 1 || *f.views_opt > 256))
-    throw_input_error("--views: {} is outside 1..256", *f.views_opt);
-  if (f.view_cone_opt && !(*f.view_cone_opt > 0.0f && *f.view_cone_opt < 170.0f))
-    throw_input_error("--view-cone: {} must lie in (0, 170) degrees", *f.view_cone_opt);
+  if (app.count("--background")) f.s.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
+  if (!f.size_text.empty()) {
+    const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
+    if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
+      throw_input_error("--size: '{}' must be two integers in [1, 16384]", f.size_text);
+    f.s.size = display::ViewSize{int(wh[0]), int(wh[1])};
+  }
+  if (!f.camera_path.empty()) f.s.camera = render::read_camera_json(f.camera_path);
+  f.s.method_given = app.count("--method") > 0;
+  f.s.raster_given = app.count("--raster") > 0;
+  const CLI::Option* frame_option = app.get_option_no_throw("--frame");  // lfd render's only
+  f.s.frame_given = frame_option && frame_option->count() > 0;
+  lightfield::check_render_settings(f.s, kFlags);
+  lightfield::check_backend_settings(f.s, parse_backend(f.backend_name) == Backend::kCpu, kFlags);
 }
-
 
 DisplayChoice choose_display(RenderFlags& f) {
   DisplayChoice d;
@@ -128,51 +106,12 @@ DisplayChoice choose_display(RenderFlags& f) {
   return d;
 }
 
-RendererChoice choose_renderer(const RenderFlags& f, const CLI::App& app, scene::SceneKind kind) {
+RendererChoice choose_renderer(const RenderFlags& f, scene::SceneKind kind) {
   RendererChoice r;
-  r.options = plane_options(f);
-  r.options.method = method_for_scene(f, app, kind);
-  r.options.split_levels = f.split_levels;
-  r.options.planes.adaptive_filter = !f.no_plane_lowpass;
-  if (app.count("--background")) r.options.background = f.background;
   r.device = lightfield::GlDevice::adopt(open_backend(parse_backend(f.backend_name)));
-  r.options.backend = lightfield::backend_for(r.device);
-  if (r.options.gl.plane_format && r.options.backend == lightfield::Backend::kCpu)
-    throw_input_error("--precision: f16 (RGBA16F planes) needs the GL backend; the CPU stores u8 or f32");
-  if (app.count("--raster") && parse_backend(f.backend_name) == Backend::kCpu)
-    throw_input_error("--raster: chooses how the GL backend draws; --backend cpu has no raster paths");
+  r.options = lightfield::renderer_options(f.s, kind, f.scene_path, lightfield::backend_for(r.device), kFlags);
   if (r.device) r.options.gl.raster = resolve_raster(r.options.gl.raster);
   return r;
-}
-
-lightfield::ViewRequest view_request(const RenderFlags& f, const DisplayChoice& display) {
-  lightfield::ViewRequest r;
-  if (display.calibration) r.display = &*display.calibration;
-  r.views = f.views_opt;
-  if (f.view_cone_opt) r.view_cone_deg = *f.view_cone_opt;
-  if (!f.camera_path.empty()) r.camera = render::read_camera_json(f.camera_path);
-  r.orbit_deg = f.orbit_deg;
-  if (!f.size_text.empty()) {
-    const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
-    if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
-      throw_input_error("--size: '{}' must be two integers in [1, 16384]", f.size_text);
-    r.size = display::ViewSize{int(wh[0]), int(wh[1])};
-  }
-  if (f.focal_distance > 0.0f) r.focal_distance = f.focal_distance;
-  if (f.cols_opt) r.grid = display::QuiltGrid{*f.cols_opt, *f.rows_opt};
-  return r;
-}
-
-lightfield::ViewPlan plan_render_views(const RenderFlags& f, const lightfield::ViewRequest& request,
-                                       const scene::Scene& scene) {
-  try {
-    return lightfield::plan_views(request, &scene);
-  } catch (const InputError& e) {
-    // The plan names its field ("grid: ..."); the user gave it as --cols/--rows.
-    const std::string why = e.what();
-    if (f.cols_opt && why.starts_with("grid: ")) throw_input_error("--cols/--rows: {}", why.substr(6));
-    throw;
-  }
 }
 
 void print_display(const DisplayChoice& display, const lightfield::ViewPlan& plan) {

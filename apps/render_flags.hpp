@@ -10,32 +10,28 @@
 
 #include "apps/cli.hpp"
 #include "lightfield/gl_device.hpp"
+#include "lightfield/render_settings.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"
-#include "render/g2lf.hpp"
 #include "scene/scene.hpp"
 
 namespace lfd::apps {
 
-// The command line, as given.
+// The command line: the render settings it fills (lightfield/render_settings.hpp says what each
+// means, for both commands and Python's lfd.render_quilt) and what only a command has (files,
+// the panel, the backend).
 struct RenderFlags {
-  std::string scene_path, method = "g2lf", size_text, out, camera_path;
-  std::string filter, precision = "u8", binning = "mixed", background_text = "0,0,0";
+  lightfield::RenderSettings s;
+  std::string scene_path, size_text, out, camera_path, background_text = "0,0,0";
   std::string panel_path, blend = "nearest", backend_name = "cpu";
-  std::string raster = "hardware";  // --raster (docs/gpu.md)
-  std::optional<int> views_opt, cols_opt, rows_opt;
   int view = -1;
   bool overscan = false;
   bool direct = false;  // --direct: the panel straight from the planes, no quilt
-  float orbit_deg = 0.0f, focal_distance = 0.0f;
-  std::optional<float> view_cone_opt;
-  render::G2lfOptions g2lf;
-  int split_levels = 0;
-  bool no_plane_lowpass = false;
   DisplaySource display_source;
-  glm::vec3 background{0.0f};  // --background, parsed
   CLI::Option* camera_option = nullptr;
 };
+
+constexpr auto kFlags = lightfield::SettingNames::kFlags;
 
 // --scene, --method, the views, grid and size, the G2LF/V2LF plane options.
 void add_scene_and_plane_options(CLI::App& app, RenderFlags& f);
@@ -43,8 +39,9 @@ void add_scene_and_plane_options(CLI::App& app, RenderFlags& f);
 // --blend and --overscan, --background, --backend, --raster. `panel_help` says what --panel writes.
 void add_camera_and_display_options(CLI::App& app, RenderFlags& f, const std::string& panel_help);
 
-// What the flags ask, checked before anything is read (the background parsed).
-void check_output_flags(RenderFlags& f);
+// What the flags ask, checked before anything is read; the texts (size, background, camera file)
+// parsed into the settings.
+void check_output_flags(RenderFlags& f, const CLI::App& app);
 
 // The display when one is given (--calibration or --device).
 struct DisplayChoice {
@@ -53,20 +50,14 @@ struct DisplayChoice {
 };
 DisplayChoice choose_display(RenderFlags& f);
 
-// The renderer the flags choose for a scene of `kind`: its options and the GL device (null on
-// the CPU). InputError naming the flag for a method or option of the other kind of scene.
+// The renderer the flags choose for a scene of `kind`: its options (lightfield::renderer_options)
+// and the GL device (null on the CPU); --raster auto resolved (and said) on the device.
 struct RendererChoice {
   lightfield::RendererOptions options;
   std::shared_ptr<lightfield::GlDevice> device;
 };
-RendererChoice choose_renderer(const RenderFlags& f, const CLI::App& app, scene::SceneKind kind);
+RendererChoice choose_renderer(const RenderFlags& f, scene::SceneKind kind);
 
-// The flags' request of the view plan (lightfield/view_plan.hpp decides what is not given).
-lightfield::ViewRequest view_request(const RenderFlags& f, const DisplayChoice& display);
-// The plan of `request` (view_request's, perhaps with a camera of the caller's), with the grid's
-// refusal named by the flags that chose it.
-lightfield::ViewPlan plan_render_views(const RenderFlags& f, const lightfield::ViewRequest& request,
-                                       const scene::Scene& scene);
 // Prints the display's quilt, and a notice when the views' aspect differs from it.
 void print_display(const DisplayChoice& display, const lightfield::ViewPlan& plan);
 

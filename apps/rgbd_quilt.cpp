@@ -9,9 +9,9 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
-#include "apps/quilt_file_name.hpp"
 #include "apps/rgbd_cli.hpp"
 #include "display/display_quilt.hpp"
+#include "interlace/quilt_file_name.hpp"
 #include "render/quilt_layout.hpp"
 #include "rgbd/gl_rgbd_views.hpp"
 #include "rgbd/rgbd_quilt.hpp"
@@ -64,7 +64,7 @@ int RunRgbdQuilt(int argc, char** argv) {
       rgbd::rgbd_quilt_layout(frame.width, frame.height, options.depth_loc, view_count, tile_height);
   // Tiles within a pixel of the display's aspect are named with it (no pillarbox column).
   if (display_aspect) layout.aspect = render::snap_to_display_aspect(layout.aspect, layout.tile_height(), *display_aspect);
-  const std::string written = quilt_file_name(out_path, layout, "out");
+  const std::string written = interlace::quilt_file_name(out_path, layout, "out");
   const auto gl_context = open_backend(parse_backend(backend_name));
   const ImageF quilt = gl_context ? rgbd::render_rgbd_quilt_on_gpu(frame, options, layout, view_cone_deg)
                                   : rgbd::render_rgbd_quilt(frame, options, layout, view_cone_deg);

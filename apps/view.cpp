@@ -8,10 +8,10 @@
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "interlace/quilt_file_name.hpp"
 #include "util/error.hpp"
 #include "viewer/viewer.hpp"
 #ifndef LFD_NO_PLAYBACK
-#include "apps/quilt_file_name.hpp"
 #include "record/video_file.hpp"
 #endif
 
@@ -24,7 +24,7 @@ namespace {
 class ViewerVideo : public viewer::QuiltRecording {
  public:
   ViewerVideo(const render::QuiltLayout& layout, const std::filesystem::path& path, int fps)
-      : file_(quilt_file_name(path.string(), layout, "--record"), layout.width, layout.height, options(fps)) {}
+      : file_(interlace::quilt_file_name(path.string(), layout, "--record"), layout.width, layout.height, options(fps)) {}
   void add(const Image8& quilt) override { file_.add(quilt); }
   std::filesystem::path finish() override { return file_.finish(); }
 

@@ -56,6 +56,15 @@ install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian/copyright
 install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian/copyright
   DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/lfd-dev COMPONENT development)
 
+# The Python package lfd (python/, docs/python.md): the extension and its Python files, where
+# Debian's python3 finds packages (/usr/lib/python3/dist-packages under the .deb's /usr).
+set(LFD_PYTHON_INSTALL_DIR "lib/python3/dist-packages" CACHE STRING
+    "where the Python package lfd is installed, relative to the install prefix")
+if(TARGET lfd_python)
+  install(TARGETS lfd_python LIBRARY DESTINATION ${LFD_PYTHON_INSTALL_DIR}/lfd COMPONENT runtime)
+  install(FILES ${LFD_PYTHON_FILES} DESTINATION ${LFD_PYTHON_INSTALL_DIR}/lfd COMPONENT runtime)
+endif()
+
 # ---------------------------------------------------------------------------------------------
 # The libraries: found by looking (see the top of this file).
 function(_lfd_collect_targets dir out)
@@ -153,6 +162,9 @@ add_custom_target(lfd_packaged)
 add_dependencies(lfd_packaged ${LFD_INSTALLED_LIBRARIES})
 if(TARGET lfd)
   add_dependencies(lfd_packaged lfd)
+endif()
+if(TARGET lfd_python)
+  add_dependencies(lfd_packaged lfd_python)
 endif()
 
 # ---------------------------------------------------------------------------------------------
@@ -311,6 +323,11 @@ set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION science)
 # headless GL is loaded at run time by libepoxy, which dpkg-shlibdeps cannot see; gnuplot draws
 # the report figures when present.
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl1, libgl1-mesa-dri, gnuplot-nox")
+# The Python package (import lfd) runs on Debian's python3 with numpy; dpkg-shlibdeps sees
+# neither (the interpreter loads the extension).
+if(TARGET lfd_python)
+  set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "${LFD_PYTHON_DEPENDS}")
+endif()
 # With udev rules in the package, udev reads them at once (no replugging, no reboot).
 if(_lfd_udev_rules)
   file(WRITE ${PROJECT_BINARY_DIR}/debian/postinst
@@ -332,7 +349,7 @@ set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
   "renders 3D Gaussian Splatting scenes to light-field quilts with G2LF and interlaces them\n"
   "by the calibration, and simulates what a camera sees of the display to measure crosstalk\n"
   "and view separation. This package holds the lfd program and its data (display\n"
-  "templates, a demo scene).")
+  "templates, a demo scene) and the Python package lfd.")
 string(REPLACE ";" "" CPACK_DEBIAN_RUNTIME_DESCRIPTION "${CPACK_DEBIAN_RUNTIME_DESCRIPTION}")
 
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME lfd-dev)

@@ -16,7 +16,7 @@ namespace lfd::gpu {
 
 DisplayWindow::DisplayWindow(const GlfwSession&, GLFWmonitor* monitor, int panel_w,
                              int panel_h, int max_window_px)
-    : on_display_(monitor != nullptr), panel_w_(panel_w), panel_h_(panel_h) {
+    : monitor_(monitor), on_display_(monitor != nullptr), panel_w_(panel_w), panel_h_(panel_h) {
   glfwDefaultWindowHints();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
@@ -72,6 +72,19 @@ DisplayWindow::~DisplayWindow() {
 }
 
 void DisplayWindow::make_current() const { glfwMakeContextCurrent(window_); }
+
+void DisplayWindow::set_visible(bool visible) {
+  if (visible == this->visible()) return;
+  if (visible) {
+    glfwShowWindow(window_);
+    if (monitor_) glfwSetWindowMonitor(window_, monitor_, 0, 0, panel_w_, panel_h_, GLFW_DONT_CARE);
+  } else {
+    if (monitor_) glfwSetWindowMonitor(window_, nullptr, 0, 0, panel_w_, panel_h_, GLFW_DONT_CARE);
+    glfwHideWindow(window_);
+  }
+}
+
+bool DisplayWindow::visible() const { return glfwGetWindowAttrib(window_, GLFW_VISIBLE) != 0; }
 
 bool DisplayWindow::should_close() const { return glfwWindowShouldClose(window_); }
 

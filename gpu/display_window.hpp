@@ -39,9 +39,15 @@ class DisplayWindow {
   void swap();
   // 1 (the default): one frame per vsync; 0: swaps do not wait for it (lfd view --no-vsync).
   void set_swap_interval(int interval) const;
+  // Hides the window or shows it again (Bridge's show_window). A full-screen window leaves its
+  // monitor to hide (GLFW cannot hide a full-screen window) and takes it again, at the panel's
+  // size, to show.
+  void set_visible(bool visible);
+  bool visible() const;
 
  private:
   GLFWwindow* window_ = nullptr;
+  GLFWmonitor* monitor_ = nullptr;  // the display's, when full screen on it
   bool on_display_ = false;
   int panel_w_ = 0, panel_h_ = 0;
   std::unique_ptr<Framebuffer> read_fbo_;  // reads the panel texture for the blit

@@ -125,6 +125,18 @@ struct Player::Impl final : TransportOutput {
     panel_dirty = true;  // the views are made again from the same frame
   }
 
+  void set_quilt_aspect(double aspect) {
+    if (!content || content->rgbd) {
+      if (options.print_notices)
+        std::cerr << fmt::format("notice: aspect: {} is not a quilt; left as it is\n",
+                                 content ? content->name : "nothing shown");
+      return;
+    }
+    content->layout.aspect = aspect;
+    if (PlaylistEntry* entry = transport.current_entry()) entry->quilt.aspect = aspect;
+    panel_dirty = true;
+  }
+
   // The transport's events to the subscribers.
   void send(const PlaybackEvent& event) {
     std::vector<std::function<void(const PlaybackEvent&)>> callbacks;
@@ -262,6 +274,8 @@ struct Player::Impl final : TransportOutput {
     s.video_frame_index = video_index;
     s.video_frame_pts_s = video_pts;
     s.on_display = window->on_display();
+    s.quilt_aspect = content ? content->layout.aspect : 0.0;
+    s.window_visible = window->visible();
     s.quit = transport.quitting();
     std::lock_guard lock(state_mutex);
     published = std::move(s);
@@ -335,6 +349,13 @@ void Player::update_rgbd_option(const std::string& key, const std::string& value
 
 void Player::set_loop(bool loop) { impl_->enqueue([loop](Impl& p) { p.transport.set_loop(loop); }); }
 void Player::set_overlay(bool visible) { impl_->enqueue([visible](Impl& p) { p.overlay = visible; }); }
+void Player::set_quilt_aspect(double aspect) {
+  if (!(aspect > 0 && aspect <= 100)) throw_input_error("aspect: {} is outside (0, 100]", aspect);
+  impl_->enqueue([aspect](Impl& p) { p.set_quilt_aspect(aspect); });
+}
+void Player::set_window_visible(bool visible) {
+  impl_->enqueue([visible](Impl& p) { p.window->set_visible(visible); });
+}
 void Player::quit() {
   impl_->enqueue([](Impl& p) { p.transport.quit(); });
 }

@@ -56,6 +56,8 @@ struct PlayerState {
   double video_frame_pts_s = 0;      // its presentation time
   std::string decode_path;    // the current video's decoder: "software (N threads)", "VA-API"
   bool on_display = false;    // full screen on the display's monitor (else a simulated window)
+  bool window_visible = true;  // false once hidden (set_window_visible; Bridge's show_window)
+  double quilt_aspect = 0;     // the shown quilt's view aspect (0: nothing shown)
   bool quit = false;
 };
 
@@ -108,6 +110,12 @@ class Player {
   // Shows or hides the notice/help overlay (what the H key does). Off by default: nothing
   // covers the panel unless asked.
   void set_overlay(bool visible);
+  // Changes the view aspect of the quilt shown (Bridge's update_current_entry `aspect`) and
+  // redraws it; the playlist keeps the change. InputError now for an aspect outside (0, 100];
+  // an RGB-D entry (its views are the display's) is left as it is, with a notice on stderr.
+  void set_quilt_aspect(double aspect);
+  // Hides the window (frames go on, unseen: playback keeps its clock) or shows it again.
+  void set_window_visible(bool visible);
   void quit();
 
   // A copy of the state as of the last frame.

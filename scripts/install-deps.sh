@@ -22,6 +22,8 @@ PACKAGES=(
   libtbb-dev
   # tests and benchmarks (numpy: the SVRaster converter's test, scripts/svraster_to_voxels.py)
   libgtest-dev libgmock-dev libbenchmark-dev python3-numpy
+  # the Python package lfd (docs/python.md): pybind11, its tests (pytest), torch tensors as input
+  python3-dev python3-pybind11 pybind11-dev python3-pytest python3-torch
   # plots in validation reports
   gnuplot-nox
   # Debian packages (scripts/package.sh: cpack computes the Depends with dpkg-shlibdeps)

@@ -34,6 +34,7 @@ BridgeApi::BridgeApi(DisplayService& displays, PlaylistStore& playlists, EventHu
   add_handlers();
   add_playlist_handlers();
   add_transport_handlers();
+  add_autostart_handlers();
 }
 
 BridgeResponse BridgeApi::handle(const std::string& endpoint, std::string_view body) {
@@ -136,7 +137,8 @@ void BridgeApi::add_handlers() {
     return reply("lfd_status", r,
                  wrapped("value", "VARIANT_MAP",
                          {{"version", lfd::version_info().version}, {"pid", static_cast<int>(::getpid())}, {"showing", s.showing}, {"playlist", s.playlist},
-                          {"index", s.index}, {"entries", s.entries}, {"playing", s.playing},
+                          {"index", s.index}, {"entries", s.entries}, {"playing", s.playing}, {"window_visible", s.window_visible},
+                          {"quilt_aspect", s.quilt_aspect},
                           {"displays", displays}}));
   };
 }
@@ -145,8 +147,7 @@ namespace {
 
 // An RGB-D entry's keys (depth_loc, depthiness, focus, ...) read by the RGB-D module's one
 // parser, which knows bridge.js's ranges and defaults; bridge.js sends some values as text.
-rgbd::RgbdOptions rgbd_options_of(const json& r) {
-  rgbd::RgbdOptions o;
+rgbd::RgbdOptions rgbd_options_of(const json& r, rgbd::RgbdOptions o = {}) {
   for (const char* key : {"depth_loc", "depthiness", "focus", "depth_inversion", "chroma_depth", "zoom",
                           "crop_pos_x", "crop_pos_y"}) {
     if (!r.contains(key)) continue;
@@ -163,16 +164,18 @@ rgbd::RgbdOptions rgbd_options_of(const json& r) {
 
 }  // namespace
 
-PlaylistEntry BridgeApi::entry_of(const json& r) const {
-  PlaylistEntry e;
-  e.file = checked_request_file(field_text(r, "uri", 4096, ""), limits_.max_file_bytes);
-  e.quilt.cols = field_int(r, "cols", 1, 100, 1);
-  e.quilt.rows = field_int(r, "rows", 1, 100, 1);
-  e.quilt.views = field_int(r, "view_count", 1, e.quilt.cols * e.quilt.rows, e.quilt.cols * e.quilt.rows);
-  e.quilt.aspect = field_number(r, "aspect", 0.01, 100, 1.0);
-  e.focus = field_number(r, "focus", -10, 10, 0);
-  e.duration_ms = field_int(r, "durationMS", 0, 86'400'000, 0);
-  if (field_bool(r, "isRGBD", false)) e.rgbd = rgbd_options_of(r);
+PlaylistEntry BridgeApi::entry_of(const json& r, const PlaylistEntry* base) const {
+  PlaylistEntry e = base ? *base : PlaylistEntry{{}, std::nullopt, {1, 1, 1, 1.0}, 0, 0};
+  if (!base || r.contains("uri")) e.file = checked_request_file(field_text(r, "uri", 4096, ""), limits_.max_file_bytes);
+  e.quilt.cols = field_int(r, "cols", 1, 100, e.quilt.cols);
+  e.quilt.rows = field_int(r, "rows", 1, 100, e.quilt.rows);
+  const int tiles = e.quilt.cols * e.quilt.rows;
+  e.quilt.views = field_int(r, "view_count", 1, tiles, base && e.quilt.views <= tiles ? e.quilt.views : tiles);
+  e.quilt.aspect = field_number(r, "aspect", 0.01, 100, e.quilt.aspect);
+  e.focus = field_number(r, "focus", -10, 10, e.focus);
+  e.duration_ms = field_int(r, "durationMS", 0, 86'400'000, e.duration_ms);
+  if (field_bool(r, "isRGBD", e.rgbd.has_value())) e.rgbd = rgbd_options_of(r, e.rgbd.value_or(rgbd::RgbdOptions{}));
+  else e.rgbd.reset();
   return e;
 }
 
@@ -212,6 +215,19 @@ void BridgeApi::add_playlist_handlers() {
     publish("Playlist Delete", token, {{"name", wstring("name", name)}});
     return reply("delete_playlist", r, wrapped("value", "VARIANT_MAP", {{"name", wstring("name", name)}}));
   };
+  // bridge.js's schema: playlistName, playlistIndex and the entry's fields to change.
+  handlers_["update_playlist_entry"] = [this](const json& r) {
+    const std::string token = orchestration_of(r);
+    const std::string name = field_text(r, "playlistName", limits_.max_name_chars, field_text(r, "name", limits_.max_name_chars, ""));
+    const int index = field_int(r, "playlistIndex", 0, limits_.max_playlist_entries, field_int(r, "index", 0, limits_.max_playlist_entries, 0));
+    playlists_.update(name, index, [&](PlaylistEntry old) { return entry_of(r, &old); });
+    // The playlist on screen plays again from the entry shown, with the change.
+    const PlaybackState state = displays_.state();
+    if (state.playlist == name)
+      if (const auto playlist = playlists_.get(name)) displays_.play_playlist(0, *playlist, std::max(state.index, 0));
+    publish("Playlist Update", token, {{"name", wstring("name", name)}});
+    return reply("update_playlist_entry", r, nullptr);
+  };
   handlers_["update_current_entry"] = [this](const json& r) {
     orchestration_of(r);
     int updated = 0;
@@ -222,6 +238,36 @@ void BridgeApi::add_playlist_handlers() {
     }
     if (updated == 0) throw_input_error("update_current_entry: no parameter this service knows");
     return reply("update_current_entry", r, nullptr);
+  };
+}
+
+// The playlist the service plays when it starts (Service::start), kept in the state file.
+void BridgeApi::add_autostart_handlers() {
+  handlers_["get_autostart_playlist"] = [this](const json& r) {
+    orchestration_of(r);
+    const auto autostart = playlists_.autostart();
+    return reply("get_autostart_playlist", r,
+                 wrapped("value", "VARIANT_MAP",
+                         {{"playlist_name", wstring("playlist_name", autostart ? autostart->name : "")},
+                          {"playlist_path", wstring("playlist_path", "")}}));
+  };
+  const auto set_named = [this](const std::string& endpoint, const json& r) {
+    orchestration_of(r);
+    const std::string name = field_text(r, "playlist_name", limits_.max_name_chars, "");
+    if (!playlists_.get(name)) throw_input_error("playlist_name: no playlist named {}", name);
+    playlists_.set_autostart({name, field_int(r, "head_index", -1, limits_.max_playlist_entries, -1)});
+    return reply(endpoint, r, wrapped("value", "VARIANT_MAP", {{"playlist_name", wstring("playlist_name", name)}}));
+  };
+  handlers_["set_named_autostart_playlist"] = [set_named](const json& r) {
+    return set_named("set_named_autostart_playlist", r);
+  };
+  // Bridge's playlist_path names a Looking Glass Studio playlist file; lfd keeps its playlists
+  // in its state file and reads no file a request names but media (docs/serve.md).
+  handlers_["set_autostart_playlist"] = [set_named](const json& r) {
+    if (!field_text(r, "playlist_path", 4096, "").empty())
+      throw_input_error("playlist_path: Looking Glass Studio playlist files are not read; name a playlist of "
+                        "this service (playlist_name)");
+    return set_named("set_autostart_playlist", r);
   };
 }
 

@@ -44,7 +44,10 @@ class BridgeApi {
   nlohmann::json reply(const std::string& endpoint, const nlohmann::json& request, nlohmann::json payload) const;
   void publish(const std::string& event, const std::string& orchestration, nlohmann::json fields = nlohmann::json::object());
   nlohmann::json devices() const;
-  PlaylistEntry entry_of(const nlohmann::json& request) const;
+  // The entry a request describes; with `base`, the fields it leaves out keep base's values
+  // (update_playlist_entry) and the uri is optional.
+  PlaylistEntry entry_of(const nlohmann::json& request, const PlaylistEntry* base = nullptr) const;
+  void add_autostart_handlers();
 
   DisplayService& displays_;
   PlaylistStore& playlists_;

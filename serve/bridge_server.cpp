@@ -41,16 +41,19 @@ void BridgeServer::add_routes() {
     res.set_content(R"({"service":"lfd serve"})", "application/json");
   });
   s.Options(R"(/.*)", [](const httplib::Request&, httplib::Response& res) {
-    res.set_header("Access-Control-Allow-Methods", "PUT, GET, OPTIONS");
+    res.set_header("Access-Control-Allow-Methods", "PUT, POST, GET, OPTIONS");
     res.set_header("Access-Control-Allow-Headers", "Content-Type");
     res.set_header("Access-Control-Allow-Private-Network", "true");
     res.status = 204;
   });
-  s.Put(R"(/([A-Za-z_]{1,64}))", [this](const httplib::Request& req, httplib::Response& res) {
+  // bridge.js and the vendor's ComfyUI node send PUT, other scripts POST: the same call either way.
+  const auto call = [this](const httplib::Request& req, httplib::Response& res) {
     const BridgeResponse reply = api_.handle(req.matches[1].str(), req.body);
     res.status = reply.http_status;
     res.set_content(reply.body, "application/json");
-  });
+  };
+  s.Put(R"(/([A-Za-z_]{1,64}))", call);
+  s.Post(R"(/([A-Za-z_]{1,64}))", call);
 }
 
 void BridgeServer::start(const ListenAddress& address) {

@@ -62,6 +62,8 @@ struct PlaybackState {
   int index = -1;        // the current entry
   int entries = 0;
   bool playing = false;
+  bool window_visible = true;  // false after show_window(false)
+  double quilt_aspect = 0;     // the view aspect of the quilt shown (update_current_entry's aspect)
 };
 
 // Events the event WebSocket forwards (bridge.js names: "New Item Playing", "Transport Control

@@ -6,6 +6,8 @@
 
 #include <spdlog/spdlog.h>
 
+#include "display/display_quilt.hpp"
+#include "display/lens_model.hpp"
 #include "media/quilt_image.hpp"
 #include "serve/served_display_json.hpp"
 #include "util/error.hpp"
@@ -67,6 +69,12 @@ json HoloPlayProtocol::handle_request(const HoloPlayRequest& r) {
     if (r.command == "check") return check(r);
     if (r.command == "delete") return erase(r);
     if (r.command == "wipe") return wipe(r);
+    if (r.command == "uniforms") return uniforms();
+    // The vendor's service sent its GLSL; lfd's interlacer is GL 4.5 with its own uniforms, of
+    // no use to a WebGL client, and holoplay-core builds its shader itself (docs/serve.md).
+    if (r.command == "shader")
+      throw ProtocolError(HoloPlayError::kUnknownCommand,
+                          "shader: not provided; build it from the calibration (holoplay-core's Shader) with `uniforms`");
     throw ProtocolError(HoloPlayError::kUnknownCommand,
                         "unknown or unimplemented command: " + r.command.substr(0, 64));
   } catch (const ProtocolError& e) {
@@ -88,6 +96,30 @@ json HoloPlayProtocol::info() const {
   json devices = json::array();
   for (const ServedDisplay& d : displays_.displays()) devices.push_back(device_json(d));
   return {{"error", 0}, {"version", kHoloPlayServiceVersion}, {"devices", devices}};
+}
+
+json HoloPlayProtocol::uniforms() const {
+  json devices = json::array();
+  for (const ServedDisplay& d : displays_.displays()) {
+    const display::DisplayCalibration& c = d.calibration.display;
+    const display::LensModel lens(c, d.calibration.correction);
+    // The shader's terms (display/lens_relations.hpp, shader_terms): the phase of subpixel k of
+    // pixel (u, v) is ((u + k subp) + v tilt) pitch - center.
+    devices.push_back({{"index", d.index},
+                       {"pitch", lens.pitch_periods()},
+                       {"tilt", lens.tilt()},
+                       {"center", c.center_periods},
+                       {"subp", 1.0 / (3.0 * c.screen_w)},
+                       {"invView", c.inv_view ? 1 : 0},
+                       {"flipX", c.flip_image_x ? 1 : 0},
+                       {"ri", c.flip_subp ? 2 : 0},
+                       {"bi", c.flip_subp ? 0 : 2},
+                       {"displayAspect", double(c.screen_w) / c.screen_h},
+                       {"viewCone", display::effective_view_cone_deg(d.calibration)},
+                       {"screenW", c.screen_w},
+                       {"screenH", c.screen_h}});
+  }
+  return {{"error", 0}, {"uniforms", devices}};
 }
 
 int HoloPlayProtocol::target_display(const json& args) const {

@@ -37,6 +37,8 @@ class HoloPlayProtocol {
 
  private:
   nlohmann::json info() const;
+  // Each display's lenticular shader uniforms under HoloPlayCore's property names (docs/serve.md).
+  nlohmann::json uniforms() const;
   nlohmann::json show(const HoloPlayRequest& request);
   nlohmann::json cache(const HoloPlayRequest& request);
   nlohmann::json check(const HoloPlayRequest& request) const;

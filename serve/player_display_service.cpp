@@ -120,21 +120,22 @@ void PlayerDisplayService::transport(Transport command, int index) {
 }
 
 void PlayerDisplayService::update_current_entry(const std::string& parameter, double value) {
-  // The RGB-D settings of the entry shown change its views on the next frame; the quilt-only
-  // ones (aspect, depth_cutoff) the player does not adjust (docs/serve.md).
+  // The RGB-D settings of the entry shown change its views on the next frame, the aspect a
+  // quilt's tiles; depth_cutoff, which lfd's RGB-D views do not model, is refused (docs/serve.md).
   static const std::set<std::string> rgbd_keys = {"focus", "depthiness", "zoom", "crop_pos_x", "crop_pos_y"};
-  if (!rgbd_keys.count(parameter))
-    throw_input_error("update_current_entry: {} is not adjustable by lfd play's player yet (docs/serve.md)", parameter);
+  if (!rgbd_keys.count(parameter) && parameter != "aspect")
+    throw_input_error("update_current_entry: {} is not adjustable by lfd play's player (docs/serve.md)", parameter);
   int display;
   {
     std::lock_guard lock(mutex_);
     display = playlist_display_;
   }
-  player(std::max(display, 0)).update_rgbd_option(parameter, fmt::format("{}", value));
+  if (parameter == "aspect") player(std::max(display, 0)).set_quilt_aspect(value);
+  else player(std::max(display, 0)).update_rgbd_option(parameter, fmt::format("{}", value));
 }
 
 void PlayerDisplayService::show_window(bool show) {
-  if (!show) throw_input_error("show_window: the display's window stays open while lfd serve runs (docs/serve.md)");
+  for (int d = 0; d < static_cast<int>(displays().size()); ++d) player(d).set_window_visible(show);
 }
 
 PlaybackState PlayerDisplayService::state() const {
@@ -150,6 +151,8 @@ PlaybackState PlayerDisplayService::state() const {
   s.index = p.entry_index;
   s.entries = p.entry_count;
   s.playing = p.playing;
+  s.window_visible = p.window_visible;
+  s.quilt_aspect = p.quilt_aspect;
   if (!p.entry_name.empty() && !s.playlist.empty()) s.showing += ": " + p.entry_name;
   return s;
 }

@@ -47,6 +47,9 @@ void PlaylistStore::load() {
       for (const auto& e : p.at("entries")) playlist.entries.push_back(entry_from_json(e));
       playlists_[name] = std::move(playlist);
     }
+    if (root.contains("autostart") && !root.at("autostart").is_null())
+      autostart_ = Autostart{root.at("autostart").at("name").get<std::string>(),
+                             root.at("autostart").at("head_index").get<int>()};
   } catch (const std::exception& e) {
     spdlog::warn("{}: not read, starting without playlists ({})", file_.string(), e.what());
     playlists_.clear();
@@ -61,6 +64,7 @@ void PlaylistStore::save_locked() const {
     for (const auto& e : p.entries) entries.push_back(entry_json(e));
     root["playlists"][name] = {{"loop", p.loop}, {"entries", entries}};
   }
+  root["autostart"] = autostart_ ? json{{"name", autostart_->name}, {"head_index", autostart_->head_index}} : json(nullptr);
   write_text_atomic(file_, root.dump(1));
 }
 
@@ -82,6 +86,29 @@ void PlaylistStore::insert(const std::string& name, int index, PlaylistEntry ent
   if (index < 0 || index >= static_cast<int>(entries.size())) entries.push_back(std::move(entry));
   else entries.insert(entries.begin() + index, std::move(entry));
   save_locked();
+}
+
+void PlaylistStore::update(const std::string& name, int index,
+                           const std::function<PlaylistEntry(PlaylistEntry)>& change) {
+  std::lock_guard lock(mutex_);
+  auto it = playlists_.find(name);
+  if (it == playlists_.end()) throw_input_error("playlistName: no playlist named {}", name);
+  auto& entries = it->second.entries;
+  if (index < 0 || index >= static_cast<int>(entries.size()))
+    throw_input_error("playlistIndex: {} is not an entry of {} ({} entries)", index, name, entries.size());
+  entries[index] = change(entries[index]);
+  save_locked();
+}
+
+void PlaylistStore::set_autostart(Autostart autostart) {
+  std::lock_guard lock(mutex_);
+  autostart_ = std::move(autostart);
+  save_locked();
+}
+
+std::optional<PlaylistStore::Autostart> PlaylistStore::autostart() const {
+  std::lock_guard lock(mutex_);
+  return autostart_;
 }
 
 bool PlaylistStore::erase(const std::string& name) {

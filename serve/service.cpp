@@ -44,6 +44,19 @@ void Service::start() {
   holoplay_server_.start(options_.listen);
   bridge_server_.start(options_.listen);
   event_server_.start(options_.listen);
+  play_autostart_playlist();
+}
+
+void Service::play_autostart_playlist() {
+  const auto autostart = playlists_.autostart();
+  if (!autostart) return;
+  const auto playlist = playlists_.get(autostart->name);
+  if (!playlist) {
+    spdlog::warn("autostart playlist {}: not among the playlists kept; nothing started", autostart->name);
+    return;
+  }
+  displays_.play_playlist(0, *playlist, autostart->head_index);
+  spdlog::info("autostart: playing {} ({} entries)", playlist->name, playlist->entries.size());
 }
 
 void Service::stop() {

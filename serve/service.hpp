@@ -33,7 +33,9 @@ class Service {
  public:
   Service(DisplayService& displays, ServeOptions options);
   ~Service();
-  void start();  // throws std::runtime_error naming the address it cannot listen on
+  // Listens, then plays the autostart playlist if one was chosen (set_named_autostart_playlist).
+  // Throws std::runtime_error naming the address it cannot listen on.
+  void start();
   void stop();
   // What it listens on and who may talk to it, one line each (printed at start).
   std::vector<std::string> describe() const;
@@ -41,6 +43,8 @@ class Service {
   std::size_t refused() const;
 
  private:
+  void play_autostart_playlist();
+
   DisplayService& displays_;
   ServeOptions options_;
   OriginPolicy origins_;

@@ -64,6 +64,44 @@ TEST_F(BridgeApiTest, AnUnknownOrchestrationChangesNothing) {
   EXPECT_TRUE(fake.recorded().empty());
 }
 
+TEST_F(BridgeApiTest, UpdatePlaylistEntryChangesOnlyTheFieldsGivenAndReplaysThePlaylistShown) {
+  call("instance_playlist", {{"orchestration", token}, {"name", "p"}, {"loop", true}});
+  call("insert_playlist_entry", {{"orchestration", token}, {"name", "p"}, {"index", 0}, {"uri", quilt_file()},
+                                 {"rows", 3}, {"cols", 4}, {"aspect", 0.75}, {"view_count", 12}});
+  call("play_playlist", {{"orchestration", token}, {"name", "p"}, {"head_index", -1}});
+  fake.state_playlist = "p";
+  call("update_playlist_entry", {{"orchestration", token}, {"playlistName", "p"}, {"playlistIndex", 0},
+                                 {"focus", "0.5"}, {"aspect", 0.8}});
+  const auto stored = playlists.get("p");
+  ASSERT_TRUE(stored);
+  EXPECT_DOUBLE_EQ(stored->entries[0].focus, 0.5);
+  EXPECT_DOUBLE_EQ(stored->entries[0].quilt.aspect, 0.8);
+  EXPECT_EQ(stored->entries[0].quilt.views, 12);  // kept
+  EXPECT_EQ(fake.last_playlist.entries[0].focus, 0.5);  // the playlist shown plays with the change
+  const json bad = call("update_playlist_entry", {{"orchestration", token}, {"playlistName", "p"}, {"playlistIndex", 3}}, 400);
+  EXPECT_NE(bad["payload"]["value"].get<std::string>().find("playlistIndex: 3"), std::string::npos);
+  EXPECT_DOUBLE_EQ(playlists.get("p")->entries[0].focus, 0.5);
+}
+
+TEST_F(BridgeApiTest, AutostartPlaylistIsKeptInTheStateFile) {
+  EXPECT_EQ(call("get_autostart_playlist", {{"orchestration", token}, {"head_index", -1}})["payload"]["value"]
+                ["playlist_name"]["value"], "");
+  call("set_named_autostart_playlist", {{"orchestration", token}, {"playlist_name", "missing"}, {"head_index", -1}}, 400);
+  call("instance_playlist", {{"orchestration", token}, {"name", "p"}, {"loop", true}});
+  const json set = call("set_named_autostart_playlist", {{"orchestration", token}, {"playlist_name", "p"}, {"head_index", 2}});
+  EXPECT_EQ(set["payload"]["value"]["playlist_name"]["value"], "p");
+  const json got = call("get_autostart_playlist", {{"orchestration", token}, {"head_index", -1}});
+  EXPECT_EQ(got["payload"]["value"]["playlist_name"]["value"], "p");
+  EXPECT_EQ(got["payload"]["value"]["playlist_path"]["type"], "WSTRING");
+  // A studio playlist file named by the request is not read.
+  call("set_autostart_playlist", {{"orchestration", token}, {"playlist_name", "p"}, {"playlist_path", "/etc/passwd"},
+                                  {"head_index", -1}}, 400);
+  PlaylistStore again{tmp.path / "state" / "playlists.json", limits};
+  ASSERT_TRUE(again.autostart());
+  EXPECT_EQ(again.autostart()->name, "p");
+  EXPECT_EQ(again.autostart()->head_index, 2);
+}
+
 TEST_F(BridgeApiTest, PlaysAPlaylistOfCheckedFiles) {
   call("instance_playlist", {{"orchestration", token}, {"name", "p"}, {"loop", true}});
   call("insert_playlist_entry", {{"orchestration", token}, {"name", "p"}, {"index", 0}, {"uri", quilt_file()},

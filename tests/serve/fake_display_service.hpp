@@ -35,7 +35,10 @@ class FakeDisplayService : public DisplayService {
     record("update " + parameter + " " + std::to_string(value));
   }
   void show_window(bool show) override { record(std::string("show_window ") + (show ? "1" : "0")); }
-  PlaybackState state() const override { return {"a fake", "", -1, 0, false}; }
+  PlaybackState state() const override {
+    std::lock_guard lock(mutex);
+    return {"a fake", state_playlist, -1, 0, false};
+  }
   void set_event_listener(std::function<void(const PlaybackEvent&)> listener) override {
     std::lock_guard lock(mutex);
     this->listener = std::move(listener);
@@ -51,6 +54,7 @@ class FakeDisplayService : public DisplayService {
   Image8 last_quilt;
   QuiltSettings last_settings;
   Playlist last_playlist;
+  std::string state_playlist;  // the playlist state() says is playing
   std::function<void(const PlaybackEvent&)> listener;
 
  private:

@@ -1,5 +1,7 @@
 // The HoloPlay Service commands against the test double: what each command changes, and that a
 // bad request gets an error reply and changes nothing.
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "serve/holoplay_protocol.hpp"
@@ -39,6 +41,24 @@ TEST_F(HoloPlayProtocolTest, InfoServesTheCalibrationFileAndItsDefaultQuilt) {
   EXPECT_TRUE(cal.contains("fringe"));
   EXPECT_GE(reply["devices"][0]["defaultQuilt"]["tileX"].get<int>(), 1);
   EXPECT_EQ(call({{"init", {{"appid", "x"}}}})["devices"], reply["devices"]);
+}
+
+TEST_F(HoloPlayProtocolTest, UniformsAreTheShaderTermsOfTheCalibration) {
+  const json reply = call({{"uniforms", json::object()}});
+  ASSERT_EQ(reply["error"], 0) << reply.dump();
+  ASSERT_EQ(reply["uniforms"].size(), 1u);
+  const json& u = reply["uniforms"][0];
+  const auto& d = test::fixture_display().calibration.display;
+  // The Looking Glass shader's terms, written out: pitch (W / DPI) cos(atan(1 / slope)), H / (W slope).
+  const double pitch = d.pitch_lpi * (d.screen_w / d.dpi) * std::cos(std::atan(1.0 / d.slope));
+  EXPECT_NEAR(u["pitch"].get<double>(), pitch, 1e-9 * pitch);
+  EXPECT_NEAR(u["tilt"].get<double>(), (d.flip_image_x ? -1 : 1) * d.screen_h / (d.screen_w * d.slope), 1e-12);
+  EXPECT_DOUBLE_EQ(u["center"].get<double>(), d.center_periods);
+  EXPECT_DOUBLE_EQ(u["subp"].get<double>(), 1.0 / (3 * d.screen_w));
+  EXPECT_EQ(u["invView"], d.inv_view ? 1 : 0);
+  const json shader = call({{"shader", json::object()}});
+  EXPECT_EQ(shader["error"], static_cast<int>(HoloPlayError::kUnknownCommand));
+  EXPECT_TRUE(fake.recorded().empty());
 }
 
 TEST_F(HoloPlayProtocolTest, ShowDecodesTheQuiltBytesExactly) {

@@ -14,6 +14,7 @@
 #include "serve/service.hpp"
 #include "tests/serve/fake_display_service.hpp"
 #include "tests/serve/serve_test_support.hpp"
+#include "tests/serve/serve_test_support.hpp"
 
 namespace lfd::serve {
 namespace {
@@ -74,6 +75,48 @@ struct ServiceSocketsTest : ::testing::Test {
     return c.Put(("/" + endpoint).c_str(), headers, body.dump(), "application/json");
   }
 };
+
+TEST_F(ServiceSocketsTest, TheAutostartPlaylistPlaysAfterARestart) {
+  test::TempDir tmp;
+  const auto state_file = tmp.path / "playlists.json";
+  ServeOptions kept = options;
+  kept.state_file = state_file;
+  service->stop();
+  service = std::make_unique<Service>(fake, kept);
+  service->start();
+  const auto token = json::parse(put("enter_orchestration", json::object())->body)["payload"]["value"];
+  ASSERT_EQ(put("instance_playlist", {{"orchestration", token}, {"name", "lobby"}, {"loop", true}})->status, 200);
+  ASSERT_EQ(put("set_named_autostart_playlist", {{"orchestration", token}, {"playlist_name", "lobby"}, {"head_index", 0}})->status,
+            200);
+  EXPECT_TRUE(fake.recorded().empty());  // chosen, not played now
+  service->stop();
+  service.reset();
+  service = std::make_unique<Service>(fake, kept);  // lfd serve restarted (systemd), same state file
+  service->start();
+  ASSERT_FALSE(fake.recorded().empty());
+  EXPECT_EQ(fake.recorded().back(), "play_playlist 0 lobby 0");
+}
+
+TEST_F(ServiceSocketsTest, BridgeAnswersPostAsPut) {
+  httplib::Client c("127.0.0.1", options.listen.bridge_port);
+  c.set_read_timeout(5, 0);
+  const auto entered = c.Post("/enter_orchestration", "{}", "application/json");
+  ASSERT_TRUE(entered);
+  EXPECT_EQ(entered->status, 200);
+  const auto token = json::parse(entered->body)["payload"]["value"];
+  const auto played = c.Post("/transport_control_play", json{{"orchestration", token}}.dump(), "application/json");
+  ASSERT_TRUE(played);
+  EXPECT_EQ(played->status, 200);
+  EXPECT_EQ(fake.recorded().size(), 1u);
+  const auto evil = c.Post("/transport_control_play", httplib::Headers{{"Origin", "https://evil.example"}},
+                           json{{"orchestration", token}}.dump(), "application/json");
+  ASSERT_TRUE(evil);
+  EXPECT_EQ(evil->status, 403);
+  EXPECT_EQ(fake.recorded().size(), 1u);
+  const auto preflight = c.Options("/transport_control_play");
+  ASSERT_TRUE(preflight);
+  EXPECT_NE(preflight->get_header_value("Access-Control-Allow-Methods").find("POST"), std::string::npos);
+}
 
 TEST_F(ServiceSocketsTest, HoloPlayInfoOverNngWebSocket) {
   const auto reply = holoplay({{"info", json::object()}});

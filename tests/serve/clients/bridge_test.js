@@ -46,6 +46,19 @@ const settings = {rows: Number(rows), columns: Number(cols), aspect: Number(aspe
   await waitFor('the first entry shows again', async () => (await lfdStatus()).index === 0);
   check((await client.play()).success, 'play');
   await waitFor('playing', async () => (await lfdStatus()).playing);
+  check((await client.showWindow(false)).success, 'showWindow(false)');
+  await waitFor('the window is hidden', async () => (await lfdStatus()).window_visible === false);
+  check((await client.showWindow(true)).success, 'showWindow(true)');
+  await waitFor('the window shows again', async () => (await lfdStatus()).window_visible === true);
+  const aspected = await client.updateCurrentHologram({name: (await lfdStatus()).playlist, parameter: 'aspect', value: 0.8});
+  check(aspected.success, "updateCurrentHologram sets the quilt's aspect");
+  await waitFor('the quilt shown takes the aspect', async () => Math.abs((await lfdStatus()).quilt_aspect - 0.8) < 1e-9);
+  const playing = (await lfdStatus()).playlist;
+  const chosen = await client.setAutoStartPlaylist({playlistName: playing, playlistPath: ''});
+  check(chosen.success, 'setAutoStartPlaylist names the playlist playing');
+  const autostart = await client.getAutoStartPlaylist();
+  check(autostart.success && autostart.response.payload.value.playlist_name.value === playing,
+        'getAutoStartPlaylist gives it back');
   await waitFor('events arrive on the event socket', async () => events.includes('Transport Control Pause'));
   console.log('events seen: ' + [...new Set(events)].join(', '));
   await client.disconnect();

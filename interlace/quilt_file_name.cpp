@@ -1,10 +1,10 @@
-#include "apps/quilt_file_name.hpp"
+#include "interlace/quilt_file_name.hpp"
 
 #include <filesystem>
 
 #include "util/error.hpp"
 
-namespace lfd::apps {
+namespace lfd::interlace {
 
 std::string quilt_file_name(const std::string& path, const render::QuiltLayout& q,
                             const std::string& option) {
@@ -20,4 +20,4 @@ std::string quilt_file_name(const std::string& path, const render::QuiltLayout& 
   return (p.parent_path() / name).string();
 }
 
-}  // namespace lfd::apps
+}  // namespace lfd::interlace
