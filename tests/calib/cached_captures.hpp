@@ -72,7 +72,11 @@ inline void write_captures(const std::filesystem::path& path, const std::vector<
     }
     if (!out) return;  // a full disk: the next process simulates again
   }
-  std::filesystem::rename(tmp, path);
+  // Another process of this build may have written the same file first (and a stale-file sweep
+  // of a concurrent writer may have taken this tmp): either way the cache holds it or not.
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) std::filesystem::remove(tmp, ec);
 }
 
 inline bool read_captures(const std::filesystem::path& path, std::vector<sim::PositionCaptures>& captures) {
@@ -121,7 +125,9 @@ inline std::vector<sim::PositionCaptures> cached_captures(
   // An earlier build's copies of these captures are stale now: only this program's stay.
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string file = entry.path().filename().string();
-    if (file.rfind(name + "-", 0) == 0 && entry.path() != path) std::filesystem::remove(entry.path(), ec);
+    // Only finished files of other builds: a .tmp is a concurrent writer's, still being written.
+    if (file.rfind(name + "-", 0) == 0 && entry.path() != path && file.find(".tmp") == std::string::npos)
+      std::filesystem::remove(entry.path(), ec);
   }
   d::write_captures(path, captures);
   return captures;
