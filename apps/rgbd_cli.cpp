@@ -15,6 +15,8 @@ void RgbdFlags::add(CLI::App& app, const std::string& settings_flag, const std::
   app.add_option("--zoom", zoom, help("magnification about the crop centre, 0.1 to 4 (default 1)"));
   app.add_option("--crop-pos-x", crop_x, help("crop centre, half widths, + right, -2 to 2"));
   app.add_option("--crop-pos-y", crop_y, help("crop centre, half heights, + up, -2 to 2"));
+  app.add_option("--depth-cutoff", cutoff,
+                 help("remove depths farther than this, 0 to 1 on the depth map's scale (1 near; default 0: none)"));
   app.add_flag("--depth-inversion", inversion, help("the depth map has black near (white far)"));
   app.add_flag("--chroma-depth", chroma, help("depth as hue: red near, blue far"));
 }
@@ -24,6 +26,7 @@ namespace {
 std::vector<std::pair<std::string, std::string>> by_key(const RgbdFlags& f) {
   return {{"depth_loc", f.depth_loc},     {"depthiness", f.depthiness}, {"focus", f.focus},
           {"zoom", f.zoom},               {"crop_pos_x", f.crop_x},     {"crop_pos_y", f.crop_y},
+          {"depth_cutoff", f.cutoff},
           {"depth_inversion", f.inversion ? "1" : ""}, {"chroma_depth", f.chroma ? "1" : ""}};
 }
 

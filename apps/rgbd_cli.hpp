@@ -10,7 +10,7 @@
 namespace lfd::apps {
 
 struct RgbdFlags {
-  std::string settings, depth_loc, depthiness, focus, zoom, crop_x, crop_y;
+  std::string settings, depth_loc, depthiness, focus, zoom, crop_x, crop_y, cutoff;
   bool inversion = false, chroma = false;
 
   // Adds the flags to `app`; `settings_flag` names the settings file's option and `help_prefix`

@@ -130,6 +130,7 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   glUniform1f(resample_.uniform("zoom"), float(options.zoom));
   glUniform1i(resample_.uniform("chroma_depth"), options.chroma_depth ? 1 : 0);
   glUniform1i(resample_.uniform("depth_inversion"), options.depth_inversion ? 1 : 0);
+  glUniform1f(resample_.uniform("depth_cutoff"), float(options.depth_cutoff));
   draw_into(source_, tw, th);
 
   warp_.use();

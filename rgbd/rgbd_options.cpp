@@ -66,6 +66,14 @@ double json_number(const std::string& key, const nlohmann::json& value) {
   return value.get<double>();
 }
 
+// depth_cutoff from a command line: a number, or a flag word (bridge.js 0.0.8-alpha.4's 0/1).
+double parse_cutoff(std::string_view key, std::string_view text) {
+  const std::string t = lower(text);
+  if (t == "true" || t == "yes" || t == "on") return 1.0;
+  if (t == "false" || t == "no" || t == "off") return 0.0;
+  return parse_number(key, text);
+}
+
 constexpr std::array<const char*, 4> kLocationNames = {"top", "bottom", "right", "left"};
 
 }  // namespace
@@ -76,6 +84,7 @@ void RgbdOptions::check(const std::string& what) const {
   check_range(what, "zoom", zoom, kMinZoom, kMaxZoom);
   check_range(what, "crop_pos_x", crop_pos_x, kMinCropPos, kMaxCropPos);
   check_range(what, "crop_pos_y", crop_pos_y, kMinCropPos, kMaxCropPos);
+  check_range(what, "depth_cutoff", depth_cutoff, kMinDepthCutoff, kMaxDepthCutoff);
   const int loc = int(depth_loc);
   if (loc < 0 || loc > 3) throw_input_error("{}: depth_loc {} must be 0..3", what, loc);
 }
@@ -104,6 +113,7 @@ void set_rgbd_option(RgbdOptions& options, std::string_view key, std::string_vie
   else if (k == "zoom") next.zoom = parse_number(k, value);
   else if (k == "crop_pos_x") next.crop_pos_x = parse_number(k, value);
   else if (k == "crop_pos_y") next.crop_pos_y = parse_number(k, value);
+  else if (k == "depth_cutoff") next.depth_cutoff = parse_cutoff(k, value);
   else throw_input_error("RGB-D options: unknown option '{}'", key);
   next.check("RGB-D options");
   options = next;
@@ -130,6 +140,8 @@ RgbdOptions rgbd_options_from_json(const nlohmann::json& settings, RgbdOptions b
     else if (key == "zoom") o.zoom = json_number(key, value);
     else if (key == "crop_pos_x") o.crop_pos_x = json_number(key, value);
     else if (key == "crop_pos_y") o.crop_pos_y = json_number(key, value);
+    else if (key == "depth_cutoff") o.depth_cutoff = value.is_boolean() ? (value.get<bool>() ? 1.0 : 0.0)
+                                                                         : json_number(key, value);
   }
   o.check("RGB-D settings");
   return o;
@@ -149,7 +161,8 @@ nlohmann::json rgbd_options_to_json(const RgbdOptions& options) {
           {"chroma_depth", options.chroma_depth ? 1 : 0},
           {"zoom", options.zoom},
           {"crop_pos_x", options.crop_pos_x},
-          {"crop_pos_y", options.crop_pos_y}};
+          {"crop_pos_y", options.crop_pos_y},
+          {"depth_cutoff", options.depth_cutoff}};
 }
 
 RgbdOptions rgbd_options_from_command_line(const std::string& settings_path,

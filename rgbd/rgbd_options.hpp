@@ -22,6 +22,9 @@ inline constexpr double kMinDepthiness = 0.1, kMaxDepthiness = 4.0, kDefaultDept
 inline constexpr double kMinFocus = -0.05, kMaxFocus = 0.05;
 inline constexpr double kMinZoom = 0.1, kMaxZoom = 4.0;
 inline constexpr double kMinCropPos = -2.0, kMaxCropPos = 2.0;
+// depth_cutoff: bridge.js 0.0.8-alpha.4 sends a 0/1 flag, 0.0.8-alpha.6 a threshold in [0, 1]
+// with default 0 (bridge.h: "a z-depth threshold value"); docs/rgbd.md "Depth cutoff".
+inline constexpr double kMinDepthCutoff = 0.0, kMaxDepthCutoff = 1.0;
 
 struct RgbdOptions {
   DepthLocation depth_loc = DepthLocation::right;  // colour left, depth right
@@ -32,6 +35,7 @@ struct RgbdOptions {
   double zoom = 1.0;             // magnification of the colour/depth about the crop centre
   double crop_pos_x = 0.0;       // crop centre offset, in half image widths (+ right)
   double crop_pos_y = 0.0;       // in half image heights (+ up)
+  double depth_cutoff = 0.0;     // depths d < depth_cutoff (1 = near) are removed: drawn black
 
   // Throws lfd::InputError "<what>: <field> ..." naming the bridge.js field when a value is
   // outside bridge.js's range or not finite.
@@ -44,14 +48,14 @@ DepthLocation parse_depth_location(std::string_view text);
 std::string depth_location_name(DepthLocation location);
 
 // Sets one option from its bridge.js key (`depth_loc`, `depthiness`, `focus`, `depth_inversion`,
-// `chroma_depth`, `zoom`, `crop_pos_x`, `crop_pos_y`) and a command-line string ("1", "true",
+// `chroma_depth`, `zoom`, `crop_pos_x`, `crop_pos_y`, `depth_cutoff`) and a command-line string ("1", "true",
 // "right", "0.02"); the dashed spelling (`depth-loc`) is accepted too. Throws InputError
 // naming the key for an unknown key or a value that does not parse or is out of range.
 void set_rgbd_option(RgbdOptions& options, std::string_view key, std::string_view value);
 
 // Reads the RGB-D keys of a bridge.js RGBDHologram settings object or playlist entry (other keys
 // such as uri, aspect or durationMS are left to the caller) over `base`; bridge.js's 0/1 flags
-// and JSON booleans both work. Throws InputError naming the key on a wrong type or range.
+// and JSON booleans both work (depth_cutoff: a number in [0, 1] or a boolean). Throws InputError naming the key on a wrong type or range.
 RgbdOptions rgbd_options_from_json(const nlohmann::json& settings, RgbdOptions base = {});
 // The same from JSON text; InputError "RGB-D settings: ..." when it is not a JSON object.
 RgbdOptions parse_rgbd_options_json(std::string_view text, RgbdOptions base = {});

@@ -58,6 +58,9 @@ void resample_row(const ImageF& frame, const RgbdSplit& split, const RgbdOptions
     };
     d = decode_depth(depth_channel(0), depth_channel(1), depth_channel(2), o.chroma_depth,
                      o.depth_inversion);
+    // depth_cutoff: what lies farther than the threshold is removed; it keeps its depth, so the
+    // views' geometry (and which side fills a hole) is that of the frame (docs/rgbd.md).
+    if (d < float(o.depth_cutoff)) c[0] = c[1] = c[2] = 0.0f;
   }
 }
 

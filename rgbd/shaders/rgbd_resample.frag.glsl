@@ -16,6 +16,7 @@ uniform vec2 crop;          // crop_pos_x, -crop_pos_y (top-down)
 uniform float zoom;
 uniform bool chroma_depth;
 uniform bool depth_inversion;
+uniform float depth_cutoff;  // depths below it are removed (black), keeping their depth
 
 out vec4 result;
 
@@ -43,5 +44,6 @@ void main() {
   const vec3 colour = top + (bot - top) * t.y;
   const int dx = min(int(su * float(depth_rect.z)), depth_rect.z - 1);
   const int dy = min(int(sv * float(depth_rect.w)), depth_rect.w - 1);
-  result = vec4(colour, decode_depth(texel(depth_rect, dx, dy), chroma_depth, depth_inversion));
+  const float d = decode_depth(texel(depth_rect, dx, dy), chroma_depth, depth_inversion);
+  result = vec4(d < depth_cutoff ? vec3(0.0) : colour, d);
 }

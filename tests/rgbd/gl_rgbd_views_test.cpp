@@ -71,6 +71,14 @@ TEST(GlRgbdViews, MatchesWithStrongReliefFocusInversionAndChromaDepth) {
                         layout(16, 4, 4), 54.0);
 }
 
+TEST(GlRgbdViews, MatchesWithADepthCutoff) {
+  gpu::HeadlessContext context;
+  RgbdOptions o;
+  o.depthiness = 4.0;
+  o.depth_cutoff = 0.75;  // the background and the focus band removed, the near band kept
+  expect_gl_matches_cpu(test::layered_rgbd_frame(kW, kH, o.depth_loc), o, layout(9, 3, 3));
+}
+
 TEST(GlRgbdViews, MatchesWithZoomCropEmptyTilesAndAMargin) {
   gpu::HeadlessContext context;
   RgbdOptions o;

@@ -39,6 +39,7 @@ TEST(RgbdOptions, DefaultsAreBridgeJss) {
   EXPECT_DOUBLE_EQ(o.zoom, 1.0);
   EXPECT_DOUBLE_EQ(o.crop_pos_x, 0.0);
   EXPECT_DOUBLE_EQ(o.crop_pos_y, 0.0);
+  EXPECT_DOUBLE_EQ(o.depth_cutoff, 0.0);  // bridge.js 0.0.8-alpha.6's DEPTH_CUTOFF default: nothing removed
   EXPECT_NO_THROW(o.check());
 }
 
@@ -68,6 +69,12 @@ TEST(RgbdOptions, SetsEachOptionFromItsBridgeKeyOrDashedFlag) {
   set_rgbd_option(o, "zoom", "1.25");
   set_rgbd_option(o, "crop_pos_x", "0.5");
   set_rgbd_option(o, "crop-pos-y", "-1");
+  set_rgbd_option(o, "depth-cutoff", "0.9");
+  EXPECT_DOUBLE_EQ(o.depth_cutoff, 0.9);
+  set_rgbd_option(o, "depth_cutoff", "true");  // bridge.js 0.0.8-alpha.4's flag: the range's ends
+  EXPECT_DOUBLE_EQ(o.depth_cutoff, 1.0);
+  set_rgbd_option(o, "depth_cutoff", "0");
+  EXPECT_DOUBLE_EQ(o.depth_cutoff, 0.0);
   EXPECT_EQ(o.depth_loc, DepthLocation::left);
   EXPECT_DOUBLE_EQ(o.depthiness, 2.5);
   EXPECT_DOUBLE_EQ(o.focus, -0.02);
@@ -93,6 +100,8 @@ TEST(RgbdOptions, BadValuesAreOneLineErrorsNamingTheFieldAndLeaveTheOptionsAlone
       {"crop_pos_x", "3", "crop_pos_x"},    {"crop_pos_y", "-2.5", "crop_pos_y"},
       {"depth_inversion", "2", "depth_inversion"}, {"chroma_depth", "maybe", "chroma_depth"},
       {"depth_loc", "5", "depth_loc"},      {"sharpness", "1", "sharpness"},
+      {"depth_cutoff", "1.5", "depth_cutoff"}, {"depth_cutoff", "-0.1", "depth_cutoff"},
+      {"depth_cutoff", "deep", "depth_cutoff"},
   };
   for (const auto& c : cases) {
     expect_one_line_naming(input_error_of([&] { set_rgbd_option(o, c.key, c.value); }), c.field);
@@ -111,17 +120,22 @@ TEST(RgbdOptions, ReadsABridgeJsRgbdHologramsSettings) {
   EXPECT_EQ(o.depth_loc, DepthLocation::left);
   EXPECT_TRUE(o.depth_inversion);
   EXPECT_FALSE(o.chroma_depth);
+  EXPECT_DOUBLE_EQ(o.depth_cutoff, 1.0);
   // Round trip through bridge.js's keys.
   RgbdOptions p;
   p.depth_loc = DepthLocation::bottom;
   p.focus = 0.03;
   p.chroma_depth = true;
   p.crop_pos_y = 0.5;
+  p.depth_cutoff = 0.4;
   const RgbdOptions q = rgbd_options_from_json(rgbd_options_to_json(p));
   EXPECT_EQ(q.depth_loc, p.depth_loc);
   EXPECT_DOUBLE_EQ(q.focus, p.focus);
   EXPECT_EQ(q.chroma_depth, p.chroma_depth);
   EXPECT_DOUBLE_EQ(q.crop_pos_y, p.crop_pos_y);
+  EXPECT_DOUBLE_EQ(q.depth_cutoff, p.depth_cutoff);
+  EXPECT_DOUBLE_EQ(parse_rgbd_options_json(R"({"depth_cutoff": true})").depth_cutoff, 1.0);
+  EXPECT_DOUBLE_EQ(parse_rgbd_options_json(R"({"depth_cutoff": 0.25})").depth_cutoff, 0.25);
   EXPECT_TRUE(parse_rgbd_options_json(R"({"chroma_depth": true})").chroma_depth);
 }
 
@@ -135,7 +149,8 @@ TEST(RgbdOptions, BadJsonIsAOneLineErrorNamingTheKey) {
       {R"({"depth_loc": 7})", "depth_loc"},  {R"({"depth_loc": 1.5})", "depth_loc"},
       {R"({"depth_loc": "sideways"})", "depth_loc"}, {R"({"chroma_depth": 2})", "chroma_depth"},
       {R"({"depth_inversion": "yes"})", "depth_inversion"}, {R"({"zoom": null})", "zoom"},
-      {R"({"focus": -1})", "focus"},
+      {R"({"focus": -1})", "focus"},         {R"({"depth_cutoff": 2})", "depth_cutoff"},
+      {R"({"depth_cutoff": "half"})", "depth_cutoff"},
   };
   for (const auto& c : cases)
     expect_one_line_naming(input_error_of([&] { parse_rgbd_options_json(c.text); }), c.field);

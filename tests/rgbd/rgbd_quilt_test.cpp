@@ -4,8 +4,10 @@
 // chroma depth gives the same depths, holes are filled from the background side.
 #include "rgbd/rgbd_quilt.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -197,6 +199,58 @@ TEST(RgbdQuilt, HolesAreFilledFromTheBackgroundSide) {
   ASSERT_LT(band_end, background_start);
   for (int x = band_end; x < background_start; ++x)
     EXPECT_FLOAT_EQ(warped.colour.at(x, y, 1), layer_code(0)) << x;
+}
+
+// depth_cutoff's known truth (docs/rgbd.md "Depth cutoff"): the quilt with a cutoff is the quilt
+// without it where every pixel that shows a layer farther than the cutoff is black, and every
+// other pixel is unchanged (removed pixels keep their depth, so nothing moves and holes fill
+// from the same side).
+void expect_cutoff_removes_layers_below(double cutoff, const std::vector<int>& removed_ids) {
+  RgbdOptions o;
+  o.depthiness = 4.0;  // wide disocclusions: holes fill from the (removed) background side
+  const auto q = fixture_layout();
+  const ImageF frame = test::layered_rgbd_frame(kW, kH, o.depth_loc);
+  const ImageF whole = render_rgbd_quilt(frame, o, q);
+  o.depth_cutoff = cutoff;
+  const ImageF cut = render_rgbd_quilt(frame, o, q);
+  size_t removed = 0, kept = 0;
+  for (int y = 0; y < q.height; ++y)
+    for (int x = 0; x < q.width; ++x) {
+      // The layer a pixel shows, by its code (bilinear colour may blend a pixel's code with its
+      // neighbour's by a float rounding where a layer ends; the depth is the nearest texel's).
+      const float g = whole.at(x, y, 1);
+      const bool gone = std::any_of(removed_ids.begin(), removed_ids.end(),
+                                    [&](int id) { return std::abs(g - layer_code(id)) < 0.01f; });
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(cut.at(x, y, c), gone ? 0.0f : whole.at(x, y, c)) << x << " " << y << " " << c;
+      (gone ? removed : kept) += 1;
+    }
+  EXPECT_EQ(removed > 0, !removed_ids.empty());
+  EXPECT_GT(kept, 0u);
+}
+
+TEST(RgbdQuilt, DepthCutoffRemovesWhatLiesFartherThanIt) {
+  SCOPED_TRACE("between the background (d 0) and the focus band (d 0.5)");
+  expect_cutoff_removes_layers_below(0.25, {0});
+  SCOPED_TRACE("between the focus band and the near band (d 1)");
+  expect_cutoff_removes_layers_below(0.75, {0, 1});
+  SCOPED_TRACE("0, the default, removes nothing");
+  expect_cutoff_removes_layers_below(0.0, {});
+}
+
+TEST(RgbdQuilt, DepthCutoffAppliesToTheDecodedDepthAfterInversion) {
+  // Inverted depth (black near): the near band is written 0 and decodes to 1, so a cutoff of
+  // 0.75 keeps it and removes the rest, as without inversion.
+  RgbdOptions o;
+  o.depth_inversion = true;
+  o.depth_cutoff = 0.75;
+  const auto q = fixture_layout();
+  const ImageF quilt = render_rgbd_quilt(test::layered_rgbd_frame(kW, kH, o.depth_loc, false, true), o, q);
+  const Layer near = test::near_layer(kW, kH), focus = test::focus_layer(kW, kH);
+  const ImageF t = tile(quilt, q, q.views / 2);
+  EXPECT_FLOAT_EQ(t.at(kW / 2, (near.row0 + near.row1) / 2, 1), layer_code(near.id));
+  EXPECT_EQ(t.at(kW / 2, (focus.row0 + focus.row1) / 2, 1), 0.0f);
+  EXPECT_EQ(t.at(2, 2, 1), 0.0f);
 }
 
 TEST(RgbdQuilt, ViewsSitInTheirTilesAndTheRestIsBlack) {
