@@ -275,6 +275,7 @@ struct Player::Impl final : TransportOutput {
     s.video_frame_pts_s = video_pts;
     s.on_display = window->on_display();
     s.quilt_aspect = content ? content->layout.aspect : 0.0;
+    if (content) s.rgbd = content->rgbd;
     s.window_visible = window->visible();
     s.quit = transport.quitting();
     std::lock_guard lock(state_mutex);

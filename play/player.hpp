@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,7 @@ struct PlayerState {
   bool on_display = false;    // full screen on the display's monitor (else a simulated window)
   bool window_visible = true;  // false once hidden (set_window_visible; Bridge's show_window)
   double quilt_aspect = 0;     // the shown quilt's view aspect (0: nothing shown)
+  std::optional<rgbd::RgbdOptions> rgbd;  // the RGB-D settings of the picture shown, if RGB-D
   bool quit = false;
 };
 

@@ -35,6 +35,7 @@ BridgeApi::BridgeApi(DisplayService& displays, PlaylistStore& playlists, EventHu
   add_playlist_handlers();
   add_transport_handlers();
   add_autostart_handlers();
+  add_studio_handlers();
 }
 
 BridgeResponse BridgeApi::handle(const std::string& endpoint, std::string_view body) {
@@ -139,6 +140,7 @@ void BridgeApi::add_handlers() {
                          {{"version", lfd::version_info().version}, {"pid", static_cast<int>(::getpid())}, {"showing", s.showing}, {"playlist", s.playlist},
                           {"index", s.index}, {"entries", s.entries}, {"playing", s.playing}, {"window_visible", s.window_visible},
                           {"quilt_aspect", s.quilt_aspect},
+                          {"rgbd", s.rgbd ? rgbd::rgbd_options_to_json(*s.rgbd) : json(nullptr)},
                           {"displays", displays}}));
   };
 }
@@ -149,7 +151,7 @@ namespace {
 // parser, which knows bridge.js's ranges and defaults; bridge.js sends some values as text.
 rgbd::RgbdOptions rgbd_options_of(const json& r, rgbd::RgbdOptions o = {}) {
   for (const char* key : {"depth_loc", "depthiness", "focus", "depth_inversion", "chroma_depth", "zoom",
-                          "crop_pos_x", "crop_pos_y"}) {
+                          "crop_pos_x", "crop_pos_y", "depth_cutoff"}) {
     if (!r.contains(key)) continue;
     const json& v = r.at(key);
     if (v.is_string())
@@ -251,24 +253,17 @@ void BridgeApi::add_autostart_handlers() {
                          {{"playlist_name", wstring("playlist_name", autostart ? autostart->name : "")},
                           {"playlist_path", wstring("playlist_path", "")}}));
   };
-  const auto set_named = [this](const std::string& endpoint, const json& r) {
-    orchestration_of(r);
-    const std::string name = field_text(r, "playlist_name", limits_.max_name_chars, "");
-    if (!playlists_.get(name)) throw_input_error("playlist_name: no playlist named {}", name);
-    playlists_.set_autostart({name, field_int(r, "head_index", -1, limits_.max_playlist_entries, -1)});
-    return reply(endpoint, r, wrapped("value", "VARIANT_MAP", {{"playlist_name", wstring("playlist_name", name)}}));
+  handlers_["set_named_autostart_playlist"] = [this](const json& r) {
+    return set_autostart("set_named_autostart_playlist", r);
   };
-  handlers_["set_named_autostart_playlist"] = [set_named](const json& r) {
-    return set_named("set_named_autostart_playlist", r);
-  };
-  // Bridge's playlist_path names a Looking Glass Studio playlist file; lfd keeps its playlists
-  // in its state file and reads no file a request names but media (docs/serve.md).
-  handlers_["set_autostart_playlist"] = [set_named](const json& r) {
-    if (!field_text(r, "playlist_path", 4096, "").empty())
-      throw_input_error("playlist_path: Looking Glass Studio playlist files are not read; name a playlist of "
-                        "this service (playlist_name)");
-    return set_named("set_autostart_playlist", r);
-  };
+}
+
+json BridgeApi::set_autostart(const std::string& endpoint, const json& r) {
+  orchestration_of(r);
+  const std::string name = field_text(r, "playlist_name", limits_.max_name_chars, "");
+  if (!playlists_.get(name)) throw_input_error("playlist_name: no playlist named {}", name);
+  playlists_.set_autostart({name, field_int(r, "head_index", -1, limits_.max_playlist_entries, -1)});
+  return reply(endpoint, r, wrapped("value", "VARIANT_MAP", {{"playlist_name", wstring("playlist_name", name)}}));
 }
 
 void BridgeApi::add_transport_handlers() {

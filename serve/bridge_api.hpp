@@ -48,6 +48,14 @@ class BridgeApi {
   // (update_playlist_entry) and the uri is optional.
   PlaylistEntry entry_of(const nlohmann::json& request, const PlaylistEntry* base = nullptr) const;
   void add_autostart_handlers();
+  // `playlist_name` (one the service keeps) and `head_index` as the autostart playlist.
+  nlohmann::json set_autostart(const std::string& endpoint, const nlohmann::json& request);
+  // instance_studio_playlist, set_autostart_playlist and sync_overwrite_playlist
+  // (bridge_studio_handlers.cpp).
+  void add_studio_handlers();
+  // Playlist `name` made of the Looking Glass Studio playlist at `path` (replacing any of
+  // that name); InputError naming the file and field, nothing changed then.
+  void instance_studio_playlist(const std::string& name, const std::string& path, bool loop);
 
   DisplayService& displays_;
   PlaylistStore& playlists_;

@@ -49,12 +49,18 @@ double number_of(const nlohmann::json& v, const char* key) {
 
 }  // namespace
 
+nlohmann::json parse_bounded_json(std::string_view text, std::size_t max_bytes, const std::string& what) {
+  if (text.size() > max_bytes) throw_input_error("{}: larger than {} bytes", what, max_bytes);
+  if (nesting_depth(text) > kMaxJsonDepth) throw_input_error("{}: nested deeper than {}", what, kMaxJsonDepth);
+  nlohmann::json document = nlohmann::json::parse(text, nullptr, false);
+  if (document.is_discarded()) throw_input_error("{}: not JSON", what);
+  return document;
+}
+
 nlohmann::json parse_bridge_request(std::string_view body, std::size_t max_bytes) {
-  if (body.size() > max_bytes) throw_input_error("body: larger than {} bytes", max_bytes);
-  if (body.find_first_not_of(" \t\r\n") == std::string_view::npos) return nlohmann::json::object();
-  if (nesting_depth(body) > kMaxJsonDepth) throw_input_error("body: nested deeper than {}", kMaxJsonDepth);
-  nlohmann::json request = nlohmann::json::parse(body, nullptr, false);
-  if (request.is_discarded()) throw_input_error("body: not JSON");
+  if (body.size() <= max_bytes && body.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    return nlohmann::json::object();
+  nlohmann::json request = parse_bounded_json(body, max_bytes, "body");
   if (!request.is_object()) throw_input_error("body: not a JSON object");
   return request;
 }

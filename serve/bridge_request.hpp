@@ -14,6 +14,9 @@ inline constexpr int kMaxJsonDepth = 32;
 
 // An empty body is an empty object. Throws InputError.
 nlohmann::json parse_bridge_request(std::string_view body, std::size_t max_bytes);
+// Any JSON document under the size and nesting limits (a file a request names, such as a Studio
+// playlist); InputError "<what>: ...".
+nlohmann::json parse_bounded_json(std::string_view text, std::size_t max_bytes, const std::string& what);
 
 // Field readers; a missing field gives `fallback`, a wrong one throws InputError naming it.
 // Numbers may come as JSON numbers or as numeric text (bridge.js sends update_current_entry's

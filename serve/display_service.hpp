@@ -64,6 +64,7 @@ struct PlaybackState {
   bool playing = false;
   bool window_visible = true;  // false after show_window(false)
   double quilt_aspect = 0;     // the view aspect of the quilt shown (update_current_entry's aspect)
+  std::optional<rgbd::RgbdOptions> rgbd;  // the RGB-D settings of the picture shown (update_current_entry)
 };
 
 // Events the event WebSocket forwards (bridge.js names: "New Item Playing", "Transport Control

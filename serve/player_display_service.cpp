@@ -121,8 +121,9 @@ void PlayerDisplayService::transport(Transport command, int index) {
 
 void PlayerDisplayService::update_current_entry(const std::string& parameter, double value) {
   // The RGB-D settings of the entry shown change its views on the next frame, the aspect a
-  // quilt's tiles; depth_cutoff, which lfd's RGB-D views do not model, is refused (docs/serve.md).
-  static const std::set<std::string> rgbd_keys = {"focus", "depthiness", "zoom", "crop_pos_x", "crop_pos_y"};
+  // quilt's tiles (docs/serve.md).
+  static const std::set<std::string> rgbd_keys = {"focus", "depthiness", "zoom", "crop_pos_x", "crop_pos_y",
+                                                  "depth_cutoff"};
   if (!rgbd_keys.count(parameter) && parameter != "aspect")
     throw_input_error("update_current_entry: {} is not adjustable by lfd play's player (docs/serve.md)", parameter);
   int display;
@@ -153,6 +154,7 @@ PlaybackState PlayerDisplayService::state() const {
   s.playing = p.playing;
   s.window_visible = p.window_visible;
   s.quilt_aspect = p.quilt_aspect;
+  s.rgbd = p.rgbd;
   if (!p.entry_name.empty() && !s.playlist.empty()) s.showing += ": " + p.entry_name;
   return s;
 }

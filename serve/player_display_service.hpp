@@ -2,8 +2,8 @@
 // DisplayService on `lfd play`'s Players (play/player.hpp), one per served display: what
 // `lfd serve` runs. Quilts shown in memory, playlists of checked files, transport and events go
 // through each Player's thread-safe command queue; the Players' frames run on the main thread
-// (apps/serve.cpp). What the Player cannot do yet (update_current_entry's aspect and
-// depth_cutoff, hiding the window) is refused with a message, never pretended (docs/serve.md).
+// (apps/serve.cpp). What the Player cannot do is refused with a message, never pretended
+// (docs/serve.md).
 #include <cstdint>
 #include <map>
 #include <mutex>
