@@ -36,9 +36,9 @@ std::string method_name(Method method, scene::SceneKind kind);
 
 // What only the GL renderers read.
 struct GlRenderOptions {
-  // How Gaussians are drawn, per view and into G2LF's planes: the hardware raster pipeline, the
-  // compute tile rasterizer, or auto (resolved once per device by a measurement:
-  // gpu::resolve_raster_path; docs/gpu.md "Two ways to draw Gaussians").
+  // How Gaussians and voxels are drawn, per view and into G2LF's and V2LF's planes: the hardware
+  // raster pipeline, the compute tile rasterizer, or auto (resolved once per device and kind of
+  // scene by a measurement: gpu::resolve_raster_path; docs/gpu.md "Two ways to draw Gaussians").
   gpu::RasterPath raster = gpu::RasterPath::kHardware;
   // Plane texel format; unset: the CPU precision's. RGBA16F exists only on the GPU.
   std::optional<gpu::PlaneFormat> plane_format;

@@ -109,7 +109,8 @@ TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {
 
 // --raster for voxel scenes: `lfd render --scene F.voxels --backend gl --raster compute` (the
 // compute tile rasterizer, per view and V2LF's planes) gives the quilt of --raster hardware (the
-// raster pipeline) and of the CPU.
+// raster pipeline) and of the CPU; per view also --raster auto, which runs the voxel probe and
+// prints its figures.
 TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
   const std::string scene = (dir_ / "raster.voxels").string();
   ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + scene + "'").exit_code, 0);
@@ -120,11 +121,19 @@ TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
     const auto name = [&](const std::string& path) { return method + "_" + path + ".png"; };
     const auto cpu = test::run_lfd(common + (dir_ / name("cpu")).string() + "' --backend cpu");
     ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
-    for (const std::string path : {"hardware", "compute"}) {
+    for (const std::string path : {"hardware", "compute", "auto"}) {
+      if (path == "auto" && method != "per-view") continue;  // one probe is enough
       const auto r = test::run_lfd(common + (dir_ / name(path)).string() + "' --backend gl --raster " + path);
       ASSERT_EQ(r.exit_code, 0) << r.output;
+      // auto measures voxels, not Gaussians (gpu/gl_raster_probe.hpp), and says so.
+      if (path == "auto") {
+        EXPECT_NE(r.output.find(" for voxels (probe quilt: compute "), std::string::npos) << r.output;
+      }
     }
     const auto q = [&](const std::string& path) { return quilt(method + "_" + path + "_qs2x2a1.5.png"); };
+    if (method == "per-view") {
+      EXPECT_GE(render::psnr(q("auto"), q("cpu")), 40.0);
+    }
     const double compute_hardware = render::psnr(q("compute"), q("hardware"));
     const double compute_cpu = render::psnr(q("compute"), q("cpu"));
     std::printf("voxels %s: compute vs hardware %.1f dB, compute vs CPU %.1f dB\n", method.c_str(), compute_hardware,
