@@ -68,6 +68,9 @@ struct GlRenderOptions {
   // The direct panel pass into a texture as the compute pass over panel tiles (gpu::DirectPanelPass;
   // docs/gpu.md "The direct panel pass on the GPU"); off: the fragment pass (the benchmark's other side).
   bool direct_compute = true;
+  // With direct_compute: the tile walks the planes with a barrier after each (gpu::DirectPanelPass::
+  // kComputePlaneMajor, the swizzle's order); what `lfd bench direct --plane-major` times beside it.
+  bool direct_plane_major = false;
   size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
   size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
 };

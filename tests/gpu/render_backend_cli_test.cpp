@@ -164,6 +164,26 @@ TEST_F(RenderBackendCli, BenchVoxelsRunsBothRasterPaths) {
   EXPECT_EQ(cpu.exit_code, 2) << cpu.output;
 }
 
+// `lfd bench direct --backend gl --plane-major`: the compute direct pass walking the planes with a
+// barrier a plane is timed in the same rounds (its own column and JSON field); the CPU has no such
+// pass (exit 2).
+TEST_F(RenderBackendCli, BenchDirectTimesThePlaneMajorWalk) {
+  const fs::path json = dir_ / "direct.json";
+  const std::string go = (test::project_data() / "displays" / "go.visual.json").string();
+  const std::string common = "bench direct --calibration '" + go +
+                             "' --generated 2000 --view-height 64 --chunks 8 --runs 1 --warmup 0 --reference-views 0 "
+                             "--plane-major";
+  const auto r = test::run_lfd(common + " --backend gl --json '" + json.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("| GL direct pass, plane-major [s] |"), std::string::npos) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json result = nlohmann::json::parse(in);
+  EXPECT_GT(result["tables"][0]["rows"][0]["direct_pass_plane_major_seconds"]["median"].get<double>(), 0.0);
+  const auto cpu = test::run_lfd(common + " --backend cpu");
+  EXPECT_EQ(cpu.exit_code, 2) << cpu.output;
+  EXPECT_NE(cpu.output.find("--plane-major"), std::string::npos) << cpu.output;
+}
+
 // `lfd render --direct --backend gl`: the panel from the compute direct pass against the CPU's
 // direct pass on the same options (f32 planes, the default bilinear filter), for a Gaussian and a
 // voxel scene on the Go.
