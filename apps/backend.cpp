@@ -53,12 +53,13 @@ nlohmann::ordered_json run_per_raster(const CLI::App& app, const std::vector<std
   return result;
 }
 
-gpu::RasterPath resolve_raster(gpu::RasterPath path) {
+gpu::RasterPath resolve_raster(gpu::RasterPath path, gpu::RasterSubject subject) {
   if (path != gpu::RasterPath::kAuto) return path;
-  const gpu::RasterPath chosen = gpu::resolve_raster_path(path);
-  const gpu::RasterProbe probe = *gpu::last_raster_probe();
-  std::cout << fmt::format("raster: auto chose {} (probe quilt: compute {:.1f} ms, hardware {:.1f} ms)\n",
-                           gpu::raster_path_name(chosen), 1e3 * probe.compute_s, 1e3 * probe.hardware_s);
+  const gpu::RasterPath chosen = gpu::resolve_raster_path(path, subject);
+  const gpu::RasterProbe probe = *gpu::last_raster_probe(subject);
+  std::cout << fmt::format("raster: auto chose {} for {} (probe quilt: compute {:.1f} ms, hardware {:.1f} ms)\n",
+                           gpu::raster_path_name(chosen), gpu::raster_subject_name(subject), 1e3 * probe.compute_s,
+                           1e3 * probe.hardware_s);
   return chosen;
 }
 

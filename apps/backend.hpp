@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gpu/gl_context.hpp"
+#include "gpu/gl_raster_probe.hpp"
 #include "gpu/raster_path.hpp"
 
 namespace lfd::apps {
@@ -36,9 +37,10 @@ nlohmann::ordered_json run_per_raster(const CLI::App& app, const std::vector<std
                                       const std::string& backend,
                                       const std::function<nlohmann::ordered_json(gpu::RasterPath)>& run);
 
-// `path`, or for auto the measured choice (gpu::resolve_raster_path; a GL context must be
-// current), printing "raster: auto chose compute (probe quilt: compute 12.3 ms, hardware 45.6 ms)".
-gpu::RasterPath resolve_raster(gpu::RasterPath path);
+// `path`, or for auto the measured choice for `subject` (gpu::resolve_raster_path; a GL context
+// must be current), printing "raster: auto chose compute for voxels (probe quilt: compute 12.3 ms,
+// hardware 45.6 ms)".
+gpu::RasterPath resolve_raster(gpu::RasterPath path, gpu::RasterSubject subject);
 
 // What will run: a headless context for gl (GlUnavailable propagates: exit 2), for auto a context
 // or, when none can be made, null with a notice on stderr naming the reason; null for cpu.

@@ -88,6 +88,9 @@ int RunBenchDirect(int argc, char** argv) {
                  "--backend cpu: the direct pass's sampling loop, scalar or avx2 (eight rays a step with "
                  "gathers; the default where the CPU has AVX2)")
       ->check(CLI::IsMember({"scalar", "avx2"}))->capture_default_str();
+  app.add_flag("--plane-major", o.plane_major,
+               "--backend gl: also time the compute direct pass with a barrier after every plane (the whole "
+               "panel tile reads plane k before plane k + 1, the swizzle's order), in the same rounds");
   app.add_option("--backend", backend, "renderer: cpu, or gl (OpenGL 4.5 through headless EGL; exit 2 without it)")
       ->check(CLI::IsMember({"cpu", "gl"}))->capture_default_str();
   app.add_option("--calibration", o.calibrations, "displays (visual.json or calibration.json), comma-separated")
@@ -116,6 +119,7 @@ int RunBenchDirect(int argc, char** argv) {
                  "--baseline: view counts of its rows, comma-separated (0: the display's recommendation)")
       ->delimiter(',')->capture_default_str();
   if (auto code = parse(app, argc, argv)) return *code;
+  if (o.plane_major && backend != "gl") throw_input_error("bench direct: --plane-major: applies to --backend gl only");
   o.direct_filter = render::parse_plane_filter(direct_filter);
   o.direct_hardware_bilinear = direct_sampler == "unit";
   o.direct_kernel = render::parse_sample_kernel(direct_kernel);

@@ -19,8 +19,8 @@ namespace lfd::apps {
 int RunBenchGpuProbe(int argc, char** argv) {
   CLI::App app{"The GPU's compute arithmetic rate (GFLOP/s of fused multiply-adds) and memory bandwidth (a\n"
                "copy dispatch, bytes read + written), the raster pipeline's blended fill rate (full-target\n"
-               "triangles into RGBA16F), and --raster auto's probe (one per-view quilt both ways) with its\n"
-               "choice. Medians of --runs after --warmup, wall clock around glFinish.\n"
+               "triangles into RGBA16F), and --raster auto's probes (one per-view quilt of Gaussians and one of\n"
+               "voxels, each both ways) with their choices. Medians of --runs after --warmup, wall clock around glFinish.\n"
                "\nExample (docs/gpu.md \"Choosing the path: auto\"):\n"
                "  lfd bench gpu-probe --json probe.json\n"
                "  lfd bench gpu-probe --quick          (llvmpipe: smaller dispatches)",
@@ -47,11 +47,19 @@ int RunBenchGpuProbe(int argc, char** argv) {
   std::printf("| compute FMA rate | %.1f GFLOP/s | %.2f ms |\n", p.fma_gflops, 1e3 * p.fma_s);
   std::printf("| compute memory bandwidth (copy) | %.1f GB/s | %.2f ms |\n", p.bandwidth_gbs, 1e3 * p.copy_s);
   std::printf("| raster fill, blended RGBA16F | %.2f Gpixel/s | %.2f ms |\n", p.fill_gpixels, 1e3 * p.fill_s);
-  const gpu::RasterProbe r = gpu::probe_raster_paths();
-  std::printf("| probe quilt, --raster hardware | %.2f ms | |\n", 1e3 * r.hardware_s);
-  std::printf("| probe quilt, --raster compute | %.2f ms | |\n", 1e3 * r.compute_s);
-  std::printf("\n--raster auto picks %s here (%.2fx)\n", gpu::raster_path_name(r.faster),
-              r.faster == gpu::RasterPath::kCompute ? r.hardware_s / r.compute_s : r.compute_s / r.hardware_s);
+  const gpu::RasterProbe r = gpu::probe_raster_paths(gpu::RasterSubject::kGaussians);
+  const gpu::RasterProbe v = gpu::probe_raster_paths(gpu::RasterSubject::kVoxels);
+  for (const gpu::RasterProbe* probe : {&r, &v}) {
+    const char* what = gpu::raster_subject_name(probe->subject);
+    std::printf("| probe quilt of %s, --raster hardware | %.2f ms | |\n", what, 1e3 * probe->hardware_s);
+    std::printf("| probe quilt of %s, --raster compute | %.2f ms | |\n", what, 1e3 * probe->compute_s);
+  }
+  std::printf("\n");
+  for (const gpu::RasterProbe* probe : {&r, &v})
+    std::printf("--raster auto picks %s for %s here (%.2fx)\n", gpu::raster_path_name(probe->faster),
+                gpu::raster_subject_name(probe->subject),
+                probe->faster == gpu::RasterPath::kCompute ? probe->hardware_s / probe->compute_s
+                                                           : probe->compute_s / probe->hardware_s);
   if (!json_path.empty()) {
     const nlohmann::ordered_json j = {
         {"device", device},
@@ -62,7 +70,10 @@ int RunBenchGpuProbe(int argc, char** argv) {
         {"fill_gpixels", p.fill_gpixels},
         {"probe_quilt_hardware_s", r.hardware_s},
         {"probe_quilt_compute_s", r.compute_s},
-        {"auto", gpu::raster_path_name(r.faster)}};
+        {"auto", gpu::raster_path_name(r.faster)},
+        {"probe_voxel_quilt_hardware_s", v.hardware_s},
+        {"probe_voxel_quilt_compute_s", v.compute_s},
+        {"auto_voxels", gpu::raster_path_name(v.faster)}};
     write_text_atomic(json_path, j.dump(2) + "\n");
     std::printf("wrote %s\n", json_path.c_str());
   }

@@ -110,7 +110,7 @@ RendererChoice choose_renderer(const RenderFlags& f, scene::SceneKind kind) {
   RendererChoice r;
   r.device = lightfield::GlDevice::adopt(open_backend(parse_backend(f.backend_name)));
   r.options = lightfield::renderer_options(f.s, kind, f.scene_path, lightfield::backend_for(r.device), kFlags);
-  if (r.device) r.options.gl.raster = resolve_raster(r.options.gl.raster);
+  if (r.device) r.options.gl.raster = resolve_raster(r.options.gl.raster, gpu::raster_subject_of(kind));
   return r;
 }
 

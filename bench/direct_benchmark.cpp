@@ -213,8 +213,8 @@ class Runner {
     std::printf("| N_chunk | swizzle [s] | interlace [s] | after planes: quilt [s] | direct pass [s] | speed-up "
                 "| frame: quilt [s] | frame: direct [s] | speed-up | quilt [MB] | PSNR direct [dB] "
                 "| PSNR quilt nearest [dB] | PSNR quilt linear [dB] | GL fragment stages: interlace [s] "
-                "| direct pass [s] |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+                "| direct pass [s] | GL direct pass, plane-major [s] |\n");
+    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     nlohmann::ordered_json table = {{"scene", label(source)},
                                     {"method", options_.kind == scene::SceneKind::kVoxels ? "V2LF" : "G2LF"},
                                     {"primitives", scene.size()},
@@ -247,8 +247,11 @@ class Runner {
     if (gl) nearest_fragment.emplace(sweeping_, lens, f.layout, interlace::ViewBlend::kNearest, gpu::InterlacePass::kFragment);
     lightfield::RendererOptions direct_fragment = direct;
     direct_fragment.gl.direct_compute = false;
+    lightfield::RendererOptions direct_plane_major = direct;
+    direct_plane_major.gl.direct_plane_major = true;
+    const bool plane_major = gl && options_.plane_major;
     std::vector<double> swizzle, interlace_s, after_quilt, direct_pass, frame_quilt, frame_direct;
-    std::vector<double> interlace_fragment, direct_pass_fragment;
+    std::vector<double> interlace_fragment, direct_pass_fragment, direct_pass_plane_major;
     for (int i = 0; i < options_.warmup + runs_; ++i) {
       auto t0 = Clock::now();
       const lightfield::QuiltStats q = sweeping_.render_quilt(f.geometry, f.layout);
@@ -260,6 +263,11 @@ class Runner {
         sweeping_.set_options(direct_fragment);
         direct_fragment_seconds = sweeping_.render_panel(f.geometry, lens, {}).seconds_swizzle;
       }
+      double plane_major_seconds = 0;
+      if (plane_major) {
+        sweeping_.set_options(direct_plane_major);
+        plane_major_seconds = sweeping_.render_panel(f.geometry, lens, {}).seconds_swizzle;
+      }
       sweeping_.set_options(direct);
       t0 = Clock::now();
       const lightfield::QuiltStats d = sweeping_.render_panel(f.geometry, lens, {});
@@ -270,6 +278,7 @@ class Runner {
         interlace_fragment.push_back(il_fragment);
         direct_pass_fragment.push_back(direct_fragment_seconds);
       }
+      if (plane_major) direct_pass_plane_major.push_back(plane_major_seconds);
       swizzle.push_back(q.seconds_swizzle);
       interlace_s.push_back(il);
       after_quilt.push_back(q.seconds_swizzle + il);
@@ -279,11 +288,12 @@ class Runner {
     }
     const TimingStats sw = summarize(swizzle), il = summarize(interlace_s), aq = summarize(after_quilt),
                       dp = summarize(direct_pass), fq = summarize(frame_quilt), fd = summarize(frame_direct);
-    std::optional<TimingStats> il_fragment, dp_fragment;
+    std::optional<TimingStats> il_fragment, dp_fragment, dp_plane_major;
     if (gl) {
       il_fragment = summarize(interlace_fragment);
       dp_fragment = summarize(direct_pass_fragment);
     }
+    if (plane_major) dp_plane_major = summarize(direct_pass_plane_major);
     const double quilt_mb = double(f.layout.width) * f.layout.height *
                             (dynamic_cast<lightfield::GlLightFieldRenderer*>(&sweeping_) ? 4.0 : 12.0) / 1e6;
     std::optional<double> psnr_direct, psnr_nearest, psnr_linear;
@@ -300,10 +310,11 @@ class Runner {
     const auto seconds = [](const std::optional<TimingStats>& t) {
       return t ? fmt::format("{:.3f}", t->median) : std::string("-");
     };
-    std::printf("| %d | %.3f | %.3f | %.3f | %.3f | %.2fx | %.3f | %.3f | %.2fx | %.0f | %s | %s | %s | %s | %s |\n",
+    std::printf("| %d | %.3f | %.3f | %.3f | %.3f | %.2fx | %.3f | %.3f | %.2fx | %.0f | %s | %s | %s | %s | %s | %s |\n",
                 chunks, sw.median, il.median, aq.median, dp.median, aq.median / dp.median, fq.median, fd.median,
                 fq.median / fd.median, quilt_mb, opt(psnr_direct).c_str(), opt(psnr_nearest).c_str(),
-                opt(psnr_linear).c_str(), seconds(il_fragment).c_str(), seconds(dp_fragment).c_str());
+                opt(psnr_linear).c_str(), seconds(il_fragment).c_str(), seconds(dp_fragment).c_str(),
+                seconds(dp_plane_major).c_str());
     std::fflush(stdout);
     const auto json_opt = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nullptr; };
     return {{"chunks", chunks},
@@ -320,7 +331,9 @@ class Runner {
             {"psnr_quilt_nearest_db", json_opt(psnr_nearest)},
             {"psnr_quilt_linear_db", json_opt(psnr_linear)},
             {"interlace_fragment_seconds", il_fragment ? il_fragment->to_json() : nlohmann::ordered_json(nullptr)},
-            {"direct_pass_fragment_seconds", dp_fragment ? dp_fragment->to_json() : nlohmann::ordered_json(nullptr)}};
+            {"direct_pass_fragment_seconds", dp_fragment ? dp_fragment->to_json() : nlohmann::ordered_json(nullptr)},
+            {"direct_pass_plane_major_seconds",
+             dp_plane_major ? dp_plane_major->to_json() : nlohmann::ordered_json(nullptr)}};
   }
 
   lightfield::LightFieldRenderer& sweeping_;

@@ -34,6 +34,10 @@ struct DirectBenchOptions {
   // GL: bilinear planes filtered by the texture unit (one fetch) or by hand (four texelFetch, the
   // CPU's weights): lightfield::GlRenderOptions::direct_hardware_bilinear.
   bool direct_hardware_bilinear = true;
+  // GL: also time the compute direct pass walking the planes plane-major (a barrier a plane:
+  // gpu::DirectPanelPass::kComputePlaneMajor) in the same rounds (docs/gpu.md "The direct panel
+  // pass on the GPU").
+  bool plane_major = false;
   // CPU: the direct pass's sampling loop (render/plane_samples.hpp).
   render::SampleKernel direct_kernel = render::sample_window_kernel();
   // kGaussians: G2LF planes of Gaussian scenes (SceneSource::generated = Gaussians of a generated

@@ -39,8 +39,10 @@ const Program& GlDirectPanel::program(render::PlaneFilter filter, GLenum panel_f
                                         std::string("HW_BILINEAR ") + (hardware_bilinear_ ? "1" : "0")};
     const std::string name = std::string("direct panel (") + (bilinear ? "bilinear" : "nearest") +
                              (panel_format ? ", compute)" : ")");
-    if (panel_format)
+    if (panel_format) {
       defines.push_back(std::string("PANEL_FORMAT ") + image_format_qualifier(panel_format, "panel texture"));
+      defines.push_back(std::string("PLANE_MAJOR ") + (pass_ == DirectPanelPass::kComputePlaneMajor ? "1" : "0"));
+    }
     Program p = panel_format
                     ? Program(name, {{GL_COMPUTE_SHADER, direct_panel_comp_glsl}}, defines)
                     : Program(name, {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, direct_panel_frag_glsl}},

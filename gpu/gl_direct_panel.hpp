@@ -24,7 +24,9 @@ namespace lfd::gpu {
 // The stage run() uses (docs/gpu.md "The direct panel pass on the GPU"): a compute pass, a work
 // group per tile of the panel (no rasteriser: every SM of a GPU whose graphics pipeline is
 // narrower than its compute), or the fragment pass. Both composite with direct_panel_rays.glsl.
-enum class DirectPanelPass { kFragment, kCompute };
+// kComputePlaneMajor: the compute pass with a barrier after every plane, so the whole tile reads
+// plane k before plane k + 1 (the swizzle's order); the same image, for measuring the order.
+enum class DirectPanelPass { kFragment, kCompute, kComputePlaneMajor };
 
 class GlDirectPanel {
  public:

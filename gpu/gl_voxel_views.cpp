@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -17,7 +18,7 @@
 namespace lfd::gpu {
 namespace {
 
-Program downsample_program(const char* format) {
+Program make_downsample(const char* format) {
   return Program(std::string("voxel downsample into ") + format,
                  {{GL_COMPUTE_SHADER, voxel_downsample_comp_glsl}}, {std::string("OUT_FORMAT ") + format});
 }
@@ -34,13 +35,18 @@ float supersampling_of(const scene::VoxelScene& scene, const voxel::VoxelRenderS
 GlVoxelViews::GlVoxelViews(const GlVoxelScene& scene, RasterPath raster)
     : scene_(scene),
       tile_raster_(raster == RasterPath::kCompute ? std::make_unique<GlVoxelTileRaster>() : nullptr),
-      downsample_rgba8_(downsample_program("rgba8")),
-      downsample_rgba16f_(downsample_program("rgba16f")),
-      downsample_rgba32f_(downsample_program("rgba32f")) {
+      downsample_rgba8_(make_downsample("rgba8")),
+      downsample_rgba16f_(make_downsample("rgba16f")),
+      downsample_rgba32f_(make_downsample("rgba32f")) {
   if (raster == RasterPath::kAuto) throw std::logic_error("GlVoxelViews: resolve the raster path before (auto)");
 }
 
-const Program& GlVoxelViews::downsample(GLenum format) {
+void GlVoxelViews::set_pass_limit(size_t bytes) {
+  pass_limit_ = bytes;
+  if (tile_raster_) tile_raster_->set_pass_limit(bytes);
+}
+
+const Program& GlVoxelViews::downsample_program(GLenum format) {
   switch (format) {
     case GL_RGBA8: return downsample_rgba8_;
     case GL_RGBA16F: return downsample_rgba16f_;
@@ -49,46 +55,97 @@ const Program& GlVoxelViews::downsample(GLenum format) {
   }
 }
 
-void GlVoxelViews::render_into(const render::Camera& camera, const voxel::VoxelRenderSettings& settings,
-                               const Texture& target, glm::ivec2 view_origin, glm::ivec4 write_region,
-                               bool keep_transmittance) {
-  const scene::VoxelScene& scene = scene_.scene();
-  const float ss = supersampling_of(scene, settings);
-  render::Camera big = camera;  // the same frustum: fov and principal-point shift are in NDC
-  big.width = std::max(1, int(std::lround(ss * float(camera.width))));
-  big.height = std::max(1, int(std::lround(ss * float(camera.height))));
-  if (!supersampled_.id() || supersampled_.width() != big.width || supersampled_.height() != big.height) {
-    supersampled_ = Texture(GL_RGBA32F, big.width, big.height);
+const Texture& GlVoxelViews::supersampled(glm::ivec2 size) {
+  if (!supersampled_.id() || supersampled_.width() != size.x || supersampled_.height() != size.y) {
+    supersampled_ = Texture(GL_RGBA32F, size.x, size.y);
     supersampled_framebuffer_.attach(0, supersampled_);
     supersampled_framebuffer_.finish(1);
   }
-  SplatRasterTarget hi;
-  hi.framebuffer = supersampled_framebuffer_.id();
-  hi.image_size = {big.width, big.height};
-  targets_.clear(hi);
-  if (tile_raster_)
-    tile_raster_->draw(scene_, big, big.position_world, supersampled_, glm::ivec2(0));
-  else
-    raster_.draw(scene_, big, big.position_world, hi);
-  targets_.composite_background(hi, settings.background.value_or(scene.background), /*keep_transmittance=*/true);
+  return supersampled_;
+}
 
-  const Program& program = downsample(target.internal_format());
+void GlVoxelViews::downsample(const Texture& source, glm::ivec2 source_size, int source_cols, glm::ivec2 view_size,
+                              int first_view, int count, const ViewTiles& tiles, const glm::vec3* add_background) {
+  const Program& program = downsample_program(tiles.target->internal_format());
   const GLuint p = program.id();
-  glProgramUniform2i(p, program.uniform("source_size"), big.width, big.height);
-  glProgramUniform2i(p, program.uniform("view_size"), camera.width, camera.height);
-  glProgramUniform2i(p, program.uniform("view_origin"), view_origin.x, view_origin.y);
-  glProgramUniform4i(p, program.uniform("write_region"), write_region.x, write_region.y, write_region.z,
-                     write_region.w);
-  glProgramUniform1f(p, program.uniform("alpha_out"), keep_transmittance ? -1.0f : 1.0f);
-  glBindTextureUnit(kDownsampleSourceUnit, supersampled_.id());
-  glBindImageTexture(kDownsampleTargetImage, target.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, target.internal_format());
+  glProgramUniform2i(p, program.uniform("source_size"), source_size.x, source_size.y);
+  glProgramUniform1i(p, program.uniform("source_cols"), source_cols);
+  glProgramUniform2i(p, program.uniform("view_size"), view_size.x, view_size.y);
+  glProgramUniform1i(p, program.uniform("first_view"), first_view);
+  glProgramUniform1i(p, program.uniform("target_cols"), tiles.cols);
+  glProgramUniform2i(p, program.uniform("tile_size"), tiles.tile_size.x, tiles.tile_size.y);
+  glProgramUniform1i(p, program.uniform("add_background"), add_background ? 1 : 0);
+  if (add_background) glProgramUniform3fv(p, program.uniform("background"), 1, glm::value_ptr(*add_background));
+  glProgramUniform1f(p, program.uniform("alpha_out"), tiles.keep_transmittance ? -1.0f : 1.0f);
+  glBindTextureUnit(kDownsampleSourceUnit, source.id());
+  glBindImageTexture(kDownsampleTargetImage, tiles.target->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
+                     tiles.target->internal_format());
   program.use();
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the draws above wrote what the pass reads
-  glDispatchCompute((GLuint(camera.width) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
-                    (GLuint(camera.height) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the passes before wrote what this one reads
+  glDispatchCompute((GLuint(view_size.x) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
+                    (GLuint(view_size.y) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, GLuint(count));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glBindTextureUnit(kDownsampleSourceUnit, 0);
-  check_gl("downsampling a voxel view");
+  check_gl("downsampling voxel views");
+}
+
+void GlVoxelViews::render_views(std::span<const render::Camera> cameras, const voxel::VoxelRenderSettings& settings,
+                                const ViewTiles& tiles) {
+  const scene::VoxelScene& scene = scene_.scene();
+  const float ss = supersampling_of(scene, settings);
+  std::vector<render::Camera> big(cameras.begin(), cameras.end());  // the same frusta: fov and shift are in NDC
+  for (render::Camera& c : big) {
+    c.width = std::max(1, int(std::lround(ss * float(c.width))));
+    c.height = std::max(1, int(std::lround(ss * float(c.height))));
+  }
+  atlas_groups_ = passes_ = 0;
+  if (cameras.empty()) return;
+  for (const render::Camera& c : cameras)
+    if (c.width != cameras[0].width || c.height != cameras[0].height)
+      throw std::invalid_argument("voxel views: views of different sizes");
+  if (tile_raster_) return render_views_compute(big, {cameras[0].width, cameras[0].height}, settings, tiles);
+  const glm::vec3 background = settings.background.value_or(scene.background);
+  for (size_t view = 0; view < big.size(); ++view) {
+    const glm::ivec2 size(big[view].width, big[view].height);
+    supersampled(size);
+    SplatRasterTarget hi;
+    hi.framebuffer = supersampled_framebuffer_.id();
+    hi.image_size = size;
+    targets_.clear(hi);
+    raster_.draw(scene_, big[view], big[view].position_world, hi);
+    targets_.composite_background(hi, background, /*keep_transmittance=*/true);
+    downsample(supersampled_, size, 1, {cameras[view].width, cameras[view].height}, int(view), 1, tiles, nullptr);
+  }
+}
+
+void GlVoxelViews::render_views_compute(std::span<const render::Camera> big, glm::ivec2 view_size,
+                                        const voxel::VoxelRenderSettings& settings, const ViewTiles& tiles) {
+  // Groups of views whose atlas fits the largest texture and the pass limit's bytes (one group
+  // unless the quilt is huge); each group: one clear, one tile pass (GlVoxelTileRaster splits it
+  // further only when its buffers would not fit), one downsample.
+  const glm::ivec2 cell(big[0].width, big[0].height);
+  GLint max_texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const int max_cols = max_texture / cell.x, max_rows = max_texture / cell.y;
+  if (max_cols < 1 || max_rows < 1)
+    throw_input_error("--raster compute: a supersampled {}x{} view exceeds the GPU's largest texture ({})", cell.x,
+                      cell.y, max_texture);
+  const size_t limit = tile_raster_->pass_limit();
+  const size_t cell_bytes = size_t(cell.x) * size_t(cell.y) * 16;
+  const size_t per_group = std::min({big.size(), size_t(max_cols) * size_t(max_rows), std::max<size_t>(1, limit / cell_bytes)});
+  const int cols = int(std::min<size_t>(per_group, size_t(max_cols)));
+  const int rows = int((per_group + size_t(cols) - 1) / size_t(cols));
+  const Texture& atlas = supersampled(cell * glm::ivec2(cols, rows));
+  const glm::vec3 background = settings.background.value_or(scene_.scene().background);
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // (C, T) before any voxel
+  for (size_t first = 0; first < big.size(); first += per_group) {
+    const size_t count = std::min(per_group, big.size() - first);
+    glClearTexImage(atlas.id(), 0, GL_RGBA, GL_FLOAT, empty);
+    tile_raster_->draw_views(scene_, big.subspan(first, count), atlas, cols);
+    passes_ += tile_raster_->passes();
+    ++atlas_groups_;
+    downsample(atlas, cell, cols, view_size, int(first), int(count), tiles, &background);
+  }
 }
 
 void GlVoxelViews::render_quilt(const render::QuiltGeometry& geometry, const render::QuiltLayout& layout,
@@ -96,23 +153,17 @@ void GlVoxelViews::render_quilt(const render::QuiltGeometry& geometry, const ren
   check_quilt_target("voxel views", geometry, layout, quilt);
   const float outside[4] = {0.0f, 0.0f, 0.0f, 1.0f};  // as the CPU's quilt outside the tiles
   glClearTexImage(quilt.id(), 0, GL_RGBA, GL_FLOAT, outside);
-  const int W = geometry.base.width, H = geometry.base.height;
-  const int tile_w = layout.tile_width(), tile_h = layout.tile_height();
-  for (int view = 0; view < geometry.views; ++view) {
-    // The tile in GL texel coordinates (bottom-up: tile row r starts at r * tile_h); the view's
-    // top row lands on the tile's top row, a view larger than the tile is cropped at its right
-    // and bottom (render::place_view).
-    const int x0 = layout.tile_x(view), y0 = (view / layout.cols) * tile_h;
-    const glm::ivec2 origin(x0, y0 + tile_h - H);
-    const glm::ivec4 region(x0, y0 + tile_h - std::min(tile_h, H), std::min(tile_w, W), std::min(tile_h, H));
-    render_into(geometry.view_camera(view), settings, quilt, origin, region, /*keep_transmittance=*/false);
-  }
+  std::vector<render::Camera> cameras;
+  for (int view = 0; view < geometry.views; ++view) cameras.push_back(geometry.view_camera(view));
+  render_views(cameras, settings,
+               {.target = &quilt, .cols = layout.cols, .tile_size = {layout.tile_width(), layout.tile_height()},
+                .keep_transmittance = false});
 }
 
 render::RasterImage GlVoxelViews::render_view(const render::Camera& camera, const voxel::VoxelRenderSettings& settings) {
   const Texture image(GL_RGBA32F, camera.width, camera.height);
-  render_into(camera, settings, image, glm::ivec2(0), glm::ivec4(0, 0, camera.width, camera.height),
-              /*keep_transmittance=*/true);
+  render_views({&camera, 1}, settings,
+               {.target = &image, .cols = 1, .tile_size = {camera.width, camera.height}, .keep_transmittance = true});
   const ImageF rgba = read_image_top_down(image, 4);
   render::RasterImage out;
   out.width = rgba.width;

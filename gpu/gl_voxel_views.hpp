@@ -5,9 +5,13 @@
 // antialiasing filter (gpu/shaders/voxel_downsample.comp.glsl) straight into its quilt tile,
 // cropped as render::place_view crops. The ground truth V2LF is measured against on the GPU.
 // RasterPath::kCompute draws with the compute tile rasterizer (GlVoxelTileRaster) instead of the
-// raster pipeline (docs/gpu.md "Voxels on the GPU").
+// raster pipeline, every view of a quilt at once: the supersampled views side by side in one
+// RGBA32F atlas, one sort and one march for them all, one downsample dispatch (docs/gpu.md
+// "Voxels on the GPU"); views go in groups only when the atlas would pass the GPU's largest
+// texture or storage block.
 #include <memory>
 #include <optional>
+#include <span>
 
 #include <glm/glm.hpp>
 
@@ -38,12 +42,37 @@ class GlVoxelViews {
   // One view through `camera`: the CPU's rasterize_voxels (rgb and transmittance).
   render::RasterImage render_view(const render::Camera& camera, const voxel::VoxelRenderSettings& settings);
 
+  // The compute path's bytes a pass may bind and the atlas may hold (GlVoxelTileRaster::
+  // set_pass_limit; 0: the GPU's largest storage block). For the tests.
+  void set_pass_limit(size_t bytes);
+  // The compute path's groups of views (atlases) and tile passes in the last render.
+  int atlas_groups() const { return atlas_groups_; }
+  int passes() const { return passes_; }
+  const GlVoxelTileRaster* tile_raster() const { return tile_raster_.get(); }
+
  private:
-  // Renders at ss times `camera`'s size and downsamples into `target` at `view_origin`,
-  // writing only `write_region` (x, y, w, h); alpha T or 1.
-  void render_into(const render::Camera& camera, const voxel::VoxelRenderSettings& settings, const Texture& target,
-                   glm::ivec2 view_origin, glm::ivec4 write_region, bool keep_transmittance);
-  const Program& downsample(GLenum format);
+  // Where downsampled views go: view v into tile (v % cols, v / cols) of tile_size (bottom-up),
+  // alpha T or 1.
+  struct ViewTiles {
+    const Texture* target = nullptr;
+    int cols = 1;
+    glm::ivec2 tile_size{0};
+    bool keep_transmittance = false;
+  };
+  // Every camera (views 0..) at ss times its size, composited over the background and
+  // downsampled into its tile: per view through the raster pipeline, or all at once by the
+  // compute tile rasterizer.
+  void render_views(std::span<const render::Camera> cameras, const voxel::VoxelRenderSettings& settings,
+                    const ViewTiles& tiles);
+  void render_views_compute(std::span<const render::Camera> big, glm::ivec2 view_size,
+                            const voxel::VoxelRenderSettings& settings, const ViewTiles& tiles);
+  // Downsamples `count` supersampled views (cells of `source`, `source_cols` a row) into views
+  // first_view.. of `tiles`; add_background: the source holds (C, T).
+  void downsample(const Texture& source, glm::ivec2 source_size, int source_cols, glm::ivec2 view_size,
+                  int first_view, int count, const ViewTiles& tiles, const glm::vec3* add_background);
+  const Program& downsample_program(GLenum format);
+  // The supersampled target (GL_RGBA32F) of at least `size`, made or grown as needed.
+  const Texture& supersampled(glm::ivec2 size);
 
   const GlVoxelScene& scene_;
   GlVoxelRaster raster_;
@@ -52,6 +81,9 @@ class GlVoxelViews {
   Texture supersampled_;
   Framebuffer supersampled_framebuffer_;
   Program downsample_rgba8_, downsample_rgba16f_, downsample_rgba32f_;
+  size_t pass_limit_ = 0;
+  int atlas_groups_ = 0;
+  int passes_ = 0;
 };
 
 // One-off renders on the GPU of the current context (upload, render, read back): the CPU's

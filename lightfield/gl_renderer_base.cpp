@@ -44,8 +44,9 @@ QuiltStats GlRendererBase::render_quilt(const render::QuiltGeometry& geometry, c
 gpu::GlDirectPanel& GlRendererBase::direct_pass(const display::LensModel& lens) {
   // Another lens (even one at the same address) needs its own constants: compare the panel too.
   const bool hardware_bilinear = options_.gl.direct_hardware_bilinear;
-  const gpu::DirectPanelPass stage =
-      options_.gl.direct_compute ? gpu::DirectPanelPass::kCompute : gpu::DirectPanelPass::kFragment;
+  const gpu::DirectPanelPass stage = !options_.gl.direct_compute   ? gpu::DirectPanelPass::kFragment
+                                     : options_.gl.direct_plane_major ? gpu::DirectPanelPass::kComputePlaneMajor
+                                                                      : gpu::DirectPanelPass::kCompute;
   if (!direct_ || direct_lens_ != &lens || direct_->panel_width() != lens.calibration().screen_w ||
       direct_->panel_height() != lens.calibration().screen_h || direct_->hardware_bilinear() != hardware_bilinear ||
       direct_->pass() != stage) {

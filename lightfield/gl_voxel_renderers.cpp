@@ -39,7 +39,8 @@ class GlVoxelViewsRenderer final : public GlRendererBase {
   void bind() override {
     views_.reset();  // it holds the old scene by reference
     scene_ = device_->voxels();
-    views_ = std::make_unique<gpu::GlVoxelViews>(*scene_, gpu::resolve_raster_path(options_.gl.raster));
+    views_ = std::make_unique<gpu::GlVoxelViews>(
+        *scene_, gpu::resolve_raster_path(options_.gl.raster, gpu::RasterSubject::kVoxels));
   }
   void options_changed(const RendererOptions& old) override {
     if (old.gl.raster != options_.gl.raster) forget_binding();  // the path is made with the views
@@ -81,7 +82,7 @@ class GlV2lf final : public GlRendererBase {
   // V2LF renders whole quilts: one view is the per-view renderer's.
   ImageF render_view(const render::QuiltGeometry& geometry, int view) override {
     ensure_bound();
-    gpu::GlVoxelViews views(*scene_, gpu::resolve_raster_path(options_.gl.raster));
+    gpu::GlVoxelViews views(*scene_, gpu::resolve_raster_path(options_.gl.raster, gpu::RasterSubject::kVoxels));
     return render_voxel_view(views, geometry, view, options_.voxel_settings());
   }
 

@@ -55,7 +55,7 @@ gpu::GlV2lfOptions RendererOptions::gl_v2lf() const {
   o.plane_format = gl.plane_format;
   o.gpu_timers = gl.gpu_timers;
   o.timer_reads = gl.timer_reads;
-  o.raster = gpu::resolve_raster_path(gl.raster);  // auto: measured once per process
+  o.raster = gpu::resolve_raster_path(gl.raster, gpu::RasterSubject::kVoxels);  // auto: a voxel probe, once
   return o;
 }
 

@@ -36,9 +36,9 @@ std::string method_name(Method method, scene::SceneKind kind);
 
 // What only the GL renderers read.
 struct GlRenderOptions {
-  // How Gaussians are drawn, per view and into G2LF's planes: the hardware raster pipeline, the
-  // compute tile rasterizer, or auto (resolved once per device by a measurement:
-  // gpu::resolve_raster_path; docs/gpu.md "Two ways to draw Gaussians").
+  // How Gaussians and voxels are drawn, per view and into G2LF's and V2LF's planes: the hardware
+  // raster pipeline, the compute tile rasterizer, or auto (resolved once per device and kind of
+  // scene by a measurement: gpu::resolve_raster_path; docs/gpu.md "Two ways to draw Gaussians").
   gpu::RasterPath raster = gpu::RasterPath::kHardware;
   // Plane texel format; unset: the CPU precision's. RGBA16F exists only on the GPU.
   std::optional<gpu::PlaneFormat> plane_format;
@@ -68,6 +68,9 @@ struct GlRenderOptions {
   // The direct panel pass into a texture as the compute pass over panel tiles (gpu::DirectPanelPass;
   // docs/gpu.md "The direct panel pass on the GPU"); off: the fragment pass (the benchmark's other side).
   bool direct_compute = true;
+  // With direct_compute: the tile walks the planes with a barrier after each (gpu::DirectPanelPass::
+  // kComputePlaneMajor, the swizzle's order); what `lfd bench direct --plane-major` times beside it.
+  bool direct_plane_major = false;
   size_t memory_budget_bytes = 0;  // G2LF: gpu::GlG2lfOptions::memory_budget_bytes
   size_t accumulation_budget_bytes = gpu::GlG2lfOptions{}.accumulation_budget_bytes;
 };

@@ -20,7 +20,8 @@
 #   direct-gl   the direct panel pass against swizzle + interlace on the three displays at 16/64/256
 #               planes (bilinear planes filtered by the texture unit, the GL default): the compute
 #               passes the offscreen paths use, and in the same run the fragment stages of the
-#               interlacer and the direct pass (what a window draws with)
+#               interlacer and the direct pass (what a window draws with), and the compute direct
+#               pass walking the planes plane-major (--plane-major)
 #   direct-gl-shader  the same at 1M Gaussians with the planes filtered by hand (four texelFetch)
 #   direct-v2lf-gl  the direct pass against swizzle + interlace on V2LF planes: the tabletop and
 #               the level-10 one, the three displays, 16/64/256 planes
@@ -107,7 +108,7 @@ for s in "${steps[@]}"; do
         --json "$out/voxels-gl-1m.json" ;;
     direct-gl)
       step direct-gl "$run" bench direct --backend gl --generated 100000,1000000 --chunks 16,64,256 --runs "$runs" \
-        --reference-views 0 --json "$out/direct-gl.json" ;;
+        --reference-views 0 --plane-major --json "$out/direct-gl.json" ;;
     direct-gl-shader)
       step direct-gl-shader "$run" bench direct --backend gl --generated 1000000 --chunks 16,64 --runs "$runs" \
         --reference-views 0 --direct-sampler shader --json "$out/direct-gl-shader.json" ;;

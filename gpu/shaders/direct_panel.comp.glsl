@@ -10,8 +10,12 @@
 // are read through the texture cache: a tile's rays show every view of the cone, so the window
 // of a plane they read spans the cone's parallax at that depth (docs/gpu.md says why it is not
 // staged in shared memory). No quilt; no rasteriser.
+// PLANE_MAJOR 1 (DirectPanelPass::kComputePlaneMajor): a barrier after every plane, so every ray
+// of the tile reads plane k before any reads plane k + 1 (the swizzle's order, each plane's window
+// read by the whole tile at once) instead of each invocation walking the batch on its own; the
+// same floats (tested), a measurement of whether the order helps (docs/gpu.md).
 // Defines: BILINEAR 0|1, HW_BILINEAR 0|1 (direct_panel_rays.glsl), PANEL_FORMAT (rgba8 |
-// rgba16f | rgba32f).
+// rgba16f | rgba32f), PLANE_MAJOR 0|1.
 #include "gpu/shaders/direct_panel_rays.glsl"
 
 layout(local_size_x = kDirectPanelTileWidth, local_size_y = kDirectPanelTileHeight) in;
@@ -33,7 +37,14 @@ void main() {
     if (gl_LocalInvocationIndex < batch) batch_factors[gl_LocalInvocationIndex] = direct_plane_factors(first + gl_LocalInvocationIndex);
     if (gl_LocalInvocationIndex == 0u) any_open = 0u;
     barrier();  // the batch's factors and the reset flag are visible to the group
+#if PLANE_MAJOR
+    for (uint i = 0u; i < batch; ++i) {  // batch is the group's: uniform control flow
+      if (direct_rays_open(r)) direct_rays_composite(r, batch_factors[i], int(first + i));
+      barrier();  // the whole tile is done with plane i
+    }
+#else
     for (uint i = 0u; i < batch && direct_rays_open(r); ++i) direct_rays_composite(r, batch_factors[i], int(first + i));
+#endif
     if (direct_rays_open(r)) any_open = 1u;
     barrier();  // every ray's vote is in
     if (any_open == 0u) break;  // the same value in every invocation: uniform control flow

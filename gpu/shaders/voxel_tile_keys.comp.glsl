@@ -1,16 +1,18 @@
 // The voxel tile rasterizer's keys (gpu/gl_voxel_tile_raster.hpp), one invocation an item: the
-// j-th voxel of the items' octant ranges (each range a run of an octant's front-to-back order, the
-// ranges one after another). EMIT 0 counts the tiles of its footprint (voxel_footprint.glsl) whose
-// rays can take its range's octant into counts[j]; EMIT 1 writes their keys (slot = r * tiles +
-// tile for range r, one range per octant drawn; value = the voxel) from its first key, counts[j]
-// after the scan. The stable sort then leaves every slot's voxels in its octant's order. PLANES 1
-// (V2LF's planes, all at once): the ranges are GlVoxelBinning's grouped orders (each octant's
-// order grouped by chunk), the voxel's plane is chunk_of[voxel] (plane_capacity or more: not
-// binned, no keys) and the slot (plane * range_count + r) * tiles + tile, so each plane's slots
-// are one contiguous run.
+// j-th voxel of the pass's runs (each run a stretch of an octant's front-to-back order seen in one
+// image, the runs one after another: VoxelTileRange). EMIT 0 counts the tiles of its footprint in
+// the run's image (voxel_footprint.glsl) whose rays can take the run's octant into counts[j];
+// EMIT 1 writes their keys (slot = r * tiles + tile for run r; value = the voxel) from its first
+// key, counts[j] after the scan. The stable sort then leaves every slot's voxels in its octant's
+// order. A quilt's views: a run per (view, octant in that view), so all views of a pass share one
+// count, scan, emit and sort. PLANES 1 (V2LF's planes, all at once, one image): the runs are
+// GlVoxelBinning's grouped orders (each octant's order grouped by chunk), the voxel's plane is
+// chunk_of[voxel] (plane_capacity or more: not binned, no keys) and the slot
+// (plane * run_count + r) * tiles + tile, so each plane's slots are one contiguous run.
 #include "gpu/shaders/frame_io.h"
 #include "gpu/shaders/tile_io.h"
 #include "gpu/shaders/voxel_tile_io.h"
+#include "gpu/shaders/tile_key_writer.glsl"
 #include "gpu/shaders/voxel_footprint.glsl"
 #include "gpu/shaders/voxel_tile_view.glsl"
 
@@ -22,58 +24,41 @@ layout(std430, binding = kVoxelOrderBinding) readonly buffer Order { uint order[
 layout(std430, binding = kVoxelChunkOfBinding) readonly buffer ChunkOf { uint chunk_of[]; };
 uniform uint plane_capacity;
 #endif
-#if EMIT
-layout(std430, binding = kTileCountsBinding) readonly buffer Counts { uint counts[]; };
-layout(std430, binding = kTileKeysBinding) writeonly buffer Keys { uint keys[]; };
-layout(std430, binding = kTileValuesBinding) writeonly buffer Values { uint values[]; };
-#else
-layout(std430, binding = kTileCountsBinding) writeonly buffer Counts { uint counts[]; };
-#endif
 
 uniform uint item_count;
-uniform int range_count;             // ranges in use (one per octant drawn)
-uniform uint range_end_item[8];      // items before the end of range r
-uniform uint range_offset[8];        // its first entry in `order`
-uniform int range_octant[8];
 
 void main() {
   uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   if (j >= item_count) return;
-  int r = 0;
-  while (r + 1 < range_count && j >= range_end_item[r]) ++r;
-  uint begin = r == 0 ? 0u : range_end_item[r - 1];
-  uint voxel = order[range_offset[r] + (j - begin)];
-  uint octant = uint(range_octant[r]);
-  uint first_slot = uint(r);  // in units of whole images' tiles
+  // The run holding item j: the first whose end lies past it.
+  int lo = 0, hi = run_count - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (j < runs[mid].end_item) hi = mid; else lo = mid + 1;
+  }
+  VoxelTileRange run = runs[lo];
+  uint begin = lo == 0 ? 0u : runs[lo - 1].end_item;
+  uint voxel = order[run.order_offset + (j - begin)];
+  uint first_slot = uint(lo);  // in units of whole images' tiles
+  TileKeyWriter writer = tile_keys_begin(j);
 #if PLANES
   uint plane = chunk_of[voxel];
   if (plane >= plane_capacity) {
-#if !EMIT
-    counts[j] = 0u;
-#endif
+    tile_keys_end(writer, j);
     return;
   }
-  first_slot += uint(range_count) * plane;
+  first_slot += uint(run_count) * plane;
 #endif
-  ivec4 footprint = voxel_footprint(boxes[voxel], world_to_camera, camera_position, tan_half_fov, shift_ndc, image_size);
-  uint n = 0u;
-#if EMIT
-  uint base = counts[j];
-#endif
+  VoxelView view = voxel_view(run.image);
+  ivec4 footprint =
+      voxel_footprint(boxes[voxel], view.world_to_camera, view.position, view.tan_half_fov, view.shift_ndc, image_size);
   if (all(lessThanEqual(footprint.xy, footprint.zw))) {
     ivec2 first = footprint.xy / int(kTileSide), last = footprint.zw / int(kTileSide);
     uint tiles = uint(tile_grid.x * tile_grid.y);
     for (int ty = first.y; ty <= last.y; ++ty)
       for (int tx = first.x; tx <= last.x; ++tx)
-        if ((tile_octants(ivec2(tx, ty)) & (1u << octant)) != 0u) {
-#if EMIT
-          keys[base + n] = first_slot * tiles + uint(ty * tile_grid.x + tx);
-          values[base + n] = voxel;
-#endif
-          ++n;
-        }
+        if ((tile_octants(view, ivec2(tx, ty)) & (1u << run.octant)) != 0u)
+          tile_keys_add(writer, first_slot * tiles + uint(ty * tile_grid.x + tx), voxel);
   }
-#if !EMIT
-  counts[j] = n;
-#endif
+  tile_keys_end(writer, j);
 }

@@ -168,11 +168,18 @@ TEST(GlDirectPanel, TheComputeTilesWalkEveryBatchOfPlanes) {
     o.filter = filter;
     o.background = s.background;
     const ImageF cpu = interlace::render_direct_panel(s.planes, s.geometry, s.ref, lens, o);
-    const Agreement a = compare(direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o), cpu);
+    const ImageF gpu = direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o);
+    const Agreement a = compare(gpu, cpu);
     std::printf("  %d planes, compute, %s: max |GL - CPU| %.2e  within 1/255: %.4f %%\n", layers,
                 filter == render::PlaneFilter::kBilinear ? "bilinear" : "nearest", a.max_difference,
                 100 * a.fraction_within);
     EXPECT_GE(a.fraction_within, 0.999);
+    // The plane-major walk (a barrier a plane) reads in another order, not other floats.
+    const ImageF plane_major =
+        direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o, true, DirectPanelPass::kComputePlaneMajor);
+    const ImageF batch = direct_panel_on_gpu(s.planes, s.geometry, s.ref, lens, o, true, DirectPanelPass::kCompute);
+    ASSERT_EQ(plane_major.pixels.size(), batch.pixels.size());
+    EXPECT_EQ(0, std::memcmp(plane_major.pixels.data(), batch.pixels.data(), batch.pixels.size() * sizeof(float)));
   }
 }
 

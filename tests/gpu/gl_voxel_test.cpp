@@ -19,6 +19,7 @@
 #include "gpu/gl_v2lf.hpp"
 #include "gpu/gl_voxel_binning.hpp"
 #include "gpu/gl_voxel_scene.hpp"
+#include "gpu/gl_voxel_tile_raster.hpp"
 #include "gpu/gl_voxel_views.hpp"
 #include "render/image_metrics.hpp"
 #include "../voxel/voxel_test_scenes.hpp"
@@ -129,6 +130,82 @@ TEST(GlVoxel, PerViewQuiltMatchesTheCpu) {
     std::printf("per-view voxel quilt, %s: GL vs CPU %.1f dB\n", raster_path_name(raster), db);
     EXPECT_GT(db, bar_db(raster, 50.0));
   }
+}
+
+// The compute path draws every view of a quilt in one pass (one sort, one march, one
+// downsample); passes split only at the GPU's buffer limits, and splitting must not change a
+// texel: here a limit of half the one pass's keys forces several passes (halving a pass whose keys
+// do not fit) and one view an atlas.
+TEST(GlVoxel, ComputeQuiltViewsGoInOnePassAndPassesDoNotChangeIt) {
+  context().make_current();
+  const Fixture& f = fixture();
+  const GlVoxelScene gl_scene(f.scene, query_gl_info("test"));
+  const auto render = [&](size_t pass_limit, int& passes, int& groups, uint64_t& items, uint64_t& keys) {
+    GlVoxelViews views(gl_scene, RasterPath::kCompute);
+    views.set_pass_limit(pass_limit);
+    const Texture quilt(GL_RGBA32F, f.layout.width, f.layout.height);
+    views.render_quilt(f.geometry, f.layout, {}, quilt);
+    passes = views.passes();
+    groups = views.atlas_groups();
+    items = views.tile_raster()->items();
+    keys = views.tile_raster()->keys();
+    return read_image_top_down(quilt, 4);
+  };
+  int passes = 0, groups = 0;
+  uint64_t items = 0, keys = 0;
+  const ImageF one = render(0, passes, groups, items, keys);
+  std::printf("compute voxel quilt, %d views: %d pass, %d atlas, %llu items, %llu keys\n", f.geometry.views, passes,
+              groups, (unsigned long long)items, (unsigned long long)keys);
+  EXPECT_EQ(passes, 1);
+  EXPECT_EQ(groups, 1);
+  ASSERT_GT(keys, 0u);
+  // Limit the pass to half the keys (and at least two views' items): several passes, and as few
+  // views an atlas as its bytes allow.
+  const size_t limit = 4 * std::max<size_t>(keys / 2, 2 * items / size_t(f.geometry.views) + 1);
+  const ImageF split = render(limit, passes, groups, items, keys);
+  std::printf("with a limit of %zu bytes: %d passes, %d atlases\n", limit, passes, groups);
+  EXPECT_GE(passes, 2);
+  const float ss = f.scene.supersampling;
+  const size_t cell_bytes = size_t(std::lround(ss * float(f.geometry.base.width))) *
+                            size_t(std::lround(ss * float(f.geometry.base.height))) * 16;
+  const size_t views_an_atlas = std::max<size_t>(1, limit / cell_bytes);
+  EXPECT_EQ(size_t(groups), (size_t(f.geometry.views) + views_an_atlas - 1) / views_an_atlas);
+  ASSERT_EQ(one.pixels.size(), split.pixels.size());
+  EXPECT_EQ(std::memcmp(one.pixels.data(), split.pixels.data(), one.pixels.size() * sizeof(float)), 0);
+
+  // Within one atlas: a limit every view's items fit but not their keys, so the pass is halved
+  // after its scan (GlVoxelTileRaster::draw_views), into the same atlas texels. The supersampled
+  // views, as GlVoxelViews draws them (more keys than items).
+  std::vector<render::Camera> cameras;
+  for (int view = 0; view < f.geometry.views; ++view) {
+    render::Camera c = f.geometry.view_camera(view);
+    c.width = int(std::lround(ss * float(c.width)));
+    c.height = int(std::lround(ss * float(c.height)));
+    cameras.push_back(c);
+  }
+  const auto atlas = [&](size_t pass_limit, int& tile_passes) {
+    GlVoxelTileRaster raster;
+    raster.set_pass_limit(pass_limit);
+    const Texture target(GL_RGBA32F, cameras[0].width * f.geometry.views, cameras[0].height);
+    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, empty);
+    raster.draw_views(gl_scene, cameras, target, f.geometry.views);
+    tile_passes = raster.passes();
+    items = raster.items();
+    keys = raster.keys();
+    return read_image_top_down(target, 4);
+  };
+  int whole_passes = 0, halved_passes = 0;
+  const ImageF whole = atlas(0, whole_passes);
+  ASSERT_GT(keys, items);  // the fixture's supersampled views: more keys than items
+  const size_t items_only = 4 * std::max<size_t>(items, keys / 2 + 1);
+  const ImageF halved = atlas(items_only, halved_passes);
+  std::printf("tile raster alone: %d pass; with a limit of %zu bytes (every item, not every key): %d passes\n",
+              whole_passes, items_only, halved_passes);
+  EXPECT_EQ(whole_passes, 1);
+  EXPECT_GE(halved_passes, 2);
+  ASSERT_EQ(whole.pixels.size(), halved.pixels.size());
+  EXPECT_EQ(std::memcmp(whole.pixels.data(), halved.pixels.data(), whole.pixels.size() * sizeof(float)), 0);
 }
 
 TEST(GlVoxel, V2lfMatchesTheCpuWithEveryOption) {

@@ -109,7 +109,8 @@ TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {
 
 // --raster for voxel scenes: `lfd render --scene F.voxels --backend gl --raster compute` (the
 // compute tile rasterizer, per view and V2LF's planes) gives the quilt of --raster hardware (the
-// raster pipeline) and of the CPU.
+// raster pipeline) and of the CPU; per view also --raster auto, which runs the voxel probe and
+// prints its figures.
 TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
   const std::string scene = (dir_ / "raster.voxels").string();
   ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + scene + "'").exit_code, 0);
@@ -120,11 +121,19 @@ TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
     const auto name = [&](const std::string& path) { return method + "_" + path + ".png"; };
     const auto cpu = test::run_lfd(common + (dir_ / name("cpu")).string() + "' --backend cpu");
     ASSERT_EQ(cpu.exit_code, 0) << cpu.output;
-    for (const std::string path : {"hardware", "compute"}) {
+    for (const std::string path : {"hardware", "compute", "auto"}) {
+      if (path == "auto" && method != "per-view") continue;  // one probe is enough
       const auto r = test::run_lfd(common + (dir_ / name(path)).string() + "' --backend gl --raster " + path);
       ASSERT_EQ(r.exit_code, 0) << r.output;
+      // auto measures voxels, not Gaussians (gpu/gl_raster_probe.hpp), and says so.
+      if (path == "auto") {
+        EXPECT_NE(r.output.find(" for voxels (probe quilt: compute "), std::string::npos) << r.output;
+      }
     }
     const auto q = [&](const std::string& path) { return quilt(method + "_" + path + "_qs2x2a1.5.png"); };
+    if (method == "per-view") {
+      EXPECT_GE(render::psnr(q("auto"), q("cpu")), 40.0);
+    }
     const double compute_hardware = render::psnr(q("compute"), q("hardware"));
     const double compute_cpu = render::psnr(q("compute"), q("cpu"));
     std::printf("voxels %s: compute vs hardware %.1f dB, compute vs CPU %.1f dB\n", method.c_str(), compute_hardware,
@@ -153,6 +162,26 @@ TEST_F(RenderBackendCli, BenchVoxelsRunsBothRasterPaths) {
   EXPECT_NEAR(v2lf_db(0), v2lf_db(1), 0.05);
   const auto cpu = test::run_lfd("bench voxels --backend cpu --raster compute --level 5 --views 2 --size 32");
   EXPECT_EQ(cpu.exit_code, 2) << cpu.output;
+}
+
+// `lfd bench direct --backend gl --plane-major`: the compute direct pass walking the planes with a
+// barrier a plane is timed in the same rounds (its own column and JSON field); the CPU has no such
+// pass (exit 2).
+TEST_F(RenderBackendCli, BenchDirectTimesThePlaneMajorWalk) {
+  const fs::path json = dir_ / "direct.json";
+  const std::string go = (test::project_data() / "displays" / "go.visual.json").string();
+  const std::string common = "bench direct --calibration '" + go +
+                             "' --generated 2000 --view-height 64 --chunks 8 --runs 1 --warmup 0 --reference-views 0 "
+                             "--plane-major";
+  const auto r = test::run_lfd(common + " --backend gl --json '" + json.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("| GL direct pass, plane-major [s] |"), std::string::npos) << r.output;
+  std::ifstream in(json);
+  const nlohmann::json result = nlohmann::json::parse(in);
+  EXPECT_GT(result["tables"][0]["rows"][0]["direct_pass_plane_major_seconds"]["median"].get<double>(), 0.0);
+  const auto cpu = test::run_lfd(common + " --backend cpu");
+  EXPECT_EQ(cpu.exit_code, 2) << cpu.output;
+  EXPECT_NE(cpu.output.find("--plane-major"), std::string::npos) << cpu.output;
 }
 
 // `lfd render --direct --backend gl`: the panel from the compute direct pass against the CPU's

@@ -44,6 +44,7 @@ grep -q -- "--gtest_filter=-\*Cli\*" "$out/tests.md" || fail "the bundled tests 
 grep -q -- "bench render --backend gl --generated 100000,1000000,3000000 .*--runs 3" "$out/render-gl.md" \
   || fail "render-gl did not get the sizes and LFD_GPU_TABLE_RUNS: $(head -1 "$out/render-gl.md")"
 grep -q -- "--direct-sampler shader" "$out/direct-gl-shader.md" || fail "direct-gl-shader did not filter by hand"
+grep -q -- "--plane-major" "$out/direct-gl.md" || fail "direct-gl did not time the plane-major walk"
 grep -q -- "bench voxels --backend gl --raster hardware,compute --level 10 --views 45 --size 512 --runs 3" "$out/voxels-gl-1m.md" \
   || fail "voxels-gl-1m did not render the level-10 (>= 1M voxel) tabletop: $(head -1 "$out/voxels-gl-1m.md")"
 grep -q -- "--method v2lf --voxel-level 7,10 --chunks 16,64,256" "$out/direct-v2lf-gl.md" \
