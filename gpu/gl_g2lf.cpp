@@ -159,6 +159,7 @@ void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   stats_.plane_bytes = planes.texels.bytes();
   stats_.plane_format = planes.format;
   stats_.plane_raster = raster_;
+  stats_.raster = raster_path_;
   stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
                      sort_.scratch_bytes() + plane_raster_.bytes() + (tile_splats_ ? tile_splats_->bytes() : 0);
   stats_.gpu_bytes_peak = gpu_bytes_peak();

@@ -92,6 +92,7 @@ struct GlG2lfStats {
   size_t plane_bytes = 0;           // the plane array: N_chunk layers (what is allocated)
   PlaneFormat plane_format = PlaneFormat::kRgba8;  // of the plane array
   PlaneRaster plane_raster = PlaneRaster::kLayered;  // as drawn (kBatched: the budget's fallback)
+  RasterPath raster = RasterPath::kHardware;          // the planes drawn by the raster or compute path
   size_t plane_bytes_used = 0;      // the layers in use (gpu_timers only; the CPU's plane_bytes)
   double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;  // GPU time (gpu_timers)
   uint64_t frames_late = 0;  // how many frames ago the timed figures were rendered (kLate)
