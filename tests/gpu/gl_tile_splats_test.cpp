@@ -137,42 +137,30 @@ TEST(GlTileSplats, ADenseTileMatchesTheCpu) {
   compare_view(renderer, scene, camera, {}, "5000 splats in one tile");
 }
 
-// The whole quilt in one pass, laid out as render::render_quilt_per_view lays it (9 views in a
-// 4x3 grid), in float and RGBA8; and the same quilt from the hardware path.
+// The whole quilt in one pass (testing::QuiltCase: 9 views in a 4x3 grid), in float and RGBA8;
+// in passes of 2 views; and the same quilt from the hardware path.
 void compare_quilt(GLenum format, const std::string& what) {
   HeadlessContext context;
-  const auto scene = generated_scene(2, 3000);
-  const auto geometry = render::make_quilt_geometry(tabletop_camera(96, 80), 5.1f, 40.0f, 9);
-  const auto layout = render::make_quilt_layout(geometry, 4, 3);
-  const ImageF cpu = render::render_quilt_per_view(scene, geometry, layout);
-  GlScene gl_scene(scene, context.info());
+  const testing::QuiltCase c;
+  GlScene gl_scene(c.scene, context.info());
   GlPerViewOptions options = compute_options();
   options.gpu_timers = true;
   GlPerViewRenderer renderer(gl_scene, options);
-  Texture quilt(format, layout.width, layout.height);
-  renderer.render_quilt(geometry, layout, {}, quilt);
-  const ImageF gl = read_image_top_down(quilt);
-  const double whole = render::psnr(gl, cpu);
-  std::printf("[ psnr ] compute quilt %s: %.1f dB\n", what.c_str(), whole);
-  EXPECT_GE(whole, kMinPsnrDb) << what;
-  for (int view = 0; view < geometry.views; ++view)
-    EXPECT_GE(render::psnr(render::extract_view(gl, layout, view), render::extract_view(cpu, layout, view)), kMinPsnrDb)
-        << what << " view " << view;
-  EXPECT_EQ(renderer.stats().views, 9);
+  const ImageF gl = testing::compare_quilt_with_cpu(renderer, c, format, "compute quilt " + what);
   EXPECT_GT(renderer.stats().memory_bytes, gl_scene.bytes());
 
   // Views in passes of 2 (as on a GPU whose storage buffers hold 2 views of records): the same
   // quilt, bit for bit.
   GlPerViewOptions split = compute_options();
-  split.compute_entries_per_pass = 2 * scene.size() + 1;
+  split.compute_entries_per_pass = 2 * c.scene.size() + 1;
   GlPerViewRenderer in_passes(gl_scene, split);
-  Texture passes_quilt(format, layout.width, layout.height);
-  in_passes.render_quilt(geometry, layout, {}, passes_quilt);
+  Texture passes_quilt(format, c.layout.width, c.layout.height);
+  in_passes.render_quilt(c.geometry, c.layout, {}, passes_quilt);
   EXPECT_EQ(read_image_top_down(passes_quilt).pixels, gl.pixels) << what;
 
   GlPerViewRenderer hardware(gl_scene);
-  Texture hardware_quilt(format, layout.width, layout.height);
-  hardware.render_quilt(geometry, layout, {}, hardware_quilt);
+  Texture hardware_quilt(format, c.layout.width, c.layout.height);
+  hardware.render_quilt(c.geometry, c.layout, {}, hardware_quilt);
   const double paths = render::psnr(gl, read_image_top_down(hardware_quilt));
   std::printf("[ psnr ] compute vs hardware quilt %s: %.1f dB\n", what.c_str(), paths);
   EXPECT_GE(paths, kMinPsnrDb) << what;
