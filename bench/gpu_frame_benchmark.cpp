@@ -89,9 +89,8 @@ std::vector<GpuFrameRow> g2lf_rows(const gpu::GlScene& scene, const gpu::GlInfo&
     GpuFrameRow row;
     const gpu::GlG2lfStats& st = renderers[v]->stats();
     row.method = fmt::format("G2LF N={}", variants[v].options.g2lf.chunks);
-    row.variant = fmt::format("{}; planes {} {}", variants[v].name,
-                              st.raster == gpu::RasterPath::kCompute ? "compute" : gpu::plane_raster_name(st.plane_raster),
-                              gpu::plane_format_name(st.plane_format));
+    const char* drawn = st.raster == gpu::RasterPath::kCompute ? "compute" : gpu::plane_raster_name(st.plane_raster);
+    row.variant = fmt::format("{}; planes {} {}", variants[v].name, drawn, gpu::plane_format_name(st.plane_format));
     row.runs = o.runs;
     row.frame_s = summarize(frames[v]).median;
     fill_stages(row, stages[v]);
@@ -360,14 +359,17 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
                                 per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, 32, gpu::RasterPath::kCompute), o,
                                 "--raster compute, timers waited for (all views in one pass)"));
   if (hardware) {
-    rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, 32), o,
-                                "timers waited for, RGBA32F blending, 32-bit depth keys"));
-    rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, bits), o,
-                                fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits)));
-    rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kLate, GL_RGBA32F, bits), o,
-                                fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
-    rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA16F, bits), o,
-                                fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
+    const auto row = [&](gpu::TimerReads reads, GLenum accumulation, int key_bits, const std::string& variant) {
+      rows.push_back(
+          per_view_row(scene, geometry, layout, quilt, per_view_options(reads, accumulation, key_bits), o, variant));
+    };
+    row(gpu::TimerReads::kWait, GL_RGBA32F, 32, "timers waited for, RGBA32F blending, 32-bit depth keys");
+    row(gpu::TimerReads::kWait, GL_RGBA32F, bits,
+        fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits));
+    row(gpu::TimerReads::kLate, GL_RGBA32F, bits,
+        fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits));
+    row(gpu::TimerReads::kWait, GL_RGBA16F, bits,
+        fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits));
   }
   if (o.voxel_level > 0) append_v2lf_rows(o, s.base, info, rows);
   return rows;

@@ -115,7 +115,8 @@ class Runner {
   TableSetup setup_table(const SceneSource& source, const scene::GaussianScene& scene, int views) const {
     const bool tabletop = source.path.empty() && options_.tabletop_camera;
     const render::CameraSpec spec = tabletop ? tabletop_camera() : render::frame_scene(scene);
-    const lightfield::ViewPlan plan = lightfield::plan_views(lightfield::benchmark_views(spec, options_.size, options_.view_cone_deg, views));
+    const lightfield::ViewPlan plan =
+        lightfield::plan_views(lightfield::benchmark_views(spec, options_.size, options_.view_cone_deg, views));
     TableSetup t;
     t.geometry = plan.geometry;
     t.grid = {plan.layout.cols, plan.layout.rows};

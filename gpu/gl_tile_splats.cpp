@@ -90,7 +90,8 @@ GlTileSplats::GlTileSplats()
 // The defines of a program that includes tile_splat_target.glsl.
 std::vector<std::string> target_defines(GLenum format, bool planes) {
   const bool quantize = planes && format == GL_RGBA8;
-  return {std::string("TARGET_ARRAY ") + (planes ? "1" : "0"), std::string("TARGET_FORMAT ") + image_format_name(format),
+  return {std::string("TARGET_ARRAY ") + (planes ? "1" : "0"),
+          std::string("TARGET_FORMAT ") + image_format_name(format),
           std::string("QUANTIZE_U8 ") + (quantize ? "1" : "0")};
 }
 

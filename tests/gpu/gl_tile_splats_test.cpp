@@ -95,7 +95,8 @@ TEST(GlTileSplats, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
   split.compute_split_keys = 64;
   GlPerViewRenderer split_renderer(gl_scene, split);
   compare_view(split_renderer, scene, camera, {}, "generated 60k, mostly opaque, tiles split every 64 keys");
-  const render::RasterImage whole = renderer.render_view_image(camera), parts = split_renderer.render_view_image(camera);
+  const render::RasterImage whole = renderer.render_view_image(camera);
+  const render::RasterImage parts = split_renderer.render_view_image(camera);
   const double db = render::psnr(testing::rgb_of(parts), testing::rgb_of(whole));
   std::printf("[ psnr ] split every 64 keys vs whole slots: %.1f dB\n", db);
   EXPECT_GE(db, 100.0);  // the same image up to the rounding of the merged products
@@ -213,8 +214,8 @@ TEST(GlTileSplats, PassesWhoseKeysOutgrowTheCapacityAreDrawnAgain) {
   for (int v = 0; v < c.geometry.views; ++v) cameras.push_back(c.geometry.view_camera(v));
   const auto draw = [&](GlTileSplats& tiles) {
     Texture quilt(GL_RGBA32F, c.layout.width, c.layout.height);
-    tiles.render_views(gl_scene, cameras, {},
-                       {.texture = &quilt, .cols = c.layout.cols, .cell_size = {c.layout.tile_width(), c.layout.tile_height()}});
+    const glm::ivec2 cell{c.layout.tile_width(), c.layout.tile_height()};
+    tiles.render_views(gl_scene, cameras, {}, {.texture = &quilt, .cols = c.layout.cols, .cell_size = cell});
     return read_image_top_down(quilt).pixels;
   };
   GlTileSplats roomy;
