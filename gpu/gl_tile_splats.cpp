@@ -143,6 +143,7 @@ bool GlTileSplats::split_slots(uint32_t keys, uint32_t slots) {
   const size_t parts = std::min<size_t>(kTileSplatMaxParts, 2 * size_t(keys) / split_keys_ + 1);
   split_list_.ensure(kSplitListBytes);
   partials_.ensure(parts * kPartialBytes);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the last frame's split pass wrote the list
   const TileSplitList none{};
   split_list_.upload(&none, sizeof(none));
   const uint32_t no_part = 0xFFFFFFFFu;
