@@ -20,7 +20,8 @@ int RunBenchGpuFrame(int argc, char** argv) {
   CLI::App app{"The GL frame on one headless context, each variant in the same run: G2LF and per view\n"
                "with their stage timers waited for at the end of each frame (the CPU waits for the GPU)\n"
                "and read a few frames late (frames issued back to back), and the G2LF swizzle with\n"
-               "1 view per invocation against several. Medians of --runs after --warmup.\n"
+               "1 view per invocation against several, and both ways of drawing the Gaussians (--raster).\n"
+               "Medians of --runs after --warmup.\n"
                "\nExample (docs/performance.md):\n"
                "  lfd bench gpu-frame --scene data/scenes/demo.ply --views 45 --size 256",
                "gpu-frame"};
@@ -67,10 +68,19 @@ int RunBenchGpuFrame(int argc, char** argv) {
       ->delimiter(',')
       ->capture_default_str()
       ->check(CLI::IsMember({"off", "on"}));
+  std::vector<std::string> rasters{"hardware", "compute"};
+  app.add_option("--raster", rasters,
+                 "how the Gaussians are drawn: hardware (the variants above), compute (G2LF's planes and the "
+                 "per-view quilt by the compute tile rasterizer), comma-separated")
+      ->delimiter(',')
+      ->capture_default_str()
+      ->check(CLI::IsMember({"hardware", "compute"}));
   bool no_per_view = false;
   app.add_flag("--no-per-view", no_per_view, "G2LF rows only (the per-view ones take seconds a frame on llvmpipe)");
   if (auto code = parse(app, argc, argv)) return *code;
   o.per_view = !no_per_view;
+  o.rasters.clear();
+  for (const std::string& r : rasters) o.rasters.push_back(gpu::parse_raster_path(r));
   o.swizzle_table.clear();
   for (const std::string& t : table) o.swizzle_table.push_back(t == "on");
   o.hardware_bilinear.clear();

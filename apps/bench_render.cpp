@@ -27,6 +27,7 @@ int RunBenchRender(int argc, char** argv) {
       "  lfd bench render --quick\n"
       "  lfd bench render --generated 100000,1000000,3000000 --json render.json\n"
       "  lfd bench render --scene guitar.compressed.ply --generated 0 --views 45 --configs table1\n"
+      "  lfd bench render --backend gl --generated 1000000 --views 45 --size 512x910 --chunks 64,256,512 --plane-scale 1\n"
       "  lfd bench render --backend gl --raster hardware,compute --quick   (both GL raster paths, one run)",
       "render"};
   bench::RenderBenchOptions o;
@@ -43,7 +44,9 @@ int RunBenchRender(int argc, char** argv) {
                  "Gaussians of generated tabletop scenes, comma-separated (0: none)")
       ->delimiter(',')->capture_default_str();
   app.add_option("--views", o.views, "view counts, comma-separated")->delimiter(',')->capture_default_str();
-  app.add_option("--size", o.size, "view width = height in pixels")->capture_default_str();
+  std::string size = "512";
+  app.add_option("--size", size, "the views' size: N (N x N pixels) or WxH (the paper's 512x910)")
+      ->capture_default_str();
   app.add_option("--view-cone", o.view_cone_deg, "view cone in degrees")->capture_default_str();
   app.add_option("--shift", o.shift_fraction,
                  "D_shift as a fraction of D_forward (1: reference camera at the base camera; 0: the paper's)")
@@ -52,7 +55,9 @@ int RunBenchRender(int argc, char** argv) {
       ->delimiter(',')->capture_default_str();
   app.add_option("--configs", o.config_sets, "configuration sets: table1, chunks, f32, density")
       ->delimiter(',')->capture_default_str();
-  app.add_option("--chunks", o.only_chunks, "only the configurations with this N_chunk (0: all)")
+  app.add_option("--chunks", o.only_chunks, "only the configurations with these N_chunk, comma-separated (0: all)")
+      ->delimiter(',');
+  app.add_option("--plane-scale", o.only_plane_scale, "only the configurations with this P_s (0: all)")
       ->capture_default_str();
   app.add_option("--runs", o.runs, "timed frames per configuration (0: the backend's default, CPU 3)")
       ->capture_default_str();
@@ -72,9 +77,11 @@ int RunBenchRender(int argc, char** argv) {
   if (quick) {
     if (app.count("--generated") == 0) generated = scene_files.empty() ? std::vector<size_t>{100000} : std::vector<size_t>{};
     if (app.count("--views") == 0) o.views = {kDefaultViewCount};
-    if (app.count("--chunks") == 0) o.only_chunks = 64;
+    if (app.count("--chunks") == 0) o.only_chunks = {64};
     if (app.count("--configs") == 0) o.config_sets = {"table1", "density"};
   }
+  o.size = parse_view_size(size, "--size", true);
+  std::erase(o.only_chunks, 0);
   for (const std::string& f : scene_files) o.scenes.push_back({f, 0});
   for (size_t n : generated)
     if (n > 0) o.scenes.push_back({"", n});

@@ -49,6 +49,17 @@ std::vector<double> parse_numbers(const std::string& text, char sep, size_t coun
   return values;
 }
 
+display::ViewSize parse_view_size(const std::string& text, const std::string& option, bool square,
+                                  int max_side) {
+  const bool one = square && text.find('x') == std::string::npos;
+  const auto wh = parse_numbers(text, 'x', one ? 1 : 2, option);
+  const double w = wh[0], h = one ? wh[0] : wh[1];
+  if (w < 1 || h < 1 || w > max_side || h > max_side || w != int(w) || h != int(h))
+    throw_input_error("{}: '{}' must be {} in [1, {}]", option, text, square ? "N or WxH, integers" : "two integers",
+                      max_side);
+  return display::ViewSize{int(w), int(h)};
+}
+
 void DisplaySource::add(CLI::App& app, const std::string& file_flag, const std::string& file_help,
                         bool required) {
   file_flag_ = file_flag;

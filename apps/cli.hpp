@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "display/calibration_file.hpp"
+#include "display/display_quilt.hpp"
 
 namespace lfd::apps {
 
@@ -17,6 +18,11 @@ std::optional<int> parse(CLI::App& app, int argc, char** argv);
 // Parses "X,Y,Z" (or "WxH" with sep 'x') into numbers; throws InputError naming `option`.
 std::vector<double> parse_numbers(const std::string& text, char sep, size_t count,
                                   const std::string& option);
+
+// A view size: "WxH", or with `square` also "N" (N x N); InputError naming `option` for anything
+// else or a side outside 1..`max_side`.
+display::ViewSize parse_view_size(const std::string& text, const std::string& option, bool square,
+                                  int max_side = 16384);
 
 // Where a command's display comes from: a file (--calibration or --display) or a Looking Glass
 // attached to this machine (--device auto|SERIAL, searched under --root DIR); one or the other.

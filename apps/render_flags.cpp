@@ -83,10 +83,7 @@ void check_output_flags(RenderFlags& f, const CLI::App& app) {
   const auto bg = parse_numbers(f.background_text, ',', 3, "--background");
   if (app.count("--background")) f.s.background = glm::vec3(float(bg[0]), float(bg[1]), float(bg[2]));
   if (!f.size_text.empty()) {
-    const auto wh = parse_numbers(f.size_text, 'x', 2, "--size");
-    if (wh[0] < 1 || wh[1] < 1 || wh[0] > 16384 || wh[1] > 16384 || wh[0] != int(wh[0]) || wh[1] != int(wh[1]))
-      throw_input_error("--size: '{}' must be two integers in [1, 16384]", f.size_text);
-    f.s.size = display::ViewSize{int(wh[0]), int(wh[1])};
+    f.s.size = parse_view_size(f.size_text, "--size", false);
   }
   if (!f.camera_path.empty()) f.s.camera = render::read_camera_json(f.camera_path);
   f.s.method_given = app.count("--method") > 0;

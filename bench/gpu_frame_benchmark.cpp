@@ -1,5 +1,6 @@
 #include "bench/gpu_frame_benchmark.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <memory>
@@ -88,8 +89,8 @@ std::vector<GpuFrameRow> g2lf_rows(const gpu::GlScene& scene, const gpu::GlInfo&
     GpuFrameRow row;
     const gpu::GlG2lfStats& st = renderers[v]->stats();
     row.method = fmt::format("G2LF N={}", variants[v].options.g2lf.chunks);
-    row.variant = fmt::format("{}; planes {} {}", variants[v].name, gpu::plane_raster_name(st.plane_raster),
-                              gpu::plane_format_name(st.plane_format));
+    const char* drawn = st.raster == gpu::RasterPath::kCompute ? "compute" : gpu::plane_raster_name(st.plane_raster);
+    row.variant = fmt::format("{}; planes {} {}", variants[v].name, drawn, gpu::plane_format_name(st.plane_format));
     row.runs = o.runs;
     row.frame_s = summarize(frames[v]).median;
     fill_stages(row, stages[v]);
@@ -153,8 +154,10 @@ GpuFrameRow per_view_row(const gpu::GlScene& scene, const render::QuiltGeometry&
   return row;
 }
 
-gpu::GlPerViewOptions per_view_options(gpu::TimerReads reads, GLenum accumulation, int key_bits) {
+gpu::GlPerViewOptions per_view_options(gpu::TimerReads reads, GLenum accumulation, int key_bits,
+                                       gpu::RasterPath raster = gpu::RasterPath::kHardware) {
   gpu::GlPerViewOptions options;
+  options.raster = raster;
   options.depth_key_bits = key_bits;
   options.timer_reads = reads;
   options.accumulation_format = accumulation;
@@ -332,23 +335,42 @@ std::vector<GpuFrameRow> run_gpu_frame(const GlVsCpuScene& s, const GpuFrameOpti
     sort_rows(scene, geometry, layout, quilt, o, info, rows);
     return rows;
   }
+  const auto drawn = [&](gpu::RasterPath path) { return std::ranges::find(o.rasters, path) != o.rasters.end(); };
+  const bool hardware = drawn(gpu::RasterPath::kHardware), compute = drawn(gpu::RasterPath::kCompute);
   {
     gpu::GlG2lfOptions options;
     options.g2lf.chunks = o.chunks;
     options.g2lf.d_shift = -1.0f;  // D_shift = D_forward, as gl-vs-cpu
     options.gpu_timers = true;
-    rows = g2lf_rows(scene, info, geometry, layout, quilt, g2lf_variants(options, o), o);
+    std::vector<G2lfVariant> variants;
+    if (hardware) variants = g2lf_variants(options, o);
+    if (compute) {
+      options.raster = gpu::RasterPath::kCompute;
+      variants.push_back({"--raster compute, timers waited for", options});
+      options.timer_reads = gpu::TimerReads::kLate;
+      variants.push_back({fmt::format("--raster compute, timers read late, {} frames a batch", o.batch), options});
+    }
+    rows = g2lf_rows(scene, info, geometry, layout, quilt, variants, o);
   }
   if (!o.per_view) return rows;  // --no-per-view: the G2LF rows alone
   const int bits = 24;  // the viewer's
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, 32), o,
-                              "timers waited for, RGBA32F blending, 32-bit depth keys"));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, bits), o,
-                              fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits)));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kLate, GL_RGBA32F, bits), o,
-                              fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits)));
-  rows.push_back(per_view_row(scene, geometry, layout, quilt, per_view_options(gpu::TimerReads::kWait, GL_RGBA16F, bits), o,
-                              fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits)));
+  if (compute)  // exact 32-bit depth order: the key options do not apply
+    rows.push_back(per_view_row(scene, geometry, layout, quilt,
+                                per_view_options(gpu::TimerReads::kWait, GL_RGBA32F, 32, gpu::RasterPath::kCompute), o,
+                                "--raster compute, timers waited for (all views in one pass)"));
+  if (hardware) {
+    const auto row = [&](gpu::TimerReads reads, GLenum accumulation, int key_bits, const std::string& variant) {
+      rows.push_back(
+          per_view_row(scene, geometry, layout, quilt, per_view_options(reads, accumulation, key_bits), o, variant));
+    };
+    row(gpu::TimerReads::kWait, GL_RGBA32F, 32, "timers waited for, RGBA32F blending, 32-bit depth keys");
+    row(gpu::TimerReads::kWait, GL_RGBA32F, bits,
+        fmt::format("timers waited for, RGBA32F blending, {}-bit depth keys", bits));
+    row(gpu::TimerReads::kLate, GL_RGBA32F, bits,
+        fmt::format("timers read late, {} frames a batch, RGBA32F, {}-bit keys", o.batch, bits));
+    row(gpu::TimerReads::kWait, GL_RGBA16F, bits,
+        fmt::format("timers waited for, RGBA16F blending, {}-bit keys", bits));
+  }
   if (o.voxel_level > 0) append_v2lf_rows(o, s.base, info, rows);
   return rows;
 }

@@ -15,6 +15,8 @@
 //   - with sort_only (--sort-only) instead: the sort over all N against the visible (binned)
 //     Gaussians only, for G2LF's binning and per view, and per view float keys against 16 bits
 //     normalised to the visible range, the variants interleaved round by round.
+//   - --raster compute (GpuFrameOptions::rasters): G2LF's planes and the per-view quilt drawn by
+//     the compute tile rasterizer beside the hardware rows, stage times from the same timers;
 //   - V2LF on a generated voxel scene: the voxels binned on the CPU and uploaded every frame
 //     against binned on the GPU (gpu/gl_voxel_binning.hpp), runs alternated.
 // G2LF's variants each on a renderer of its own, their runs interleaved (a drifting load weighs
@@ -27,6 +29,7 @@
 
 #include "bench/gl_vs_cpu_benchmark.hpp"
 #include "gpu/gl_context.hpp"
+#include "gpu/raster_path.hpp"
 
 namespace lfd::bench {
 
@@ -44,6 +47,10 @@ struct GpuFrameOptions {
   std::vector<bool> swizzle_table{false, true};       // the views x planes table off / on
   std::vector<bool> hardware_bilinear{false, true};   // bilinear rows: by hand / texture unit
   bool per_view = true;                               // the per-view rows (slow on llvmpipe)
+  // How the Gaussians are drawn (docs/gpu.md "Two ways to draw Gaussians"): kHardware, the
+  // variants above; kCompute, G2LF's planes and the per-view quilt by the compute tile rasterizer
+  // (timers waited for, and G2LF with timers read late), each with its GPU stage times.
+  std::vector<gpu::RasterPath> rasters{gpu::RasterPath::kHardware, gpu::RasterPath::kCompute};
 };
 
 struct GpuFrameRow {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -66,7 +67,7 @@ class Runner {
                                   {"runs", runs_},
                                   {"warmup", options_.warmup},
                                   {"png_runs", std::min(options_.png_runs, runs_)},
-                                  {"size", options_.size},
+                                  {"size", {options_.size.width, options_.size.height}},
                                   {"view_cone_deg", options_.view_cone_deg},
                                   {"shift_fraction", options_.shift_fraction},
                                   {"tables", nlohmann::ordered_json::array()}};
@@ -114,7 +115,8 @@ class Runner {
   TableSetup setup_table(const SceneSource& source, const scene::GaussianScene& scene, int views) const {
     const bool tabletop = source.path.empty() && options_.tabletop_camera;
     const render::CameraSpec spec = tabletop ? tabletop_camera() : render::frame_scene(scene);
-    const lightfield::ViewPlan plan = lightfield::plan_views(lightfield::square_views(spec, options_.size, options_.view_cone_deg, views));
+    const lightfield::ViewPlan plan =
+        lightfield::plan_views(lightfield::benchmark_views(spec, options_.size, options_.view_cone_deg, views));
     TableSetup t;
     t.geometry = plan.geometry;
     t.grid = {plan.layout.cols, plan.layout.rows};
@@ -129,8 +131,8 @@ class Runner {
                         const TableSetup& t) const {
     std::printf("\n#### %s: %s Gaussians, %d views of %dx%d (%dx%d quilt), view cone %.0f deg, "
                 "D_focal %.2f, D_shift %.2f (D_forward %.2f)%s\n\n",
-                t.label.c_str(), fmt::format("{}", scene.size()).c_str(), t.geometry.views, options_.size,
-                options_.size, t.layout.width, t.layout.height, options_.view_cone_deg,
+                t.label.c_str(), fmt::format("{}", scene.size()).c_str(), t.geometry.views, options_.size.width,
+                options_.size.height, t.layout.width, t.layout.height, options_.view_cone_deg,
                 t.geometry.focal_distance, t.d_shift, t.d_forward,
                 source.path.empty() ? "" : fmt::format(", loaded in {:.2f} s", load_seconds).c_str());
     std::printf("| method | binning | median [s] | min-max [s] | MAD [s] | CPU [s] | FPS | speed-up "
@@ -161,7 +163,10 @@ class Runner {
     }
     for (const std::string& binning : options_.binnings)
       for (const G2lfConfig& c : g2lf_configs_in(options_.config_sets, "render benchmark: config_sets")) {
-        if (options_.only_chunks > 0 && c.chunks != options_.only_chunks) continue;
+        if (!options_.only_chunks.empty() &&
+            std::find(options_.only_chunks.begin(), options_.only_chunks.end(), c.chunks) == options_.only_chunks.end())
+          continue;
+        if (options_.only_plane_scale > 0 && c.plane_scale != options_.only_plane_scale) continue;
         table["rows"].push_back(g2lf_row(t, binning, c, per_view, truth));
       }
     return table;
@@ -278,7 +283,12 @@ void RenderBenchOptions::check() const {
   if (views.empty()) fail("views", "no view count");
   for (int v : views)
     if (v < 1 || v > 256) fail("views", fmt::format("{} is outside 1..256", v));
-  if (size < 16 || size > 4096) fail("size", fmt::format("{} is outside 16..4096", size));
+  if (size.width < 16 || size.width > 4096 || size.height < 16 || size.height > 4096)
+    fail("size", fmt::format("{}x{} has a side outside 16..4096", size.width, size.height));
+  for (int n : only_chunks)
+    if (n < 1 || n > 2048) fail("only_chunks", fmt::format("{} is outside 1..2048", n));
+  if (only_plane_scale < 0 || only_plane_scale > 8)
+    fail("only_plane_scale", fmt::format("{} is outside 0..8", only_plane_scale));
   if (!(view_cone_deg > 0.0f && view_cone_deg < 170.0f))
     fail("view_cone_deg", fmt::format("{} is outside (0, 170)", view_cone_deg));
   if (!(shift_fraction >= 0.0f && shift_fraction <= 1.0f))

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "display/display_quilt.hpp"
 #include "util/default_display.hpp"
 #include "lightfield/light_field_renderer.hpp"
 #include "scene/gaussian_scene.hpp"
@@ -31,13 +32,16 @@ struct SceneSource {
 struct RenderBenchOptions {
   std::vector<SceneSource> scenes;
   std::vector<int> views = {kDefaultViewCount, 2 * kDefaultViewCount};
-  int size = 512;               // views of size x size pixels
+  display::ViewSize size{512, 512};  // the views' width and height in pixels
   float view_cone_deg = float(kDefaultViewConeDeg);
   float shift_fraction = 1.0f;  // D_shift / D_forward (1: reference camera at the base camera)
   std::vector<std::string> binnings = {"quantile"};  // the paper's
-  // Configuration sets (bench/render_configs.hpp); `only_chunks` > 0 keeps those with that N_chunk.
+  // Configuration sets (bench/render_configs.hpp); `only_chunks`, when not empty, keeps those with
+  // one of its N_chunk; `only_plane_scale` > 0 those with that P_s (view-density rows resolve theirs
+  // per table and are dropped by it).
   std::vector<std::string> config_sets = {"table1", "chunks", "f32", "density"};
-  int only_chunks = 0;
+  std::vector<int> only_chunks;
+  int only_plane_scale = 0;
   int runs = 0;         // timed frames per configuration; 0: the backend's default
   int warmup = 1;       // untimed frames before them
   int png_runs = 3;     // the first png_runs timed frames also write the quilt PNG (0: never)

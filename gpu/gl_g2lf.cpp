@@ -49,10 +49,17 @@ size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltG
 
 size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians) {
   const int s = options.g2lf.plane_scale;
+  const int wp = geometry.base.width * s, hp = geometry.base.height * s;
   // records (64), keys, values, their sort copies, layers (4 each).
-  return gaussians * (sizeof(SplatRecord) + 5 * sizeof(uint32_t)) +
-         plane_raster_bytes(options.format(), batch_layers_for(options, geometry), geometry.base.width * s,
-                            geometry.base.height * s, gaussians);
+  const size_t binning = gaussians * (sizeof(SplatRecord) + 5 * sizeof(uint32_t));
+  if (options.raster != RasterPath::kCompute)
+    return binning + plane_raster_bytes(options.format(), batch_layers_for(options, geometry), wp, hp, gaussians);
+  // The compute path's key buffers (docs/gpu.md "Memory and passes"): the keys are known only
+  // after a frame's scan, so they are counted at kComputePlaneKeysPerGaussian a Gaussian.
+  const size_t tiles = size_t((wp + render::kTileSize - 1) / render::kTileSize) *
+                       size_t((hp + render::kTileSize - 1) / render::kTileSize);
+  return binning + GlTileSplats::plane_path_bytes(gaussians, tiles * size_t(options.g2lf.chunks),
+                                                  gaussians * kComputePlaneKeysPerGaussian);
 }
 
 void check_g2lf_fits(const GlG2lfOptions& options, const render::QuiltGeometry& geometry,
@@ -101,6 +108,7 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
     throw std::invalid_argument("G2LF on the GPU: resolve --raster auto before rendering");
   const PlaneRequest request{requested.format(), requested.plane_raster, requested.raster, o.chunks, wp, hp,
                              requested.accumulation_budget_bytes, requested.memory_budget_bytes};
+  if (tile_splats_) tile_splats_->set_split_keys(requested.compute_split_keys);
   if (request_ && *request_ == request) {
     GlG2lfOptions drawn = requested;
     drawn.plane_raster = raster_;
@@ -120,7 +128,10 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
   batch_layers_ = batch_layers_for(options, geometry);  // GlPlaneRaster sizes its accumulation array to it
   raster_ = options.plane_raster;
   raster_path_ = options.raster;
-  if (raster_path_ == RasterPath::kCompute && !tile_splats_) tile_splats_ = std::make_unique<GlTileSplats>();
+  if (raster_path_ == RasterPath::kCompute && !tile_splats_) {
+    tile_splats_ = std::make_unique<GlTileSplats>();
+    tile_splats_->set_split_keys(requested.compute_split_keys);
+  }
   request_ = request;
 }
 
@@ -159,6 +170,8 @@ void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   stats_.plane_bytes = planes.texels.bytes();
   stats_.plane_format = planes.format;
   stats_.plane_raster = raster_;
+  stats_.raster = raster_path_;
+  if (tile_splats_ && raster_path_ == RasterPath::kCompute) stats_.compute_keys = tile_splats_->counts().keys;
   stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
                      sort_.scratch_bytes() + plane_raster_.bytes() + (tile_splats_ ? tile_splats_->bytes() : 0);
   stats_.gpu_bytes_peak = gpu_bytes_peak();

@@ -57,6 +57,9 @@ struct GlG2lfOptions {
   // float registers and writes each texel once, so u8-precision planes are RGBA8 (the CPU's,
   // rounded once) with no batches. kAuto must be resolved first (gpu::resolve_raster_path).
   RasterPath raster = RasterPath::kHardware;
+  // kCompute: a (plane, tile) with more splats than this is composited in parts, merged after
+  // (GlTileSplats::set_split_keys; 0: never split).
+  uint32_t compute_split_keys = kTileSplatSplitKeys;
   // GPU bytes G2LF may allocate (planes + per-Gaussian buffers); 0: the free memory the driver
   // reports, no limit beyond the texture limits when it reports none (llvmpipe).
   size_t memory_budget_bytes = 0;
@@ -92,6 +95,8 @@ struct GlG2lfStats {
   size_t plane_bytes = 0;           // the plane array: N_chunk layers (what is allocated)
   PlaneFormat plane_format = PlaneFormat::kRgba8;  // of the plane array
   PlaneRaster plane_raster = PlaneRaster::kLayered;  // as drawn (kBatched: the budget's fallback)
+  RasterPath raster = RasterPath::kHardware;          // the planes drawn by the raster or compute path
+  uint32_t compute_keys = 0;  // --raster compute: the (plane, tile) keys of the frame
   size_t plane_bytes_used = 0;      // the layers in use (gpu_timers only; the CPU's plane_bytes)
   double seconds_binning = 0, seconds_planes = 0, seconds_swizzle = 0;  // GPU time (gpu_timers)
   uint64_t frames_late = 0;  // how many frames ago the timed figures were rendered (kLate)
@@ -103,7 +108,12 @@ struct GlG2lfStats {
 // and the rest: per-Gaussian buffers (records, keys, values, layers, the sort's copies, batch
 // lists) and the float accumulation layers.
 size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
+// --raster compute: the rest holds the compute path's key buffers instead of the accumulation
+// layers (GlTileSplats::plane_path_bytes), their keys counted at kComputePlaneKeysPerGaussian.
 size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians);
+// The (plane, tile) keys a Gaussian is counted at in the memory check of --raster compute (a frame's
+// keys are known only after its scan; docs/gpu.md "Memory and passes" gives the measured ratios).
+inline constexpr size_t kComputePlaneKeysPerGaussian = 4;
 
 // Throws InputError (one line: what is needed, what there is, which option lowers it) when the
 // planes exceed the texture limits of `info` (GL_MAX_TEXTURE_SIZE, GL_MAX_ARRAY_TEXTURE_LAYERS)

@@ -26,6 +26,7 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
   if (options_.raster == RasterPath::kCompute) {
     tiles_ = std::make_unique<GlTileSplats>();
     tiles_->set_max_entries_per_pass(options_.compute_entries_per_pass);
+    tiles_->set_split_keys(options_.compute_split_keys);
   }
 }
 

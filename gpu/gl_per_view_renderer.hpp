@@ -48,6 +48,9 @@ struct GlPerViewOptions {
   // kCompute: the most (view, Gaussian) entries one pass holds (GlTileSplats::
   // set_max_entries_per_pass; 0: as the GPU's storage buffers allow).
   size_t compute_entries_per_pass = 0;
+  // kCompute: a tile with more splats than this is composited in parts, merged after
+  // (GlTileSplats::set_split_keys; 0: never split).
+  uint32_t compute_split_keys = kTileSplatSplitKeys;
   // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
   // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
   GLenum accumulation_format = GL_RGBA32F;

@@ -1,6 +1,7 @@
 #include "gpu/gl_tile_keys.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 
 #include "gpu/shaders/tile_dispatch.comp.glsl.hpp"
@@ -39,10 +40,10 @@ Buffer& GlTileKeys::counts(size_t items) {
   return counts_;
 }
 
-uint32_t GlTileKeys::scan(uint32_t items) {
+bool GlTileKeys::run_scan(uint32_t items) {
   const TileState reset{};
   state_.upload(&reset, sizeof(reset));
-  if (items == 0) return 0;
+  if (items == 0) return false;
   const uint32_t blocks = (items + kTileScanBlockItems - 1) / kTileScanBlockItems;
   if (blocks > kTileScanMaxBlocks) throw std::length_error("tile keys: more items than one scan covers (2^30)");
   block_sums_.ensure(size_t(blocks) * 4);
@@ -61,27 +62,63 @@ uint32_t GlTileKeys::scan(uint32_t items) {
   items_.use();
   items_.dispatch_1d(size_t(blocks) * kTileScanGroupSize, int(kTileScanGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  check_gl("the tile scan");
+  return true;
+}
+
+uint32_t GlTileKeys::scan(uint32_t items) {
+  if (!run_scan(items)) return 0;
   uint32_t total = 0;
   state_.download(&total, sizeof(total));
   keys_.ensure(std::max<size_t>(total, 1) * 4);
   values_.ensure(std::max<size_t>(total, 1) * 4);
-  check_gl("the tile scan");
   return total;
 }
 
+void GlTileKeys::scan_to_capacity(uint32_t items, uint32_t capacity) {
+  capacity_ = capacity;
+  keys_.ensure(std::max<size_t>(capacity, 1) * 4);
+  values_.ensure(std::max<size_t>(capacity, 1) * 4);
+  const uint32_t no_key = 0xFFFFFFFFu;
+  if (capacity > 0)
+    glClearNamedBufferSubData(keys_.id(), GL_R32UI, 0, GLsizeiptr(capacity) * 4, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                              &no_key);
+  run_scan(items);
+}
+
+void GlTileKeys::copy_key_total(const Buffer& buffer, uint32_t word) const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glCopyNamedBufferSubData(state_.id(), buffer.id(), GLintptr(offsetof(TileState, keys)), GLintptr(word) * 4, 4);
+}
+
 void GlTileKeys::sort_and_find_ranges(uint32_t keys, uint32_t slots) {
-  ranges_buffer_.ensure(std::max<size_t>(slots, 1) * 8);
-  work_.ensure(std::max<size_t>(slots, 1) * 4);
-  glClearNamedBufferData(ranges_buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   const TileState reset{.keys = keys};
   state_.upload(&reset, sizeof(reset));
   sort_.sort(keys_, values_, keys, slot_bits(slots));
+  find_ranges(keys, slots, false);
+}
+
+void GlTileKeys::sort_and_find_ranges_to_capacity(uint32_t slots) {
+  const uint32_t no_work = 0;
+  state_.upload(&no_work, 4, offsetof(TileState, work_count));
+  SortKeys by_slot;
+  by_slot.key_bits = slot_bits(slots);
+  by_slot.drop_culled = true;  // the keys not written (0xFFFFFFFF)
+  sort_.sort(keys_, values_, capacity_, by_slot);
+  find_ranges(capacity_, slots, true);
+}
+
+void GlTileKeys::find_ranges(uint32_t keys, uint32_t slots, bool count_from_state) {
+  ranges_buffer_.ensure(std::max<size_t>(slots, 1) * 8);
+  work_.ensure(std::max<size_t>(slots, 1) * 4);
+  glClearNamedBufferData(ranges_buffer_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   if (keys > 0) {
     keys_.bind_storage(kTileKeysBinding);
     ranges_buffer_.bind_storage(kTileRangesBinding);
     work_.bind_storage(kTileWorkBinding);
     state_.bind_storage(kTileStateBinding);
     glProgramUniform1ui(ranges_.id(), ranges_.uniform("key_count"), keys);
+    glProgramUniform1i(ranges_.id(), ranges_.uniform("count_from_state"), count_from_state ? 1 : 0);
     ranges_.use();
     ranges_.dispatch_1d(keys, int(kTileRangesGroupSize));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

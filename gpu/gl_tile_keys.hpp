@@ -11,7 +11,8 @@
 //   ranges  each slot's run of sorted keys, and the list of non-empty slots with a
 //           DispatchIndirectCommand of one work group each (dispatch_work), so empty (image,
 //           tile) pairs cost nothing
-// The one read-back is the key total after the scan (it sizes the key buffers and the sort).
+// scan() reads the key total back (it sizes the key buffers and the sort); scan_to_capacity and
+// sort_and_find_ranges_to_capacity read nothing back.
 #include <cstddef>
 #include <cstdint>
 
@@ -35,6 +36,18 @@ class GlTileKeys {
   // non-empty slots.
   void sort_and_find_ranges(uint32_t keys, uint32_t slots);
 
+  // The same two steps with nothing read back (docs/gpu.md "Memory and passes"): the key total
+  // stays on the GPU (TileState::keys); the key buffers hold `capacity` keys, cleared to
+  // 0xFFFFFFFF (no key), and the client's write pass writes only the keys below it; the sort
+  // drops the unwritten ones in its first pass (its kept count stays on the GPU) and the ranges
+  // pass reads min(total, capacity) from the state. A total over the capacity (copy_key_total
+  // tells the client) leaves keys out: the client grows the capacity and draws again.
+  void scan_to_capacity(uint32_t items, uint32_t capacity);
+  void sort_and_find_ranges_to_capacity(uint32_t slots);
+  uint32_t capacity() const { return capacity_; }
+  // Copies the last scan's key total into word `word` of `buffer`, on the GPU.
+  void copy_key_total(const Buffer& buffer, uint32_t word) const;
+
   // Binds keys, values, ranges, the work list and the state at their bindings (tile_io.h).
   void bind() const;
   // One work group per non-empty slot (groups x + y * gl_NumWorkGroups.x index the work list;
@@ -52,7 +65,13 @@ class GlTileKeys {
  private:
   Program blocks_, totals_, items_, ranges_, dispatch_;
   GlRadixSort sort_;
+  // The scan's three passes; returns false for no items.
+  bool run_scan(uint32_t items);
+  // The ranges of the first `keys` sorted keys (count_from_state: of min(TileState::keys, keys)).
+  void find_ranges(uint32_t keys, uint32_t slots, bool count_from_state);
+
   Buffer counts_, block_sums_, state_, keys_, values_, ranges_buffer_, work_;
+  uint32_t capacity_ = 0;  // keys the last scan_to_capacity left room for
 };
 
 // Bits that hold slots 0 .. slots - 1 (at least 1).

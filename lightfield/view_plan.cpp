@@ -32,9 +32,13 @@ ViewRequest display_views_request(const display::Calibration& calibration, int v
 }
 
 ViewRequest square_views(const render::CameraSpec& camera, int size, double view_cone_deg, int views) {
+  return benchmark_views(camera, display::ViewSize{size, size}, view_cone_deg, views);
+}
+
+ViewRequest benchmark_views(const render::CameraSpec& camera, display::ViewSize size, double view_cone_deg, int views) {
   ViewRequest r;
   r.camera = camera;
-  r.size = display::ViewSize{size, size};
+  r.size = size;
   r.view_cone_deg = view_cone_deg;
   r.views = views;
   return r;

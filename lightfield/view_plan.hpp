@@ -64,8 +64,10 @@ struct ViewPlan {
 // were measured), so every side of a comparison sees the same views.
 ViewRequest display_views_request(const display::Calibration& calibration, int view_height);
 
-// A benchmark's views with no display: `views` square views of `size` pixels from `camera`,
+// A benchmark's views with no display: `views` views of `size` pixels from `camera`,
 // `view_cone_deg` wide, focused at its look-at point, in the grid chosen for them.
+ViewRequest benchmark_views(const render::CameraSpec& camera, display::ViewSize size, double view_cone_deg, int views);
+// The same with square views of `size` x `size`.
 ViewRequest square_views(const render::CameraSpec& camera, int size, double view_cone_deg, int views);
 
 // InputError naming the request's field for views outside 1..256 or a grid too small for them.

@@ -27,9 +27,13 @@
 #               the level-10 one, the three displays, 16/64/256 planes
 #   gpu-probe   compute FMA rate and bandwidth against the raster fill rate, and --raster auto's
 #               probe and choice (docs/gpu.md "Choosing the path: auto")
-#   raster-gl   per view and G2LF (N_chunk 64, 128, 256) drawn by the hardware raster and by the
-#               compute tile rasterizer, both in one run: 100k and 1M Gaussians, 45 views of 512x512
-#   raster-gl-large  the same at 3M and a generated 6M, N_chunk 64, at most 3 timed frames a row
+#   raster-gl   per view and G2LF (N_chunk 64, 256, 512; P_s 1) drawn by the hardware raster and by
+#               the compute tile rasterizer, both in one run: 100k and 1M Gaussians, 45 views of 512x512
+#   raster-gl-910  the same with the paper's views, 45 of 512x910
+#   raster-gl-large  the same at 3M and a generated 6M, 45 views of 512x512, at most 3 timed frames a row
+#   raster-gl-large-910  3M and 6M with 45 views of 512x910
+# Each step fits one 15-minute GPU loan (docs/performance.md "The GPU table"): name the steps to run
+# them on separate loans; the raster steps run under LFD_GPU_TABLE_RASTER_LIMIT (default 420 s).
 # The script's mechanics are tested without a GPU on a stub bundle (tests/scripts/gpu_table_test.sh).
 # LFD_GPU_TABLE_LIMIT (seconds, default 150) bounds each step; LFD_GPU_TABLE_RUNS (default 10) is
 # the timed frames per row, LFD_GPU_TABLE_SIZES (default 100000,1000000,3000000) render-gl's scenes.
@@ -38,7 +42,7 @@ out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
 shift
 steps=("$@")
 [ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl \
-  gpu-probe raster-gl raster-gl-large)
+  gpu-probe raster-gl raster-gl-910 raster-gl-large raster-gl-large-910)
 limit=${LFD_GPU_TABLE_LIMIT:-150}
 runs=${LFD_GPU_TABLE_RUNS:-10}
 sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
@@ -60,12 +64,13 @@ unset EGL_PLATFORM  # the EGL device platform (the GPU), not Mesa's surfaceless 
 "$run" version | tee "$out/version.txt"
 nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv | tee "$out/gpu.txt" || true
 
-# One step: its command under the time limit, its output in OUT/STEP.md, a line in steps.txt.
+# One step: its command under the time limit (step_limit when set, else LFD_GPU_TABLE_LIMIT), its
+# output in OUT/STEP.md, a line in steps.txt.
 step() {
   local name=$1; shift
   local start=$SECONDS
   echo "== $name: $*" | tee -a "$out/steps.txt"
-  timeout --kill-after=10 "$limit" "$@" > "$out/$name.md" 2>&1
+  timeout --kill-after=10 "${step_limit:-$limit}" "$@" > "$out/$name.md" 2>&1
   local rc=$?
   tail -n 40 "$out/$name.md"
   echo "== $name: exit $rc after $((SECONDS - start)) s" | tee -a "$out/steps.txt"
@@ -86,6 +91,26 @@ bundled_tests() {
 }
 export -f bundled_tests
 export bundle
+
+# The Gaussians' two raster paths (docs/gpu.md "Two ways to draw Gaussians"), both in one run:
+# per view and G2LF N_chunk 64, 256 and 512 at P_s 1 (Table 1's N=512 bilinear row with them), at
+# 45 views of SIZE (512 or the paper's 512x910). raster_step NAME SIZE SCENES RUNS.
+raster_step() {
+  local step_limit=${LFD_GPU_TABLE_RASTER_LIMIT:-420}
+  step "$1" "$run" bench render --backend gl --raster hardware,compute --generated "$3" --views 45 --size "$2" \
+    --configs table1,chunks --chunks 64,256,512 --plane-scale 1 --runs "$4" --warmup 1 --png-runs 0 \
+    --json "$out/$1.json"
+}
+raster_steps() {
+  local large_runs=$(( runs < 3 ? runs : 3 ))
+  case "$1" in
+    raster-gl) raster_step raster-gl 512 100000,1000000 "$runs" ;;
+    raster-gl-910) raster_step raster-gl-910 512x910 100000,1000000 "$runs" ;;
+    raster-gl-large) raster_step raster-gl-large 512 3000000,6000000 "$large_runs" ;;
+    raster-gl-large-910) raster_step raster-gl-large-910 512x910 3000000,6000000 "$large_runs" ;;
+    *) return 1 ;;
+  esac
+}
 
 for s in "${steps[@]}"; do
   case "$s" in
@@ -117,15 +142,10 @@ for s in "${steps[@]}"; do
         --runs "$runs" --reference-views 0 --json "$out/direct-v2lf-gl.json" ;;
     gpu-probe)
       step gpu-probe "$run" bench gpu-probe --runs "$runs" --json "$out/gpu-probe.json" ;;
-    raster-gl)
-      step raster-gl "$run" bench render --backend gl --raster hardware,compute --generated 100000,1000000 --views 45 \
-        --size 512 --configs table1,chunks --runs "$runs" --png-runs 0 --json "$out/raster-gl.json" ;;
-    raster-gl-large)
-      step raster-gl-large "$run" bench render --backend gl --raster hardware,compute --generated 3000000,6000000 \
-        --views 45 --size 512 --configs table1 --chunks 64 --runs "$(( runs < 3 ? runs : 3 ))" --warmup 1 --png-runs 0 \
-        --json "$out/raster-gl-large.json" ;;
+    raster-gl|raster-gl-910|raster-gl-large|raster-gl-large-910) raster_steps "$s" ;;
     *) echo "gpu-table: unknown step '$s' (tests, render-gl, gpu-frame, gpu-sort, voxels-gl, voxels-gl-1m," \
-         "direct-gl, direct-gl-shader, direct-v2lf-gl, gpu-probe, raster-gl, raster-gl-large)" >&2; exit 2 ;;
+         "direct-gl, direct-gl-shader, direct-v2lf-gl, gpu-probe, raster-gl, raster-gl-910, raster-gl-large," \
+         "raster-gl-large-910)" >&2; exit 2 ;;
   esac
 done
 cat "$out/steps.txt"

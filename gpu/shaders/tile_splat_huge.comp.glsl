@@ -22,6 +22,9 @@ layout(std430, binding = kTileValuesBinding) writeonly buffer Values { uint valu
 #endif
 
 uniform ivec2 tile_grid;
+#if EMIT
+uniform uint key_capacity;  // keys the buffers hold (GlTileKeys::scan_to_capacity): none written past it
+#endif
 
 shared uint covered;
 
@@ -45,8 +48,10 @@ void main() {
     if (splat_covers_tile(r, tile)) {
       uint k = atomicAdd(covered, 1u);
 #if EMIT
-      keys[base + k] = first_slot + uint(tile.y * tile_grid.x + tile.x);
-      values[base + k] = entry;
+      if (base + k < key_capacity) {
+        keys[base + k] = first_slot + uint(tile.y * tile_grid.x + tile.x);
+        values[base + k] = entry;
+      }
 #endif
     }
   }

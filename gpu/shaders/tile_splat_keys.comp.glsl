@@ -28,6 +28,9 @@ layout(std430, binding = kTileSplatHugeBinding) buffer Huge { TileHugeList huge;
 uniform uint item_capacity;  // items dispatched; those from the kept count on have no keys
 uniform uint kept_word;      // the kept count's index in kept_words (the sort's params or a draw)
 uniform ivec2 tile_grid;
+#if EMIT
+uniform uint key_capacity;  // keys the buffers hold (GlTileKeys::scan_to_capacity): none written past it
+#endif
 
 void main() {
   uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
@@ -60,8 +63,10 @@ void main() {
     for (int tx = rect.x; tx < rect.z; ++tx)
       if (splat_covers_tile(r, ivec2(tx, ty))) {
 #if EMIT
-        keys[base + n] = first_slot + uint(ty * tile_grid.x + tx);
-        values[base + n] = entry;
+        if (base + n < key_capacity) {
+          keys[base + n] = first_slot + uint(ty * tile_grid.x + tx);
+          values[base + n] = entry;
+        }
 #endif
         ++n;
       }

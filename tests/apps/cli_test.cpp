@@ -45,6 +45,20 @@ TEST(Cli, MissingRequiredOptionIsExitTwo) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// lfd bench render's --size: N or WxH (the paper's 512x910); anything else is one line, exit 2,
+// before a scene is made.
+TEST(Cli, BenchRenderSizeIsNOrWxH) {
+  for (const char* bad : {"512x", "512x910x2", "wide", "0x512", "512.5"}) {
+    const Result r = run(std::string("bench render --generated 10 --size ") + bad);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
+    EXPECT_NE(r.output.find("--size"), std::string::npos) << r.output;
+    EXPECT_EQ(lines(r.output), 1) << r.output;
+  }
+  const Result r = run("bench render --generated 10 --size 512x8");  // a side under 16
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("512x8"), std::string::npos) << r.output;
+}
+
 TEST(Cli, MissingCalibrationFileIsNamed) {
   const Result r = run("info --calibration /nonexistent/unit.json");
   EXPECT_EQ(r.exit_code, 2);

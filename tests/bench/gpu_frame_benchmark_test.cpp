@@ -8,17 +8,24 @@
 namespace lfd::bench {
 namespace {
 
-TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
-  gpu::HeadlessContext context;
-  const GlVsCpuScene scene = gl_vs_cpu_tabletop(2000, 32);
+// A short run of `rasters` on 5 views, N_chunk 8, no V2LF rows (their own test).
+GpuFrameOptions short_run(gpu::RasterPath raster) {
   GpuFrameOptions o;
   o.views = 5;
   o.chunks = 8;
   o.runs = 2;
   o.warmup = 1;
   o.batch = 2;
+  o.voxel_level = 0;
+  o.rasters = {raster};
+  return o;
+}
+
+TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
+  gpu::HeadlessContext context;
+  const GlVsCpuScene scene = gl_vs_cpu_tabletop(2000, 32);
+  GpuFrameOptions o = short_run(gpu::RasterPath::kHardware);  // the compute rows: their own test
   o.swizzle_views = {1, 3};
-  o.voxel_level = 0;  // no V2LF rows: the next test's
   const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
   // G2LF: 2 swizzle variants, 3 plane rasters, table off/on, bilinear by hand/unit, timers read
   // late; per view: 4.
@@ -50,6 +57,37 @@ TEST(GpuFrameBenchmark, TimesEveryVariantWithItsStages) {
   o.hardware_bilinear = {true};
   o.swizzle_views = {8};
   EXPECT_EQ(run_gpu_frame(scene, o, context.info()).size(), 5u) << "G2LF rows only";
+}
+
+// --raster compute: G2LF's planes (timers waited for and read late) and the per-view quilt drawn
+// by the compute tile rasterizer, each with its GPU stage times; with hardware, after its rows.
+TEST(GpuFrameBenchmark, ComputeRowsHaveTheirStageTimes) {
+  gpu::HeadlessContext context;
+  const GlVsCpuScene scene = gl_vs_cpu_tabletop(2000, 32);
+  GpuFrameOptions o = short_run(gpu::RasterPath::kCompute);
+  const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
+  ASSERT_EQ(rows.size(), 3u);
+  for (size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(rows[i].method, "G2LF N=8");
+    EXPECT_NE(rows[i].variant.find("--raster compute"), std::string::npos) << rows[i].variant;
+    EXPECT_NE(rows[i].variant.find("planes compute"), std::string::npos) << rows[i].variant;
+    EXPECT_GT(rows[i].planes_s, 0.0) << rows[i].variant;
+    EXPECT_GT(rows[i].swizzle_s, 0.0) << rows[i].variant;
+  }
+  EXPECT_EQ(rows[2].method, "per view");
+  EXPECT_NE(rows[2].variant.find("--raster compute"), std::string::npos);
+  EXPECT_GT(rows[2].raster_s, 0.0);
+  EXPECT_GT(rows[2].sort_s, 0.0);
+  EXPECT_LT(rows[2].sort_s, rows[2].raster_s);  // the sort is a share of the whole
+  o.per_view = false;
+  o.rasters = {gpu::RasterPath::kHardware, gpu::RasterPath::kCompute};
+  o.planes = {"layered"};
+  o.swizzle_table = {true};
+  o.hardware_bilinear = {true};
+  o.swizzle_views = {8};
+  const std::vector<GpuFrameRow> both = run_gpu_frame(scene, o, context.info());
+  ASSERT_EQ(both.size(), 7u) << "5 hardware G2LF rows, then 2 compute";
+  EXPECT_NE(both[5].variant.find("--raster compute"), std::string::npos);
 }
 
 // --sort-only: G2LF's binning sort over all N and over the binned Gaussians, then per view five
@@ -91,6 +129,7 @@ TEST(GpuFrameBenchmark, ComparesV2lfBinnedOnTheCpuAndOnTheGpu) {
   o.swizzle_table = {true};
   o.hardware_bilinear = {true};
   o.voxel_level = 4;
+  o.rasters = {gpu::RasterPath::kHardware};
   const std::vector<GpuFrameRow> rows = run_gpu_frame(scene, o, context.info());
   // G2LF 5 (swizzle 1, planes layered, table on, unit bilinear, timers read late), per view 4, V2LF 2
   ASSERT_EQ(rows.size(), 11u);

@@ -2,6 +2,8 @@
 // the benchmark loop driven through a fake backend (what is timed, how often, what is compared).
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -123,9 +125,9 @@ TEST(RenderBenchmark, TimesWarmUpPlusRunsPerRowAndComparesWithThePerViewQuilt) {
   RenderBenchOptions o;
   o.scenes = {{"", 500}};
   o.views = {4};
-  o.size = 32;
+  o.size = {32, 32};
   o.config_sets = {"table1", "density"};
-  o.only_chunks = 64;  // N=64, N=64 Ps=2, N=64 at view density
+  o.only_chunks = {64};  // N=64, N=64 Ps=2, N=64 at view density
   o.warmup = 1;
   o.runs = 3;
   o.png_runs = 2;
@@ -155,6 +157,34 @@ TEST(RenderBenchmark, TimesWarmUpPlusRunsPerRowAndComparesWithThePerViewQuilt) {
   }
   EXPECT_EQ(rows[3]["plane_scale"], fake.last_plane_scale);
   EXPECT_GE(fake.last_plane_scale, 1);
+}
+
+// The paper's views are not square (45 views of 512x910): the table renders views of W x H, and
+// --chunks keeps several N_chunk, --plane-scale one P_s (the GPU table's N=64/256/512 rows).
+TEST(RenderBenchmark, NonSquareViewsAndAListOfChunkCounts) {
+  RenderBenchOptions o;
+  o.scenes = {{"", 300}};
+  o.views = {3};
+  o.size = {32, 56};
+  o.config_sets = {"table1", "chunks"};
+  o.only_chunks = {64, 256, 512};
+  o.only_plane_scale = 1;
+  o.runs = 1;
+  o.png_runs = 0;
+  FakeBackend backend;
+  const nlohmann::ordered_json result = backend.run(o);
+  EXPECT_EQ(result["size"], nlohmann::ordered_json::array({32, 56}));
+  const auto& table = result["tables"][0];
+  const int cols = table["grid"][0], rows = table["grid"][1];
+  EXPECT_EQ(table["quilt"][0].get<int>(), 32 * cols);
+  EXPECT_EQ(table["quilt"][1].get<int>(), 56 * rows);
+  std::vector<std::string> methods;
+  for (const auto& row : table["rows"]) methods.push_back(row["method"]);
+  // Per view, then Table 1's P_s = 1 rows of N 64 and 512 (nearest, bilinear), then N = 256.
+  EXPECT_EQ(methods, (std::vector<std::string>{"per-view 3DGS (ground truth)", "G2LF (N=64)", "G2LF (N=512)",
+                                               "G2LF (N=512, Bi.)", "G2LF (N=256)"}));
+  o.size = {32, 8};
+  EXPECT_THROW(backend.run(o), InputError);
 }
 
 TEST(RenderBenchmark, BadOptionsNameTheField) {

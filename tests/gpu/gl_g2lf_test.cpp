@@ -528,37 +528,72 @@ TEST(GlG2lfPlanes, ComputePlanesEqualTheCpuPlanes) {
   HeadlessContext& ctx = context();
   for (const TestScene* s : {&tabletop(), &cloud()}) {
     for (PlanePrecision precision : {PlanePrecision::kF32, PlanePrecision::kU8}) {
-      GlG2lfOptions options;
-      options.g2lf.chunks = 32;
-      options.g2lf.precision = precision;
-      options.gpu_timers = true;
-      options.raster = RasterPath::kCompute;
-      render::RasterSettings settings;
-      settings.background = s->background;
-      const render::ReferenceCamera ref = render::reference_camera(options.g2lf, s->geometry);
-      const render::DepthChunks chunks = render::bin_by_depth(s->scene, s->geometry, ref, 32, options.g2lf.binning);
-      render::RasterSettings plane_settings;
-      plane_settings.dilation_px2 = render::adaptive_filter_variance(s->geometry, ref, 1);
-      const std::vector<float> cpu = cpu_planes_as_float(
-          render::render_sweeping_planes(s->scene, s->geometry, ref, chunks, precision, plane_settings));
-      const GlScene scene(s->scene, ctx.info());
-      GlG2lfRenderer renderer(scene, ctx.info());
-      const Texture quilt = make_quilt_texture(s->layout, GL_RGBA32F);
-      renderer.render_quilt(s->geometry, s->layout, options, settings, quilt);
-      ASSERT_EQ(size_t(renderer.stats().planes), chunks.members.size());
-      const GlPlanes& planes = renderer.planes();
-      EXPECT_EQ(planes.format, precision == PlanePrecision::kU8 ? PlaneFormat::kRgba8 : PlaneFormat::kRgba32f);
-      const PlaneError e = compare_planes(read_planes_top_down(planes, renderer.stats().planes), cpu);
-      const double q = render::psnr(read_image_top_down(quilt),
-                                    render::render_quilt_g2lf(s->scene, s->geometry, s->layout, options.g2lf, settings));
-      std::printf("%s: compute %s planes vs CPU %s planes: PSNR %.2f dB, max |error| %.2e; quilt %.2f dB\n",
-                  s->name.c_str(), plane_format_name(planes.format), precision == PlanePrecision::kU8 ? "u8" : "f32",
-                  e.psnr, e.max_error, q);
-      EXPECT_LE(e.max_error, precision == PlanePrecision::kU8 ? 1.0 / 255.0 + 1e-6 : 1e-4) << s->name;
-      EXPECT_GE(e.psnr, 60.0) << s->name;
-      EXPECT_GE(q, 40.0) << s->name;
+      // Hot (plane, tile) slots split into parts at the default threshold and forced at 16 keys.
+      for (const uint32_t split_keys : {kTileSplatSplitKeys, 16u}) {
+        GlG2lfOptions options;
+        options.g2lf.chunks = 32;
+        options.g2lf.precision = precision;
+        options.gpu_timers = true;
+        options.raster = RasterPath::kCompute;
+        options.compute_split_keys = split_keys;
+        render::RasterSettings settings;
+        settings.background = s->background;
+        const render::ReferenceCamera ref = render::reference_camera(options.g2lf, s->geometry);
+        const render::DepthChunks chunks = render::bin_by_depth(s->scene, s->geometry, ref, 32, options.g2lf.binning);
+        render::RasterSettings plane_settings;
+        plane_settings.dilation_px2 = render::adaptive_filter_variance(s->geometry, ref, 1);
+        const std::vector<float> cpu = cpu_planes_as_float(
+            render::render_sweeping_planes(s->scene, s->geometry, ref, chunks, precision, plane_settings));
+        const GlScene scene(s->scene, ctx.info());
+        GlG2lfRenderer renderer(scene, ctx.info());
+        const Texture quilt = make_quilt_texture(s->layout, GL_RGBA32F);
+        renderer.render_quilt(s->geometry, s->layout, options, settings, quilt);
+        ASSERT_EQ(size_t(renderer.stats().planes), chunks.members.size());
+        const GlPlanes& planes = renderer.planes();
+        EXPECT_EQ(planes.format, precision == PlanePrecision::kU8 ? PlaneFormat::kRgba8 : PlaneFormat::kRgba32f);
+        const PlaneError e = compare_planes(read_planes_top_down(planes, renderer.stats().planes), cpu);
+        const double q = render::psnr(read_image_top_down(quilt),
+                                      render::render_quilt_g2lf(s->scene, s->geometry, s->layout, options.g2lf, settings));
+        std::printf("%s: compute %s planes (split keys %u) vs CPU %s planes: PSNR %.2f dB, max |error| %.2e; "
+                    "quilt %.2f dB\n",
+                    s->name.c_str(), plane_format_name(planes.format), split_keys,
+                    precision == PlanePrecision::kU8 ? "u8" : "f32", e.psnr, e.max_error, q);
+        EXPECT_LE(e.max_error, precision == PlanePrecision::kU8 ? 1.0 / 255.0 + 1e-6 : 1e-4) << s->name;
+        EXPECT_GE(e.psnr, 60.0) << s->name;
+        EXPECT_GE(q, 40.0) << s->name;
+      }
     }
   }
+}
+
+// The memory check of --raster compute counts its key buffers (GlTileSplats::plane_path_bytes,
+// keys at kComputePlaneKeysPerGaussian a Gaussian) instead of the raster's accumulation layers: a
+// budget that holds the planes and the binning's buffers (what it counted before) is refused, and the frame's keys
+// stay within the estimate on the test scene.
+TEST(GlG2lfPlanes, TheComputeMemoryCheckCountsTheKeyBuffers) {
+  const TestScene& s = tabletop();
+  HeadlessContext& ctx = context();
+  GlG2lfOptions options;
+  options.g2lf.chunks = 32;
+  options.raster = RasterPath::kCompute;
+  const size_t n = s.scene.size();
+  const size_t binning = n * (sizeof(SplatRecord) + 5 * sizeof(uint32_t));
+  const size_t tiles = size_t((s.geometry.base.width + 15) / 16) * size_t((s.geometry.base.height + 15) / 16);
+  EXPECT_EQ(g2lf_other_bytes(options, s.geometry, n),
+            binning + GlTileSplats::plane_path_bytes(n, 32 * tiles, n * kComputePlaneKeysPerGaussian));
+  EXPECT_GT(g2lf_other_bytes(options, s.geometry, n), binning + n * kComputePlaneKeysPerGaussian * 16);
+  // What the check counted before the key buffers: the planes, the binning, the raster's batch lists.
+  options.memory_budget_bytes = g2lf_plane_array_bytes(options, s.geometry) + binning + n * 2 * sizeof(uint32_t);
+  EXPECT_THROW(check_g2lf_fits(options, s.geometry, n, ctx.info(), std::nullopt), InputError);
+  options.memory_budget_bytes = 0;
+  const GlScene scene(s.scene, ctx.info());
+  GlG2lfRenderer renderer(scene, ctx.info());
+  const Texture quilt = make_quilt_texture(s.layout, GL_RGBA32F);
+  renderer.render_quilt(s.geometry, s.layout, options, {}, quilt);
+  const uint32_t keys = renderer.stats().compute_keys;
+  std::printf("[ keys ] %u (plane, tile) keys for %zu Gaussians: %.2f a Gaussian\n", keys, n, double(keys) / double(n));
+  EXPECT_GT(keys, 0u);
+  EXPECT_LE(keys, n * kComputePlaneKeysPerGaussian);
 }
 
 // u8-precision planes drawn layered are RGBA16F, twice RGBA8's bytes: a budget that holds only

@@ -71,13 +71,39 @@ TEST(GlTileSplats, TheFixtureAndDemoScenesMatchTheCpu) {
   }
 }
 
-// Mostly opaque: pixels stop early and whole tiles stop taking batches.
+// The slots split into parts by a GlTileSplats of `split_keys` on one view (0, 0: none split).
+std::pair<uint32_t, uint32_t> split_counts(const GlScene& gl_scene, const render::Camera& camera, uint32_t split_keys) {
+  GlTileSplats tiles;
+  tiles.set_split_keys(split_keys);
+  Texture view(GL_RGBA32F, camera.width, camera.height);
+  tiles.render_views(gl_scene, std::span(&camera, 1), {},
+                     {.texture = &view, .cols = 1, .cell_size = {camera.width, camera.height}});
+  return tiles.read_split_counts();
+}
+
+// Mostly opaque: pixels stop early and whole tiles stop taking batches. Split into parts of 64
+// keys (hot tiles forced: most slots are split, and most pixels stop inside a part, where the
+// merge replays it from the true T), the view still equals the CPU's and the unsplit one.
 TEST(GlTileSplats, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
   HeadlessContext context;
   const auto scene = generated_scene(1, 60000);
   GlScene gl_scene(scene, context.info());
+  const auto camera = tabletop_camera();
   GlPerViewRenderer renderer(gl_scene, compute_options());
-  compare_view(renderer, scene, tabletop_camera(), {}, "generated 60k, mostly opaque");
+  compare_view(renderer, scene, camera, {}, "generated 60k, mostly opaque");
+  GlPerViewOptions split = compute_options();
+  split.compute_split_keys = 64;
+  GlPerViewRenderer split_renderer(gl_scene, split);
+  compare_view(split_renderer, scene, camera, {}, "generated 60k, mostly opaque, tiles split every 64 keys");
+  const render::RasterImage whole = renderer.render_view_image(camera);
+  const render::RasterImage parts = split_renderer.render_view_image(camera);
+  const double db = render::psnr(testing::rgb_of(parts), testing::rgb_of(whole));
+  std::printf("[ psnr ] split every 64 keys vs whole slots: %.1f dB\n", db);
+  EXPECT_GE(db, 100.0);  // the same image up to the rounding of the merged products
+  const auto [slots, parts_count] = split_counts(gl_scene, camera, 64);
+  std::printf("[ split ] %u slots in %u parts\n", slots, parts_count);
+  EXPECT_GT(slots, 20u);
+  EXPECT_GT(parts_count, 2 * slots - 1);
 }
 
 // Splats far larger than the image: their rectangles hold every tile, so their keys are
@@ -132,50 +158,81 @@ TEST(GlTileSplats, ADenseTileMatchesTheCpu) {
   }
   const auto camera = tabletop_camera();
   GlScene gl_scene(scene, context.info());
-  GlPerViewOptions options = compute_options();
-  GlPerViewRenderer renderer(gl_scene, options);
-  compare_view(renderer, scene, camera, {}, "5000 splats in one tile");
+  // Split off, at the default threshold (the hot tile holds more), and forced small (every tile
+  // over 100 keys in parts).
+  for (const uint32_t split_keys : {0u, kTileSplatSplitKeys, 100u}) {
+    GlPerViewOptions options = compute_options();
+    options.compute_split_keys = split_keys;
+    GlPerViewRenderer renderer(gl_scene, options);
+    compare_view(renderer, scene, camera, {}, "5000 splats in one tile, split keys " + std::to_string(split_keys));
+  }
+  EXPECT_EQ(split_counts(gl_scene, camera, 0).first, 0u);
+  const auto [slots, parts] = split_counts(gl_scene, camera, kTileSplatSplitKeys);
+  EXPECT_GE(slots, 1u) << "the hot tile was split at the default threshold";
+  EXPECT_GE(parts, 2u);
+  EXPECT_GT(split_counts(gl_scene, camera, 100).second, parts) << "smaller parts, more of them";
 }
 
-// The whole quilt in one pass, laid out as render::render_quilt_per_view lays it (9 views in a
-// 4x3 grid), in float and RGBA8; and the same quilt from the hardware path.
+// The whole quilt in one pass (testing::QuiltCase: 9 views in a 4x3 grid), in float and RGBA8;
+// in passes of 2 views; and the same quilt from the hardware path.
 void compare_quilt(GLenum format, const std::string& what) {
   HeadlessContext context;
-  const auto scene = generated_scene(2, 3000);
-  const auto geometry = render::make_quilt_geometry(tabletop_camera(96, 80), 5.1f, 40.0f, 9);
-  const auto layout = render::make_quilt_layout(geometry, 4, 3);
-  const ImageF cpu = render::render_quilt_per_view(scene, geometry, layout);
-  GlScene gl_scene(scene, context.info());
+  const testing::QuiltCase c;
+  GlScene gl_scene(c.scene, context.info());
   GlPerViewOptions options = compute_options();
   options.gpu_timers = true;
   GlPerViewRenderer renderer(gl_scene, options);
-  Texture quilt(format, layout.width, layout.height);
-  renderer.render_quilt(geometry, layout, {}, quilt);
-  const ImageF gl = read_image_top_down(quilt);
-  const double whole = render::psnr(gl, cpu);
-  std::printf("[ psnr ] compute quilt %s: %.1f dB\n", what.c_str(), whole);
-  EXPECT_GE(whole, kMinPsnrDb) << what;
-  for (int view = 0; view < geometry.views; ++view)
-    EXPECT_GE(render::psnr(render::extract_view(gl, layout, view), render::extract_view(cpu, layout, view)), kMinPsnrDb)
-        << what << " view " << view;
-  EXPECT_EQ(renderer.stats().views, 9);
+  const ImageF gl = testing::compare_quilt_with_cpu(renderer, c, format, "compute quilt " + what);
   EXPECT_GT(renderer.stats().memory_bytes, gl_scene.bytes());
 
   // Views in passes of 2 (as on a GPU whose storage buffers hold 2 views of records): the same
   // quilt, bit for bit.
   GlPerViewOptions split = compute_options();
-  split.compute_entries_per_pass = 2 * scene.size() + 1;
+  split.compute_entries_per_pass = 2 * c.scene.size() + 1;
   GlPerViewRenderer in_passes(gl_scene, split);
-  Texture passes_quilt(format, layout.width, layout.height);
-  in_passes.render_quilt(geometry, layout, {}, passes_quilt);
+  Texture passes_quilt(format, c.layout.width, c.layout.height);
+  in_passes.render_quilt(c.geometry, c.layout, {}, passes_quilt);
   EXPECT_EQ(read_image_top_down(passes_quilt).pixels, gl.pixels) << what;
 
   GlPerViewRenderer hardware(gl_scene);
-  Texture hardware_quilt(format, layout.width, layout.height);
-  hardware.render_quilt(geometry, layout, {}, hardware_quilt);
+  Texture hardware_quilt(format, c.layout.width, c.layout.height);
+  hardware.render_quilt(c.geometry, c.layout, {}, hardware_quilt);
   const double paths = render::psnr(gl, read_image_top_down(hardware_quilt));
   std::printf("[ psnr ] compute vs hardware quilt %s: %.1f dB\n", what.c_str(), paths);
   EXPECT_GE(paths, kMinPsnrDb) << what;
+}
+
+// Nothing is read back inside a frame (docs/gpu.md "Memory and passes"): keys go into buffers of
+// a capacity kept from frame to frame, and a pass whose keys outgrew it is drawn again. From a
+// capacity of 64 keys every pass of a 9-view quilt (passes of 2 views) overflows and is redrawn,
+// and the quilt is the one drawn with room to spare, bit for bit; the next frame redraws nothing.
+TEST(GlTileSplats, PassesWhoseKeysOutgrowTheCapacityAreDrawnAgain) {
+  HeadlessContext context;
+  const testing::QuiltCase c;
+  GlScene gl_scene(c.scene, context.info());
+  std::vector<render::Camera> cameras;
+  for (int v = 0; v < c.geometry.views; ++v) cameras.push_back(c.geometry.view_camera(v));
+  const auto draw = [&](GlTileSplats& tiles) {
+    Texture quilt(GL_RGBA32F, c.layout.width, c.layout.height);
+    const glm::ivec2 cell{c.layout.tile_width(), c.layout.tile_height()};
+    tiles.render_views(gl_scene, cameras, {}, {.texture = &quilt, .cols = c.layout.cols, .cell_size = cell});
+    return read_image_top_down(quilt).pixels;
+  };
+  GlTileSplats roomy;
+  roomy.set_key_capacity(1'000'000);
+  const std::vector<float> truth = draw(roomy);
+  EXPECT_EQ(roomy.redrawn_passes(), 0);
+  GlTileSplats tight;
+  tight.set_max_entries_per_pass(2 * c.scene.size() + 1);
+  tight.set_key_capacity(64);
+  EXPECT_EQ(draw(tight), truth);
+  EXPECT_EQ(tight.passes(), 5);
+  EXPECT_EQ(tight.redrawn_passes(), 5);
+  EXPECT_EQ(tight.counts().keys, roomy.counts().keys);
+  EXPECT_GT(tight.key_capacity(), tight.counts().keys / 5);
+  std::printf("[ keys ] %u keys; capacity grown from 64 to %u\n", tight.counts().keys, tight.key_capacity());
+  EXPECT_EQ(draw(tight), truth);
+  EXPECT_EQ(tight.redrawn_passes(), 0);
 }
 
 TEST(GlTileSplats, FloatQuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA32F, "RGBA32F"); }

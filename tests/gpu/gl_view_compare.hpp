@@ -2,7 +2,8 @@
 // The GL per-view tests' comparison with the CPU rasterizer, shared by the hardware path's tests
 // (gl_per_view_test.cpp) and the compute path's (gl_tile_splats_test.cpp): the bar (issue #9:
 // >= 40 dB colour and transmittance), the generated scene and camera they use, and one view
-// compared with the PSNR printed (the figures docs/gpu.md quotes).
+// compared with the PSNR printed (the figures docs/gpu.md quotes), and the quilt both compare
+// with the CPU's.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "gpu/gl_per_view_renderer.hpp"
 #include "render/image_metrics.hpp"
+#include "render/per_view_quilt.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/rasterizer_cpu.hpp"
 #include "render/scene_generator.hpp"
@@ -73,6 +75,34 @@ inline void compare_generated_views(GlPerViewRenderer& renderer, const scene::Ga
                  prefix + "generated off-axis view 8/9, background" + d);
   }
   compare_view(renderer, scene, tabletop_camera(100, 77), {}, prefix + "generated 100x77");
+}
+
+// The quilt both paths' quilt tests draw, laid out as render::render_quilt_per_view lays it (9
+// views in a 4x3 grid, so the last row is partly empty and a wrong row order would show), with
+// the CPU's quilt.
+struct QuiltCase {
+  scene::GaussianScene scene = generated_scene(2, 3000);
+  render::QuiltGeometry geometry = render::make_quilt_geometry(tabletop_camera(96, 80), 5.1f, 40.0f, 9);
+  render::QuiltLayout layout = render::make_quilt_layout(geometry, 4, 3);
+  ImageF cpu = render::render_quilt_per_view(scene, geometry, layout);
+};
+
+// `renderer`'s quilt of the case in a `format` texture, compared with the CPU's as a whole and
+// view by view (each >= the bar, the whole PSNR printed); returns it, top-down.
+inline ImageF compare_quilt_with_cpu(GlPerViewRenderer& renderer, const QuiltCase& c, GLenum format,
+                                     const std::string& what) {
+  Texture quilt(format, c.layout.width, c.layout.height);
+  renderer.render_quilt(c.geometry, c.layout, {}, quilt);
+  const ImageF gl = read_image_top_down(quilt);
+  const double whole = render::psnr(gl, c.cpu);
+  std::printf("[ psnr ] %s: %.1f dB\n", what.c_str(), whole);
+  EXPECT_GE(whole, kMinPsnrDb) << what;
+  for (int view = 0; view < c.geometry.views; ++view)
+    EXPECT_GE(render::psnr(render::extract_view(gl, c.layout, view), render::extract_view(c.cpu, c.layout, view)),
+              kMinPsnrDb)
+        << what << " view " << view;
+  EXPECT_EQ(renderer.stats().views, c.geometry.views) << what;
+  return gl;
 }
 
 }  // namespace lfd::gpu::testing

@@ -37,7 +37,8 @@ LFD_BUNDLE_DIR=$bundle LFD_GPU_TABLE_LIMIT=2 LFD_GPU_TABLE_RUNS=3 bash "$root/sc
   || fail "the table exited $? (a failing step must not stop it): $(tail -3 "$work/log")"
 for expected in "tests: exit 0" "render-gl: exit 0" "gpu-frame: exit 0" "gpu-sort: exit 124" "voxels-gl: exit 3" \
                 "voxels-gl-1m: exit 0" "direct-gl: exit 0" "direct-gl-shader: exit 0" "direct-v2lf-gl: exit 0" \
-                "gpu-probe: exit 0" "raster-gl: exit 0" "raster-gl-large: exit 0"; do
+                "gpu-probe: exit 0" "raster-gl: exit 0" "raster-gl-910: exit 0" "raster-gl-large: exit 0" \
+                "raster-gl-large-910: exit 0"; do
   grep -q "== $expected after" "$out/steps.txt" || fail "steps.txt lacks '$expected': $(cat "$out/steps.txt")"
 done
 grep -q -- "--gtest_filter=-\*Cli\*" "$out/tests.md" || fail "the bundled tests ran without the CLI filter"
@@ -49,13 +50,19 @@ grep -q -- "bench voxels --backend gl --raster hardware,compute --level 10 --vie
   || fail "voxels-gl-1m did not render the level-10 (>= 1M voxel) tabletop: $(head -1 "$out/voxels-gl-1m.md")"
 grep -q -- "--method v2lf --voxel-level 7,10 --chunks 16,64,256" "$out/direct-v2lf-gl.md" \
   || fail "direct-v2lf-gl did not take both voxel scenes and the three plane counts: $(head -1 "$out/direct-v2lf-gl.md")"
-for step in raster-gl raster-gl-large; do
-  grep -q -- "bench render --backend gl --raster hardware,compute " "$out/$step.md" \
-    || fail "$step did not run both raster paths: $(head -1 "$out/$step.md")"
+# The raster steps: both paths, N_chunk 64/256/512 at P_s 1, the paper's 512x910 views, 6M.
+for step in raster-gl raster-gl-910 raster-gl-large raster-gl-large-910; do
+  grep -q -- "bench render --backend gl --raster hardware,compute .*--views 45 .*--chunks 64,256,512 --plane-scale 1 " \
+    "$out/$step.md" || fail "$step did not run both raster paths at N 64/256/512: $(head -1 "$out/$step.md")"
 done
-grep -q -- "--generated 3000000,6000000 .*--runs 3 " "$out/raster-gl-large.md" \
-  || fail "raster-gl-large: $(head -1 "$out/raster-gl-large.md")"
-for json in render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl gpu-probe raster-gl raster-gl-large; do
+grep -q -- "--generated 100000,1000000 --views 45 --size 512x910 .*--runs 3 " "$out/raster-gl-910.md" \
+  || fail "raster-gl-910: $(head -1 "$out/raster-gl-910.md")"
+for step in raster-gl-large raster-gl-large-910; do
+  grep -q -- "--generated 3000000,6000000 .*--runs 3 " "$out/$step.md" || fail "$step: $(head -1 "$out/$step.md")"
+done
+grep -q -- "--size 512x910 " "$out/raster-gl-large-910.md" || fail "raster-gl-large-910: $(head -1 "$out/raster-gl-large-910.md")"
+for json in render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl gpu-probe raster-gl \
+            raster-gl-910 raster-gl-large raster-gl-large-910; do
   [ -s "$out/$json.json" ] || fail "$json.json was not written"
 done
 grep -q "stub lfd version" "$out/version.txt" || fail "version.txt: $(cat "$out/version.txt")"
