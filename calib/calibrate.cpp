@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "calib/calibration_stages.hpp"
+#include "calib/undescribed.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -104,6 +105,13 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     rest.view_cone_deg.reset();
     return calibrate_display(known, positions, rest);
   }
+  if (from_probes(set) && !options.colour_order.estimate) {
+    // An undescribed panel's fine set: the subpixel order the probes read is a measurement
+    // too, which the photos confirm or replace (docs/calibration.md, "A panel nobody described").
+    CalibrateOptions measured = options;
+    measured.colour_order.estimate = true;
+    return calibrate_display(set, positions, measured);
+  }
   check_positions(positions, options);
   CalibrationOutcome out;
   const PatternRoles roles(set);
@@ -132,7 +140,6 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     refine_self_calibration(set, options, boards, states, out);
     for (size_t i = 0; i < positions.size(); ++i) {
       const PositionContext ctx = context(i);
-      states[i].fringe = {};
       register_position(ctx, states[i]);
       refine_with_fringes(ctx, states[i]);
     }
