@@ -163,6 +163,9 @@ TEST(UndescribedCalibrate, SmallBgrPanelSolvedEndToEnd) {
     std::printf("%s registered %.2f mm from the truth\n", out.positions[i].name.c_str(), mm);
     EXPECT_LT(mm, 3.0) << out.positions[i].name;
   }
+  // Registered and solved again with the cone the first solve measured; the assumption stays
+  // the cone's nominal.
+  EXPECT_EQ(out.calibration.view_cone_nominal_deg, UndescribedAssumptions{}.view_cone_deg);
   EXPECT_TRUE(out.gate_failures.empty());
   EXPECT_TRUE(out.calibration.display.flip_subp);
   EXPECT_LT(e.slant_deg, 0.002);
