@@ -47,7 +47,8 @@ UndescribedAssumptions assumptions_of(const sim::PatternSet& coarse) {
   return a;
 }
 
-ProbeRound fine_set_from_probes(const sim::PatternSet& coarse, const sim::PositionCaptures& captures) {
+ProbeRound fine_set_from_probes(const sim::PatternSet& coarse,
+                                const sim::PositionCaptures& captures) {
   ProbeRound r;
   r.lens = measure_lens_from_probes(coarse, captures);
   r.description = description_from_probes(coarse, r.lens, assumptions_of(coarse));

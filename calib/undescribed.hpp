@@ -48,7 +48,8 @@ struct ProbeRound {
   display::Calibration description;
   sim::PatternSet fine;
 };
-ProbeRound fine_set_from_probes(const sim::PatternSet& coarse, const sim::PositionCaptures& captures);
+ProbeRound fine_set_from_probes(const sim::PatternSet& coarse,
+                                const sim::PositionCaptures& captures);
 
 // Where the fine set of an undescribed folder lives: DIR/fine (patterns/ and captures/).
 std::filesystem::path fine_folder(const std::filesystem::path& dir);

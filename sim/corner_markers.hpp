@@ -14,7 +14,8 @@ namespace lfd::sim {
 // The top-left panel pixel of corner marker `corner`'s square (its black border included).
 inline cv::Point marker_origin_px(const CornerMarkers& m, int corner) {
   const cv::Point2d c = m.centres_px.at(size_t(corner));
-  return {int(std::lround(c.x + 0.5 - m.side_px / 2.0)), int(std::lround(c.y + 0.5 - m.side_px / 2.0))};
+  return {int(std::lround(c.x + 0.5 - m.side_px / 2.0)),
+          int(std::lround(c.y + 0.5 - m.side_px / 2.0))};
 }
 
 // The square's outer corners in OpenCV panel coordinates (pixel centres at integers), in the

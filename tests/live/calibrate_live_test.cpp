@@ -95,7 +95,8 @@ TEST(CalibrateLive, UndescribedPanelProbesThenFineSet) {
   const calib::CalibrationOutcome again =
       calib::calibrate_display(fine, sim::read_captures(last, fine, warnings), offline);
   EXPECT_DOUBLE_EQ(again.calibration.display.pitch_lpi, out.calibration.display.pitch_lpi);
-  EXPECT_DOUBLE_EQ(again.calibration.display.center_periods, out.calibration.display.center_periods);
+  EXPECT_DOUBLE_EQ(again.calibration.display.center_periods,
+                   out.calibration.display.center_periods);
   std::filesystem::remove_all(o.session_dir);
 }
 
