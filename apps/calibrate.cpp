@@ -22,6 +22,7 @@ namespace {
 // The command line of `lfd calibrate`, as parsed.
 struct CalibrateArgs {
   std::string dir, camera_path, out_path, visual_path, report_dir, simulate_path, monitor, resume_dir;
+  std::filesystem::path solved_dir;  // the capture folder whose patterns were solved last
   bool force = false, live = false, keep_camera_settings = false, no_preview = false;
   int camera_index = 0, grid = 8, positions = 1, rounds = 2;
   calib::CalibrateOptions options;
@@ -34,7 +35,8 @@ void add_calibrate_options(CLI::App& app, CalibrateArgs& a) {
   app.add_option("DIR", a.dir,
                  "folder with patterns/ and captures/, or a live session's folder (its last "
                  "round); with --live, where the session saves its photos (default: "
-                 "live-capture beside --out)");
+                 "live-capture beside --out), or a panel nobody described: the lens probes of "
+                 "`lfd patterns --screen` in DIR/patterns (the session goes to DIR/live)");
   app.add_option("--camera", a.camera_path,
                  "camera intrinsics (OpenCV YAML: camera_matrix, distortion_coefficients); "
                  "without it they are self-calibrated from the board at >= 3 positions");
@@ -93,6 +95,8 @@ void check_outputs_and_read_camera(CalibrateArgs& a) {
   a.options.solver.grid_nx = a.options.solver.grid_ny = a.grid < 4 ? 0 : a.grid;
 }
 
+void print_probe_lens(const calib::ProbeLensEstimate& lens);
+
 // The call, live: patterns shown on the display (or the simulator) and photographed now.
 // `reference`: the unit's own description, which the report compares the recovered lens with.
 calib::CalibrationOutcome calibrate_live(CalibrateArgs& a,
@@ -109,25 +113,47 @@ calib::CalibrationOutcome calibrate_live(CalibrateArgs& a,
   // Saved as they are taken, so the run can be re-solved offline and resumed.
   if (!a.resume_dir.empty() && !std::filesystem::exists(a.resume_dir + "/live-session.json"))
     throw_input_error("--resume {}: no live session there (live-session.json)", a.resume_dir);
+  // A panel nobody described: DIR holds its lens probes (`lfd patterns --screen`), which round
+  // 1 shows; the session is saved beside them.
+  if (!a.dir.empty() &&
+      std::filesystem::exists(std::filesystem::path(a.dir) / "patterns" / "manifest.json")) {
+    sim::PatternSet coarse = sim::read_pattern_set(a.dir);
+    if (!coarse.undescribed)
+      throw_input_error("{}/patterns: a described pattern set; --live draws its own patterns "
+                        "from --display (give DIR only for a panel nobody described, or as "
+                        "the session's folder)",
+                        a.dir);
+    lo.probes = std::move(coarse);
+    live::check_live_plan(lo);
+  }
   lo.session_dir = !a.resume_dir.empty() ? std::filesystem::path(a.resume_dir)
+                   : lo.probes           ? std::filesystem::path(a.dir) / "live"
                    : !a.dir.empty()      ? std::filesystem::path(a.dir)
                                          : std::filesystem::path(a.out_path).parent_path() / "live-capture";
   if (std::filesystem::exists(lo.session_dir / "live-session.json"))
     std::fprintf(stderr, "resuming the live session in %s\n", lo.session_dir.string().c_str());
-  if (!a.display_source.given())
-    throw_input_error("--live needs --display or --device (the nominal description to start from)");
-  const display::Calibration nominal = a.display_source.load();
+  if (!lo.probes && !a.display_source.given())
+    throw_input_error("--live needs --display or --device (the nominal description to start "
+                      "from), or DIR with the lens probes of a panel nobody described (`lfd "
+                      "patterns --screen WxH --dpi D --out DIR`)");
+  if (lo.probes && a.display_source.given())
+    throw_input_error("--live {}: the panel's lens probes, or --display: not both", a.dir);
+  const display::Calibration nominal = lo.probes ? lo.probes->nominal : a.display_source.load();
   // The cone gate would refuse the result: say so before anything is shown.
   if (options.camera && a.positions < 2 && !options.view_cone_deg &&
       !nominal.view_cone_measured_deg)
     throw_input_error("--positions 1: one camera position cannot measure the view cone (the "
                       "pitch absorbs its error); give it with --view-cone, or use --positions 2 "
                       "or more at different distances");
-  reference = report::ReferenceCalibration{nominal, a.display_source.name()};
-  return a.simulate_path.empty()
-             ? live::run_live_calibration_on_hardware(nominal, lo)
-             : live::run_live_calibration_simulated(
-                   nominal, display::read_calibration(a.simulate_path), lo);
+  if (!lo.probes) reference = report::ReferenceCalibration{nominal, a.display_source.name()};
+  lo.on_probes = [](const calib::ProbeRound& found) { print_probe_lens(found.lens); };
+  calib::CalibrationOutcome outcome =
+      a.simulate_path.empty()
+          ? live::run_live_calibration_on_hardware(nominal, lo)
+          : live::run_live_calibration_simulated(
+                nominal, display::read_calibration(a.simulate_path), lo);
+  a.solved_dir = live::capture_folder_of(lo.session_dir);
+  return outcome;
 }
 
 // The call, offline: the photographs in DIR (a live session's folder: its last round).
@@ -153,9 +179,18 @@ calib::CalibrationOutcome calibrate_from_folder(
   }
   std::vector<std::string> warnings;
   const auto captures = sim::read_captures(dir, set, warnings);
+  a.solved_dir = dir;
   calib::CalibrationOutcome outcome = calib::calibrate_display(set, captures, a.options);
   outcome.warnings.insert(outcome.warnings.begin(), warnings.begin(), warnings.end());
   return outcome;
+}
+
+// What the probes showed.
+void print_probe_lens(const calib::ProbeLensEstimate& lens) {
+  std::printf("lens from the probes (%s): pitch %.4f lpi, slant %+.4f deg (slope %.5f), %s "
+              "stripes; probe %d, moire %.1f times its surroundings\n",
+              lens.position.c_str(), lens.pitch_lpi, lens.slant_deg, lens.slope,
+              lens.bgr ? "BGR" : "RGB", lens.chosen.probe, lens.chosen.strength);
 }
 
 // A panel nobody described, step 1 (DIR holds the probes' photos, DIR/fine nothing yet): the
@@ -165,18 +200,12 @@ void measure_probes_and_draw_fine_set(const std::string& dir, const sim::Pattern
   std::vector<std::string> warnings;
   const auto captures = sim::read_captures(dir, coarse, warnings);
   for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
-  const calib::ProbeLensEstimate lens = calib::measure_lens_from_probes(coarse, captures.front());
-  calib::UndescribedAssumptions assumptions;
-  assumptions.cover = coarse.nominal.display.cover;
-  assumptions.cover_given = assumptions.cover.present();
-  const display::Calibration description = calib::description_from_probes(coarse, lens, assumptions);
-  const sim::PatternSet fine = calib::plan_fine_patterns(coarse, description);
+  const calib::ProbeRound round = calib::fine_set_from_probes(coarse, captures.front());
+  const calib::ProbeLensEstimate& lens = round.lens;
+  const sim::PatternSet& fine = round.fine;
   const auto fine_dir = calib::fine_folder(dir);
   sim::write_pattern_set(fine_dir, fine, false);
-  std::printf("lens from the probes (%s): pitch %.4f lpi, slant %+.4f deg (slope %.5f), %s "
-              "stripes; probe %d, moire %.1f times its surroundings\n",
-              lens.position.c_str(), lens.pitch_lpi, lens.slant_deg, lens.slope,
-              lens.bgr ? "BGR" : "RGB", lens.chosen.probe, lens.chosen.strength);
+  print_probe_lens(lens);
   std::printf("wrote the fine set for it to %s/patterns (%zu patterns)\nnext: photograph them "
               "from 2-3 positions at clearly different distances (%s/captures/<position>/), "
               "then run `lfd calibrate %s` again\n",
@@ -239,7 +268,6 @@ int RunCalibrate(int argc, char** argv) {
   if (auto code = parse(app, argc, argv)) return *code;
   check_outputs_and_read_camera(args);
   // A panel nobody described: its probes first, then (DIR/fine photographed) the fine set.
-  std::optional<calib::UndescribedAssumptions> undescribed;
   if (!args.live && !args.dir.empty() &&
       std::filesystem::exists(std::filesystem::path(args.dir) / "patterns" / "manifest.json")) {
     const sim::PatternSet coarse = sim::read_pattern_set(args.dir);
@@ -249,11 +277,7 @@ int RunCalibrate(int argc, char** argv) {
         measure_probes_and_draw_fine_set(args.dir, coarse);
         return 0;
       }
-      undescribed = calib::UndescribedAssumptions{};
-      undescribed->cover = coarse.nominal.display.cover;
-      undescribed->cover_given = undescribed->cover.present();
       args.dir = fine.string();
-      args.options.colour_order.estimate = true;  // the probes' reading, checked by the photos
     }
   }
   // The unit's own description (its factory calibration with --device): the report compares
@@ -261,9 +285,10 @@ int RunCalibrate(int argc, char** argv) {
   std::optional<report::ReferenceCalibration> reference;
   const calib::CalibrationOutcome outcome =
       args.live ? calibrate_live(args, reference) : calibrate_from_folder(args, reference);
-  if (undescribed) {
-    const sim::PatternSet fine = sim::read_pattern_set(args.dir);
-    const auto what = calib::undescribed_report(fine.nominal, *undescribed);
+  // The fine set of a panel nobody described (offline or live): what was measured, assumed.
+  if (const sim::PatternSet solved = sim::read_pattern_set(args.solved_dir);
+      calib::from_probes(solved)) {
+    const auto what = calib::undescribed_report(solved.nominal, calib::assumptions_of(solved));
     std::printf("undescribed panel: %s\n", what.dump().c_str());
     if (!args.report_dir.empty()) {
       std::filesystem::create_directories(args.report_dir);

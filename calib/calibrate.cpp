@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "calib/calibration_stages.hpp"
+#include "calib/undescribed.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -88,11 +89,16 @@ void CalibrateOptions::check() const {
   require_field(min_phase_samples >= 1, where, "min_phase_samples", "must be at least 1");
 }
 
+namespace {
 // The controller: the stages of calibration_stages.hpp in order.
+CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
+                                    const std::vector<sim::PositionCaptures>& positions,
+                                    const CalibrateOptions& options);
+}  // namespace
+
 CalibrationOutcome calibrate_display(const sim::PatternSet& set,
                                      const std::vector<sim::PositionCaptures>& positions,
                                      const CalibrateOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
   options.check();
   if (options.view_cone_deg) {
     // The known cone becomes the nominal's, marked as measured (assemble_calibration keeps it).
@@ -104,6 +110,35 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     rest.view_cone_deg.reset();
     return calibrate_display(known, positions, rest);
   }
+  if (from_probes(set) && !options.colour_order.estimate) {
+    // An undescribed panel's fine set: the subpixel order the probes read is a measurement
+    // too, which the photos confirm or replace (docs/calibration.md, "A panel nobody described").
+    CalibrateOptions measured = options;
+    measured.colour_order.estimate = true;
+    return calibrate_display(set, positions, measured);
+  }
+  if (from_probes(set) && !set.nominal.view_cone_measured_deg && positions.size() >= 2 &&
+      options.solver.fit_view_cone) {
+    // Its view cone is assumed until the photos measure it, and registration's lens-shift
+    // correction depends on it (3.1: up to half a lens per point, a coarse sheet's 0.6 mm):
+    // registered and solved again with the cone the first solve measured.
+    const CalibrationOutcome first = calibrate_stages(set, positions, options);
+    sim::PatternSet measured = set;
+    measured.nominal.display.view_cone_deg = first.calibration.display.view_cone_deg;
+    CalibrationOutcome out = calibrate_stages(measured, positions, options);
+    out.calibration.view_cone_nominal_deg = set.nominal.display.view_cone_deg;  // the assumption
+    out.seconds += first.seconds;
+    return out;
+  }
+  return calibrate_stages(set, positions, options);
+}
+
+namespace {
+
+CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
+                                    const std::vector<sim::PositionCaptures>& positions,
+                                    const CalibrateOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
   check_positions(positions, options);
   CalibrationOutcome out;
   const PatternRoles roles(set);
@@ -132,7 +167,6 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     refine_self_calibration(set, options, boards, states, out);
     for (size_t i = 0; i < positions.size(); ++i) {
       const PositionContext ctx = context(i);
-      states[i].fringe = {};
       register_position(ctx, states[i]);
       refine_with_fringes(ctx, states[i]);
     }
@@ -159,6 +193,8 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
+
+}  // namespace
 
 void enforce_gates(const CalibrationOutcome& outcome) {
   if (outcome.gate_failures.empty()) return;

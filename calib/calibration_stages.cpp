@@ -16,6 +16,7 @@
 #include "display/view_count.hpp"
 #include "calib/registration/fringe_registration.hpp"
 #include "calib/camera/planar_camera_calibration.hpp"
+#include "sim/corner_markers.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -148,18 +149,64 @@ void choose_camera(const CalibrateOptions& options, const std::vector<BoardDetec
         rms));
 }
 
+namespace {
+
+// The outer corners of the white photo's corner markers (sim/corner_markers.hpp), each found
+// near where the board's pose puts it: correspondences at the screen's corners. The board
+// alone spans the middle of the screen (a coarse sheet's board has 4 squares on the short
+// side), and a planar pose from a small patch trades lateral position for rotation: on the
+// 20 LPI sheet its camera came out 66 mm off at 1.6x distance, enough to pick wrong fringe
+// orders (docs/calibration.md, section 3.1).
+ExtraPoints corner_marker_points(const PositionContext& ctx, const Registration& board_pose) {
+  const sim::PatternSet& set = ctx.set;
+  const sim::PatternInfo* white = ctx.roles.white.at(0);
+  const auto found =
+      detect_corner_marker_corners(sim::to_gray8(ctx.captures.image(PatternRoles::stem(white))));
+  const display::DisplayCalibration& nd = set.nominal.display;
+  const cv::Size size = ctx.board.image_size;
+  const double search = ctx.options.marker_search_fraction * std::hypot(size.width, size.height);
+  ExtraPoints out;
+  for (int corner = 0; corner < 4; ++corner) {
+    const auto it = found.find(4 * sim::marker_group(white->index) + corner);
+    if (it == found.end()) continue;
+    const std::array<cv::Point2d, 4> panel = sim::marker_outer_corners_px(set.markers, corner);
+    std::vector<display::ScreenUV> uv;
+    for (const auto& p : panel) uv.push_back(panel_px_to_uv(nd, p));
+    const std::vector<cv::Point2d> predicted = board_pose.uv_to_image(uv);
+    for (size_t k = 0; k < 4; ++k)
+      if (cv::norm(predicted[k] - it->second[k]) <= search) {
+        out.image_px.emplace_back(it->second[k]);
+        out.panel_px.push_back(panel[k]);
+      }
+  }
+  return out;
+}
+
+// `points` with their lens shifts for a camera at `camera`.
+ExtraPoints shifted(ExtraPoints points, const LensShift& shift, const Eigen::Vector3d& camera) {
+  points.shift_px.clear();
+  for (const auto& p : points.panel_px) points.shift_px.push_back(shift.correction_px(p, camera));
+  return points;
+}
+
+}  // namespace
+
 void register_position(const PositionContext& ctx, PositionState& state) {
   const std::string board_path = ctx.captures.path(PatternRoles::stem(ctx.roles.board));
   auto& reg = state.registration;
   try {
     reg.emplace(ctx.board, ctx.set, ctx.camera);
-    // The lens array shows each board corner displaced by the lens content shift along the
-    // row (lens_relations.hpp); move the corners back for the pose.
+    const ExtraPoints markers = corner_marker_points(ctx, *reg);
+    reg.emplace(ctx.board, ctx.set, ctx.camera, std::vector<cv::Point2d>{},
+                shifted(markers, ctx.shift, reg->camera_position_m()));
+    // The lens array shows each board corner (and marker corner) displaced by the lens content
+    // shift along the row (lens_relations.hpp); move them back for the pose.
     const Eigen::Vector3d c0 = reg->camera_position_m();
     state.board_shift.clear();
     for (int id : ctx.board.ids)
       state.board_shift.push_back(ctx.shift.correction_px(ctx.set.board.corners_px.at(size_t(id)), c0));
-    reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift);
+    state.extra = shifted(markers, ctx.shift, c0);
+    reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift, state.extra);
   } catch (const InputError& e) {
     throw_input_error("{}: {}", board_path, e.what());
   }
@@ -301,7 +348,12 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
   fringe_options.exposure_row_gain = ctx.options.decode.exposure_row_gain;
   const FringeCorrespondences dense = decode_fringes(
       images(ctx.roles.fringe_x), images(ctx.roles.fringe_y), *reg, ctx.set, fringe_options);
-  ExtraPoints extra;
+  // The markers stay beside the fringe points: a coarse sheet's lens sampling moves their
+  // detected corners by up to a lens (2-5 px on the 20 LPI sheet), but from the farthest
+  // position, where the screen spans ~1000 fringe blocks, the fringes alone left the camera
+  // 4.5 mm off and with the markers 1.6 mm (docs/calibration.md, section 3.1).
+  ExtraPoints extra = state.extra;
+  const size_t markers = extra.image_px.size();
   const Eigen::Vector3d camera = reg->camera_position_m();
   for (size_t k = 0; k < dense.image_px.size(); ++k) {
     // Blocks where the seen view wraps mix content a lens apart: no clean position.
@@ -312,17 +364,17 @@ void refine_with_fringes(const PositionContext& ctx, PositionState& state) {
     extra.shift_px.push_back(ctx.shift.correction_px(dense.panel_px[k], camera));
   }
   PositionReport& rep = state.report;
-  rep.fringe_points = long(extra.image_px.size());
-  if (extra.image_px.size() >= size_t(ctx.options.min_fringe_points)) {
+  rep.fringe_points = long(extra.image_px.size() - markers);
+  if (rep.fringe_points >= ctx.options.min_fringe_points) {
     reg.emplace(ctx.board, ctx.set, ctx.camera, state.board_shift, extra);
-    state.fringe = extra;
+    state.extra = extra;
     rep.reprojection_rms_px = reg->reprojection_rms_px();
     rep.camera_m = reg->camera_position_m();
   } else {
     ctx.warnings.push_back(fmt::format(
         "{}: only {} fringe blocks decoded; registration from the board alone (less "
         "accurate center); check focus and exposure of the fringe photos",
-        pc.name, extra.image_px.size()));
+        pc.name, rep.fringe_points));
   }
 }
 
@@ -351,7 +403,7 @@ void refine_self_calibration(const sim::PatternSet& set, const CalibrateOptions&
       v.panel_m.push_back(panel_m(set.board.corners_px.at(size_t(b.ids[k])) + states[i].board_shift.at(k)));
       v.image_px.push_back(b.image_px[k]);
     }
-    const ExtraPoints& f = states[i].fringe;
+    const ExtraPoints& f = states[i].extra;
     const size_t stride = std::max<size_t>(1, (f.image_px.size() + kMaxFringePoints - 1) / kMaxFringePoints);
     for (size_t k = 0; k < f.image_px.size(); k += stride) {
       v.panel_m.push_back(panel_m(f.panel_px[k] + f.shift_px[k]));
@@ -450,7 +502,7 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
     sim::CameraIntrinsics longer = ctx.camera;
     longer.camera_matrix(0, 0) *= 1 + h;
     longer.camera_matrix(1, 1) *= 1 + h;
-    const Registration moved(ctx.board, ctx.set, longer, state.board_shift, state.fringe);
+    const Registration moved(ctx.board, ctx.set, longer, state.board_shift, state.extra);
     pd.camera_per_focal_m = (moved.camera_position_m() - state.registration->camera_position_m()) / h;
   }
   if (known_camera_m) {

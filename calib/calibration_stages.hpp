@@ -78,11 +78,14 @@ struct PositionState {
   std::optional<Registration> registration;
   std::vector<cv::Point2d> board_shift;
   cv::Mat screen_mask;  // the screen in the photo
-  ExtraPoints fringe;   // the fringe points the registration used (empty: board alone)
+  // What the registration used besides the board: the corner markers' outer corners in the
+  // white photo (register_position: at the screen's corners, where a coarse sheet's board of
+  // 4 squares spans only the middle), then the fringe points too (refine_with_fringes).
+  ExtraPoints extra;
   PositionReport report;
 };
 
-// 3.
+// 3. The board's corners and the corner markers' (every pattern but the board has them).
 void register_position(const PositionContext& ctx, PositionState& state);
 // 4.
 void check_exposure(const PositionContext& ctx, PositionState& state);

@@ -40,6 +40,22 @@ sim::PatternSet plan_fine_patterns(const sim::PatternSet& coarse,
   return sim::plan_patterns(description, options);
 }
 
+UndescribedAssumptions assumptions_of(const sim::PatternSet& coarse) {
+  UndescribedAssumptions a;
+  a.cover = coarse.nominal.display.cover;
+  a.cover_given = a.cover.present();
+  return a;
+}
+
+ProbeRound fine_set_from_probes(const sim::PatternSet& coarse,
+                                const sim::PositionCaptures& captures) {
+  ProbeRound r;
+  r.lens = measure_lens_from_probes(coarse, captures);
+  r.description = description_from_probes(coarse, r.lens, assumptions_of(coarse));
+  r.fine = plan_fine_patterns(coarse, r.description);
+  return r;
+}
+
 std::filesystem::path fine_folder(const std::filesystem::path& dir) { return dir / "fine"; }
 
 void check_probe_photos(const std::filesystem::path& dir, const sim::PatternSet& coarse) {

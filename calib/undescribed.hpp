@@ -31,10 +31,25 @@ display::Calibration description_from_probes(const sim::PatternSet& coarse,
                                              const ProbeLensEstimate& lens,
                                              const UndescribedAssumptions& assumptions);
 
+// What the coarse set says of the cover: given to `lfd patterns --screen ... --cover-thickness`,
+// or none (a bare sheet).
+UndescribedAssumptions assumptions_of(const sim::PatternSet& coarse);
+
 // The fine set for the lens the probes found: a described set (phase patterns in its view
 // fractions, board, white, black, fringes) with the coarse set's board.
 sim::PatternSet plan_fine_patterns(const sim::PatternSet& coarse,
                                    const display::Calibration& description);
+
+// The probes' round (`lfd calibrate DIR` on the probe photos, and round 1 of `--live`): the
+// lens the probes show in `captures` (one position), the description it gives and the fine
+// set drawn for it. Throws InputError as measure_lens_from_probes.
+struct ProbeRound {
+  ProbeLensEstimate lens;
+  display::Calibration description;
+  sim::PatternSet fine;
+};
+ProbeRound fine_set_from_probes(const sim::PatternSet& coarse,
+                                const sim::PositionCaptures& captures);
 
 // Where the fine set of an undescribed folder lives: DIR/fine (patterns/ and captures/).
 std::filesystem::path fine_folder(const std::filesystem::path& dir);

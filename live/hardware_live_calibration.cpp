@@ -35,14 +35,18 @@ std::string move_prompt(const CameraMove& move) {
 // Printed once, before the first prompt: every position the session will ask for.
 void print_position_plan(const LiveOptions& options) {
   const auto order = plan_position_order(options.rounds, options.positions,
-                                         options.calibrate.camera.has_value());
+                                         options.calibrate.camera.has_value(),
+                                         options.probes.has_value());
   std::fprintf(stderr, "live calibration: %d round(s) at %d camera position(s):\n",
                options.rounds, options.positions);
   for (size_t r = 0; r < order.size(); ++r) {
     std::string list;
     for (int i : order[r]) list += (list.empty() ? "" : ", ") + std::to_string(i + 1);
-    std::fprintf(stderr, "  round %zu: position%s %s\n", r + 1, order[r].size() > 1 ? "s" : "",
-                 list.c_str());
+    std::fprintf(stderr, "  round %zu: position%s %s%s\n", r + 1, order[r].size() > 1 ? "s" : "",
+                 list.c_str(),
+                 options.probes && r == 0
+                     ? " (the lens probes: head-on, the screen filling 50-70 % of the frame)"
+                     : "");
   }
   if (options.positions > 1)
     std::fprintf(stderr,
@@ -59,6 +63,7 @@ calib::CalibrationOutcome run_live_calibration_on_hardware(const display::Calibr
                                                     const LiveOptions& options) {
   const display::DisplayCalibration& d = nominal.display;
   // Fail before the window and the camera open, not after the first round.
+  check_live_plan(options);
   if (!options.calibrate.camera && options.positions < 3)
     throw_input_error(
         "--live with {} camera position(s) needs the camera's intrinsics (--camera "

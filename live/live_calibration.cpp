@@ -56,20 +56,27 @@ sim::PositionCaptures photograph_position(const sim::PatternSet& set, PatternDis
   return pc;
 }
 
-// The round's patterns: those a resumed round began with, else made for `current`.
-sim::PatternSet round_patterns(LiveSession* session, int round, const display::Calibration& current) {
-  if (!session) return sim::plan_patterns(current);
+// The round's patterns: those a resumed round began with, else `make()`.
+sim::PatternSet round_patterns(LiveSession* session, int round,
+                               const std::function<sim::PatternSet()>& make) {
+  if (!session) return make();
   if (auto saved = session->saved_patterns(round)) return *saved;
-  return session->save_patterns(round, sim::plan_patterns(current));
+  return session->save_patterns(round, make());
 }
 
 }  // namespace
 
 std::vector<std::vector<int>> plan_position_order(int rounds, int positions,
-                                                  bool intrinsics_given) {
+                                                  bool intrinsics_given, bool probes_first) {
   rounds = std::max(1, rounds);
   positions = std::max(1, positions);
   std::vector<std::vector<int>> order;
+  if (probes_first) {
+    order.push_back({0});
+    for (auto& here : plan_position_order(rounds - 1, positions, intrinsics_given))
+      order.push_back(std::move(here));
+    return order;
+  }
   int camera_at = 0;
   for (int r = 1; r <= rounds; ++r) {
     const bool intrinsics_known = intrinsics_given || r > 1;  // round 1 self-calibrates them
@@ -87,13 +94,24 @@ std::vector<std::vector<int>> plan_position_order(int rounds, int positions,
   return order;
 }
 
+void check_live_plan(const LiveOptions& options) {
+  if (options.probes && options.rounds < 2)
+    throw_input_error("--rounds {}: a panel nobody described needs 2 rounds or more (the lens "
+                      "probes, then the fine set drawn for the lens they show)",
+                      options.rounds);
+}
+
 calib::CalibrationOutcome run_live_calibration(const display::Calibration& nominal, PatternDisplay& display,
                                         FrameSource& camera, const LiveOptions& options) {
   const int positions = std::max(1, options.positions);
   const int rounds = std::max(1, options.rounds);
+  check_live_plan(options);
+  const sim::PatternSet* probes = options.probes ? &*options.probes : nullptr;
+  const int first_solve = probes ? 2 : 1;  // the round whose photos calibrate_display solves first
   std::optional<LiveSession> session;
   if (!options.session_dir.empty()) session.emplace(options.session_dir, LiveSessionPlan{rounds, positions});
-  const auto order = plan_position_order(rounds, positions, options.calibrate.camera.has_value());
+  const auto order =
+      plan_position_order(rounds, positions, options.calibrate.camera.has_value(), probes);
 
   display::Calibration current = nominal;
   calib::CalibrationOutcome outcome;
@@ -103,10 +121,13 @@ calib::CalibrationOutcome run_live_calibration(const display::Calibration& nomin
     const std::vector<int>& here = order[size_t(round - 1)];
     calib::CalibrateOptions co = options.calibrate;
     // Too few positions to self-calibrate: the previous round's self-calibrated intrinsics.
-    if (!co.camera && here.size() < kSelfCalibrationPositions && round > 1)
+    if (!co.camera && here.size() < kSelfCalibrationPositions && round > first_solve)
       co.camera = outcome.camera;
     LiveSession* s = session ? &*session : nullptr;
-    const sim::PatternSet set = round_patterns(s, round, current);
+    const sim::PatternSet set = round_patterns(s, round, [&] {
+      if (probes) return round == 1 ? *probes : calib::plan_fine_patterns(*probes, current);
+      return sim::plan_patterns(current);
+    });
     if (s) s->save_camera(round, co.camera);
 
     std::map<int, sim::PositionCaptures> captures;  // by position, as `lfd calibrate` orders them
@@ -129,6 +150,12 @@ calib::CalibrationOutcome run_live_calibration(const display::Calibration& nomin
     }
     std::vector<sim::PositionCaptures> list;
     for (auto& [index, pc] : captures) list.push_back(std::move(pc));
+    if (set.undescribed) {  // the probes: the lens they show draws the next round's patterns
+      const calib::ProbeRound found = calib::fine_set_from_probes(set, list.front());
+      if (options.on_probes) options.on_probes(found);
+      current = found.description;
+      continue;
+    }
     outcome = calib::calibrate_display(set, list, co);
     if (options.on_round) options.on_round(round, outcome);
     current = outcome.calibration;

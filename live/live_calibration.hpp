@@ -17,6 +17,12 @@
 // exactly as `lfd calibrate DIR` reads them, and with a session folder they are saved as
 // they are taken (live/live_session.hpp): re-solvable offline and resumable.
 //
+// A panel nobody described (LiveOptions::probes; docs/calibration.md, "A panel nobody
+// described"): round 1 shows the lens probes of `lfd patterns --screen` and photographs them
+// where the camera stands; the lens they show (calib::fine_set_from_probes, what `lfd
+// calibrate DIR` does with the same photos offline) draws round 2's fine set, which is
+// photographed and solved as a described unit's; later rounds refine as above.
+//
 // Camera positions are visited as few times as the rounds allow: a round before the last
 // only needs one position once the intrinsics are known (given, or self-calibrated by round
 // 1 from all positions), so it stays where the camera stands; the last round photographs
@@ -24,10 +30,12 @@
 // is asked for once.
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "calib/calibrate.hpp"
+#include "calib/undescribed.hpp"
 #include "live/live_devices.hpp"
 
 namespace lfd::live {
@@ -68,11 +76,23 @@ struct LiveOptions {
   std::function<void(const CameraMove&)> move_camera;
   // Called after each round with its number and outcome (progress, tests).
   std::function<void(int, const calib::CalibrationOutcome&)> on_round;
+  // A panel nobody described: the coarse set (sim::plan_undescribed_patterns) round 1 shows
+  // instead of patterns drawn for a description; rounds >= 2. The nominal passed to the loop
+  // is its screen (probes->nominal).
+  std::optional<sim::PatternSet> probes;
+  // Called after the probes' round with the lens they show and the fine set drawn for it.
+  std::function<void(const calib::ProbeRound&)> on_probes;
 };
 
-// The positions (0-based) each round photographs, in order (see above): `rounds` lists.
+// The positions (0-based) each round photographs, in order (see above): `rounds` lists. With
+// `probes_first` round 1 (the probes) photographs where the camera stands (position 1) and the
+// rest are planned as `rounds - 1` rounds.
 std::vector<std::vector<int>> plan_position_order(int rounds, int positions,
-                                                  bool intrinsics_given);
+                                                  bool intrinsics_given, bool probes_first = false);
+
+// Refuses (InputError) a plan the loop cannot run: a panel nobody described in fewer than 2
+// rounds. The loop checks it first; the hardware mode before the window and camera open.
+void check_live_plan(const LiveOptions& options);
 
 // The loop: `options.rounds` rounds starting from the nominal description. Throws
 // InputError for captures calibrate_display refuses or a session folder that does not fit.

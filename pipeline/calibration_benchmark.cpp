@@ -155,8 +155,6 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
   row.camera_self_calibrated = self_calibrate;
   calib::CalibrateOptions options;
   if (!self_calibrate) options.camera = rig.intrinsics;
-  // The probes' subpixel order is a measurement too: the photos confirm or replace it.
-  options.colour_order.estimate = calib::from_probes(set);
   options.decode.correct_exposure_drift = !o.no_exposure_fix;
   options.decode.exposure_row_gain = !o.no_row_exposure_fix;
   options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
@@ -236,9 +234,9 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
   const auto t0 = std::chrono::steady_clock::now();
   const auto coarse_captures = cached_captures(
       o.cache_dir, capture_cache_key(o, d, seed, coarse, unit) + "-probes", coarse, unit.truth, first);
-  calib::ProbeLensEstimate lens;
+  calib::ProbeRound found;
   try {
-    lens = calib::measure_lens_from_probes(coarse, coarse_captures.front());
+    found = calib::fine_set_from_probes(coarse, coarse_captures.front());
   } catch (const std::exception& ex) {
     measured.failure = std::string("probes: ") + ex.what();
     measured.simulate_s = seconds_since(t0);
@@ -246,6 +244,7 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
     rows.push_back(measured);
     return;
   }
+  const calib::ProbeLensEstimate& lens = found.lens;
   const double true_slant = display::slant_deg_of_slope(t.slope);
   measured.probes = {{"probes", coarse.probes.size()},
                      {"photos", coarse.patterns.size()},
@@ -257,8 +256,7 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
                      {"subpixel_order_right", lens.bgr == t.flip_subp},
                      {"probe", lens.chosen.probe},
                      {"strength", lens.chosen.strength}};
-  const sim::PatternSet fine =
-      calib::plan_fine_patterns(coarse, calib::description_from_probes(coarse, lens, {}));
+  const sim::PatternSet& fine = found.fine;
   // The fine set is drawn for what the probes found: that is in its key too.
   const std::string fine_key = fmt::format("{}-fine-lpi{:.6f}-slope{:.6f}-{}",
                                            capture_cache_key(o, d, seed, fine, unit),

@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "display/lens_model.hpp"
+#include "sim/corner_markers.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
@@ -68,8 +69,8 @@ void draw_corner_markers(const PatternSet& set, int index, Image8& image) {
   for (int corner = 0; corner < 4; ++corner) {
     cv::Mat marker;
     cv::aruco::drawMarker(dict, 4 * marker_group(index) + corner, m.side_px, marker, 1);
-    const int x0 = int(std::lround(m.centres_px[corner].x + 0.5 - m.side_px / 2.0));
-    const int y0 = int(std::lround(m.centres_px[corner].y + 0.5 - m.side_px / 2.0));
+    const cv::Point origin = marker_origin_px(m, corner);
+    const int x0 = origin.x, y0 = origin.y;
     for (int y = y0 - m.quiet_px; y < y0 + m.side_px + m.quiet_px; ++y)
       for (int x = x0 - m.quiet_px; x < x0 + m.side_px + m.quiet_px; ++x) {
         if (x < 0 || y < 0 || x >= image.width || y >= image.height) continue;

@@ -41,4 +41,15 @@ UndescribedPanel small_undescribed_panel() {
   return p;
 }
 
+PatternSet small_undescribed_probes() {
+  const display::DisplayCalibration d = small_undescribed_panel().display;
+  PatternOptions options;
+  options.board_squares_short = 4;
+  ProbeOptions probes;
+  probes.min_lpi = 20;
+  probes.max_lpi = 60;
+  probes.camera_px_across = 340;
+  return plan_undescribed_patterns(d.screen_w, d.screen_h, d.dpi, options, probes);
+}
+
 }  // namespace lfd::sim

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "display/display_calibration.hpp"
+#include "sim/patterns.hpp"
 
 namespace lfd::sim {
 
@@ -23,5 +24,9 @@ std::vector<UndescribedPanel> undescribed_panels();
 // A small panel the test suite can afford: 640x400 at 100 DPI under a 35 LPI sheet slanted
 // +11 degrees, BGR.
 UndescribedPanel small_undescribed_panel();
+// Its coarse set as the tests photograph it with a 640-px camera (the screen spans ~340 px of
+// it): 4 board squares on the short side (as `lfd patterns --screen` draws them) and a
+// narrower pitch range (20-60 LPI) than the default, which keeps the photos few.
+PatternSet small_undescribed_probes();
 
 }  // namespace lfd::sim

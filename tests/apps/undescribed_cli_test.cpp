@@ -58,6 +58,26 @@ TEST(UndescribedCli, NoProbePhotosAreNamed) {
   EXPECT_FALSE(fs::exists(dir / "fine"));
 }
 
+// `lfd calibrate --live DIR` on the probes' folder: the probes are round 1, so one round is
+// too few, and a --display beside them is a second description; both refused before anything
+// is shown or saved.
+TEST(UndescribedCli, LiveNeedsTwoRoundsAndNoSecondDescription) {
+  const fs::path dir = fresh("live");
+  ASSERT_EQ(run_lfd("patterns --screen 320x200 --dpi 60 --min-lpi 8 --max-lpi 20 --out " +
+                    dir.string()).exit_code, 0);
+  const std::string live = "calibrate --live " + dir.string() + " --simulate " +
+                           (dir / "truth.json").string() + " --out " + (dir / "cal.json").string();
+  auto r = run_lfd(live + " --rounds 1");
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("--rounds 1: a panel nobody described needs 2 rounds"), std::string::npos)
+      << r.output;
+  r = run_lfd(live + " --display " + (dir / "truth.json").string());
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("not both"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir / "live"));
+  EXPECT_FALSE(fs::exists(dir / "cal.json"));
+}
+
 TEST(UndescribedCli, ScreenNeedsDpiAndASize) {
   const fs::path dir = fresh("bad_screen");
   auto r = run_lfd("patterns --screen 1920x1200 --out " + dir.string());

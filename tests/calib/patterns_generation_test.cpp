@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "display/lens_model.hpp"
+#include "sim/corner_markers.hpp"
 #include "sim/patterns.hpp"
 #include "calib/registration/registration.hpp"
 #include "display/visual_json.hpp"
@@ -94,6 +95,24 @@ TEST(PatternsGeneration, CornerMarkersEncodeThePatternIndex) {
     EXPECT_EQ(id / 4, p.index);
     const cv::Point2d expected = set.markers.centres_px.at(size_t(id % 4));
     EXPECT_LT(cv::norm(cv::Point2d(centre.x * 4 + 1.5, centre.y * 4 + 1.5) - expected), 3.0);
+  }
+}
+
+// Registration takes the markers' outer corners as correspondences at the screen's corners
+// (sim/corner_markers.hpp): where ArUco finds them in the drawn pattern, in corner order.
+TEST(PatternsGeneration, CornerMarkerOuterCornersAreWhereArucoFindsThem) {
+  const sim::PatternSet set = sim::plan_patterns(portrait());
+  const sim::PatternInfo& p = set.patterns.at(1);
+  const auto found = detect_corner_marker_corners(gray_quarter(sim::render_pattern(set, p)));
+  ASSERT_EQ(found.size(), 4u);
+  for (const auto& [id, corners] : found) {
+    const auto expected = sim::marker_outer_corners_px(set.markers, id % 4);
+    for (size_t k = 0; k < 4; ++k) {
+      // A quarter-size pixel's edge at x sits at full-size 4 x + 1.5 too (both are affine).
+      const cv::Point2d full(corners[k].x * 4 + 1.5, corners[k].y * 4 + 1.5);
+      EXPECT_LT(cv::norm(full - expected[k]), 2.0) << "marker " << id << " corner " << k << ": "
+                                                   << full << " vs " << expected[k];
+    }
   }
 }
 

@@ -21,23 +21,6 @@
 namespace lfd::calib {
 namespace {
 
-// The test's probes: the small panel's 640-px camera spans ~340 px of it, and a narrower pitch
-// range (20-60 LPI) than the default keeps the photos few.
-sim::ProbeOptions small_probe_options() {
-  sim::ProbeOptions o;
-  o.min_lpi = 20;
-  o.max_lpi = 60;
-  o.camera_px_across = 340;
-  return o;
-}
-
-// Four board squares on the short side: a marker's cells span several lenses of a coarse sheet.
-sim::PatternOptions small_pattern_options() {
-  sim::PatternOptions o;
-  o.board_squares_short = 4;
-  return o;
-}
-
 struct ProbeFixture {
   sim::SyntheticUnit unit;
   sim::PatternSet set;
@@ -50,9 +33,7 @@ const ProbeFixture& probe_fixture() {
     ProbeFixture f;
     const sim::UndescribedPanel panel = sim::small_undescribed_panel();
     f.unit = sim::make_synthetic_unit(panel.display);
-    const auto& d = panel.display;
-    f.set = sim::plan_undescribed_patterns(d.screen_w, d.screen_h, d.dpi, small_pattern_options(),
-                                           small_probe_options());
+    f.set = sim::small_undescribed_probes();
     f.rig = sim::make_capture_rig(f.unit.truth.display, 640, 1, false);
     f.captures = test::cached_captures("undescribed_probes_small_v1", [&] {
       return sim::simulate_captures(f.set, f.unit.truth, f.rig);
@@ -167,8 +148,7 @@ TEST(UndescribedCalibrate, SmallBgrPanelSolvedEndToEnd) {
     return sim::simulate_captures(fine, f.unit.truth, rig);
   });
   CalibrateOptions options;
-  options.camera = rig.intrinsics;
-  options.colour_order.estimate = true;
+  options.camera = rig.intrinsics;  // the colour-order estimate is on for a set from the probes
   const CalibrationOutcome out = calibrate_display(fine, captures, options);
   const sim::CalibrationErrors e = sim::compare_with_truth(out.calibration, f.unit.truth);
   std::printf("slant %.5f deg, pitch %.2e, center %.4f, cone %.3f deg, warp %.4f, phase %.4f\n",
@@ -176,6 +156,16 @@ TEST(UndescribedCalibrate, SmallBgrPanelSolvedEndToEnd) {
               e.correction_rms_periods, e.phase_rms_periods);
   for (const auto& w : out.warnings) std::printf("warning: %s\n", w.c_str());
   for (const auto& g : out.gate_failures) std::printf("gate: %s\n", g.c_str());
+  // Registration (the board's pose, anchored by the corner markers at the screen's corners,
+  // then the fringes): every camera where the rig put it.
+  for (size_t i = 0; i < out.positions.size(); ++i) {
+    const double mm = 1000 * (out.positions[i].camera_m - rig.poses[i].position_m).norm();
+    std::printf("%s registered %.2f mm from the truth\n", out.positions[i].name.c_str(), mm);
+    EXPECT_LT(mm, 3.0) << out.positions[i].name;
+  }
+  // Registered and solved again with the cone the first solve measured; the assumption stays
+  // the cone's nominal.
+  EXPECT_EQ(out.calibration.view_cone_nominal_deg, UndescribedAssumptions{}.view_cone_deg);
   EXPECT_TRUE(out.gate_failures.empty());
   EXPECT_TRUE(out.calibration.display.flip_subp);
   EXPECT_LT(e.slant_deg, 0.002);

@@ -182,6 +182,24 @@ TEST(LivePositionOrder, LaterRoundsStartWhereTheCameraStands) {
   EXPECT_EQ(plan_position_order(2, 3, false), (Order{{0, 1, 2}, {2, 1, 0}}));
   EXPECT_EQ(plan_position_order(3, 3, false), (Order{{0, 1, 2}, {2}, {2, 1, 0}}));
   EXPECT_EQ(plan_position_order(1, 2, false), (Order{{0, 1}}));
+  // A panel nobody described: the probes from where the camera stands, then the fine rounds as
+  // planned on their own (with intrinsics the camera stays for the first fine position).
+  EXPECT_EQ(plan_position_order(2, 3, true, true), (Order{{0}, {0, 1, 2}}));
+  EXPECT_EQ(plan_position_order(3, 3, true, true), (Order{{0}, {0}, {0, 1, 2}}));
+  EXPECT_EQ(plan_position_order(2, 3, false, true), (Order{{0}, {0, 1, 2}}));
+  EXPECT_EQ(plan_position_order(3, 3, false, true), (Order{{0}, {0, 1, 2}, {2, 1, 0}}));
+}
+
+TEST(LivePositionOrder, AnUndescribedPanelNeedsTwoRounds) {
+  LiveOptions o;
+  o.probes = sim::PatternSet{};
+  o.rounds = 1;
+  EXPECT_THROW(check_live_plan(o), InputError);
+  o.rounds = 2;
+  EXPECT_NO_THROW(check_live_plan(o));
+  o.probes.reset();
+  o.rounds = 1;
+  EXPECT_NO_THROW(check_live_plan(o));  // a described unit: one round is a round
 }
 
 }  // namespace

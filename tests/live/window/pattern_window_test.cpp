@@ -40,8 +40,12 @@ TEST(PatternWindow, ShowsThePatternByteForByteOnTheWholeScreen) {
   display::Calibration nominal;
   nominal.display = d;
   const sim::PatternSet set = sim::plan_patterns(nominal);
-  for (const Image8& pattern : {random_pattern(d.screen_w, d.screen_h),
-                                sim::render_pattern(set, *set.of_kind(sim::PatternKind::kPhase).at(1))}) {
+  // A panel nobody described shows lens probes first (`lfd calibrate --live DIR`): gratings on
+  // every subpixel, which any filtering or channel swap would wash out.
+  const sim::PatternSet probes = sim::plan_undescribed_patterns(d.screen_w, d.screen_h, d.dpi);
+  const Image8 phase = sim::render_pattern(set, *set.of_kind(sim::PatternKind::kPhase).at(1));
+  const Image8 probe = sim::render_pattern(probes, *probes.of_kind(sim::PatternKind::kProbe).at(4));
+  for (const Image8& pattern : {random_pattern(d.screen_w, d.screen_h), phase, probe}) {
     window.show(pattern);
     EXPECT_EQ(differing_bytes(window.read_back(), pattern), 0) << "framebuffer";
     EXPECT_EQ(differing_bytes(test::grab_x11_screen(), pattern), 0) << "X screen";
