@@ -83,8 +83,8 @@ T psi_linear(const DisplayConstants& dc, const T* lens, const T* cam, const T& d
 }
 
 // The data term. Parameter blocks: lens (4), camera (3), the cover's change of thickness (1),
-// then the 16 control points whose
-// B-spline basis covers the sample (one block each, so the Jacobian stays sparse). The
+// then the 16 control points whose B-spline basis covers the sample (one block each, so the
+// Jacobian stays sparse). The
 // correction field enters linearly, r = wrap(psi_obs - psi_lin - s w) / sigma, so its
 // derivatives are the basis weights; the rest is differentiated with Jets.
 class PhaseResidual : public ceres::CostFunction {
