@@ -8,8 +8,9 @@
 // where X is the content the lens shows there and delta (< half a lens, horizontal) the mean
 // offset to it (see lens_solver.cpp). Unknowns: pitch, slope,
 // center, viewCone, the B-spline correction field w (smoothness prior; gauge: zero mean and
-// zero linear trend, so it cannot absorb center, pitch or slope) and per-position camera
-// positions (priors from the registration). Residuals are wrap-aware
+// zero linear trend, so it cannot absorb center, pitch or slope), per-position camera
+// positions (priors from the registration) and, under its prior, the cover's thickness
+// (SolverOptions::cover_sigma_m). Residuals are wrap-aware
 // (wrap_to_[-0.5, 0.5](psi_obs - psi_model)) under a robust loss; uncertainties come from
 // ceres::Covariance with the samples weighted by their measured noise, plus what a field of
 // twice the resolution changes (SolverOptions::field_refinement).
