@@ -19,7 +19,7 @@ namespace {
 struct BenchCalibrationArgs {
   pipeline::CalibrationBenchmarkOptions o;
   std::string json_path, data_dir = o.data_dir.string(), cache_dir;
-  bool show_poses = false, above_below = false;
+  bool show_poses = false, above_below = false, off_axis = false;
 };
 
 // Options: every flag, mapped onto CalibrationBenchmarkOptions (which checks itself).
@@ -69,12 +69,20 @@ void add_bench_calibration_options(CLI::App& app, BenchCalibrationArgs& a) {
   app.add_flag("--above-below", a.above_below,
                "cameras above and below the screen centre: issue #12's (-0.06, +0.05, 0.45), "
                "(0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled to each display's size");
+  app.add_flag("--off-axis", a.off_axis,
+               "the second camera 30 degrees to the right of the screen's centre, the third 25 "
+               "degrees to the left (the default distances): what tells a cover's thickness")
+      ->excludes("--above-below");
   app.add_flag("--solver-without-vertical-parallax", o.solver_without_vertical_parallax,
                "diagnostic: the solver models the horizontal offset alone (the captures keep "
                "the vertical parallax)");
   app.add_flag("--solver-without-cover", o.solver_without_cover,
                "diagnostic: register and solve as if the panel were bare (the captures keep "
                "the family's acrylic block or cover glass)");
+  app.add_flag("--cover-unknown", o.cover_unknown,
+               "tell the calibration the cover is unknown (0-25 mm) instead of the family's "
+               "estimate: it estimates the thickness where the photos tell it and carries the "
+               "range into every sigma");
   app.add_flag("--bare-panels", o.bare_panels,
                "diagnostic: units without a cover layer (figures before the cover was modelled)");
   app.add_flag("--self-calibrated", o.self_calibrated,
@@ -125,6 +133,7 @@ void print_row(const pipeline::CalibrationBenchmarkRow& r, bool show_poses, int&
   }
   if (show_poses) print_poses(r);
   if (!r.probes.is_null()) std::fprintf(stderr, "  probes: %s\n", r.probes.dump().c_str());
+  if (!r.cover.is_null()) std::fprintf(stderr, "  cover: %s\n", r.cover.dump().c_str());
   failures += r.within_bars ? 0 : 1;
   const auto& e = *r.errors;
   std::string ratios;
@@ -166,6 +175,7 @@ int RunBenchCalibration(int argc, char** argv) {
   o.data_dir = args.data_dir;
   o.cache_dir = args.cache_dir;
   if (args.above_below) o.layout = sim::RigLayout::kAboveBelow;
+  if (args.off_axis) o.layout = sim::RigLayout::kOffAxis;
 
   const pipeline::AccuracyBars bars;
   std::printf("| display | seed | positions | capture | camera | slant err deg | pitch rel err | center err "

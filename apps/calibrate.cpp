@@ -4,6 +4,8 @@
 #include <iostream>
 #include <optional>
 
+#include <fmt/format.h>
+
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibrate.hpp"
@@ -27,6 +29,10 @@ struct CalibrateArgs {
   int camera_index = 0, grid = 8, positions = 1, rounds = 2;
   calib::CalibrateOptions options;
   DisplaySource display_source;
+  // The cover layer (resolved into options.cover by resolve_cover).
+  std::optional<double> cover_thickness_m, cover_sigma_m, cover_index;
+  std::vector<double> cover_range_m;
+  bool cover_unknown = false;
 };
 
 // Options: every flag of `lfd calibrate`, mapped onto CalibrateArgs.
@@ -61,6 +67,25 @@ void add_calibrate_options(CLI::App& app, CalibrateArgs& a) {
   app.add_flag("--estimate-colour-order", options.colour_order.estimate,
                "adopt the subpixel layout the photos favour (RGB, BGR, the description's cells) "
                "instead of refusing a description they contradict");
+  auto* thickness = app.add_option(
+      "--cover-thickness", a.cover_thickness_m,
+      "the cover (acrylic block, glass) in front of the lenses, metres: measured, held unless "
+      "--cover-sigma (default: the family's estimate with its tolerance; for a panel nobody "
+      "described, what `lfd patterns` was given, else unknown)");
+  app.add_option("--cover-sigma", a.cover_sigma_m,
+                 "the --cover-thickness's 1-sigma, metres: the photos refine it where they can, "
+                 "the rest goes into every sigma")
+      ->check(CLI::Range(0.0, 0.5))
+      ->needs(thickness);
+  auto* range = app.add_option("--cover-range", a.cover_range_m,
+                               "the cover lies between MIN and MAX metres (a uniform prior)")
+                    ->expected(2);
+  auto* unknown = app.add_flag("--cover-unknown", a.cover_unknown,
+                               "nothing is known of the cover: 0-25 mm (a uniform prior)");
+  thickness->excludes(range)->excludes(unknown);
+  range->excludes(unknown);
+  app.add_option("--cover-index", a.cover_index, "the cover's refractive index (default 1.49)")
+      ->check(CLI::Range(1.0, 3.0));
   app.add_flag("--force", a.force, "replace existing outputs (a .bak is kept)");
   app.add_flag("--live", a.live, "show patterns on the display and grab camera frames");
   app.add_option("--monitor", a.monitor,
@@ -86,8 +111,35 @@ void add_calibrate_options(CLI::App& app, CalibrateArgs& a) {
                  "live: run against the simulator with this TRUE calibration");
 }
 
+// The cover options into options.cover (unset when none is given: the description's).
+void resolve_cover(CalibrateArgs& a) {
+  const double index = a.cover_index.value_or(display::CoverLayer{}.refractive_index);
+  if (a.cover_unknown) {
+    a.options.cover = calib::CoverGiven::unknown(index);
+  } else if (a.cover_range_m.size() == 2) {
+    const double lo = a.cover_range_m[0], hi = a.cover_range_m[1];
+    if (!(lo >= 0 && hi >= lo && hi < 0.5))
+      throw_input_error("--cover-range {} {}: needs 0 <= MIN <= MAX < 0.5 metres", lo, hi);
+    a.options.cover = calib::CoverGiven::range(
+        lo, hi, index, fmt::format("between {:g} and {:g} mm", 1e3 * lo, 1e3 * hi));
+  } else if (a.cover_thickness_m) {
+    if (!(*a.cover_thickness_m >= 0 && *a.cover_thickness_m < 0.5))
+      throw_input_error("--cover-thickness {}: needs 0 <= M < 0.5 metres", *a.cover_thickness_m);
+    calib::CoverGiven c;
+    c.cover = {*a.cover_thickness_m, index};
+    c.sigma_m = a.cover_sigma_m.value_or(0.0);
+    c.said = c.sigma_m > 0 ? fmt::format("{:g} +- {:g} mm as given", 1e3 * c.cover.thickness_m,
+                                         1e3 * c.sigma_m)
+                           : fmt::format("{:g} mm as given, held", 1e3 * c.cover.thickness_m);
+    a.options.cover = c;
+  } else if (a.cover_index) {
+    throw_input_error("--cover-index needs --cover-thickness, --cover-range or --cover-unknown");
+  }
+}
+
 // Checks: fail before the work, not after it.
 void check_outputs_and_read_camera(CalibrateArgs& a) {
+  resolve_cover(a);
   for (const auto& p : {a.out_path, a.visual_path})
     if (!p.empty() && std::filesystem::exists(p) && !a.force)
       throw_input_error("{}: exists; pass --force to replace it (a .bak is kept)", p);
@@ -242,6 +294,7 @@ void report_and_write(const CalibrateArgs& a, const calib::CalibrationOutcome& o
                 "views %d; %.1f s\n",
                 c.residuals->rms_periods, c.residuals->count, 100 * c.residuals->inlier_fraction,
                 c.recommended_views.value_or(0), outcome.seconds);
+  std::printf("%s\n", calib::cover_summary(outcome).c_str());
   std::printf("wrote %s\n", a.out_path.c_str());
 }
 
@@ -288,7 +341,8 @@ int RunCalibrate(int argc, char** argv) {
   // The fine set of a panel nobody described (offline or live): what was measured, assumed.
   if (const sim::PatternSet solved = sim::read_pattern_set(args.solved_dir);
       calib::from_probes(solved)) {
-    const auto what = calib::undescribed_report(solved.nominal, calib::assumptions_of(solved));
+    auto what = calib::undescribed_report(solved.nominal, calib::assumptions_of(solved));
+    what["cover"] = calib::cover_report(outcome);
     std::printf("undescribed panel: %s\n", what.dump().c_str());
     if (!args.report_dir.empty()) {
       std::filesystem::create_directories(args.report_dir);

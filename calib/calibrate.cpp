@@ -3,8 +3,13 @@
 #include <chrono>
 #include <utility>
 
+#include <cmath>
+
+#include <fmt/format.h>
+
 #include "calib/calibration_stages.hpp"
 #include "calib/undescribed.hpp"
+#include "display/cover_layer.hpp"
 #include "util/error.hpp"
 
 namespace lfd::calib {
@@ -35,6 +40,37 @@ std::string one_position_warning(const sim::PatternSet& set) {
 
 }  // namespace
 
+CoverGiven CoverGiven::range(double min_m, double max_m, double refractive_index, std::string said) {
+  CoverGiven c;
+  c.cover = {0.5 * (min_m + max_m), refractive_index};
+  c.sigma_m = (max_m - min_m) / std::sqrt(12.0);  // a uniform distribution's
+  c.said = std::move(said);
+  return c;
+}
+
+CoverGiven CoverGiven::unknown(double refractive_index) {
+  return range(0, kUnknownMaxM, refractive_index,
+               fmt::format("unknown, 0-{:g} mm", 1e3 * kUnknownMaxM));
+}
+
+CoverGiven CoverGiven::of_description(const display::DisplayCalibration& nominal) {
+  const display::CoverDefault family = display::cover_layer_for_family(nominal);
+  CoverGiven c;
+  c.cover = nominal.cover;
+  if (family.family != "unknown" && nominal.cover.present() &&
+      nominal.cover.thickness_m == family.cover.thickness_m &&
+      nominal.cover.refractive_index == family.cover.refractive_index) {
+    c.sigma_m = family.thickness_sigma_m;
+    c.said = fmt::format("the {} family's estimate, {:g} +- {:g} mm", family.family,
+                         1e3 * family.cover.thickness_m, 1e3 * family.thickness_sigma_m);
+  } else {
+    c.said = nominal.cover.present()
+                 ? fmt::format("{:g} mm as described, held", 1e3 * nominal.cover.thickness_m)
+                 : std::string("none as described, held");
+  }
+  return c;
+}
+
 void CalibrateOptions::check() const {
   const std::string where = "calibrate options";
   gates.check();
@@ -52,6 +88,14 @@ void CalibrateOptions::check() const {
   require_field(solver.threads > 0, where, "solver.threads", "must be positive");
   require_field(!view_cone_deg || (*view_cone_deg > 0 && *view_cone_deg < 180), where,
                 "view_cone_deg", "must lie in (0, 180) degrees");
+  if (cover) {
+    require_field(cover->cover.thickness_m >= 0 && cover->cover.thickness_m < 1, where,
+                  "cover.thickness_m", "must lie in [0, 1) metres");
+    require_field(cover->sigma_m >= 0 && cover->sigma_m < 1, where, "cover.sigma_m",
+                  "must lie in [0, 1) metres");
+    require_field(cover->cover.refractive_index >= 1 && cover->cover.refractive_index < 4, where,
+                  "cover.refractive_index", "must lie in [1, 4)");
+  }
   require_field(solver.max_iterations > 0, where, "solver.max_iterations", "must be positive");
   for (auto [value, field] : {std::pair{solver.loss_scale, "solver.loss_scale"},
                               {solver.linear_loss_scale, "solver.linear_loss_scale"},
@@ -110,6 +154,22 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
     rest.view_cone_deg.reset();
     return calibrate_display(known, positions, rest);
   }
+  const CoverGiven cover = options.cover.value_or(CoverGiven::of_description(set.nominal.display));
+  if (set.nominal.display.cover.thickness_m != cover.cover.thickness_m ||
+      set.nominal.display.cover.refractive_index != cover.cover.refractive_index) {
+    // Registration and the solve read the cover from the nominal: the prior's mean.
+    sim::PatternSet covered = set;
+    covered.nominal.display.cover = cover.cover;
+    CalibrateOptions rest = options;
+    rest.cover = cover;
+    return calibrate_display(covered, positions, rest);
+  }
+  if (from_probes(set) && !options.cover && !assumptions_of(set).cover_given) {
+    // Nobody said what covers the lenses: unknown, not none (docs/calibration.md).
+    CalibrateOptions unknown = options;
+    unknown.cover = CoverGiven::unknown();
+    return calibrate_display(set, positions, unknown);
+  }
   if (from_probes(set) && !options.colour_order.estimate) {
     // An undescribed panel's fine set: the subpixel order the probes read is a measurement
     // too, which the photos confirm or replace (docs/calibration.md, "A panel nobody described").
@@ -139,8 +199,11 @@ CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
                                     const std::vector<sim::PositionCaptures>& positions,
                                     const CalibrateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  // calibrate_display has put the cover given into the nominal (the prior's mean).
+  const CoverGiven cover = options.cover.value_or(CoverGiven::of_description(set.nominal.display));
   check_positions(positions, options);
   CalibrationOutcome out;
+  out.cover_given = cover;
   const PatternRoles roles(set);
 
   const std::vector<BoardDetection> boards = detect_boards(set, roles, positions, options);
@@ -179,6 +242,10 @@ CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
     std::optional<Eigen::Vector3d> known;
     if (!options.known_camera_positions_m.empty()) known = options.known_camera_positions_m[i];
     data.push_back(position_data(ctx, states[i], phase, out.camera_self_calibrated, known));
+    if (cover.sigma_m > 0) {
+      add_cover_derivatives(ctx, states[i], data.back());
+      if (known) data.back().camera_per_cover_m.setZero();  // known without registration
+    }
     phases.push_back(std::move(phase));
     out.positions.push_back(states[i].report);
   }
@@ -186,7 +253,9 @@ CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
 
   const sim::PatternSet solved = check_colour_order(set, options, phases, data, out);
   phases.clear();
-  solve_display(solved, data, options.solver, out);
+  SolverOptions solver = options.solver;
+  solver.cover_sigma_m = cover.sigma_m;
+  solve_display(solved, data, solver, out);
   out.calibration = assemble_calibration(solved, positions, options, out);
   out.gate_failures = options.gates.evaluate(out.calibration, out.solve);
   if (out.colour_order.refused()) out.gate_failures.push_back(out.colour_order.finding);
@@ -201,6 +270,36 @@ void enforce_gates(const CalibrationOutcome& outcome) {
   std::string msg = "calibration rejected by the quality gates (nothing written):";
   for (const auto& f : outcome.gate_failures) msg += "\n  - " + f;
   throw InputError(msg);
+}
+
+nlohmann::ordered_json cover_report(const CalibrationOutcome& o) {
+  const CoverEstimate& c = o.solve.cover;
+  ojson j = {{"given", o.cover_given.said},
+             {"refractive_index", o.cover_given.cover.refractive_index},
+             {"prior_thickness_m", o.cover_given.cover.thickness_m},
+             {"prior_sigma_m", o.cover_given.sigma_m},
+             {"thickness_m", c.free ? c.thickness_m : o.cover_given.cover.thickness_m},
+             {"sigma_m", c.free ? c.sigma_m : 0.0},
+             {"status", !c.free ? "held" : c.measured() ? "measured" : "assumed within its prior"}};
+  if (c.free && std::isfinite(c.photos_sigma_m))
+    j["photos"] = {{"thickness_m", c.photos_m},
+                   {"sigma_m", c.photos_sigma_m},
+                   {"disagreement_sigmas", c.disagreement_sigmas}};
+  return j;
+}
+
+std::string cover_summary(const CalibrationOutcome& o) {
+  const CoverEstimate& c = o.solve.cover;
+  if (!c.free) return fmt::format("cover: {} (assumed; its error is not in the sigmas)", o.cover_given.said);
+  const std::string photos =
+      std::isfinite(c.photos_sigma_m)
+          ? fmt::format("the photos alone say {:.1f} +- {:.1f} mm", 1e3 * c.photos_m,
+                        1e3 * c.photos_sigma_m)
+          : std::string("the photos do not tell it");
+  return fmt::format("cover: {:.1f} +- {:.1f} mm, {} (given: {}; {}; its doubt is in every sigma)",
+                     1e3 * c.thickness_m, 1e3 * c.sigma_m,
+                     c.measured() ? "measured" : "assumed within its prior", o.cover_given.said,
+                     photos);
 }
 
 nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
@@ -244,6 +343,7 @@ nlohmann::ordered_json outcome_report(const CalibrationOutcome& o) {
                  {"position_rms_periods", o.solve.position_rms},
                  {"position_rms_ratios", o.solve.position_rms_ratio},
                  {"stages", o.solve.report}};
+  j["cover"] = cover_report(o);
   if (const FieldRefinement& f = o.solve.field_refinement; f.grid_nx > 0)
     j["solver"]["field_refinement"] = {{"grid", {f.grid_nx, f.grid_ny}},
                                        {"change", f.change},

@@ -25,6 +25,24 @@
 
 namespace lfd::calib {
 
+// The cover layer in front of the lenses as given to the calibration (docs/calibration.md,
+// "The cover layer"): a thickness with its 1-sigma (0: held, taken as measured), or a range,
+// taken as a uniform prior's mean and standard deviation. Registration assumes the mean; the
+// solve estimates the thickness where the photos tell it and otherwise carries the prior's
+// spread into every sigma.
+struct CoverGiven {
+  display::CoverLayer cover;  // the thickness assumed (the prior's mean) and the index
+  double sigma_m = 0;
+  std::string said;           // how it was given, for the report
+  // Unknown: 0-25 mm (the thickest block of a Looking Glass family, docs/display-model.md).
+  static constexpr double kUnknownMaxM = 0.025;
+  static CoverGiven range(double min_m, double max_m, double refractive_index, std::string said);
+  static CoverGiven unknown(double refractive_index = display::CoverLayer{}.refractive_index);
+  // The family's estimate (display/cover_layer.hpp) with its tolerance, when the set's cover is
+  // its family's; else the set's cover held as described.
+  static CoverGiven of_description(const display::DisplayCalibration& nominal);
+};
+
 struct CalibrateOptions {
   std::optional<sim::CameraIntrinsics> camera;  // else self-calibrated from >= 3 positions
   PhaseDecodeOptions decode;
@@ -40,6 +58,9 @@ struct CalibrateOptions {
   // The panel's subpixel order, when not the pattern set's (`--flip-subp`): the classic stride,
   // BGR (true) or RGB (false). The colour-order check compares it with the photos.
   std::optional<bool> flip_subp;
+  // The cover layer, when not the description's (`--cover-thickness`, `--cover-unknown`,
+  // `--cover-range`); unset: CoverGiven::of_description.
+  std::optional<CoverGiven> cover;
   ColourOrderOptions colour_order;  // .estimate: `--estimate-colour-order`
   double max_motion_px = 3.0;          // corner markers may move this much between captures
                                        // (or 0.5 % of the image diagonal, if more)
@@ -99,6 +120,7 @@ struct CalibrationOutcome {
   double camera_focal_sigma_rel = 0;
   std::vector<PositionReport> positions;
   ColourOrderCheck colour_order;
+  CoverGiven cover_given;  // the cover's prior; the solve's estimate is solve.cover
   std::vector<std::string> warnings;
   std::vector<std::string> gate_failures;  // empty when the calibration passed
   double seconds = 0;
@@ -113,7 +135,11 @@ CalibrationOutcome calibrate_display(const sim::PatternSet& set,
 // Throws InputError listing every failed gate and what to change.
 void enforce_gates(const CalibrationOutcome& outcome);
 
-// A JSON report: positions, coarse start, solver summary, gates.
+// A JSON report: positions, coarse start, solver summary, cover, gates.
 nlohmann::ordered_json outcome_report(const CalibrationOutcome& outcome);
+// The cover: as given, as solved, what the photos alone say (report.json "cover"), and one
+// line of it for the terminal.
+nlohmann::ordered_json cover_report(const CalibrationOutcome& outcome);
+std::string cover_summary(const CalibrationOutcome& outcome);
 
 }  // namespace lfd::calib

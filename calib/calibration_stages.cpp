@@ -512,6 +512,29 @@ PositionData position_data(const PositionContext& ctx, const PositionState& stat
   return pd;
 }
 
+void add_cover_derivatives(const PositionContext& ctx, const PositionState& state, PositionData& data,
+                           double step_m) {
+  sim::PatternSet thicker = ctx.set;
+  thicker.nominal.display.cover.thickness_m += step_m;
+  const Registration& reg = *state.registration;
+  const Registration moved(ctx.board, thicker, ctx.camera, state.board_shift, state.fringe);
+  data.camera_per_cover_m = (moved.camera_position_m() - reg.camera_position_m()) / step_m;
+  // The pixel that looked at each sample's panel point, and where the thicker cover puts it.
+  std::vector<display::ScreenUV> uv;
+  uv.reserve(data.samples.size());
+  for (const PhaseSample& s : data.samples) uv.push_back({s.u, s.v});
+  std::vector<cv::Point2f> pixels;
+  for (const cv::Point2d& p : reg.uv_to_image(uv)) pixels.emplace_back(float(p.x), float(p.y));
+  // Both through the same round trip, so that only the cover's change is left.
+  const std::vector<display::ScreenUV> here = reg.image_to_panel_uv(pixels);
+  const std::vector<display::ScreenUV> there = moved.image_to_panel_uv(pixels);
+  data.sample_per_cover.clear();
+  data.sample_per_cover.reserve(uv.size());
+  for (size_t k = 0; k < uv.size(); ++k)
+    data.sample_per_cover.emplace_back(float((there[k].u - here[k].u) / step_m),
+                                       float((there[k].v - here[k].v) / step_m));
+}
+
 sim::PatternSet check_colour_order(const sim::PatternSet& set, const CalibrateOptions& options,
                               const std::vector<DecodedPhase>& phases,
                               std::vector<PositionData>& data, CalibrationOutcome& out) {
@@ -557,6 +580,8 @@ display::Calibration assemble_calibration(const sim::PatternSet& set,
   const display::DisplayCalibration& nd = set.nominal.display;
   display::Calibration c;
   c.display = apply_estimate(nd, out.solve.lens);
+  // A free cover's thickness is the solve's (its sigma is in the uncertainties beside it).
+  if (out.solve.cover.free) c.display.cover.thickness_m = out.solve.cover.thickness_m;
   c.correction = out.solve.correction;
   if (positions.size() >= 2 && options.solver.fit_view_cone) {
     // The measured cone is the cone; the nominal stays beside it for provenance.

@@ -11,6 +11,7 @@
 //   6. refine_with_fringes    dense registration from the fringe photos
 //   7. decode_position_phase  the K-step phase, with its own checks
 //   8. position_data          the samples and the camera prior for the solver
+//   8b. add_cover_derivatives how they move with the cover's thickness (when it is free)
 //   then:
 //   9. check_colour_order     each channel's phase against the subpixel layouts (colour_order.hpp)
 //  10. solve_display          coarse start + one Ceres problem (lens_solver.hpp)
@@ -107,6 +108,12 @@ DecodedPhase decode_position_phase(const PositionContext& ctx, PositionState& st
 PositionData position_data(const PositionContext& ctx, const PositionState& state,
                            const DecodedPhase& phase, bool camera_self_calibrated,
                            const std::optional<Eigen::Vector3d>& known_camera_m);
+
+// 8b. How the registered camera and each sample's panel point move per metre of cover
+// thickness (registered again through a cover `step_m` thicker): the solve frees the
+// thickness with them (SolverOptions::cover_sigma_m, docs/calibration.md "The cover layer").
+void add_cover_derivatives(const PositionContext& ctx, const PositionState& state, PositionData& data,
+                           double step_m = 0.005);
 
 // 9. Sets outcome.colour_order; re-decodes `data`'s samples for the adopted layout (the
 // given one, or with options.colour_order.estimate the one the photos favour) and returns the

@@ -107,10 +107,7 @@ nlohmann::ordered_json undescribed_report(const display::Calibration& probes,
             "subpixel order (colour-order check, adopted)"}},
           {"assumed",
            {{"inv_view", a.inv_view},
-            {"flip_image_x", false},
-            {"cover_thickness_m", a.cover.thickness_m},
-            {"cover_refractive_index", a.cover.refractive_index},
-            {"cover", a.cover_given ? "given" : "not given: a bare sheet assumed"}}}};
+            {"flip_image_x", false}}}};  // the cover: the calibration's report, "cover"
 }
 
 }  // namespace lfd::calib

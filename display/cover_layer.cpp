@@ -21,7 +21,13 @@ struct Family {
 // Gen2 keeps a thinner block; Gen3 and Go are flat panels behind a cover glass (n = 1.52,
 // soda-lime). A measured value belongs in calibration.json's "cover". What an error in t costs
 // is measured in docs/calibration.md (`lfd bench calibration --solver-without-cover`).
+// How far off they may be: a quarter of a block's estimate (a block's depth is judged from the
+// unit's photos and its depth), 1 mm of a cover glass (1-3 mm are usual).
 constexpr double kAcrylic = 1.49, kGlass = 1.52;
+constexpr double kBlockTolerance = 0.25, kGlassToleranceM = 0.001;
+double tolerance_m(const CoverLayer& c) {
+  return c.refractive_index == kGlass ? kGlassToleranceM : kBlockTolerance * c.thickness_m;
+}
 constexpr std::array kFamilies{
     Family{"LKG-2K", "Gen1 8.9\"", 2560, 1600, 338, {0.025, kAcrylic}},
     Family{"LKG-4K", "Gen1 15.6\"", 3840, 2160, 283, {0.030, kAcrylic}},
@@ -37,7 +43,8 @@ constexpr std::array kFamilies{
 
 CoverDefault cover_layer_for_family(const DisplayCalibration& d) {
   for (const Family& f : kFamilies)
-    if (d.serial.starts_with(f.serial_prefix)) return {f.cover, std::string(f.name)};
+    if (d.serial.starts_with(f.serial_prefix))
+      return {f.cover, std::string(f.name), tolerance_m(f.cover)};
   // Gen1 units read over HID carry a bare number as serial: the panel names the family when
   // only one family has it (3840x2160 at 283 DPI is three families', which stay unknown).
   const Family* match = nullptr;
@@ -47,7 +54,7 @@ CoverDefault cover_layer_for_family(const DisplayCalibration& d) {
       match = &f;
       ++matches;
     }
-  if (matches == 1) return {match->cover, std::string(match->name)};
+  if (matches == 1) return {match->cover, std::string(match->name), tolerance_m(match->cover)};
   return {CoverLayer{0.0, kAcrylic}, "unknown"};
 }
 

@@ -12,6 +12,9 @@ namespace lfd::display {
 struct CoverDefault {
   CoverLayer cover;     // thickness 0: a bare panel (unknown family)
   std::string family;   // "Portrait", "Gen1 8.9\"", ... or "unknown"
+  // How far off the estimate may be, 1 sigma (the calibration's prior on the thickness,
+  // docs/calibration.md "The cover layer"); 0 for an unknown family.
+  double thickness_sigma_m = 0;
 };
 
 // By the serial's family prefix (LKG-2K, LKG-4K, LKG-PORT, LKG-A, LKG-B, LKG-H, LKG-J, LKG-E),

@@ -141,14 +141,20 @@ T cover_tan_ratio(const T& tan2_air, double n) {
 // a fixed point whose map contracts by at most (t / D) (n^2 - 1) tan^2 / n^3 (0.006 for a 2 cm
 // block seen from 0.45 m at 30 degrees); six steps from the paraxial D leave under 1e-9 m for
 // any viewer inside +-60 degrees. Differentiable (ceres::Jet) through the iteration.
+// The thickness may be an unknown too (a Jet: the solver estimates it, docs/calibration.md
+// "The cover layer"); t = 0 gives D = dz.
+template <typename T>
+T cover_seen_distance(const T& dx, const T& dy, const T& dz, const T& thickness_m, double n) {
+  const T lateral2 = dx * dx + dy * dy;
+  T d = dz - thickness_m * (1.0 - 1.0 / n);
+  for (int i = 0; i < 6; ++i)
+    d = dz - thickness_m + thickness_m * cover_tan_ratio(T(lateral2 / (d * d)), n);
+  return d;
+}
 template <typename T>
 T cover_seen_distance(const T& dx, const T& dy, const T& dz, const CoverLayer& cover) {
   if (!cover.present()) return dz;
-  const double t = cover.thickness_m, n = cover.refractive_index;
-  const T lateral2 = dx * dx + dy * dy;
-  T d = dz - T(cover.apparent_shift_m());
-  for (int i = 0; i < 6; ++i) d = dz - T(t) + T(t) * cover_tan_ratio(T(lateral2 / (d * d)), n);
-  return d;
+  return cover_seen_distance(dx, dy, dz, T(cover.thickness_m), cover.refractive_index);
 }
 
 // The seen view fraction through a cover: seen_fraction() with the distance the cover makes.

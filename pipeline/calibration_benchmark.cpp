@@ -1,6 +1,7 @@
 #include "pipeline/calibration_benchmark.hpp"
 
 #include <chrono>
+#include <cmath>
 
 #include <fmt/format.h>
 
@@ -103,6 +104,7 @@ nlohmann::ordered_json CalibrationBenchmarkRow::to_json() const {
   row["uncertainty"] = uncertainty;
   row["error_over_sigma"] = error_over_sigma;
   if (!probes.is_null()) row["probes"] = probes;
+  if (!cover.is_null()) row["cover"] = cover;
   row["seconds"] = {{"simulate", simulate_s}, {"calibrate", calibrate_s}, {"solve", solve_s}};
   return row;
 }
@@ -130,9 +132,11 @@ std::string capture_cache_key(const CalibrationBenchmarkOptions& o, const Benchm
                               int seed, const sim::PatternSet& set,
                               const sim::SyntheticUnit& unit) {
   const bool above_below = o.layout == sim::RigLayout::kAboveBelow;
+  const bool off_axis = o.layout == sim::RigLayout::kOffAxis;
   const std::string key = fmt::format(
-      "{}{}{}{}-vp-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
-      o.moving_glare ? "-moving-glare" : "", above_below ? "-above-below" : "", seed,
+      "{}{}{}{}{}-vp-seed{}-w{}-p{}-ss{}-n{}", d.file, o.no_noise ? "-no-noise" : "",
+      o.moving_glare ? "-moving-glare" : "", above_below ? "-above-below" : "",
+      off_axis ? "-off-axis" : "", seed,
       o.width_px, o.positions, o.supersample, set.patterns.size());
   const std::string drift_key =
       o.exposure_drift > 0 ? fmt::format("-drift{}", o.exposure_drift) : "";
@@ -158,6 +162,7 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
   options.decode.correct_exposure_drift = !o.no_exposure_fix;
   options.decode.exposure_row_gain = !o.no_row_exposure_fix;
   options.solver.vertical_parallax = !o.solver_without_vertical_parallax;
+  if (o.cover_unknown) options.cover = calib::CoverGiven::unknown();
   if (o.true_poses)
     for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
   const auto t0 = std::chrono::steady_clock::now();
@@ -181,6 +186,12 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
       row.focal_sigma_rel = out.camera_focal_sigma_rel;
     }
     row.solve_s = out.solve.solve_seconds;
+    row.cover = calib::cover_report(out);
+    row.cover["truth_m"] = unit.truth.display.cover.thickness_m;
+    if (out.solve.cover.free && out.solve.cover.sigma_m > 0)
+      row.error_over_sigma["cover"] =
+          std::abs(out.solve.cover.thickness_m - unit.truth.display.cover.thickness_m) /
+          out.solve.cover.sigma_m;
     for (size_t i = 0; i < out.positions.size(); ++i) {
       const Eigen::Vector3d t = rig.poses[i].position_m;
       row.poses.push_back({out.positions[i].name, t, out.positions[i].camera_m - t,

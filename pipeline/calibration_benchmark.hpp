@@ -63,6 +63,9 @@ struct CalibrationBenchmarkOptions {
   // (photos keep the cover), to measure what ignoring it costs.
   bool bare_panels = false;
   bool solver_without_cover = false;
+  // The calibration is told the cover is unknown (0-25 mm) instead of the family's estimate
+  // (or, for a panel nobody described, none): the cover layer's honest case (issue #36).
+  bool cover_unknown = false;
   // Panels nobody described (sim/undescribed_units.hpp) instead of the shared calibrations:
   // the lens probes photographed from the first position, the fine set drawn for the lens
   // they find, then the same pipeline (docs/calibration.md, "A panel nobody described").
@@ -95,6 +98,8 @@ struct CalibrationBenchmarkRow {
   std::vector<PoseError> poses;
   // Undescribed panels: what the probes found (pitch, slant, subpixel order) against the truth.
   nlohmann::ordered_json probes;
+  // The cover: given, solved, what the photos alone say (calib::cover_report), and the truth.
+  nlohmann::ordered_json cover;
   double simulate_s = 0, calibrate_s = 0, solve_s = 0;
   nlohmann::ordered_json to_json() const;
 };

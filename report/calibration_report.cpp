@@ -122,6 +122,9 @@ std::string result_section(const calib::CalibrationOutcome& o) {
     h += "<tr><td class=\"l\">correction field</td><td>none (--grid 0)</td><td></td><td></td>"
          "</tr>\n";
   }
+  // The cover: measured, assumed within its prior, or held (calib::cover_summary).
+  h += fmt::format("<tr><td class=\"l\">cover layer</td><td colspan=\"3\">{}</td></tr>\n",
+                   html_escape(calib::cover_summary(o)));
   const auto& r = o.solve.residuals;
   h += fmt::format("<tr><td class=\"l\">phase residual rms (lens periods, all samples within {} "
                    "robust sigmas)</td><td>{:.4f}</td><td></td><td></td></tr>\n<tr><td "

@@ -56,11 +56,16 @@ CaptureRig make_capture_rig(const display::DisplayCalibration& d, int width_px, 
   // (docs/calibration.md "How to photograph"); the closest one still sees the whole screen.
   const double lateral = 0.12 * dist;
   const double scale = dist / 0.45;
+  const double tan30 = std::tan(std::numbers::pi / 6), tan25 = std::tan(25 * std::numbers::pi / 180);
   const std::vector<Eigen::Vector3d> spots =
       layout == RigLayout::kAboveBelow
           ? std::vector<Eigen::Vector3d>{{-0.06 * scale, 0.05 * scale, 0.45 * scale},
                                          {0.01 * scale, -0.04 * scale, 0.52 * scale},
                                          {0.07 * scale, 0.03 * scale, 0.60 * scale}}
+      : layout == RigLayout::kOffAxis
+          ? std::vector<Eigen::Vector3d>{{0.0, 0.02 * dist, 1.3 * dist},
+                                         {tan30 * dist, -0.03 * dist, dist},
+                                         {-tan25 * 1.6 * dist, 0.04 * dist, 1.6 * dist}}
           : std::vector<Eigen::Vector3d>{{0.0, 0.02 * dist, 1.3 * dist},
                                          {lateral, -0.03 * dist, dist},
                                          {-lateral, 0.04 * dist, 1.6 * dist}};

@@ -32,65 +32,86 @@ struct DisplayConstants {
   double width_m, height_m;
   double sign;  // s = +1 with invView, -1 without (docs/calibration.md section 3.2)
   bool vertical_parallax;  // false: the model of horizontal offsets only (for comparison)
-  display::CoverLayer cover;        // held at the nominal's value (docs/calibration.md, "The cover layer")
+  // The nominal's cover: registration used its thickness; the solve may move it (by `dt`,
+  // SolverOptions::cover_sigma_m; docs/calibration.md, "The cover layer").
+  display::CoverLayer cover;
   static DisplayConstants of(const display::DisplayCalibration& d, bool vertical_parallax) {
     return {d.geometry(), d.width_m(), d.height_m(), d.inv_view ? 1.0 : -1.0, vertical_parallax,
             d.cover};
   }
   // Px, Py of a panel point at screen (u, v), display frame (metres, origin at the screen
   // centre, y up as v).
-  double panel_x_m(double u) const { return (u - 0.5) * width_m; }
-  double panel_y_m(double v) const { return (v - 0.5) * height_m; }
-  // f_seen at physical point (u, v) for a camera {Cx, Cy, Cz} and the lens' tilt.
   template <typename T>
-  T seen(const T* cam, double u, double v, const T& tilt, const T& view_cone_deg) const {
-    const T dy = vertical_parallax ? T(cam[1] - T(panel_y_m(v))) : T(0.0);
-    return display::seen_fraction_through_cover(T(cam[0] - T(panel_x_m(u))), dy, cam[2], cover,
-                                       display::line_tilt(geometry, tilt), view_cone_deg);
+  T panel_x_m(const T& u) const { return (u - 0.5) * width_m; }
+  template <typename T>
+  T panel_y_m(const T& v) const { return (v - 0.5) * height_m; }
+  // f_seen at physical point (u, v) for a camera {Cx, Cy, Cz}, the lens' tilt and the cover's
+  // thickness changed by dt from the nominal's.
+  template <typename T>
+  T seen(const T* cam, const T& u, const T& v, const T& tilt, const T& view_cone_deg,
+         const T& dt) const {
+    const T dx = cam[0] - panel_x_m(u);
+    const T dy = vertical_parallax ? T(cam[1] - panel_y_m(v)) : T(0.0);
+    const T d = display::cover_seen_distance(dx, dy, cam[2], T(cover.thickness_m) + dt,
+                                             cover.refractive_index);
+    return display::seen_fraction(dx, dy, d, display::line_tilt(geometry, tilt), view_cone_deg);
   }
 };
 
-// psi model without the correction field: f_seen(P) + s (A_true_linear(X) - A_nom(X)).
-// lens = {pitch_lpi, slope, center, view_cone_deg}, cam = {Cx, Cy, Cz}.
-template <typename T>
-T psi_linear(const DisplayConstants& dc, const T* lens, const T* cam, double u, double v,
-             double u_phys, double a_nom) {
-  const display::ShaderTerms<T> terms = display::shader_terms(dc.geometry, lens[0], lens[1]);
-  const T a_true = (T(u) + T(v) * terms.tilt) * terms.pitch_periods - lens[2];
-  const T f_seen = dc.seen(cam, u_phys, v, terms.tilt, lens[3]);
-  return f_seen + T(dc.sign) * (a_true - T(a_nom));
-}
-
 struct Sample {
   double u, v, u_phys, a_nom, psi;
+  // d(u, v) / d(cover thickness), per metre: where registration puts the sample's panel point
+  // moves with the cover it assumed (PositionData::sample_per_cover).
+  double du_dt = 0, dv_dt = 0;
   display::BSplineWeights wu, wv;
 };
 
-// The data term. Parameter blocks: lens (4), camera (3), then the 16 control points whose
-// B-spline basis covers the sample (one block each, so the Jacobian stays sparse). The
+// psi model without the correction field: f_seen(P) + s (A_true_linear(X) - A_nom(X)).
+// lens = {pitch_lpi, slope, center, view_cone_deg}, cam = {Cx, Cy, Cz}, dt the cover's change
+// of thickness, which moves the sample's panel point (and its content point with it) along
+// its gradient; `nominal_du`, `nominal_dv` the nominal phase's gradient.
+template <typename T>
+T psi_linear(const DisplayConstants& dc, const T* lens, const T* cam, const T& dt, const Sample& s,
+             double nominal_du, double nominal_dv) {
+  const display::ShaderTerms<T> terms = display::shader_terms(dc.geometry, lens[0], lens[1]);
+  const T du = dt * s.du_dt, dv = dt * s.dv_dt;
+  const T u = T(s.u) + du, v = T(s.v) + dv;
+  const T a_true = (u + v * terms.tilt) * terms.pitch_periods - lens[2];
+  const T a_nom = T(s.a_nom) + du * nominal_du + dv * nominal_dv;
+  const T f_seen = dc.seen(cam, T(s.u_phys) + du, v, terms.tilt, lens[3], dt);
+  return f_seen + T(dc.sign) * (a_true - a_nom);
+}
+
+// The data term. Parameter blocks: lens (4), camera (3), the cover's change of thickness (1),
+// then the 16 control points whose B-spline basis covers the sample (one block each, so the
+// Jacobian stays sparse). The
 // correction field enters linearly, r = wrap(psi_obs - psi_lin - s w) / sigma, so its
 // derivatives are the basis weights; the rest is differentiated with Jets.
 class PhaseResidual : public ceres::CostFunction {
  public:
-  PhaseResidual(const DisplayConstants& dc, const Sample& s, double inv_sigma, bool with_field)
-      : dc_(dc), s_(s), inv_sigma_(inv_sigma), with_field_(with_field) {
+  PhaseResidual(const DisplayConstants& dc, const Sample& s, double inv_sigma, bool with_field,
+                double nominal_du, double nominal_dv)
+      : dc_(dc), s_(s), inv_sigma_(inv_sigma), with_field_(with_field), nominal_du_(nominal_du),
+        nominal_dv_(nominal_dv) {
     set_num_residuals(1);
     mutable_parameter_block_sizes()->push_back(4);
     mutable_parameter_block_sizes()->push_back(3);
+    mutable_parameter_block_sizes()->push_back(1);
     if (with_field_)
       for (int i = 0; i < 16; ++i) mutable_parameter_block_sizes()->push_back(1);
   }
 
   bool Evaluate(double const* const* p, double* residual, double** jacobians) const override {
-    using Jet = ceres::Jet<double, 7>;
+    using Jet = ceres::Jet<double, 8>;
     Jet lens[4], cam[3];
     for (int i = 0; i < 4; ++i) lens[i] = Jet(p[0][i], i);
     for (int i = 0; i < 3; ++i) cam[i] = Jet(p[1][i], 4 + i);
+    const Jet dt(p[2][0], 7);
     double w = 0;
     if (with_field_)
       for (int b = 0; b < 4; ++b)
-        for (int a = 0; a < 4; ++a) w += p[2 + 4 * b + a][0] * (s_.wu.w[a] * s_.wv.w[b]);
-    const Jet model = psi_linear(dc_, lens, cam, s_.u, s_.v, s_.u_phys, s_.a_nom) + dc_.sign * w;
+        for (int a = 0; a < 4; ++a) w += p[3 + 4 * b + a][0] * (s_.wu.w[a] * s_.wv.w[b]);
+    const Jet model = psi_linear(dc_, lens, cam, dt, s_, nominal_du_, nominal_dv_) + dc_.sign * w;
     const Jet r = wrap_half(Jet(s_.psi) - model) * inv_sigma_;
     residual[0] = r.a;
     if (jacobians) {
@@ -98,11 +119,12 @@ class PhaseResidual : public ceres::CostFunction {
         for (int i = 0; i < 4; ++i) jacobians[0][i] = r.v[i];
       if (jacobians[1])
         for (int i = 0; i < 3; ++i) jacobians[1][i] = r.v[4 + i];
+      if (jacobians[2]) jacobians[2][0] = r.v[7];
       if (with_field_)
         for (int b = 0; b < 4; ++b)
           for (int a = 0; a < 4; ++a)
-            if (jacobians[2 + 4 * b + a])
-              jacobians[2 + 4 * b + a][0] = -dc_.sign * s_.wu.w[a] * s_.wv.w[b] * inv_sigma_;
+            if (jacobians[3 + 4 * b + a])
+              jacobians[3 + 4 * b + a][0] = -dc_.sign * s_.wu.w[a] * s_.wv.w[b] * inv_sigma_;
     }
     return true;
   }
@@ -112,6 +134,7 @@ class PhaseResidual : public ceres::CostFunction {
   Sample s_;
   double inv_sigma_;
   bool with_field_;
+  double nominal_du_, nominal_dv_;
 };
 
 // r = sum_j a_j x_j over scalar blocks: the smoothness prior and the gauge constraints.
@@ -137,20 +160,23 @@ class LinearCombination : public ceres::CostFunction {
 // The registration's camera position as a prior on the refined one. Per position the data
 // fix only Cx + Cy line_tilt (both shift f_seen uniformly), so the prior splits the two. The
 // registered position moves with the camera's focal length (`focal`: its relative change,
-// held at 0 for a known camera) along d = d camera / (df / f).
+// held at 0 for a known camera) along d = d camera / (df / f), and with the cover's thickness
+// (`cover`: its change, held at 0 unless free) along e = d camera / dt.
 struct CameraPrior {
-  double cx, cy, cz, dx, dy, dz, inv_sxy, inv_sz;
+  double cx, cy, cz, dx, dy, dz, ex, ey, ez, inv_sxy, inv_sz;
   template <typename T>
-  bool operator()(const T* cam, const T* focal, T* r) const {
-    r[0] = (cam[0] - T(cx) - focal[0] * dx) * inv_sxy;
-    r[1] = (cam[1] - T(cy) - focal[0] * dy) * inv_sxy;
-    r[2] = (cam[2] - T(cz) - focal[0] * dz) * inv_sz;
+  bool operator()(const T* cam, const T* focal, const T* cover, T* r) const {
+    r[0] = (cam[0] - T(cx) - focal[0] * dx - cover[0] * ex) * inv_sxy;
+    r[1] = (cam[1] - T(cy) - focal[0] * dy - cover[0] * ey) * inv_sxy;
+    r[2] = (cam[2] - T(cz) - focal[0] * dz - cover[0] * ez) * inv_sz;
     return true;
   }
 };
 
-// The camera calibration's focal length as a prior on its relative change.
-struct FocalPrior {
+
+// A zero-mean prior on a scalar's change: the camera calibration's focal length on its
+// relative change, the cover's given thickness on its change.
+struct ChangePrior {
   double inv_sigma;
   template <typename T>
   bool operator()(const T* focal, T* r) const {
@@ -203,6 +229,9 @@ class LensProblem {
         ny_(with_field_ ? options.grid_ny : 0),
         fit_cone_(options.fit_view_cone && positions.size() >= 2),
         fit_focal_(options.focal_sigma_rel > 0),
+        fit_cover_(options.cover_sigma_m > 0),
+        nominal_du_(display::shader_terms(dc_.geometry, nominal_.pitch_lpi, nominal_.slope).pitch_periods),
+        nominal_dv_(nominal_du_ * display::shader_terms(dc_.geometry, nominal_.pitch_lpi, nominal_.slope).tilt),
         obs_sigma_(options.obs_sigma) {
     lens_[0] = start.pitch_lpi;
     lens_[1] = start.slope;
@@ -225,9 +254,11 @@ class LensProblem {
   // current estimate: it moves with the estimate, so it is updated between the stages.
   void update_content_points() {
     const display::ShaderTerms<double> terms = display::shader_terms(dc_.geometry, lens_[0], lens_[1]);
+    const double dt = cover_[0];
     for (size_t i = 0; i < samples_.size(); ++i)
       for (auto& s : samples_[i]) {
-        const double f_seen = dc_.seen(&cams_[3 * i], s.u_phys, s.v, terms.tilt, lens_[3]);
+        const double f_seen = dc_.seen(&cams_[3 * i], s.u_phys + dt * s.du_dt, s.v + dt * s.dv_dt,
+                                       terms.tilt, lens_[3], dt);
         s.u = s.u_phys + display::lens_content_shift(f_seen, nominal_.inv_view) / terms.pitch_periods;
         s.a_nom = nominal_lens_.phase(s.u, s.v);
         // The field is part of the phase at the content point, like the rest of A: at the
@@ -251,6 +282,7 @@ class LensProblem {
         for (auto& c : coeffs_) problem_->SetParameterBlockConstant(&c);
     }
     if (!fit_cone_) problem_->SetManifold(lens_, new ceres::SubsetManifold(4, {3}));
+    add_cover_prior();
 
     ceres::Solver::Options so;
     so.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
@@ -349,13 +381,15 @@ class LensProblem {
     co.num_threads = options_.threads;
     ceres::Covariance cov(co);
     std::vector<const double*> blocks{lens_};
+    if (fit_cover_) blocks.push_back(cover_);
+    const long field0 = long(blocks.size()) + 3;  // the first control point's row
     for (auto& c : coeffs_) blocks.push_back(&c);
     std::vector<std::pair<const double*, const double*>> pairs;
     for (size_t a = 0; a < blocks.size(); ++a)
       for (size_t b = a; b < blocks.size(); ++b) pairs.emplace_back(blocks[a], blocks[b]);
     if (fit_focal_) pairs.emplace_back(focal_, focal_);
     if (!cov.Compute(pairs, problem_.get())) return;
-    const size_t dim = 4 + coeffs_.size();
+    const size_t dim = size_t(field0) + coeffs_.size();
     Eigen::MatrixXd c(dim, dim);
     if (!cov.GetCovarianceMatrix(blocks, c.data())) return;
     const char* names[4] = {"pitch_lpi", "slope", "center_periods", "view_cone_deg"};
@@ -364,6 +398,7 @@ class LensProblem {
     double focal_variance = 0;
     if (fit_focal_ && cov.GetCovarianceBlock(focal_, focal_, &focal_variance))
       result.sigma["focal_rel"] = std::sqrt(std::max(0.0, focal_variance));
+    if (fit_cover_) result.sigma["cover_thickness_m"] = std::sqrt(std::max(0.0, c(4, 4)));
     if (with_field_) {
       // RMS over the screen of the standard deviation of w.
       double sum = 0;
@@ -374,7 +409,8 @@ class LensProblem {
           const display::BSplineWeights wv = display::bspline_weights(ny_, (j + 0.5) / n);
           Eigen::VectorXd g = Eigen::VectorXd::Zero(long(dim));
           for (int b = 0; b < 4; ++b)
-            for (int a = 0; a < 4; ++a) g[4 + (wv.i0 + b) * nx_ + wu.i0 + a] = wu.w[a] * wv.w[b];
+            for (int a = 0; a < 4; ++a)
+              g[field0 + (wv.i0 + b) * nx_ + wu.i0 + a] = wu.w[a] * wv.w[b];
           sum += g.dot(c * g);
         }
       result.sigma["correction_rms_periods"] = std::sqrt(std::max(0.0, sum / (n * n)));
@@ -388,6 +424,10 @@ class LensProblem {
     for (size_t i = 0; i < positions_.size(); ++i)
       result.cameras_m.push_back({cams_[3 * i], cams_[3 * i + 1], cams_[3 * i + 2]});
     result.focal_change_rel = focal_[0];
+    result.cover.free = fit_cover_;
+    result.cover.prior_m = dc_.cover.thickness_m;
+    result.cover.prior_sigma_m = fit_cover_ ? options_.cover_sigma_m : 0.0;
+    result.cover.thickness_m = dc_.cover.thickness_m + cover_[0];
     // Over all samples with a robust scale (residual_statistics.hpp): pooled, per position on
     // its own scale, and against the other positions pooled (leave one out: against a pool
     // that holds it, a position's ratio could not exceed sqrt(N / N_i)).
@@ -436,6 +476,10 @@ class LensProblem {
         s.u_phys = in[j].u;
         s.v = in[j].v;
         s.psi = in[j].psi;
+        if (!positions_[i].sample_per_cover.empty()) {
+          s.du_dt = positions_[i].sample_per_cover.at(j).x();
+          s.dv_dt = positions_[i].sample_per_cover.at(j).y();
+        }
         if (with_field_) s.wv = display::bspline_weights(ny_, s.v);
         samples_[i].push_back(s);
       }
@@ -452,7 +496,8 @@ class LensProblem {
       for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a)
           w += coeffs_[size_t(s.wv.i0 + b) * nx_ + size_t(s.wu.i0 + a)] * s.wu.w[a] * s.wv.w[b];
-    return wrap_half(s.psi - psi_linear(dc_, lens_, &cams_[3 * i], s.u, s.v, s.u_phys, s.a_nom) -
+    return wrap_half(s.psi - psi_linear(dc_, lens_, &cams_[3 * i], cover_[0], s, nominal_du_,
+                                        nominal_dv_) -
                      dc_.sign * w);
   }
 
@@ -460,12 +505,13 @@ class LensProblem {
     const double inv_sigma = 1.0 / obs_sigma_;
     for (size_t i = 0; i < samples_.size(); ++i)
       for (const auto& s : samples_[i]) {
-        std::vector<double*> blocks{lens_, &cams_[3 * i]};
+        std::vector<double*> blocks{lens_, &cams_[3 * i], cover_};
         if (with_field_)
           for (int b = 0; b < 4; ++b)
             for (int a = 0; a < 4; ++a) blocks.push_back(coeff(s.wu.i0 + a, s.wv.i0 + b));
-        problem_->AddResidualBlock(new PhaseResidual(dc_, s, inv_sigma, with_field_), loss_.get(),
-                                   blocks);
+        problem_->AddResidualBlock(
+            new PhaseResidual(dc_, s, inv_sigma, with_field_, nominal_du_, nominal_dv_),
+            loss_.get(), blocks);
       }
   }
 
@@ -473,18 +519,31 @@ class LensProblem {
     for (size_t i = 0; i < positions_.size(); ++i) {
       const PositionData& p = positions_[i];
       problem_->AddResidualBlock(
-          new ceres::AutoDiffCostFunction<CameraPrior, 3, 3, 1>(new CameraPrior{
+          new ceres::AutoDiffCostFunction<CameraPrior, 3, 3, 1, 1>(new CameraPrior{
               p.camera_m.x(), p.camera_m.y(), p.camera_m.z(), p.camera_per_focal_m.x(),
-              p.camera_per_focal_m.y(), p.camera_per_focal_m.z(), 1.0 / p.lateral_sigma_m,
+              p.camera_per_focal_m.y(), p.camera_per_focal_m.z(), p.camera_per_cover_m.x(),
+              p.camera_per_cover_m.y(), p.camera_per_cover_m.z(), 1.0 / p.lateral_sigma_m,
               1.0 / p.depth_sigma_m}),
-          nullptr, &cams_[3 * i], focal_);
+          nullptr, &cams_[3 * i], focal_, cover_);
     }
     if (fit_focal_)
-      problem_->AddResidualBlock(new ceres::AutoDiffCostFunction<FocalPrior, 1, 1>(
-                                     new FocalPrior{1.0 / options_.focal_sigma_rel}),
+      problem_->AddResidualBlock(new ceres::AutoDiffCostFunction<ChangePrior, 1, 1>(
+                                     new ChangePrior{1.0 / options_.focal_sigma_rel}),
                                  nullptr, focal_);
     else
       problem_->SetParameterBlockConstant(focal_);
+  }
+
+  // The cover's thickness: free under its prior (no thinner than nothing), else held.
+  void add_cover_prior() {
+    if (!fit_cover_) {
+      problem_->SetParameterBlockConstant(cover_);
+      return;
+    }
+    problem_->AddResidualBlock(new ceres::AutoDiffCostFunction<ChangePrior, 1, 1>(
+                                   new ChangePrior{1.0 / options_.cover_sigma_m}),
+                               nullptr, cover_);
+    problem_->SetParameterLowerBound(cover_, 0, -dc_.cover.thickness_m);
   }
 
   // Second differences of the control points (a prior on the warp's curvature), whitened
@@ -533,8 +592,11 @@ class LensProblem {
   const int nx_, ny_;
   const bool fit_cone_;
   const bool fit_focal_;  // a self-calibrated camera's focal length (SolverOptions)
+  const bool fit_cover_;  // the cover's thickness (SolverOptions::cover_sigma_m)
+  const double nominal_du_, nominal_dv_;  // the nominal phase's gradient (periods per u, v)
   double obs_sigma_;
   double focal_[1] = {0};       // relative change of the camera's focal length
+  double cover_[1] = {0};       // change of the cover's thickness, metres
   double lens_[4];              // pitch_lpi, slope, center_periods, view_cone_deg
   std::vector<double> cams_;    // Cx, Cy, Cz per position
   std::vector<double> coeffs_;  // nx * ny correction control points
@@ -561,6 +623,22 @@ std::vector<double> camera_shifts_in_sigmas(const std::vector<PositionData>& pos
 
 namespace {
 
+// What the photos alone say of the cover (CoverEstimate): the solve's information on the
+// thickness (1 / sigma^2, from the covariance) less the prior's is theirs, and the estimate
+// the two combine to splits accordingly (Gaussian: posterior precision and precision-weighted
+// mean are sums).
+void split_cover_information(CoverEstimate& c) {
+  if (!c.free || !(c.sigma_m > 0) || !(c.prior_sigma_m > 0)) return;
+  const double posterior = 1 / (c.sigma_m * c.sigma_m);
+  const double prior = 1 / (c.prior_sigma_m * c.prior_sigma_m);
+  const double photos = posterior - prior;
+  if (photos <= 1e-3 * prior) return;  // they say nothing: photos_sigma_m stays infinite
+  c.photos_sigma_m = 1 / std::sqrt(photos);
+  c.photos_m = (c.thickness_m * posterior - c.prior_m * prior) / photos;
+  c.disagreement_sigmas = std::abs(c.photos_m - c.prior_m) /
+                          std::hypot(c.photos_sigma_m, c.prior_sigma_m);
+}
+
 // The three stages on the options' field grid; with `uncertainties`, sigmas from the
 // covariance alone (the refined-grid solve needs only its estimate).
 SolverResult solve_on_grid(const display::Calibration& nominal, const LensEstimate& start,
@@ -579,13 +657,20 @@ SolverResult solve_on_grid(const display::Calibration& nominal, const LensEstima
   problem.solve_stage(options.loss_scale, true, result);
   if (uncertainties) problem.covariance(result);
   problem.statistics(result);
+  if (const auto it = result.sigma.find("cover_thickness_m"); it != result.sigma.end()) {
+    result.cover.sigma_m = it->second;
+    split_cover_information(result.cover);
+  }
   result.view_cone_fitted = options.fit_view_cone && positions.size() >= 2;
   for (const auto& p : positions) result.position_names.push_back(p.name);
-  // Against the registered positions moved with the solve's focal length (the prior's mean).
+  // Against the registered positions moved with the solve's focal length and cover (the
+  // prior's mean).
   std::vector<PositionData> moved;
+  const double cover_change = result.cover.thickness_m - result.cover.prior_m;
   for (const auto& p : positions) {
     PositionData& m = moved.emplace_back();  // without the samples
-    m.camera_m = p.camera_m + result.focal_change_rel * p.camera_per_focal_m;
+    m.camera_m = p.camera_m + result.focal_change_rel * p.camera_per_focal_m +
+                 cover_change * p.camera_per_cover_m;
     m.lateral_sigma_m = p.lateral_sigma_m;
     m.depth_sigma_m = p.depth_sigma_m;
   }
@@ -620,6 +705,8 @@ void refine_field(const display::Calibration& nominal, const std::vector<Positio
     out.change["view_cone_deg"] = r.lens.view_cone_deg - result.lens.view_cone_deg;
   if (options.focal_sigma_rel > 0)
     out.change["focal_rel"] = r.focal_change_rel - result.focal_change_rel;
+  if (result.cover.free)
+    out.change["cover_thickness_m"] = r.cover.thickness_m - result.cover.thickness_m;
   // The field's: the screen RMS of the two fields' difference (both in the same gauge).
   double sum = 0;
   const int n = 32;
@@ -634,6 +721,7 @@ void refine_field(const display::Calibration& nominal, const std::vector<Positio
     const auto it = result.sigma.find(key);
     if (it != result.sigma.end()) it->second = std::hypot(it->second, change);
   }
+  if (result.cover.free) result.cover.sigma_m = result.sigma.at("cover_thickness_m");
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 

@@ -8,11 +8,13 @@
 // where X is the content the lens shows there and delta (< half a lens, horizontal) the mean
 // offset to it (see lens_solver.cpp). Unknowns: pitch, slope,
 // center, viewCone, the B-spline correction field w (smoothness prior; gauge: zero mean and
-// zero linear trend, so it cannot absorb center, pitch or slope) and per-position camera
-// positions (priors from the registration). Residuals are wrap-aware
+// zero linear trend, so it cannot absorb center, pitch or slope), per-position camera
+// positions (priors from the registration) and, under its prior, the cover's thickness
+// (SolverOptions::cover_sigma_m). Residuals are wrap-aware
 // (wrap_to_[-0.5, 0.5](psi_obs - psi_model)) under a robust loss; uncertainties come from
 // ceres::Covariance with the samples weighted by their measured noise, plus what a field of
 // twice the resolution changes (SolverOptions::field_refinement).
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -34,6 +36,11 @@ struct PositionData {
   // How the registered position moves per relative change of the camera's focal length
   // (d camera_m / (df / f)); used when the focal length is free (SolverOptions).
   Eigen::Vector3d camera_per_focal_m{0, 0, 0};
+  // How the registered position, and each sample's panel point (u, v), move per metre of
+  // cover thickness (registered again through a thicker cover); used when the thickness is
+  // free (SolverOptions::cover_sigma_m). One per sample, or empty (they do not move).
+  Eigen::Vector3d camera_per_cover_m{0, 0, 0};
+  std::vector<Eigen::Vector2f> sample_per_cover;
 };
 
 struct LensEstimate {
@@ -70,6 +77,11 @@ struct SolverOptions {
   // fixes it (a longer focal length moves the cameras away, which a wider cone undoes), so
   // what it does is carry the camera's uncertainty into the view cone's sigma.
   double focal_sigma_rel = 0;
+  // The cover layer's thickness as an unknown under a prior: the nominal's thickness (what
+  // registration used) with this 1-sigma, metres; 0 holds it. Where the photos tell it (a
+  // position well off axis, docs/calibration.md "The cover layer") it is estimated; where
+  // they do not, the prior's spread reaches every other value's sigma through the covariance.
+  double cover_sigma_m = 0;
   // After the solve, solve again on a grid with half the knot spacing (the same curvature
   // prior per unit of screen) and add each value's change to its sigma in quadrature: what the
   // grid cannot follow of a real warp leaves no residual, yet the positions' uneven coverage
@@ -102,11 +114,28 @@ struct FieldRefinement {
   double seconds = 0;
 };
 
+// The cover's thickness as the solve saw it (SolverOptions::cover_sigma_m).
+struct CoverEstimate {
+  bool free = false;                          // false: held at prior_m
+  double prior_m = 0, prior_sigma_m = 0;      // what was given
+  double thickness_m = 0, sigma_m = 0;        // the solve's estimate and its 1-sigma
+  // What the photos alone say (the solve's information less the prior's): their estimate
+  // and 1-sigma (infinite: they say nothing), and how many of their and the prior's sigmas
+  // combined the two lie apart.
+  double photos_m = 0, photos_sigma_m = INFINITY;
+  double disagreement_sigmas = 0;
+  // The photos narrowed the prior to under this fraction of its sigma: the thickness counts
+  // as measured, not assumed.
+  static constexpr double kMeasuredFraction = 0.5;
+  bool measured() const { return free && sigma_m < kMeasuredFraction * prior_sigma_m; }
+};
+
 struct SolverResult {
   LensEstimate lens;
   display::CorrectionField correction;
   std::vector<Eigen::Vector3d> cameras_m;
   double focal_change_rel = 0;  // the solve's relative change of the focal length (free only)
+  CoverEstimate cover;
   // 1-sigma: pitch_lpi, slope, center_periods, ...: the covariance's, with the field
   // refinement's change added in quadrature when it ran.
   std::map<std::string, double> sigma;

@@ -17,7 +17,8 @@ void QualityGates::check() const {
                               {max_slant_sigma_deg, "max_slant_sigma_deg"},
                               {max_center_sigma_periods, "max_center_sigma_periods"},
                               {max_view_cone_sigma_deg, "max_view_cone_sigma_deg"},
-                              {max_correction_sigma_periods, "max_correction_sigma_periods"}})
+                              {max_correction_sigma_periods, "max_correction_sigma_periods"},
+                              {max_cover_disagreement_sigmas, "max_cover_disagreement_sigmas"}})
     require_field(value > 0 && !std::isnan(value), where, field, "must be a positive bound");
   require_field(min_inlier_fraction >= 0 && min_inlier_fraction <= 1, where,
                 "min_inlier_fraction", "must lie in [0, 1]");
@@ -89,6 +90,14 @@ std::vector<std::string> QualityGates::evaluate(const display::Calibration& c,
     fails.push_back(fmt::format("correction field uncertainty {:.3f} > {:.3f} lens periods: "
                                 "photograph the whole screen, in focus",
                                 sigma("correction_rms_periods"), max_correction_sigma_periods));
+  if (const CoverEstimate& cover = solve.cover;
+      cover.free && cover.disagreement_sigmas > max_cover_disagreement_sigmas)
+    fails.push_back(fmt::format(
+        "the photos contradict the cover given ({:.1f} +- {:.1f} mm): they say {:.1f} +- {:.1f} "
+        "mm, {:.1f} sigmas apart (<= {:.1f}); give the cover's thickness (--cover-thickness) or "
+        "--cover-unknown",
+        1e3 * cover.prior_m, 1e3 * cover.prior_sigma_m, 1e3 * cover.photos_m,
+        1e3 * cover.photos_sigma_m, cover.disagreement_sigmas, max_cover_disagreement_sigmas));
   return fails;
 }
 

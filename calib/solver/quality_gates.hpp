@@ -27,6 +27,10 @@ struct QualityGates {
   double max_center_sigma_periods = 0.01;
   double max_view_cone_sigma_deg = 2.0;
   double max_correction_sigma_periods = 0.02;
+  // The photos' own estimate of the cover's thickness this many combined sigmas from the cover
+  // given (CoverEstimate::disagreement_sigmas): the description is wrong, and a lens solved
+  // through it is biased (docs/calibration.md, "The cover layer").
+  double max_cover_disagreement_sigmas = 3.0;
 
   // The failed gates of a solved calibration (empty: it passed).
   std::vector<std::string> evaluate(const display::Calibration& calibration,
