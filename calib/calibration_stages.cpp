@@ -517,7 +517,7 @@ void add_cover_derivatives(const PositionContext& ctx, const PositionState& stat
   sim::PatternSet thicker = ctx.set;
   thicker.nominal.display.cover.thickness_m += step_m;
   const Registration& reg = *state.registration;
-  const Registration moved(ctx.board, thicker, ctx.camera, state.board_shift, state.fringe);
+  const Registration moved(ctx.board, thicker, ctx.camera, state.board_shift, state.extra);
   data.camera_per_cover_m = (moved.camera_position_m() - reg.camera_position_m()) / step_m;
   // The pixel that looked at each sample's panel point, and where the thicker cover puts it.
   std::vector<display::ScreenUV> uv;
