@@ -6,12 +6,17 @@
 //   TileKeyWriter w = tile_keys_begin(item);
 //   for (each tile the item covers) tile_keys_add(w, slot, value);
 //   tile_keys_end(w, item);
+// With TILE_KEY_CAPACITY defined, EMIT 1 writes no key past the uniform key_capacity (the
+// buffers' size, GlTileKeys::scan_to_capacity); the count still says how many there were.
 #include "gpu/shaders/tile_io.h"
 
 #if EMIT
 layout(std430, binding = kTileCountsBinding) readonly buffer Counts { uint counts[]; };
 layout(std430, binding = kTileKeysBinding) writeonly buffer Keys { uint keys[]; };
 layout(std430, binding = kTileValuesBinding) writeonly buffer Values { uint values[]; };
+#if defined(TILE_KEY_CAPACITY)
+uniform uint key_capacity;
+#endif
 #else
 layout(std430, binding = kTileCountsBinding) writeonly buffer Counts { uint counts[]; };
 #endif
@@ -34,8 +39,13 @@ TileKeyWriter tile_keys_begin(uint item) {
 
 void tile_keys_add(inout TileKeyWriter w, uint slot, uint value) {
 #if EMIT
-  keys[w.first + w.n] = slot;
-  values[w.first + w.n] = value;
+#if defined(TILE_KEY_CAPACITY)
+  if (w.first + w.n < key_capacity)
+#endif
+  {
+    keys[w.first + w.n] = slot;
+    values[w.first + w.n] = value;
+  }
 #endif
   ++w.n;
 }

@@ -10,40 +10,30 @@
 #include "gpu/shaders/tile_splat_cover.glsl"
 #include "gpu/shaders/tile_splat_item.glsl"
 #include "gpu/shaders/frame_io.h"
+#define TILE_KEY_CAPACITY 1
+#include "gpu/shaders/tile_key_writer.glsl"
 
 layout(local_size_x = kTileSplatItemsGroupSize) in;
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileSplatEntriesBinding) readonly buffer Entries { uint entries[]; };
 layout(std430, binding = kTileSplatKeptBinding) readonly buffer Kept { uint kept_words[]; };
-#if EMIT
-layout(std430, binding = kTileCountsBinding) readonly buffer Counts { uint counts[]; };
-layout(std430, binding = kTileKeysBinding) writeonly buffer Keys { uint keys[]; };
-layout(std430, binding = kTileValuesBinding) writeonly buffer Values { uint values[]; };
-#else
-layout(std430, binding = kTileCountsBinding) writeonly buffer Counts { uint counts[]; };
+#if !EMIT
 layout(std430, binding = kTileSplatHugeBinding) buffer Huge { TileHugeList huge; uint huge_items[]; };
 #endif
 
 uniform uint item_capacity;  // items dispatched; those from the kept count on have no keys
 uniform uint kept_word;      // the kept count's index in kept_words (the sort's params or a draw)
 uniform ivec2 tile_grid;
-#if EMIT
-uniform uint key_capacity;  // keys the buffers hold (GlTileKeys::scan_to_capacity): none written past it
-#endif
 
 void main() {
   uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
   if (j >= item_capacity) return;
   uint kept_count = kept_words[kept_word];
-#if !EMIT
   if (j >= kept_count) {
-    counts[j] = 0u;
+    tile_keys_end(tile_keys_begin(j), j);  // no keys (EMIT 0 writes its count, 0)
     return;
   }
-#else
-  if (j >= kept_count) return;
-#endif
   uint entry = entries[j];
   SplatRecord r = records[entry];
   ivec4 rect = r.rect;
@@ -55,22 +45,10 @@ void main() {
     return;
   }
   uint first_slot = item_first_slot(j, entry, tile_grid);
-  uint n = 0u;
-#if EMIT
-  uint base = counts[j];
-#endif
+  TileKeyWriter w = tile_keys_begin(j);
   for (int ty = rect.y; ty < rect.w; ++ty)
     for (int tx = rect.x; tx < rect.z; ++tx)
-      if (splat_covers_tile(r, ivec2(tx, ty))) {
-#if EMIT
-        if (base + n < key_capacity) {
-          keys[base + n] = first_slot + uint(ty * tile_grid.x + tx);
-          values[base + n] = entry;
-        }
-#endif
-        ++n;
-      }
-#if !EMIT
-  counts[j] = n;
-#endif
+      if (splat_covers_tile(r, ivec2(tx, ty)))
+        tile_keys_add(w, first_slot + uint(ty * tile_grid.x + tx), entry);
+  tile_keys_end(w, j);
 }
