@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "gpu/gl_raster_probe.hpp"
+#include "gpu/probes/gl_raster_probe.hpp"
 #include "util/error.hpp"
 
 namespace lfd::apps {

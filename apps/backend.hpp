@@ -10,9 +10,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_raster_probe.hpp"
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/probes/gl_raster_probe.hpp"
+#include "gpu/gl/raster_path.hpp"
 
 namespace lfd::apps {
 
@@ -24,7 +24,7 @@ Backend parse_backend(const std::string& name);  // InputError for another name
 CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::string& help);
 
 // Adds `--raster` (choices compute, hardware, auto) to `app`, bound to `name`: how the GL
-// backend draws Gaussians (gpu/raster_path.hpp).
+// backend draws Gaussians (gpu/gl/raster_path.hpp).
 CLI::Option* add_raster_option(CLI::App& app, std::string& name);
 
 // A benchmark's `--raster` (bench render, bench voxels): paths comma-separated, each run in turn

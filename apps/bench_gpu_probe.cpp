@@ -1,5 +1,5 @@
-// `lfd bench gpu-probe`: what the GPU offers each raster path (gpu/gl_throughput_probe.hpp) and
-// the probe --raster auto decides by (gpu/gl_raster_probe.hpp), in one run.
+// `lfd bench gpu-probe`: what the GPU offers each raster path (gpu/probes/gl_throughput_probe.hpp) and
+// the probe --raster auto decides by (gpu/probes/gl_raster_probe.hpp), in one run.
 //   lfd bench gpu-probe --json probe.json
 #include <cstdio>
 #include <string>
@@ -10,8 +10,8 @@
 #include "apps/backend.hpp"
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
-#include "gpu/gl_raster_probe.hpp"
-#include "gpu/gl_throughput_probe.hpp"
+#include "gpu/probes/gl_raster_probe.hpp"
+#include "gpu/probes/gl_throughput_probe.hpp"
 #include "util/atomic_file.hpp"
 
 namespace lfd::apps {

@@ -9,7 +9,7 @@
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/timing_stats.hpp"
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "lightfield/gl_device.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"

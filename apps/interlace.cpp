@@ -5,7 +5,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "display/calibration_file.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file.hpp"
 #include "util/error.hpp"

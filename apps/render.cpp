@@ -24,7 +24,7 @@
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file_name.hpp"
 #include "lightfield/render_settings.hpp"

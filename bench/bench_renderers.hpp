@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/raster_path.hpp"
 #include "lightfield/light_field_renderer.hpp"
 
 namespace lfd::bench {

@@ -14,7 +14,7 @@
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "lightfield/view_plan.hpp"
 #include "lightfield/gl_renderer.hpp"

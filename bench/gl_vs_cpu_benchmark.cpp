@@ -5,10 +5,10 @@
 #include <fmt/format.h>
 #include <glm/glm.hpp>
 
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_scene.hpp"
-#include "gpu/gl_swizzle.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/splats/gl_scene.hpp"
+#include "gpu/planes/gl_swizzle.hpp"
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"

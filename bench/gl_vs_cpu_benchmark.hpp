@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "lightfield/view_plan.hpp"
 #include "render/camera.hpp"
 #include "render/g2lf.hpp"

@@ -10,12 +10,12 @@
 #include <fmt/format.h>
 
 #include "bench/timing_stats.hpp"
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_scene.hpp"
-#include "gpu/gl_swizzle.hpp"
-#include "gpu/gl_v2lf.hpp"
-#include "gpu/gl_voxel_scene.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/splats/gl_scene.hpp"
+#include "gpu/planes/gl_swizzle.hpp"
+#include "gpu/voxels/gl_v2lf.hpp"
+#include "gpu/voxels/gl_voxel_scene.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/per_view_quilt.hpp"
 #include "util/default_display.hpp"
@@ -269,7 +269,7 @@ GpuFrameRow v2lf_row(gpu::GlV2lfRenderer& renderer, const render::QuiltGeometry&
 
 // V2LF on the generated voxel tabletop (its default camera, the views' size of the Gaussian
 // rows): the voxels binned on the CPU and uploaded every frame (the path before) against binned
-// on the GPU (gpu/gl_voxel_binning.hpp); the same frames otherwise, timers read late, alternated
+// on the GPU (gpu/voxels/gl_voxel_binning.hpp); the same frames otherwise, timers read late, alternated
 // per run so both see the same machine load.
 void append_v2lf_rows(const GpuFrameOptions& o, const render::Camera& gaussian_base, const gpu::GlInfo& info,
                       std::vector<GpuFrameRow>& rows) {

@@ -3,7 +3,7 @@
 // (docs/gpu.md "A frame that never waits", docs/performance.md): G2LF and per view on one
 // headless context, each variant timed the same way.
 //   - timers waited for (each frame reads its stage times at once, the CPU waiting for the
-//     GPU: the old frame) against timers read late (gpu/gl_frame_ring.hpp), frames issued back
+//     GPU: the old frame) against timers read late (gpu/gl/gl_frame_ring.hpp), frames issued back
 //     to back and finished once per batch: the wall time per frame of a pipelined loop;
 //   - the G2LF swizzle with 1 view per invocation (the old mapping) against several;
 //   - G2LF's planes drawn in batches through RGBA32F accumulation (RGBA8 planes) against one
@@ -18,7 +18,7 @@
 //   - --raster compute (GpuFrameOptions::rasters): G2LF's planes and the per-view quilt drawn by
 //     the compute tile rasterizer beside the hardware rows, stage times from the same timers;
 //   - V2LF on a generated voxel scene: the voxels binned on the CPU and uploaded every frame
-//     against binned on the GPU (gpu/gl_voxel_binning.hpp), runs alternated.
+//     against binned on the GPU (gpu/voxels/gl_voxel_binning.hpp), runs alternated.
 // G2LF's variants each on a renderer of its own, their runs interleaved (a drifting load weighs
 // on all alike). Medians of --runs after --warmup; on llvmpipe the figures say how the CPU emulation responds,
 // not what a GPU would.
@@ -28,8 +28,8 @@
 #include <nlohmann/json.hpp>
 
 #include "bench/gl_vs_cpu_benchmark.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/raster_path.hpp"
 
 namespace lfd::bench {
 

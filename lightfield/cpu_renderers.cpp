@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "interlace/direct_panel.hpp"
-#include "lightfield/process_memory.hpp"
+#include "util/process_memory.hpp"
 #include "lightfield/renderer_checks.hpp"
 #include "render/g2lf.hpp"
 #include "render/per_view_quilt.hpp"

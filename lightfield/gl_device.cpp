@@ -1,7 +1,7 @@
 #include "lightfield/gl_device.hpp"
 
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_swizzle.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/planes/gl_swizzle.hpp"
 
 namespace lfd::lightfield {
 

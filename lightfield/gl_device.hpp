@@ -3,7 +3,7 @@
 // the context current on this thread, such as the viewer's window), the scene they share
 // uploaded once (so a per-view and a sweeping-plane renderer on one device hold one copy, as
 // GPU memory figures assume), and the quilt texture they render into and read back on demand.
-// GPU memory is what lfd's buffers and textures hold (gpu/gl_objects.hpp).
+// GPU memory is what lfd's buffers and textures hold (gpu/gl/gl_objects.hpp).
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -11,10 +11,10 @@
 
 #include <epoxy/gl.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_objects.hpp"
-#include "gpu/gl_scene.hpp"
-#include "gpu/gl_voxel_scene.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/splats/gl_scene.hpp"
+#include "gpu/voxels/gl_voxel_scene.hpp"
 #include "scene/scene.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"

@@ -1,8 +1,8 @@
 // The GL renderers of Gaussian scenes: every view alone (gpu::GlPerViewRenderer) and G2LF
 // (gpu::GlG2lfRenderer), on the device's uploaded scene.
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_raster_probe.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/probes/gl_raster_probe.hpp"
 #include "lightfield/gl_renderer_base.hpp"
 #include "lightfield/gl_renderers.hpp"
 #include "lightfield/renderer_checks.hpp"

@@ -4,7 +4,7 @@
 // GPU; no read-back, no glFinish). render_quilt is this into the device's quilt, then glFinish.
 #include <memory>
 
-#include "gpu/gl_objects.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "lightfield/gl_device.hpp"
 #include "lightfield/light_field_renderer.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <epoxy/gl.h>
 
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "lightfield/renderer_checks.hpp"
 
 namespace lfd::lightfield {

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "gpu/gl_direct_panel.hpp"
+#include "gpu/panel/gl_direct_panel.hpp"
 #include "lightfield/gl_renderer.hpp"
 
 namespace lfd::lightfield {

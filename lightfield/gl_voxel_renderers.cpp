@@ -1,9 +1,9 @@
 // The GL renderers of voxel scenes: every view alone (gpu::GlVoxelViews, drawn by the raster
 // pipeline or the compute tile rasterizer: options.gl.raster) and V2LF (gpu::GlV2lfRenderer), on
 // the device's uploaded scene.
-#include "gpu/gl_raster_probe.hpp"
-#include "gpu/gl_v2lf.hpp"
-#include "gpu/gl_voxel_views.hpp"
+#include "gpu/probes/gl_raster_probe.hpp"
+#include "gpu/voxels/gl_v2lf.hpp"
+#include "gpu/voxels/gl_voxel_views.hpp"
 #include "lightfield/gl_renderer_base.hpp"
 #include "lightfield/gl_renderers.hpp"
 #include "lightfield/renderer_checks.hpp"

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/raster_path.hpp"
 #include "util/error.hpp"
 
 namespace lfd::lightfield {

@@ -1,6 +1,6 @@
 #include "lightfield/renderer_options.hpp"
 
-#include "gpu/gl_raster_probe.hpp"
+#include "gpu/probes/gl_raster_probe.hpp"
 #include "util/error.hpp"
 
 namespace lfd::lightfield {

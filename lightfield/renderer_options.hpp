@@ -10,11 +10,11 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_planes.hpp"
-#include "gpu/gl_v2lf.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/planes/gl_planes.hpp"
+#include "gpu/voxels/gl_v2lf.hpp"
 #include "interlace/direct_panel.hpp"
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/raster_path.hpp"
 #include "scene/scene.hpp"
 #include "render/g2lf.hpp"
 #include "render/plane_samples.hpp"

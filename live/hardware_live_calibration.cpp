@@ -9,7 +9,7 @@
 #include "live/camera_aiming.hpp"
 #include "live/console_prompt.hpp"
 #include "live/preview_window.hpp"
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "live/pattern_window.hpp"
 #include "live/video_capture_source.hpp"
 #include "util/error.hpp"

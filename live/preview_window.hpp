@@ -8,9 +8,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "gpu/display_window.hpp"
-#include "gpu/gl_objects.hpp"
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/display_window.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/glfw_session.hpp"
 
 namespace lfd::live {
 

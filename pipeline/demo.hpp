@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <string>
 
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/raster_path.hpp"
 
 namespace lfd::pipeline {
 

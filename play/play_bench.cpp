@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "lightfield/process_memory.hpp"
+#include "util/process_memory.hpp"
 #include "media/synthetic_quilt.hpp"
 #include "media/video_decoder.hpp"
 #include "play/player.hpp"
@@ -127,7 +127,7 @@ std::vector<PlayBenchRow> run_play_benchmark(const PlayBenchOptions& o, std::ost
       row.frames = d.frames;
       row.decoder = d.path;
     }
-    lightfield::reset_peak_rss();
+    reset_peak_rss();
     play_once(player, video);  // warm-up
     for (int r = 0; r < o.runs; ++r) {
       const PlayRun p = play_once(player, video);
@@ -136,7 +136,7 @@ std::vector<PlayBenchRow> run_play_benchmark(const PlayBenchOptions& o, std::ost
       row.play_dropped.push_back(p.dropped);
       row.first_frame_s.push_back(p.first_frame_s);
     }
-    row.peak_rss_bytes = lightfield::peak_rss_bytes();
+    row.peak_rss_bytes = peak_rss_bytes();
     rows.push_back(std::move(row));
   }
   return rows;

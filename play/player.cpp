@@ -10,9 +10,9 @@
 #include <fmt/format.h>
 
 #include "display/lens_model.hpp"
-#include "gpu/display_window.hpp"
-#include "gpu/gl_interlacer.hpp"
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/display_window.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "play/entry_content.hpp"
 #include "play/player_keys.hpp"
 #include "play/quilt_texture.hpp"

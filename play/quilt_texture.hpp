@@ -4,7 +4,7 @@
 // colour conversion) and drawn by one shader (play/shaders/quilt_convert.frag.glsl) into an
 // RGBA8 quilt texture with GL's rows (view 0's tile at the bottom-left), the texture
 // gpu::GlInterlacer reads. Needs a current GL 4.5 context (the player's window).
-#include "gpu/gl_objects.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "media/yuv_frame.hpp"
 #include "util/image.hpp"
 

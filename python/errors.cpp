@@ -3,7 +3,7 @@
 // an InputError (`lfd render --backend gl` exits 2 for it).
 #include <pybind11/pybind11.h>
 
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "python/bindings.hpp"
 #include "util/error.hpp"
 

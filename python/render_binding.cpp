@@ -4,7 +4,7 @@
 #include <pybind11/stl.h>
 
 #include "display/lens_model.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "python/arrays.hpp"
 #include "python/bindings.hpp"

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "util/error.hpp"
 

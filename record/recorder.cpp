@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "display/lens_model.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "record/video_file.hpp"
 #include "render/camera_json.hpp"
 #include "util/atomic_file.hpp"

@@ -4,7 +4,7 @@
 // primitives binned by reference depth into chunks, one plane per chunk, the swizzle blend of
 // the planes into every view, and the time each stage took. What differs between the two (which
 // primitives are binned, how a chunk becomes its plane) comes in through SweepingPlaneStages.
-// The GL twin is gpu/gl_sweeping_planes.hpp.
+// The GL twin is gpu/planes/gl_sweeping_planes.hpp.
 #include <cstddef>
 #include <functional>
 

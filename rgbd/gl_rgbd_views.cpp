@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "gpu/gl_interlacer.hpp"
-#include "gpu/gl_quilt_target.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
+#include "gpu/gl/gl_quilt_target.hpp"
 #include "rgbd/rgbd_frame.hpp"
 #include "rgbd/rgbd_view_model.hpp"
 #include "rgbd/shaders/rgbd_fill.frag.glsl.hpp"

@@ -7,7 +7,7 @@
 // Matches render_rgbd_quilt within the tolerance of tests/rgbd/gl_rgbd_views_test.cpp.
 #include <epoxy/gl.h>
 
-#include "gpu/gl_objects.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "render/quilt_layout.hpp"
 #include "rgbd/rgbd_options.hpp"
 #include "util/default_display.hpp"

@@ -7,7 +7,7 @@
 namespace lfd::scene {
 
 // The degree-0 SH basis constant, 1 / (2 sqrt(pi)) (auxiliary.h's SH_C0). The one definition:
-// gpu/shaders/sh_color.glsl carries its GLSL twin.
+// gpu/splats/shaders/sh_color.glsl carries its GLSL twin.
 inline constexpr float kShC0 = 0.28209479177387814f;
 
 // The view-independent colour of a DC coefficient: rgb = 0.5 + C0 * f_dc (before clamping).

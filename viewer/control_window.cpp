@@ -10,7 +10,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 
 namespace lfd::viewer {
 namespace {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "gpu/gl_objects.hpp"
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "viewer/seen_from_preview.hpp"
 #include "viewer/viewer_settings.hpp"
 

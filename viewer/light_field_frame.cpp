@@ -4,7 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "display/display_quilt.hpp"
-#include "gpu/gl_voxel_scene.hpp"
+#include "gpu/voxels/gl_voxel_scene.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "render/per_view_quilt.hpp"
 #include "util/error.hpp"

@@ -12,12 +12,12 @@
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
-#include "gpu/raster_path.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_frame_ring.hpp"
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_interlacer.hpp"
-#include "gpu/gl_objects.hpp"
+#include "gpu/gl/raster_path.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_frame_ring.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "lightfield/gl_device.hpp"
 #include "lightfield/gl_renderer.hpp"
 #include "lightfield/view_plan.hpp"
@@ -65,7 +65,7 @@ class LightFieldFrame {
 
   // Renders the quilt and the panel for `camera` with `settings`; fills `report`'s GPU stage
   // times when given: those of the newest frame the GPU has finished, read without waiting
-  // (gpu/gl_frame_ring.hpp; a few frames late).
+  // (gpu/gl/gl_frame_ring.hpp; a few frames late).
   // RGBA32F planes that do not fit fall back to RGBA8 when those fit (fit_notice() says so).
   void render(const render::CameraSpec& camera, const ViewerSettings& settings, FrameReport* report = nullptr);
   void replace_scene(const scene::GaussianScene& scene);

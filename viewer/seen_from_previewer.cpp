@@ -3,7 +3,7 @@
 #include <fmt/format.h>
 
 #include "display/view_count.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 
 namespace lfd::viewer {
 namespace {

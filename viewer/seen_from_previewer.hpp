@@ -1,7 +1,7 @@
 #pragma once
 // The GL side of the "seen from" preview: reads the panel back from the GPU when
 // seen_from_refresh_due says so, through a pixel buffer and a fence polled on later frames
-// (gpu/gl_async_readback.hpp: the frame loop never waits for the GPU), computes
+// (gpu/gl/gl_async_readback.hpp: the frame loop never waits for the GPU), computes
 // seen_from_preview on a worker thread (nor for the optics) and keeps the result as a texture
 // for the control window.
 #include <chrono>
@@ -10,8 +10,8 @@
 #include <string>
 
 #include "display/calibration_file.hpp"
-#include "gpu/gl_async_readback.hpp"
-#include "gpu/gl_objects.hpp"
+#include "gpu/gl/gl_async_readback.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "render/camera_json.hpp"
 #include "viewer/control_window.hpp"
 #include "viewer/light_field_frame.hpp"

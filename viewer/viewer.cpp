@@ -10,9 +10,9 @@
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
-#include "gpu/display_window.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/display_window.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "lightfield/scene_framing.hpp"
 #include "render/default_camera.hpp"
 #include "scene/gaussian_io.hpp"

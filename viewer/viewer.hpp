@@ -10,7 +10,7 @@
 #include <string>
 
 #include "display/calibration_file.hpp"
-#include "gpu/raster_path.hpp"
+#include "gpu/gl/raster_path.hpp"
 #include "render/quilt_layout.hpp"
 #include "util/image.hpp"
 #include "viewer/viewer_settings.hpp"

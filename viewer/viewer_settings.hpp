@@ -11,7 +11,7 @@
 
 namespace lfd::viewer {
 
-// kG2lfDirect: G2LF's planes straight into the panel, no quilt (gpu/gl_direct_panel.hpp).
+// kG2lfDirect: G2LF's planes straight into the panel, no quilt (gpu/panel/gl_direct_panel.hpp).
 enum class Method { kG2lf, kPerView, kG2lfDirect };
 
 struct ViewerSettings {

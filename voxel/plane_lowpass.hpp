@@ -28,7 +28,7 @@ float plane_lowpass_variance(const scene::VoxelScene& scene, const render::Quilt
 void gaussian_lowpass(render::RasterImage& image, float variance_px2);
 
 // The filter's normalised 1D kernel (2 radius + 1 taps, radius = max(1, ceil(3 sigma))); empty
-// below 0.01 texel^2. The GL planes' pass uses the same weights (gpu/gl_v2lf.cpp).
+// below 0.01 texel^2. The GL planes' pass uses the same weights (gpu/voxels/gl_v2lf.cpp).
 std::vector<float> gaussian_lowpass_kernel(float variance_px2);
 
 }  // namespace lfd::voxel

@@ -1,9 +1,9 @@
 // The player's quilt conversion contract (play/quilt_texture.hpp; play/shaders/
 // quilt_convert.frag.glsl): the texture units of the decoded picture's planes. Read by C++ and
-// GLSL (gpu/shaders/shader_io.h).
+// GLSL (gpu/gl/shaders/shader_io.h).
 #ifndef LFD_PLAY_SHADERS_QUILT_CONVERT_IO_H
 #define LFD_PLAY_SHADERS_QUILT_CONVERT_IO_H
-#include "gpu/shaders/shader_io.h"
+#include "gpu/gl/shaders/shader_io.h"
 
 LFD_IO_BEGIN(play)
 

@@ -1,9 +1,9 @@
 // The RGB-D view synthesis passes' contract (rgbd/gl_rgbd_views.hpp; rgbd/shaders/
 // rgbd_resample.frag.glsl, rgbd_warp.frag.glsl, rgbd_fill.frag.glsl): their texture units.
-// Read by C++ and GLSL (gpu/shaders/shader_io.h).
+// Read by C++ and GLSL (gpu/gl/shaders/shader_io.h).
 #ifndef LFD_RGBD_SHADERS_RGBD_IO_H
 #define LFD_RGBD_SHADERS_RGBD_IO_H
-#include "gpu/shaders/shader_io.h"
+#include "gpu/gl/shaders/shader_io.h"
 
 LFD_IO_BEGIN(rgbd)
 

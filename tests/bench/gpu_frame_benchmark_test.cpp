@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/gpu_frame_benchmark.hpp"
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 
 namespace lfd::bench {
 namespace {

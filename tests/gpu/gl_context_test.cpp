@@ -1,8 +1,8 @@
 // The headless context and the GL object wrappers on a real EGL context (llvmpipe here).
 #include <gtest/gtest.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_objects.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_objects.hpp"
 
 namespace lfd::gpu {
 namespace {

@@ -1,9 +1,9 @@
-// The direct panel pass on the GPU (gpu/gl_direct_panel.hpp) against the CPU's
+// The direct panel pass on the GPU (gpu/panel/gl_direct_panel.hpp) against the CPU's
 // (interlace::render_direct_panel) on the same planes of flat-coloured layers: u8 and f32
 // planes, nearest and bilinear, invView both ways, overscan, Gen3 cells, fringe; each case
 // through both stages (the compute pass over panel tiles and the fragment pass), which must
 // agree bit for bit, and the compute pass over more planes than one batch of its tile walk.
-#include "gpu/gl_direct_panel.hpp"
+#include "gpu/panel/gl_direct_panel.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,8 +15,8 @@
 #include <gtest/gtest.h>
 
 #include "display/visual_json.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/shaders/lens_view_io.h"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/panel/shaders/lens_view_io.h"
 #include "tests/interlace/flat_layer_planes.hpp"
 #include "tests/test_data.hpp"
 

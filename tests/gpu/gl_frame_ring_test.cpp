@@ -1,5 +1,5 @@
-// What a frame leaves for the CPU without waiting (gpu/gl_frame_ring.hpp,
-// gpu/gl_async_readback.hpp) and the uniform table made at link (gpu/gl_objects.hpp), on llvmpipe.
+// What a frame leaves for the CPU without waiting (gpu/gl/gl_frame_ring.hpp,
+// gpu/gl/gl_async_readback.hpp) and the uniform table made at link (gpu/gl/gl_objects.hpp), on llvmpipe.
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -7,11 +7,11 @@
 #include <stdexcept>
 #include <vector>
 
-#include "gpu/gl_async_readback.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_frame_ring.hpp"
-#include "gpu/gl_objects.hpp"
-#include "gpu/gl_program.hpp"
+#include "gpu/gl/gl_async_readback.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_frame_ring.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/gl_program.hpp"
 
 namespace lfd::gpu {
 namespace {

@@ -12,14 +12,14 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_depth_binning.hpp"
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_planes.hpp"
-#include "gpu/gl_radix_sort.hpp"
-#include "gpu/gl_scene.hpp"
-#include "gpu/gl_swizzle.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_depth_binning.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/planes/gl_planes.hpp"
+#include "gpu/compute/gl_radix_sort.hpp"
+#include "gpu/splats/gl_scene.hpp"
+#include "gpu/planes/gl_swizzle.hpp"
 #include "render/depth_binning.hpp"
 #include "render/g2lf.hpp"
 #include "render/image_metrics.hpp"

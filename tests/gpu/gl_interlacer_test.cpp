@@ -3,7 +3,7 @@
 // and the bundled Go and 8K templates, both blends, overscan, invert, a correction field, BGR
 // panels, Gen3 cell patterns and fringe; each case through both stages (the fragment pass and
 // the compute pass), which must also agree with each other bit for bit.
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 
 #include <cctype>
 #include <cmath>
@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "display/visual_json.hpp"
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "interlace/interlacer.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"

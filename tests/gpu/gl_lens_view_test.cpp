@@ -1,10 +1,10 @@
-// Single precision in the shaders (gpu/shaders/lens_view.glsl, docs/gpu.md "Single precision"):
+// Single precision in the shaders (gpu/panel/shaders/lens_view.glsl, docs/gpu.md "Single precision"):
 // over whole panels of real calibrations and templates up to 8K (32" Gen2 and Gen3), the view
 // fraction every subpixel gets on the GPU against LensModel's in double. The proof is the bound:
 // |f_GPU - f_CPU| <= kLensViewTolerance everywhere (on the circle: across the wrap at 0/1 only
 // the clamps differ), so a subpixel can show another view than on the CPU only when its phase lies
 // within that tolerance of a view boundary; those ties are counted at the display's view count.
-#include "gpu/gl_lens_view.hpp"
+#include "gpu/panel/gl_lens_view.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -19,7 +19,7 @@
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/visual_json.hpp"
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::gpu {

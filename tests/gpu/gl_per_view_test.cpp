@@ -1,5 +1,5 @@
-// The GL per-view renderer against the CPU reference rasterizer (gpu/gl_per_view_renderer.hpp),
-// on llvmpipe: views and quilts by PSNR (issue #9: >= 40 dB), the layered raster of G2LF's
+// The GL per-view renderer against the CPU reference rasterizer (gpu/splats/gl_per_view_renderer.hpp),
+// on llvmpipe: views and quilts by PSNR (docs/gpu.md "Per-view renderer": >= 40 dB), the layered raster of G2LF's
 // planes against the CPU's subsets, and scenes too large for the GPU.
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 
 #include "../test_data.hpp"
 #include "gl_view_compare.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
@@ -55,7 +55,7 @@ TEST(GlPerView, TheFixtureAndDemoScenesMatchTheCpu) {
 }
 
 // Where most pixels become opaque the reference stops blending before T < 1e-4 and GL blends
-// on (gpu/gl_splat_raster.hpp); the difference stays far below the bar.
+// on (gpu/splats/gl_splat_raster.hpp); the difference stays far below the bar.
 TEST(GlPerView, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
   HeadlessContext context;
   const auto scene = generated_scene(1, 60000);

@@ -11,10 +11,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_debug.hpp"
-#include "gpu/gl_objects.hpp"
-#include "gpu/shader_source.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/shader_source.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -152,24 +152,27 @@ TEST(GlDebug, TheDriversErrorMessageReachesCheckGl) {
 }
 
 // Every shader file of every module: binding points and work-group sizes come from the pass
-// family's contract header (gpu/shaders/*_io.h), read by C++ too, never a number in the shader.
+// family's contract header (gpu/*/shaders/*_io.h), read by C++ too, never a number in the shader.
 TEST(ShaderContract, NoShaderWritesABindingNumberOrAWorkGroupSize) {
   const std::regex literal(R"((\bbinding\s*=\s*[0-9])|(\blocal_size_[xyz]\s*=\s*[0-9]))");
   std::vector<std::string> found;
-  for (const char* folder : {"gpu/shaders", "rgbd/shaders", "play/shaders", "live/shaders"}) {
-    const std::filesystem::path dir = std::filesystem::path(LFD_SOURCE_DIR) / folder;
-    if (!std::filesystem::exists(dir)) continue;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-      if (entry.path().extension() != ".glsl") continue;
-      std::ifstream in(entry.path());
-      int number = 0;
-      for (std::string line; std::getline(in, line);) {
-        ++number;
-        const std::string code = line.substr(0, line.find("//"));
-        if (std::regex_search(code, literal))
-          found.push_back(std::string(folder) + "/" + entry.path().filename().string() + ":" + std::to_string(number) +
-                          ": " + line);
-      }
+  const std::filesystem::path source(LFD_SOURCE_DIR);
+  for (auto it = std::filesystem::recursive_directory_iterator(source); it != decltype(it)(); ++it) {
+    const std::string name = it->path().filename().string();
+    if (it->is_directory() && (name.starts_with("build") || name.starts_with(".") || name == "node_modules" ||
+                               name == "tests")) {
+      it.disable_recursion_pending();  // build trees, git, npm clients: not the project's shaders
+      continue;
+    }
+    if (it->path().extension() != ".glsl" || it->path().parent_path().filename() != "shaders") continue;
+    std::ifstream in(it->path());
+    int number = 0;
+    for (std::string line; std::getline(in, line);) {
+      ++number;
+      const std::string code = line.substr(0, line.find("//"));
+      if (std::regex_search(code, literal))
+        found.push_back(std::filesystem::relative(it->path(), source).string() + ":" + std::to_string(number) + ": " +
+                        line);
     }
   }
   EXPECT_TRUE(found.empty()) << "numbers that belong in the contract header:\n"

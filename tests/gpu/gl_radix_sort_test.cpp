@@ -1,4 +1,4 @@
-// The GPU radix sort against std::stable_sort (gpu/gl_radix_sort.hpp), on llvmpipe.
+// The GPU radix sort against std::stable_sort (gpu/compute/gl_radix_sort.hpp), on llvmpipe.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,8 +10,8 @@
 #include <random>
 #include <vector>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_radix_sort.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/compute/gl_radix_sort.hpp"
 
 namespace lfd::gpu {
 namespace {

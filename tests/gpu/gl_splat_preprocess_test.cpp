@@ -1,5 +1,5 @@
 // The GL preprocess pass against render::preprocess, Gaussian by Gaussian
-// (gpu/gl_splat_preprocess.hpp), on llvmpipe.
+// (gpu/splats/gl_splat_preprocess.hpp), on llvmpipe.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "../render/render_test_scenes.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_scene.hpp"
-#include "gpu/gl_splat_preprocess.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_scene.hpp"
+#include "gpu/splats/gl_splat_preprocess.hpp"
 #include "render/preprocess.hpp"
 #include "render/quilt_geometry.hpp"
 #include "render/scene_generator.hpp"

@@ -1,4 +1,4 @@
-// The compute tile rasterizer (--raster compute; gpu/gl_tile_splats.hpp, gpu/gl_tile_keys.hpp)
+// The compute tile rasterizer (--raster compute; gpu/splats/gl_tile_splats.hpp, gpu/compute/gl_tile_keys.hpp)
 // against the CPU reference rasterizer on llvmpipe, with the GL per-view tests' bars
 // (gl_per_view_test.cpp: >= 40 dB colour and transmittance): views, quilts in float and RGBA8,
 // a scene of huge splats (the per-work-group keys), a dense tile (many batches, the early stop),
@@ -12,10 +12,10 @@
 
 #include "../test_data.hpp"
 #include "gl_view_compare.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_tile_keys.hpp"
-#include "gpu/gl_tile_splats.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/compute/gl_tile_keys.hpp"
+#include "gpu/splats/gl_tile_splats.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"

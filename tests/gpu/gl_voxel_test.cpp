@@ -14,13 +14,13 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_v2lf.hpp"
-#include "gpu/gl_voxel_binning.hpp"
-#include "gpu/gl_voxel_scene.hpp"
-#include "gpu/gl_voxel_tile_raster.hpp"
-#include "gpu/gl_voxel_views.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/voxels/gl_v2lf.hpp"
+#include "gpu/voxels/gl_voxel_binning.hpp"
+#include "gpu/voxels/gl_voxel_scene.hpp"
+#include "gpu/voxels/gl_voxel_tile_raster.hpp"
+#include "gpu/voxels/gl_voxel_views.hpp"
 #include "render/image_metrics.hpp"
 #include "../voxel/voxel_test_scenes.hpp"
 #include "voxel/v2lf.hpp"

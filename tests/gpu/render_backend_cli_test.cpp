@@ -90,7 +90,7 @@ TEST_F(RenderBackendCli, ComputeAndHardwareRasterGiveTheSameQuilt) {
 }
 
 // A generated voxel scene through the real program: per-view and V2LF quilts on the GPU are the
-// CPU's (the GL voxel path, issue #13).
+// CPU's (the GL voxel path, docs/gpu.md "Voxels on the GPU").
 TEST_F(RenderBackendCli, VoxelQuiltsOnTheGpuMatchTheCpu) {
   const std::string scene = (dir_ / "scene.voxels").string();
   ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + scene + "'").exit_code, 0);
@@ -125,7 +125,7 @@ TEST_F(RenderBackendCli, VoxelComputeRasterMatchesHardwareAndTheCpu) {
       if (path == "auto" && method != "per-view") continue;  // one probe is enough
       const auto r = test::run_lfd(common + (dir_ / name(path)).string() + "' --backend gl --raster " + path);
       ASSERT_EQ(r.exit_code, 0) << r.output;
-      // auto measures voxels, not Gaussians (gpu/gl_raster_probe.hpp), and says so.
+      // auto measures voxels, not Gaussians (gpu/probes/gl_raster_probe.hpp), and says so.
       if (path == "auto") {
         EXPECT_NE(r.output.find(" for voxels (probe quilt: compute "), std::string::npos) << r.output;
       }

@@ -3,10 +3,10 @@
 // scene upload; the viewer's extension renders into the caller's texture.
 #include <gtest/gtest.h>
 
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
-#include "gpu/gl_v2lf.hpp"
-#include "gpu/gl_voxel_views.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
+#include "gpu/voxels/gl_v2lf.hpp"
+#include "gpu/voxels/gl_voxel_views.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "light_field_test_scenes.hpp"
 #include "render/image_metrics.hpp"

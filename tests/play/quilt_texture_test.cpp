@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "media/synthetic_quilt.hpp"
 #include "media/video_decoder.hpp"
 #include "play/quilt_texture.hpp"

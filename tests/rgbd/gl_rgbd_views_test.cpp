@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_interlacer.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
 #include "rgbd/rgbd_quilt.hpp"
 #include "tests/rgbd/rgbd_fixture.hpp"
 #include "util/error.hpp"

@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "display/calibration_file.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_g2lf.hpp"
-#include "gpu/gl_interlacer.hpp"
-#include "gpu/gl_scene.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_g2lf.hpp"
+#include "gpu/panel/gl_interlacer.hpp"
+#include "gpu/splats/gl_scene.hpp"
 #include "render/default_camera.hpp"
 #include "render/scene_generator.hpp"
 #include "util/error.hpp"

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "display/calibration_file.hpp"
-#include "gpu/gl_context.hpp"
-#include "gpu/gl_per_view_renderer.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/splats/gl_per_view_renderer.hpp"
 #include "render/image_metrics.hpp"
 #include "util/error.hpp"
 #include "viewer/light_field_frame.hpp"

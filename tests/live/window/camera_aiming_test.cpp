@@ -7,7 +7,7 @@
 #include "live/camera_aiming.hpp"
 #include "live/preview_window.hpp"
 #include "live/simulated_live_devices.hpp"
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "tests/live/window/live_test_display.hpp"
 
 namespace lfd::live {

@@ -3,7 +3,7 @@
 // calibration recovers the truth only if the window showed each pattern exactly.
 #include <gtest/gtest.h>
 
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "live/pattern_window.hpp"
 #include "live/live_calibration.hpp"
 #include "live/simulated_live_devices.hpp"

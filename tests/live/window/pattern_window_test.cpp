@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gpu/glfw_session.hpp"
+#include "gpu/gl/glfw_session.hpp"
 #include "live/pattern_window.hpp"
 #include "sim/patterns.hpp"
 #include "display/visual_json.hpp"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "display/calibration_file.hpp"
-#include "gpu/gl_context.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "render/camera_json.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"

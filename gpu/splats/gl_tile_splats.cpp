@@ -1,0 +1,443 @@
+#include "gpu/splats/gl_tile_splats.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/splats/gl_splat_preprocess.hpp"
+#include "gpu/splats/shaders/frame_io.h"
+#include "gpu/compute/shaders/radix_sort_io.h"
+#include "gpu/splats/shaders/tile_splat_composite.comp.glsl.hpp"
+#include "gpu/splats/shaders/tile_splat_huge.comp.glsl.hpp"
+#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/tile_splat_keys.comp.glsl.hpp"
+#include "gpu/splats/shaders/tile_splat_merge.comp.glsl.hpp"
+#include "gpu/splats/shaders/tile_splat_split.comp.glsl.hpp"
+#include "gpu/splats/shaders/tile_splat_preprocess.comp.glsl.hpp"
+#include "util/error.hpp"
+
+namespace lfd::gpu {
+namespace {
+
+static_assert(sizeof(TileViewCamera) == 112, "TileViewCamera is std430: packed floats");
+static_assert(sizeof(TileHugeList) == kTileHugeListWords * 4 && offsetof(TileHugeList, groups_x) == 16);
+static_assert(sizeof(TileSplitList) == kTileSplitListWords * 4 && offsetof(TileSplitList, merge_groups_x) == 16 &&
+                  offsetof(TileSplitList, part_groups_x) == 32,
+              "TileSplitList is std430: packed uints");
+// The split list: its header, kTileSplatMaxParts split slots (uvec4), kTileSplatMaxParts parts (uvec2).
+constexpr size_t kSplitSlotsOffset = sizeof(TileSplitList);
+constexpr size_t kSplitPartsOffset = kSplitSlotsOffset + size_t(kTileSplatMaxParts) * 16;
+constexpr size_t kSplitListBytes = kSplitPartsOffset + size_t(kTileSplatMaxParts) * 8;
+constexpr size_t kPartialBytes = size_t(kTilePixels) * 16;  // a part's vec4 per pixel
+static_assert(kTileSide == uint32_t(render::kTileSize), "the compute tiles are the reference's");
+
+Program keys_program(const char* label, const char* source, bool emit, bool planes) {
+  return Program(label, {{GL_COMPUTE_SHADER, source}},
+                 {std::string("EMIT ") + (emit ? "1" : "0"), std::string("PLANES ") + (planes ? "1" : "0")});
+}
+
+const char* image_format_name(GLenum format) {
+  switch (format) {
+    case GL_RGBA32F: return "rgba32f";
+    case GL_RGBA16F: return "rgba16f";
+    case GL_RGBA8: return "rgba8";
+    default: throw std::invalid_argument("compute tile rasterizer: the target must be RGBA32F, RGBA16F or RGBA8");
+  }
+}
+
+TileViewCamera view_camera(const render::Camera& camera, const render::RasterSettings& settings) {
+  TileViewCamera c;
+  for (int col = 0; col < 3; ++col)
+    for (int row = 0; row < 3; ++row) c.world_to_camera[4 * col + row] = camera.world_to_camera[col][row];
+  const glm::vec3 sh_origin = settings.sh_origin.value_or(camera.position_world);
+  for (int k = 0; k < 3; ++k) {
+    c.position[k] = camera.position_world[k];
+    c.sh_origin[k] = sh_origin[k];
+  }
+  c.tan_half_fov[0] = camera.tan_half_fov_x();
+  c.tan_half_fov[1] = camera.tan_half_fov_y();
+  c.focal_px[0] = camera.focal_x_px();
+  c.focal_px[1] = camera.focal_y_px();
+  c.shift_ndc[0] = camera.shift_x_ndc;
+  c.shift_ndc[1] = camera.shift_y_ndc;
+  return c;
+}
+
+// One work group a thing, spread over y beyond 65535 groups (the shaders index x + y * width).
+void dispatch_groups(size_t groups) {
+  if (groups == 0) return;
+  const GLuint x = GLuint(std::min<size_t>(groups, 65535));
+  glDispatchCompute(x, GLuint((groups + x - 1) / x), 1);
+}
+
+}  // namespace
+
+GlTileSplats::KeyPrograms::KeyPrograms(bool planes)
+    : count(keys_program("compute splats: count keys", tile_splat_keys_comp_glsl, false, planes)),
+      emit(keys_program("compute splats: write keys", tile_splat_keys_comp_glsl, true, planes)),
+      huge_count(keys_program("compute splats: count huge keys", tile_splat_huge_comp_glsl, false, planes)),
+      huge_emit(keys_program("compute splats: write huge keys", tile_splat_huge_comp_glsl, true, planes)) {}
+
+GlTileSplats::GlTileSplats()
+    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, tile_splat_preprocess_comp_glsl}}),
+      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, tile_splat_split_comp_glsl}}),
+      view_keys_(false),
+      plane_keys_(true) {}
+
+// The defines of a program that includes tile_splat_target.glsl.
+std::vector<std::string> target_defines(GLenum format, bool planes) {
+  const bool quantize = planes && format == GL_RGBA8;
+  return {std::string("TARGET_ARRAY ") + (planes ? "1" : "0"),
+          std::string("TARGET_FORMAT ") + image_format_name(format),
+          std::string("QUANTIZE_U8 ") + (quantize ? "1" : "0")};
+}
+
+const Program& GlTileSplats::composite_program(GLenum format, bool planes, bool part) {
+  if (part) format = GL_RGBA32F, planes = false;  // parts write partials, not the target
+  auto it = composite_.find({format, planes, part});
+  if (it == composite_.end()) {
+    std::vector<std::string> defines = target_defines(format, planes);
+    defines.push_back(std::string("SPLIT_PART ") + (part ? "1" : "0"));
+    const std::string label = part ? std::string("compute splats: composite split parts")
+                                   : std::string("compute splats: composite into ") + (planes ? "planes " : "views ") +
+                                         image_format_name(format);
+    it = composite_
+             .emplace(std::tuple(format, planes, part),
+                      Program(label, {{GL_COMPUTE_SHADER, tile_splat_composite_comp_glsl}}, defines))
+             .first;
+  }
+  return it->second;
+}
+
+const Program& GlTileSplats::merge_program(GLenum format, bool planes) {
+  auto it = merge_.find({format, planes});
+  if (it == merge_.end())
+    it = merge_
+             .emplace(std::pair(format, planes),
+                      Program(std::string("compute splats: merge split tiles into ") + (planes ? "planes " : "views ") +
+                                  image_format_name(format),
+                              {{GL_COMPUTE_SHADER, tile_splat_merge_comp_glsl}}, target_defines(format, planes)))
+             .first;
+  return it->second;
+}
+
+void GlTileSplats::set_target_uniforms(const Program& program, const TargetUniforms& t) {
+  const GLuint p = program.id();
+  glProgramUniform2i(p, program.uniform("image_size"), t.image_size.x, t.image_size.y);
+  glProgramUniform2i(p, program.uniform("tile_grid"), t.tile_grid.x, t.tile_grid.y);
+  if (!t.views) return;
+  glProgramUniform1ui(p, program.uniform("first_view"), t.first_view);
+  glProgramUniform1i(p, program.uniform("cols"), t.views->cols);
+  glProgramUniform2i(p, program.uniform("cell_size"), t.views->cell_size.x, t.views->cell_size.y);
+  glProgramUniform3fv(p, program.uniform("background"), 1, glm::value_ptr(t.views->background));
+  glProgramUniform1i(p, program.uniform("keep_transmittance"), t.views->keep_transmittance ? 1 : 0);
+}
+
+bool GlTileSplats::split_slots(uint32_t keys, uint32_t slots) {
+  split_ran_ = split_keys_ > 0 && keys > split_keys_;
+  if (!split_ran_) return false;
+  // Parts handed out: sum over split slots of ceil(L / K) <= keys / K + (split slots <= keys / K).
+  const size_t parts = std::min<size_t>(kTileSplatMaxParts, 2 * size_t(keys) / split_keys_ + 1);
+  split_list_.ensure(kSplitListBytes);
+  partials_.ensure(parts * kPartialBytes);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the last frame's split pass wrote the list
+  const TileSplitList none{};
+  split_list_.upload(&none, sizeof(none));
+  const uint32_t no_part = 0xFFFFFFFFu;
+  glClearNamedBufferSubData(split_list_.id(), GL_R32UI, GLintptr(kSplitPartsOffset),
+                            GLsizeiptr(kSplitListBytes - kSplitPartsOffset), GL_RED_INTEGER, GL_UNSIGNED_INT, &no_part);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  tiles_.bind();
+  split_list_.bind_storage(kTileSplatSplitBinding);
+  glProgramUniform1ui(split_.id(), split_.uniform("split_keys"), split_keys_);
+  split_.use();
+  split_.dispatch_1d(slots, int(kTileSplatSplitGroupSize));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  tiles_.write_dispatch(split_list_, offsetof(TileSplitList, slots) / 4, offsetof(TileSplitList, merge_groups_x) / 4);
+  tiles_.write_dispatch(split_list_, offsetof(TileSplitList, parts) / 4, offsetof(TileSplitList, part_groups_x) / 4);
+  return true;
+}
+
+void GlTileSplats::composite_split(GLenum format, bool planes, const TargetUniforms& target) {
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the merge writes after the whole-slot pass
+  tiles_.bind();
+  split_list_.bind_storage(kTileSplatSplitBinding);
+  partials_.bind_storage(kTileSplatPartialsBinding);
+  const Program& parts = composite_program(format, planes, true);
+  set_target_uniforms(parts, {.image_size = target.image_size, .tile_grid = target.tile_grid});
+  glProgramUniform1ui(parts.id(), parts.uniform("split_keys"), split_keys_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, split_list_.id());
+  parts.use();
+  glDispatchComputeIndirect(GLintptr(offsetof(TileSplitList, part_groups_x)));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  const Program& merge = merge_program(format, planes);
+  set_target_uniforms(merge, target);
+  glProgramUniform1ui(merge.id(), merge.uniform("split_keys"), split_keys_);
+  merge.use();
+  glDispatchComputeIndirect(GLintptr(offsetof(TileSplitList, merge_groups_x)));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
+std::pair<uint32_t, uint32_t> GlTileSplats::read_split_counts() const {
+  if (!split_ran_) return {0, 0};
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  TileSplitList list;
+  split_list_.download(&list, sizeof(list));
+  return {list.slots, list.slots == 0 ? 0 : std::min(list.parts, kTileSplatMaxParts)};
+}
+
+void GlTileSplats::run_keys(const KeyPrograms& programs, bool emit, const Items& items, uint32_t gaussians,
+                            glm::ivec2 tile_grid) {
+  const Program& small = emit ? programs.emit : programs.count;
+  const Program& huge = emit ? programs.huge_emit : programs.huge_count;
+  if (emit)  // the counting passes need no slots
+    for (const Program* p : {&small, &huge}) {
+      if (!items.layers) glProgramUniform1ui(p->id(), p->uniform("gaussian_count"), gaussians);
+      glProgramUniform2i(p->id(), p->uniform("tile_grid"), tile_grid.x, tile_grid.y);
+      glProgramUniform1ui(p->id(), p->uniform("key_capacity"), tiles_.capacity());
+    }
+  glProgramUniform1ui(small.id(), small.uniform("item_capacity"), items.capacity);
+  glProgramUniform1ui(small.id(), small.uniform("kept_word"), items.kept_word);
+  items.records->bind_storage(kSplatRecordsBinding);
+  items.entries->bind_storage(kTileSplatEntriesBinding);
+  items.kept->bind_storage(kTileSplatKeptBinding);
+  if (items.layers) items.layers->bind_storage(kTileSplatLayersBinding);
+  tiles_.counts(items.capacity).bind_storage(kTileCountsBinding);
+  huge_.bind_storage(kTileSplatHugeBinding);
+  if (emit) {
+    tiles_.keys().bind_storage(kTileKeysBinding);
+    tiles_.values().bind_storage(kTileValuesBinding);
+  }
+  small.use();
+  small.dispatch_1d(items.capacity, int(kTileSplatItemsGroupSize));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (!emit) {
+    tiles_.write_dispatch(huge_, offsetof(TileHugeList, count) / 4, offsetof(TileHugeList, groups_x) / 4);
+    huge_.bind_storage(kTileSplatHugeBinding);
+  }
+  huge.use();
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, huge_.id());
+  glDispatchComputeIndirect(GLintptr(offsetof(TileHugeList, groups_x)));
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void GlTileSplats::make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians,
+                             glm::ivec2 tile_grid, uint32_t slots, uint32_t pass) {
+  if (key_capacity_ == 0) key_capacity_ = std::max<uint32_t>(items.capacity, 1);
+  huge_.ensure((std::max<size_t>(items.capacity, 1) + kTileHugeListWords) * 4);
+  const TileHugeList no_huge{};
+  huge_.upload(&no_huge, sizeof(no_huge));
+  run_keys(programs, false, items, gaussians, tile_grid);
+  tiles_.scan_to_capacity(items.capacity, key_capacity_);
+  run_keys(programs, true, items, gaussians, tile_grid);
+  tiles_.sort_and_find_ranges_to_capacity(slots);
+  tiles_.copy_key_total(key_totals_, pass);  // key_totals_ holds the frame's passes
+  // The tile sort rewrote the sorter's kept count: the key passes above read the items' count from
+  // it (the depth sort's) before, nothing after.
+}
+
+std::vector<uint32_t> GlTileSplats::overflowed_passes(uint32_t passes) {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  const std::vector<uint32_t> totals = key_totals_.download_as<uint32_t>(passes);
+  std::vector<uint32_t> over;
+  uint64_t keys = 0, most = 0;
+  for (uint32_t p = 0; p < passes; ++p) {
+    keys += totals[p];
+    most = std::max<uint64_t>(most, totals[p]);
+    if (totals[p] > key_capacity_) over.push_back(p);
+  }
+  counts_.keys = uint32_t(std::min<uint64_t>(keys, UINT32_MAX));
+  if (!over.empty()) key_capacity_ = uint32_t(std::min<uint64_t>(most + most / 4 + 1024, UINT32_MAX));
+  return over;
+}
+
+uint32_t GlTileSplats::read_huge_items() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  TileHugeList list;
+  huge_.download(&list, sizeof(list));
+  return list.count;
+}
+
+void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Camera> cameras,
+                                const render::RasterSettings& settings, const TileViewsTarget& target,
+                                const std::function<void(int)>& stamp) {
+  if (!target.texture) throw std::invalid_argument("compute tile rasterizer: no target");
+  passes_ = 0;
+  if (cameras.empty()) return;
+  const int W = cameras[0].width, H = cameras[0].height;
+  for (const render::Camera& c : cameras)
+    if (c.width != W || c.height != H) throw std::invalid_argument("compute tile rasterizer: views of different sizes");
+  const size_t N = std::max<size_t>(scene.size(), 1);
+  size_t max_entries = max_entries_per_pass_;
+  if (max_entries == 0) {
+    GLint64 block = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+    max_entries = size_t(block) / sizeof(SplatRecord);
+  }
+  max_entries = std::min<size_t>(max_entries, (size_t(1) << 32) - 1);
+  if (N > max_entries)
+    throw_input_error("--raster compute: {} Gaussians need {:.0f} MiB of records a view, over the GPU's largest storage "
+                      "buffer; use --raster hardware",
+                      scene.size(), double(N * sizeof(SplatRecord)) / 1048576.0);
+  const size_t views_per_pass = std::max<size_t>(1, max_entries / N);
+  TileSplatCounts total{.entries = 0, .keys = 0, .slots = 0};
+  key_totals_.ensure((cameras.size() + views_per_pass - 1) / views_per_pass * 4);
+  const auto pass = [&](uint32_t p, const std::function<void(int)>& pass_stamp) {
+    const size_t first = size_t(p) * views_per_pass;
+    render_pass(scene, cameras.subspan(first, std::min(views_per_pass, cameras.size() - first)), uint32_t(first), p,
+                settings, target, pass_stamp);
+  };
+  for (size_t first = 0; first < cameras.size(); first += views_per_pass) {
+    pass(uint32_t(passes_), first == 0 ? stamp : std::function<void(int)>());
+    total.entries += counts_.entries;
+    total.slots += counts_.slots;
+    ++passes_;
+  }
+  // The frame's one read: the passes' key totals; a pass whose keys did not fit is drawn again
+  // with the capacity grown past them (the same keys then fit: once is enough).
+  redrawn_ = 0;
+  for (const uint32_t p : overflowed_passes(uint32_t(passes_))) {
+    pass(p, {});
+    ++redrawn_;
+  }
+  if (redrawn_ > 0) overflowed_passes(uint32_t(passes_));
+  total.keys = counts_.keys;
+  counts_ = total;
+  if (stamp) stamp(3);
+}
+
+void GlTileSplats::render_pass(const GlScene& scene, std::span<const render::Camera> cameras, uint32_t first_view,
+                               uint32_t pass, const render::RasterSettings& settings, const TileViewsTarget& target,
+                               const std::function<void(int)>& stamp) {
+  const int W = cameras[0].width, H = cameras[0].height;
+  const glm::ivec2 tile_grid{(W + render::kTileSize - 1) / render::kTileSize, (H + render::kTileSize - 1) / render::kTileSize};
+  const uint32_t N = uint32_t(scene.size()), V = uint32_t(cameras.size());
+  const size_t entries = size_t(N) * V;
+  if (entries >= (size_t(1) << 32)) throw std::length_error("compute tile rasterizer: views x Gaussians over 2^32");
+  const uint64_t slots = uint64_t(tile_grid.x) * tile_grid.y * V;
+  if (slots >= (uint64_t(1) << 32)) throw std::length_error("compute tile rasterizer: views x tiles over 2^32");
+  counts_ = {.entries = entries, .keys = 0, .slots = uint32_t(slots)};
+
+  // Preprocess every (view, Gaussian).
+  std::vector<TileViewCamera> view_cameras;
+  for (const render::Camera& c : cameras) view_cameras.push_back(view_camera(c, settings));
+  views_.ensure(view_cameras.size() * sizeof(TileViewCamera));
+  views_.upload(view_cameras.data(), view_cameras.size() * sizeof(TileViewCamera));
+  const size_t e = std::max<size_t>(entries, 1);
+  records_.ensure(e * sizeof(SplatRecord));
+  entry_keys_.ensure(e * 4);
+  entries_.ensure(e * 4);
+  if (N > 0) {
+    const int requested = settings.sh_degree < 0 ? scene.sh_degree() : settings.sh_degree;
+    const GLuint p = preprocess_.id();
+    glProgramUniform1ui(p, preprocess_.uniform("gaussian_count"), N);
+    glProgramUniform2i(p, preprocess_.uniform("image_size"), W, H);
+    glProgramUniform2i(p, preprocess_.uniform("tile_grid"), tile_grid.x, tile_grid.y);
+    glProgramUniform1f(p, preprocess_.uniform("dilation_px2"), settings.dilation_px2);
+    glProgramUniform1f(p, preprocess_.uniform("scale_modifier"), settings.scale_modifier);
+    glProgramUniform1i(p, preprocess_.uniform("sh_degree"), std::min(requested, scene.sh_degree()));
+    glProgramUniform1i(p, preprocess_.uniform("sh_stride"), scene.sh_vec4_stride());
+    scene.bind();
+    records_.bind_storage(kSplatRecordsBinding);
+    entry_keys_.bind_storage(kTileSplatEntryKeysBinding);
+    entries_.bind_storage(kTileSplatEntriesBinding);
+    views_.bind_storage(kTileSplatViewsBinding);
+    preprocess_.use();
+    const size_t groups = (size_t(N) + kSplatPreprocessGroupSize - 1) / kSplatPreprocessGroupSize;
+    const GLuint gx = GLuint(std::min<size_t>(groups, 65535));
+    glDispatchCompute(gx, GLuint((groups + gx - 1) / gx), V);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  if (stamp) stamp(1);
+
+  // The items: every visible entry, front to back (the kept count stays on the GPU).
+  SortKeys depth_order;
+  depth_order.drop_culled = true;
+  tiles_.sorter().sort(entry_keys_, entries_, uint32_t(entries), depth_order);
+  Items items{.records = &records_, .entries = &entries_, .kept = &tiles_.sorter().kept_count_buffer(),
+              .kept_word = offsetof(RadixSortParams, count) / 4, .layers = nullptr, .capacity = uint32_t(entries)};
+  make_keys(view_keys_, items, N, tile_grid, uint32_t(slots), pass);
+  if (stamp) stamp(2);
+
+  // Every (view, tile): the empty ones write the background; the split ones get theirs after.
+  const bool split = split_slots(key_capacity_, uint32_t(slots));
+  const GLenum format = target.texture->internal_format();
+  const Program& composite = composite_program(format, false);
+  const TargetUniforms where{.image_size = {W, H}, .tile_grid = tile_grid, .views = &target, .first_view = first_view};
+  set_target_uniforms(composite, where);
+  glProgramUniform1ui(composite.id(), composite.uniform("slot_count"), uint32_t(slots));
+  tiles_.bind();
+  records_.bind_storage(kSplatRecordsBinding);
+  glBindImageTexture(kTileSplatTargetImage, target.texture->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  composite.use();
+  dispatch_groups(slots);
+  if (split) composite_split(format, false, where);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                  GL_FRAMEBUFFER_BARRIER_BIT);
+  check_gl("the compute tile rasterizer");
+}
+
+void GlTileSplats::render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
+                                 const Buffer& draw, size_t gaussians, GlPlanes& planes,
+                                 const std::function<void(int)>& stamp) {
+  key_totals_.ensure(4);
+  draw_planes(records, sorted_ids, layers, draw, gaussians, planes, stamp);
+  // The one read (after the planes are composited): the key total; keys that did not fit are
+  // drawn again with the capacity grown past them.
+  redrawn_ = 0;
+  if (overflowed_passes(1).empty()) return;
+  draw_planes(records, sorted_ids, layers, draw, gaussians, planes, {});
+  redrawn_ = 1;
+  overflowed_passes(1);
+}
+
+void GlTileSplats::draw_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
+                               const Buffer& draw, size_t gaussians, GlPlanes& planes,
+                               const std::function<void(int)>& stamp) {
+  const glm::ivec2 tile_grid{(planes.width + render::kTileSize - 1) / render::kTileSize,
+                             (planes.height + render::kTileSize - 1) / render::kTileSize};
+  const uint64_t slots = uint64_t(tile_grid.x) * tile_grid.y * uint64_t(planes.max_planes);
+  if (slots >= (uint64_t(1) << 32)) throw std::length_error("compute tile rasterizer: planes x tiles over 2^32");
+  counts_ = {.entries = gaussians, .keys = 0, .slots = uint32_t(slots)};
+  Items items{.records = &records, .entries = &sorted_ids, .kept = &draw,
+              .kept_word = offsetof(DrawArraysIndirect, instance_count) / 4, .layers = &layers,
+              .capacity = uint32_t(gaussians)};
+  make_keys(plane_keys_, items, uint32_t(gaussians), tile_grid, uint32_t(slots), 0);
+  if (stamp) stamp(1);
+
+  const bool split = split_slots(key_capacity_, uint32_t(slots));
+  const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  glClearTexImage(planes.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
+  const GLenum format = gl_internal_format(planes.format);
+  const Program& composite = composite_program(format, true);
+  const TargetUniforms where{.image_size = {planes.width, planes.height}, .tile_grid = tile_grid};
+  set_target_uniforms(composite, where);
+  tiles_.bind();
+  records.bind_storage(kSplatRecordsBinding);
+  glBindImageTexture(kTileSplatTargetImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
+  composite.use();
+  tiles_.dispatch_work();
+  if (split) composite_split(format, true, where);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  if (stamp) stamp(2);
+  check_gl("the compute tile rasterizer's planes");
+}
+
+size_t GlTileSplats::plane_path_bytes(size_t items, size_t slots, size_t keys) {
+  const size_t per_item = 4 + 4;                  // counts, huge list
+  const size_t per_key = 4 * 4;                   // keys, values, the sort's two copies
+  const size_t per_slot = 8 + 4;                  // ranges, work list
+  const size_t split = kSplitListBytes + size_t(kTileSplatMaxParts) * kPartialBytes;  // at most
+  return items * per_item + keys * per_key + slots * per_slot + split;
+}
+
+size_t GlTileSplats::bytes() const {
+  return tiles_.bytes() + views_.bytes() + records_.bytes() + entry_keys_.bytes() + entries_.bytes() + huge_.bytes() +
+         split_list_.bytes() + partials_.bytes();
+}
+
+}  // namespace lfd::gpu
