@@ -9,6 +9,7 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "calib/calibrate.hpp"
+#include "calib/solve_plan.hpp"
 #include "calib/undescribed.hpp"
 #include "util/atomic_file.hpp"
 #include "live/hardware_live_calibration.hpp"
@@ -191,12 +192,8 @@ calib::CalibrationOutcome calibrate_live(CalibrateArgs& a,
   if (lo.probes && a.display_source.given())
     throw_input_error("--live {}: the panel's lens probes, or --display: not both", a.dir);
   const display::Calibration nominal = lo.probes ? lo.probes->nominal : a.display_source.load();
-  // The cone gate would refuse the result: say so before anything is shown.
-  if (options.camera && a.positions < 2 && !options.view_cone_deg &&
-      !nominal.view_cone_measured_deg)
-    throw_input_error("--positions 1: one camera position cannot measure the view cone (the "
-                      "pitch absorbs its error); give it with --view-cone, or use --positions 2 "
-                      "or more at different distances");
+  // What the gates would refuse after every photo is taken is refused before anything is shown.
+  calib::plan_solves({nominal, size_t(a.positions), /*live=*/true}, options);
   if (!lo.probes) reference = report::ReferenceCalibration{nominal, a.display_source.name()};
   lo.on_probes = [](const calib::ProbeRound& found) { print_probe_lens(found.lens); };
   calib::CalibrationOutcome outcome =

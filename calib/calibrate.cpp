@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "calib/calibration_stages.hpp"
-#include "calib/undescribed.hpp"
+#include "calib/solve_plan.hpp"
 #include "display/cover_layer.hpp"
 #include "util/error.hpp"
 
@@ -17,15 +17,6 @@ namespace lfd::calib {
 namespace {
 
 using ojson = nlohmann::ordered_json;
-
-// The positions the options speak of must be the photographed ones.
-void check_positions(const std::vector<sim::PositionCaptures>& positions, const CalibrateOptions& options) {
-  if (positions.empty()) throw_input_error("calibrate: no camera positions");
-  if (!options.known_camera_positions_m.empty() &&
-      options.known_camera_positions_m.size() != positions.size())
-    throw_input_error("calibrate options: known_camera_positions_m: {} given for {} positions",
-                      options.known_camera_positions_m.size(), positions.size());
-}
 
 // One distance cannot separate the view cone from the pitch: whether the known cone is kept or
 // the result will be refused.
@@ -134,7 +125,7 @@ void CalibrateOptions::check() const {
 }
 
 namespace {
-// The controller: the stages of calibration_stages.hpp in order.
+// The controller: the stages of calibration_stages.hpp in order, for one solve.
 CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
                                     const std::vector<sim::PositionCaptures>& positions,
                                     const CalibrateOptions& options);
@@ -143,54 +134,22 @@ CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
 CalibrationOutcome calibrate_display(const sim::PatternSet& set,
                                      const std::vector<sim::PositionCaptures>& positions,
                                      const CalibrateOptions& options) {
-  options.check();
-  if (options.view_cone_deg) {
-    // The known cone becomes the nominal's, marked as measured (assemble_calibration keeps it).
-    sim::PatternSet known = set;
-    display::Calibration& n = known.nominal;
-    n.view_cone_nominal_deg = n.view_cone_nominal_deg.value_or(n.display.view_cone_deg);
-    n.view_cone_measured_deg = n.display.view_cone_deg = *options.view_cone_deg;
-    CalibrateOptions rest = options;
-    rest.view_cone_deg.reset();
-    return calibrate_display(known, positions, rest);
-  }
-  const CoverGiven cover = options.cover.value_or(CoverGiven::of_description(set.nominal.display));
-  if (set.nominal.display.cover.thickness_m != cover.cover.thickness_m ||
-      set.nominal.display.cover.refractive_index != cover.cover.refractive_index) {
-    // Registration and the solve read the cover from the nominal: the prior's mean.
-    sim::PatternSet covered = set;
-    covered.nominal.display.cover = cover.cover;
-    CalibrateOptions rest = options;
-    rest.cover = cover;
-    return calibrate_display(covered, positions, rest);
-  }
-  if (from_probes(set) && !options.cover && !assumptions_of(set).cover_given) {
-    // Nobody said what covers the lenses: unknown, not none (docs/calibration.md).
-    CalibrateOptions unknown = options;
-    unknown.cover = CoverGiven::unknown();
-    return calibrate_display(set, positions, unknown);
-  }
-  if (from_probes(set) && !options.colour_order.estimate) {
-    // An undescribed panel's fine set: the subpixel order the probes read is a measurement
-    // too, which the photos confirm or replace (docs/calibration.md, "A panel nobody described").
-    CalibrateOptions measured = options;
-    measured.colour_order.estimate = true;
-    return calibrate_display(set, positions, measured);
-  }
-  if (from_probes(set) && !set.nominal.view_cone_measured_deg && positions.size() >= 2 &&
-      options.solver.fit_view_cone) {
-    // Its view cone is assumed until the photos measure it, and registration's lens-shift
-    // correction depends on it (3.1: up to half a lens per point, a coarse sheet's 0.6 mm):
-    // registered and solved again with the cone the first solve measured.
-    const CalibrationOutcome first = calibrate_stages(set, positions, options);
-    sim::PatternSet measured = set;
-    measured.nominal.display.view_cone_deg = first.calibration.display.view_cone_deg;
-    CalibrationOutcome out = calibrate_stages(measured, positions, options);
-    out.calibration.view_cone_nominal_deg = set.nominal.display.view_cone_deg;  // the assumption
+  const SolvePlan plan = plan_solves({set.nominal, positions.size()}, options);
+  sim::PatternSet planned = set;
+  planned.nominal = plan.nominal;
+  CalibrationOutcome out;
+  for (const PlannedSolve& solve : plan.solves) {
+    if (solve.role != SolveRole::kConeMeasured) {
+      out = calibrate_stages(planned, positions, plan.options);
+      continue;
+    }
+    const CalibrationOutcome first = std::move(out);
+    planned.nominal.display.view_cone_deg = first.calibration.display.view_cone_deg;
+    out = calibrate_stages(planned, positions, plan.options);
+    out.calibration.view_cone_nominal_deg = plan.nominal.display.view_cone_deg;  // the assumption
     out.seconds += first.seconds;
-    return out;
   }
-  return calibrate_stages(set, positions, options);
+  return out;
 }
 
 namespace {
@@ -199,9 +158,8 @@ CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
                                     const std::vector<sim::PositionCaptures>& positions,
                                     const CalibrateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
-  // calibrate_display has put the cover given into the nominal (the prior's mean).
-  const CoverGiven cover = options.cover.value_or(CoverGiven::of_description(set.nominal.display));
-  check_positions(positions, options);
+  // The plan (solve_plan.hpp) resolved the cover and put its prior's mean into the nominal.
+  const CoverGiven& cover = *options.cover;
   CalibrationOutcome out;
   out.cover_given = cover;
   const PatternRoles roles(set);
@@ -225,8 +183,8 @@ CalibrationOutcome calibrate_stages(const sim::PatternSet& set,
     refine_with_fringes(ctx, state);
   }
   if (out.camera_self_calibrated) {
-    // The boards alone leave the camera a few percent off (issue #12): refit it with the
-    // fringe points, then register again through it.
+    // The boards alone leave the camera a few percent off (docs/calibration.md, 3.1,
+    // "Without `--camera`"): refit it with the fringe points, then register again through it.
     refine_self_calibration(set, options, boards, states, out);
     for (size_t i = 0; i < positions.size(); ++i) {
       const PositionContext ctx = context(i);

@@ -41,8 +41,12 @@ sim::PatternSet plan_fine_patterns(const sim::PatternSet& coarse,
 }
 
 UndescribedAssumptions assumptions_of(const sim::PatternSet& coarse) {
+  return assumptions_of(coarse.nominal);
+}
+
+UndescribedAssumptions assumptions_of(const display::Calibration& nominal) {
   UndescribedAssumptions a;
-  a.cover = coarse.nominal.display.cover;
+  a.cover = nominal.display.cover;
   a.cover_given = a.cover.present();
   return a;
 }
@@ -93,7 +97,9 @@ void check_probe_photos(const std::filesystem::path& dir, const sim::PatternSet&
                       captures.string(), dir.string(), captures.string());
 }
 
-bool from_probes(const sim::PatternSet& set) { return set.nominal.display.serial == kSerial; }
+bool from_probes(const sim::PatternSet& set) { return from_probes(set.nominal); }
+
+bool from_probes(const display::Calibration& nominal) { return nominal.display.serial == kSerial; }
 
 nlohmann::ordered_json undescribed_report(const display::Calibration& probes,
                                           const UndescribedAssumptions& a) {

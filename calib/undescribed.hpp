@@ -32,8 +32,9 @@ display::Calibration description_from_probes(const sim::PatternSet& coarse,
                                              const UndescribedAssumptions& assumptions);
 
 // What the coarse set says of the cover: given to `lfd patterns --screen ... --cover-thickness`,
-// or none (a bare sheet).
+// or none (a bare sheet). The fine set carries the coarse set's cover, so either says it.
 UndescribedAssumptions assumptions_of(const sim::PatternSet& coarse);
+UndescribedAssumptions assumptions_of(const display::Calibration& nominal);
 
 // The fine set for the lens the probes found: a described set (phase patterns in its view
 // fractions, board, white, black, fringes) with the coarse set's board.
@@ -65,5 +66,6 @@ void check_probe_photos(const std::filesystem::path& dir, const sim::PatternSet&
 
 // True for the fine set of an undescribed panel (its nominal came from the probes).
 bool from_probes(const sim::PatternSet& set);
+bool from_probes(const display::Calibration& nominal);
 
 }  // namespace lfd::calib

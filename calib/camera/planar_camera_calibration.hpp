@@ -1,6 +1,7 @@
 #pragma once
 // The camera's intrinsics from views of the (planar) panel: OpenCV's calibrateCamera with the
-// focal length's uncertainty beside it. Used twice without --camera (issue #12): first with
+// focal length's uncertainty beside it. Used twice without --camera (docs/calibration.md,
+// 3.1, "Without `--camera`"): first with
 // the ChArUco corners of >= 3 positions, then with the thousands of fringe correspondences
 // of every position (lens shift removed), which pin the focal length and the principal point
 // down far better than ~40 corners a position.

@@ -1,12 +1,12 @@
 #pragma once
-// The phase each colour channel decodes on its own (issue #12: colour order and subpixel cells
-// are checked, not trusted). Phase decoding sums the three channels' phasors, which is right
-// only if each subpixel sits where the display description says: the pattern gave every
-// subpixel the nominal phase of its described position, so a channel whose subpixels sit
-// elsewhere (BGR taken for RGB, a wrong Gen3 cell table) decodes the phase of that other
-// position, a constant offset of pitch' times the displacement across the lens lines.
-// Per block, each channel's phasor sum_k I_ck exp(2 pi i k/K) gives its own phase; what is
-// kept is its offset from the all-channel phase and its share of the all-channel amplitude.
+// The phase each colour channel decodes on its own (docs/calibration.md, 3.7: colour order and
+// subpixel cells are checked, not trusted). Phase decoding sums the three channels' phasors, which
+// is right only if each subpixel sits where the display description says: the pattern gave every
+// subpixel the nominal phase of its described position, so a channel whose subpixels sit elsewhere
+// (BGR taken for RGB, a wrong Gen3 cell table) decodes the phase of that other position, a constant
+// offset of pitch' times the displacement across the lens lines. Per block, each channel's phasor
+// sum_k I_ck exp(2 pi i k/K) gives its own phase; what is kept is its offset from the all-channel
+// phase and its share of the all-channel amplitude.
 #include <array>
 #include <vector>
 

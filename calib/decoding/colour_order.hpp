@@ -1,7 +1,7 @@
 #pragma once
-// The colour-order check (issue #12): whether the photos agree with the subpixel layout the
-// calibration will use (flipSubp: RGB or BGR stripes; Gen3 subpixel cells), from the phase
-// each colour channel decodes on its own (channel_phase.hpp).
+// The colour-order check (docs/calibration.md, 3.7): whether the photos agree with the subpixel
+// layout the calibration will use (flipSubp: RGB or BGR stripes; Gen3 subpixel cells), from the
+// phase each colour channel decodes on its own (channel_phase.hpp).
 //
 // A pattern gives each subpixel the nominal phase of the position the pattern set's layout
 // puts it at. If channel c really sits elsewhere, it decodes psi + s pitch' (d_u + tilt d_v),

@@ -1,6 +1,7 @@
-// The colour-order check inside `lfd calibrate` (issue #12): a BGR unit whose description says
-// RGB is refused with the value to give, and with --estimate-colour-order the photos' layout
-// is adopted and the accuracy bars of the round trip are met. The round trip's small cameras.
+// The colour-order check inside `lfd calibrate` (docs/calibration.md, 3.7): a BGR unit whose
+// description says RGB is refused with the value to give, and with --estimate-colour-order the
+// photos' layout is adopted and the accuracy bars of the round trip are met. The round trip's small
+// cameras.
 #include <cstdio>
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-// The colour-order check (calib/decoding/colour_order.hpp, issue #12): each colour channel decodes its
-// own phase; a subpixel layout that is not the panel's (RGB taken for BGR, a Gen3 cell table
-// on a striped panel) leaves a constant offset per channel of known size, and the check names
-// the layout the photos favour. Phase photos of the small bench display from one camera with
-// the bench's effects (noise, blur, vignetting, distortion, glare), registered by projection.
+// The colour-order check (calib/decoding/colour_order.hpp, docs/calibration.md 3.7): each colour
+// channel decodes its own phase; a subpixel layout that is not the panel's (RGB taken for BGR, a
+// Gen3 cell table on a striped panel) leaves a constant offset per channel of known size, and the
+// check names the layout the photos favour. Phase photos of the small bench display from one camera
+// with the bench's effects (noise, blur, vignetting, distortion, glare), registered by projection.
 #include "calib/decoding/colour_order.hpp"
 
 #include <cmath>

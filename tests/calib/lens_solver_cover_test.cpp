@@ -1,13 +1,13 @@
-// The lens solver through a cover layer (issue #12): phase samples of a 16" Gen2 behind a 2 cm
-// acrylic block, seen by cameras 25 degrees to either side, where the exact refracted ray
-// differs from the paraxial one by up to 0.005 period. Solved with the block, the truth and
-// the cameras come back within the bars. Solved as a bare panel (its registration puts each
-// camera the apparent t (1 - 1/n) nearer, as RegistrationThroughCover measures), the cameras
-// stay at the apparent distance, which absorbs the paraxial block: on exact phase samples the
-// rest (the tan^2 part) is absorbed by the lens and the correction field too (measured here:
-// center 0.0032, cone 0.01 deg). What ignoring the block costs end to end comes from mapping
-// photo pixels to panel points (docs/calibration.md, "The cover layer"). Below (issue #36): the
-// block's thickness unknown, free under a prior.
+// The lens solver through a cover layer (docs/calibration.md, "The cover layer"): phase samples of
+// a 16" Gen2 behind a 2 cm acrylic block, seen by cameras 25 degrees to either side, where the
+// exact refracted ray differs from the paraxial one by up to 0.005 period. Solved with the block,
+// the truth and the cameras come back within the bars. Solved as a bare panel (its registration
+// puts each camera the apparent t (1 - 1/n) nearer, as RegistrationThroughCover measures), the
+// cameras stay at the apparent distance, which absorbs the paraxial block: on exact phase samples
+// the rest (the tan^2 part) is absorbed by the lens and the correction field too (measured here:
+// center 0.0032, cone 0.01 deg). What ignoring the block costs end to end comes from mapping photo
+// pixels to panel points (docs/calibration.md, "The cover layer"). Below (docs/calibration.md, "An
+// unknown cover"): the block's thickness unknown, free under a prior.
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -94,10 +94,10 @@ TEST(LensSolverThroughCover, MeetsTheBarsAndFindsTheCamerasBehindTheBlock) {
 namespace lfd::calib {
 namespace {
 
-// The same block of unknown thickness (issue #36): phase samples of a 16" Gen2 behind 2 cm of
-// acrylic, the solve told only "0-25 mm" (a uniform prior: 12.5 +- 7.2 mm). Registration
-// through the assumed 12.5 mm puts each camera the paraxial difference nearer than it is
-// (RegistrationThroughCover) and moves it back as the thickness grows (camera_per_cover_m).
+// The same block of unknown thickness (docs/calibration.md, "An unknown cover"): phase samples of a
+// 16" Gen2 behind 2 cm of acrylic, the solve told only "0-25 mm" (a uniform prior: 12.5 +- 7.2 mm).
+// Registration through the assumed 12.5 mm puts each camera the paraxial difference nearer than it
+// is (RegistrationThroughCover) and moves it back as the thickness grows (camera_per_cover_m).
 struct CoverCase {
   SolverResult solve;
   Misses held;     // the same samples solved with the thickness held at the prior's mean

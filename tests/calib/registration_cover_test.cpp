@@ -1,7 +1,7 @@
-// Registration through the cover layer (issue #12): the ChArUco board is shown on the panel and
-// photographed through the same acrylic block as the patterns. Board corners are projected
-// here exactly (where each corner's light leaves the block toward the camera), so the test
-// checks the registration's model of the block, not the detector.
+// Registration through the cover layer (docs/calibration.md, "The cover layer"): the ChArUco board
+// is shown on the panel and photographed through the same acrylic block as the patterns. Board
+// corners are projected here exactly (where each corner's light leaves the block toward the
+// camera), so the test checks the registration's model of the block, not the detector.
 #include <algorithm>
 
 #include <gtest/gtest.h>
