@@ -1,9 +1,7 @@
 // The display service on lfd play's Players (docs/serve.md, "The display").
 #include "serve/player_display_service.hpp"
 
-#include <chrono>
 #include <set>
-#include <thread>
 
 #include <fmt/format.h>
 
@@ -11,8 +9,9 @@
 
 namespace lfd::serve {
 
-PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays)
-    : players_(std::move(players)), displays_(std::move(displays)) {
+PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays,
+                                           MemoryBudget& budget)
+    : players_(std::move(players)), displays_(std::move(displays)), budget_(budget) {
   for (std::size_t i = 0; i < players_.size(); ++i)
     subscriptions_.push_back(players_[i]->subscribe(
         [this, i](const play::PlaybackEvent& e) { on_player_event(static_cast<int>(i), e); }));
@@ -29,6 +28,13 @@ play::Player& PlayerDisplayService::player(int display) const {
 }
 
 void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const QuiltSettings& s, const std::string& label) {
+  play::Player& p = player(display);
+  // The Player's copy of the picture and its quilt texture (RGBA, which llvmpipe keeps in main
+  // memory): 7/3 of the RGB bytes, held while the picture waits for its frame and while shown.
+  // A picture replaced before its frame is dropped with its hold (play/command_queue.hpp), so a
+  // client showing faster than the display draws is neither held up nor queued.
+  const std::size_t bytes = quilt.pixels.size() * 7 / 3;
+  auto hold = std::make_shared<MemoryBudget::Reservation>(budget_.reserve_or_busy(bytes, "a quilt for the display"));
   play::QuiltPicture picture;
   picture.pixels = quilt;
   picture.layout.cols = s.cols;
@@ -40,18 +46,7 @@ void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const Qu
   picture.name = label;
   if (picture.layout.tile_width() < 1 || picture.layout.tile_height() < 1)
     throw_input_error("quilt: {} x {} pixels hold no {} x {} tiles", quilt.width, quilt.height, s.cols, s.rows);
-  play::Player& p = player(display);
-  {
-    // Shows faster than the display draws wait for its next frame, up to 100 ms: the Player's
-    // queue, which holds each picture, grows by at most one picture per 100 ms per worker even
-    // when frames stall, and other requests are never held up for longer.
-    std::lock_guard show_lock(show_mutex_);
-    const auto queued_at = last_show_frame_.count(display) ? last_show_frame_[display] : -1;
-    for (int i = 0; i < 50 && p.state().frames_shown <= queued_at; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    p.show_quilt(std::move(picture));
-    last_show_frame_[display] = p.state().frames_shown;
-  }
+  p.show_quilt(std::move(picture), std::move(hold));
   std::lock_guard lock(mutex_);
   showing_ = fmt::format("{} ({}x{} tiles, {} views)", label, s.cols, s.rows, s.views);
   if (display == playlist_display_) playlist_.clear();

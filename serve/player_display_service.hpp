@@ -3,7 +3,8 @@
 // `lfd serve` runs. Quilts shown in memory, playlists of checked files, transport and events go
 // through each Player's thread-safe command queue; the Players' frames run on the main thread
 // (apps/serve.cpp). What the Player cannot do is refused with a message, never pretended
-// (docs/serve.md).
+// (docs/serve.md). A quilt handed to a Player reserves its memory from the service's budget for
+// as long as it waits or is shown; one that does not fit is busy (docs/serve.md, "Memory").
 #include <cstdint>
 #include <map>
 #include <mutex>
@@ -11,13 +12,14 @@
 
 #include "play/player.hpp"
 #include "serve/display_service.hpp"
+#include "serve/memory_budget.hpp"
 
 namespace lfd::serve {
 
 class PlayerDisplayService : public DisplayService {
  public:
   // `players[i]` shows `displays[i]`; both outlive this object.
-  PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays);
+  PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays, MemoryBudget& budget);
   ~PlayerDisplayService() override;
 
   std::vector<ServedDisplay> displays() const override { return displays_; }
@@ -39,8 +41,7 @@ class PlayerDisplayService : public DisplayService {
   std::vector<ServedDisplay> displays_;
   std::vector<int> subscriptions_;
   mutable std::mutex mutex_;
-  std::mutex show_mutex_;
-  std::map<int, std::int64_t> last_show_frame_;  // frames_shown when a display's last quilt was queued
+  MemoryBudget& budget_;
   std::string playlist_;      // the playlist the first display plays, empty if none
   int playlist_display_ = 0;
   std::string showing_;       // what was last shown through the service
