@@ -57,7 +57,6 @@ struct Player::Impl final : TransportOutput {
   std::unique_ptr<PlayerKeys> keys;
 
   CommandQueue<Impl> commands;
-  std::shared_ptr<const void> shown_hold;  // the shown picture's caller-side hold (show_quilt)
   mutable std::mutex state_mutex;
   PlayerState published;
   std::mutex subscriber_mutex;
@@ -302,9 +301,9 @@ Player::Player(PlayerOptions options) : impl_(std::make_unique<Impl>(std::move(o
 
 Player::~Player() = default;
 
-void Player::show_quilt(QuiltPicture picture, std::shared_ptr<const void> hold) {
+void Player::show_quilt(QuiltPicture picture) {
   auto shared = std::make_shared<QuiltPicture>(std::move(picture));
-  impl_->commands.push_content([shared, hold = std::move(hold)](Impl& p) {
+  impl_->commands.push_content([shared](Impl& p) {
     shared->layout.check(shared->name);
     if (shared->layout.width != shared->pixels.width || shared->layout.height != shared->pixels.height ||
         shared->pixels.channels != 3)
@@ -316,17 +315,13 @@ void Player::show_quilt(QuiltPicture picture, std::shared_ptr<const void> hold) 
     content.layout = shared->layout;
     content.still = std::move(shared->pixels);
     p.content = std::move(content);
-    p.shown_hold = hold;
     p.panel_dirty = true;
   });
 }
 
 void Player::set_playlist(std::vector<PlaylistEntry> entries, int start) {
   auto shared = std::make_shared<std::vector<PlaylistEntry>>(std::move(entries));
-  impl_->commands.push_content([shared, start](Impl& p) {
-    p.shown_hold.reset();
-    p.transport.set_playlist(std::move(*shared), start);
-  });
+  impl_->commands.push_content([shared, start](Impl& p) { p.transport.set_playlist(std::move(*shared), start); });
 }
 
 void Player::play() { impl_->enqueue([](Impl& p) { p.transport.play(); }); }

@@ -70,6 +70,7 @@ void BridgeServer::add_routes() {
   const auto call = [this](const httplib::Request& req, httplib::Response& res) {
     const BridgeResponse reply = api_.handle(req.matches[1].str(), req.body);
     res.status = reply.http_status;
+    if (reply.http_status == 503) res.set_header("Retry-After", "1");  // busy: the budget is in use
     res.set_content(reply.body, "application/json");
   };
   s.Put(R"(/([A-Za-z_]{1,64}))", call);

@@ -8,7 +8,6 @@
 
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
-#include "media/quilt_image.hpp"
 #include "serve/served_display_json.hpp"
 #include "util/error.hpp"
 

@@ -37,6 +37,14 @@ MemoryBudget::Reservation MemoryBudget::Reservation::split(std::size_t bytes) {
   return part;
 }
 
+void MemoryBudget::Reservation::merge(Reservation other) {
+  if (!other.counter_) return;
+  if (!counter_) counter_ = other.counter_;
+  bytes_ += other.bytes_;
+  other.bytes_ = 0;
+  other.counter_.reset();
+}
+
 MemoryBudget::MemoryBudget(std::size_t limit_bytes) : counter_(std::make_shared<Counter>()) {
   counter_->limit = limit_bytes;
 }

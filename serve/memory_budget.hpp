@@ -41,6 +41,8 @@ class MemoryBudget {
     // Moves `bytes` of this reservation (at most all of it) into a new one: part of what was
     // reserved for a job stays with its result.
     Reservation split(std::size_t bytes);
+    // Takes over `other`'s bytes (of the same budget), so one reservation holds both.
+    void merge(Reservation other);
 
    private:
     friend class MemoryBudget;

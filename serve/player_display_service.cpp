@@ -1,17 +1,44 @@
 // The display service on lfd play's Players (docs/serve.md, "The display").
 #include "serve/player_display_service.hpp"
 
+#include <algorithm>
+#include <fstream>
 #include <set>
 
 #include <fmt/format.h>
 
+#include "media/quilt_image.hpp"
 #include "util/error.hpp"
 
 namespace lfd::serve {
 
+namespace {
+
+// The RGB size of the largest picture among a playlist's image files, from their headers (the
+// first 72 KiB of each: a PNG's or WebP's size is at its start, a JPEG's after its EXIF, which
+// is at most 64 KiB);
+// videos and files whose size is not found there count nothing.
+std::size_t largest_picture_bytes(const Playlist& playlist) {
+  std::size_t largest = 0;
+  std::vector<std::uint8_t> head(72 * 1024);
+  for (const PlaylistEntry& e : playlist.entries) {
+    std::ifstream in(e.file, std::ios::binary);
+    in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+    try {
+      const media::ImageSize size = media::image_size({head.data(), static_cast<std::size_t>(in.gcount())}, e.file.string());
+      largest = std::max(largest, std::size_t(size.width) * size.height * 3);
+    } catch (const InputError&) {
+    }
+  }
+  return largest;
+}
+
+}  // namespace
+
 PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays,
                                            MemoryBudget& budget)
-    : players_(std::move(players)), displays_(std::move(displays)), budget_(budget) {
+    : players_(std::move(players)), displays_(std::move(displays)), budget_(budget), held_(players_.size()),
+      handing_over_(std::make_unique<std::mutex[]>(players_.size())) {
   for (std::size_t i = 0; i < players_.size(); ++i)
     subscriptions_.push_back(players_[i]->subscribe(
         [this, i](const play::PlaybackEvent& e) { on_player_event(static_cast<int>(i), e); }));
@@ -29,12 +56,11 @@ play::Player& PlayerDisplayService::player(int display) const {
 
 void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const QuiltSettings& s, const std::string& label) {
   play::Player& p = player(display);
-  // The Player's copy of the picture and its quilt texture (RGBA, which llvmpipe keeps in main
-  // memory): 7/3 of the RGB bytes, held while the picture waits for its frame and while shown.
-  // A picture replaced before its frame is dropped with its hold (play/command_queue.hpp), so a
-  // client showing faster than the display draws is neither held up nor queued.
-  const std::size_t bytes = quilt.pixels.size() * 7 / 3;
-  auto hold = std::make_shared<MemoryBudget::Reservation>(budget_.reserve_or_busy(bytes, "a quilt for the display"));
+  // One copy for a display at a time: a show that comes while another is being handed over is
+  // busy rather than a second copy in memory or a worker waiting (the newer would win anyway).
+  std::unique_lock handing_over(handing_over_[display], std::try_to_lock);
+  if (!handing_over.owns_lock()) throw BusyError("busy: another quilt is being handed to the display; try again");
+  hold_for_display(display, quilt.pixels.size() * 10 / 3, "a quilt for the display");
   play::QuiltPicture picture;
   picture.pixels = quilt;
   picture.layout.cols = s.cols;
@@ -46,10 +72,26 @@ void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const Qu
   picture.name = label;
   if (picture.layout.tile_width() < 1 || picture.layout.tile_height() < 1)
     throw_input_error("quilt: {} x {} pixels hold no {} x {} tiles", quilt.width, quilt.height, s.cols, s.rows);
-  p.show_quilt(std::move(picture), std::move(hold));
+  p.show_quilt(std::move(picture));
   std::lock_guard lock(mutex_);
   showing_ = fmt::format("{} ({}x{} tiles, {} views)", label, s.cols, s.rows, s.views);
   if (display == playlist_display_) playlist_.clear();
+}
+
+// A display holds the picture shown (RGB), its quilt texture (RGBA: 4/3, which llvmpipe keeps in
+// main memory) and the picture replacing it: a show's copy waiting for its frame, or a playlist
+// picture being decoded (stb's buffer beside the picture it becomes). That is 10/3 of the
+// newest content's RGB bytes; a replaced waiting show is dropped (play/command_queue.hpp), so it
+// never adds up. Sized by the newest content, not added per request: a display never gets stuck
+// on content it cannot replace.
+void PlayerDisplayService::hold_for_display(int display, std::size_t bytes, const std::string& what) {
+  std::lock_guard lock(hold_mutex_);
+  MemoryBudget::Reservation& held = held_[display];
+  if (bytes <= held.bytes()) {
+    held.split(held.bytes() - bytes).release();
+    return;
+  }
+  held.merge(budget_.reserve_or_busy(bytes - held.bytes(), what));
 }
 
 // The idle picture: a black quilt (one tile) in place of whatever was shown.
@@ -58,7 +100,9 @@ void PlayerDisplayService::wipe(int display) {
   black.pixels = Image8(8, 8, 3);
   black.layout = {1, 1, 1, 1.0, 8, 8};
   black.name = "nothing (wiped)";
-  player(display).show_quilt(std::move(black));
+  play::Player& p = player(display);
+  hold_for_display(display, black.pixels.pixels.size() * 10 / 3, "wipe");
+  p.show_quilt(std::move(black));
   std::lock_guard lock(mutex_);
   showing_ = "nothing (wiped)";
   if (display == playlist_display_) playlist_.clear();
@@ -79,6 +123,7 @@ void PlayerDisplayService::play_playlist(int display, const Playlist& playlist, 
   }
   if (entries.empty()) throw_input_error("playlist {}: no entries", playlist.name);
   play::Player& p = player(display);
+  hold_for_display(display, largest_picture_bytes(playlist) * 10 / 3, "playlist " + playlist.name);
   p.set_loop(playlist.loop);
   p.set_playlist(std::move(entries), std::max(head_index, 0));
   p.play();

@@ -3,10 +3,12 @@
 // `lfd serve` runs. Quilts shown in memory, playlists of checked files, transport and events go
 // through each Player's thread-safe command queue; the Players' frames run on the main thread
 // (apps/serve.cpp). What the Player cannot do is refused with a message, never pretended
-// (docs/serve.md). A quilt handed to a Player reserves its memory from the service's budget for
-// as long as it waits or is shown; one that does not fit is busy (docs/serve.md, "Memory").
+// (docs/serve.md). What each display holds (the picture shown, its texture, the one waiting or
+// being decoded) is reserved from the service's budget, sized by the newest content; content
+// that does not fit is busy (docs/serve.md, "Memory").
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -35,6 +37,8 @@ class PlayerDisplayService : public DisplayService {
 
  private:
   play::Player& player(int display) const;
+  // Resizes display `display`'s reservation to `bytes`, or BusyError (nothing changes then).
+  void hold_for_display(int display, std::size_t bytes, const std::string& what);
   void on_player_event(int display, const play::PlaybackEvent& event);
 
   std::vector<play::Player*> players_;
@@ -42,6 +46,9 @@ class PlayerDisplayService : public DisplayService {
   std::vector<int> subscriptions_;
   mutable std::mutex mutex_;
   MemoryBudget& budget_;
+  std::mutex hold_mutex_;
+  std::vector<MemoryBudget::Reservation> held_;  // per display
+  std::unique_ptr<std::mutex[]> handing_over_;   // per display: one picture copied at a time
   std::string playlist_;      // the playlist the first display plays, empty if none
   int playlist_display_ = 0;
   std::string showing_;       // what was last shown through the service
