@@ -107,8 +107,10 @@ int RunServe(int argc, char** argv) {
     players.push_back(std::make_unique<play::Player>(o));
     raw.push_back(players.back().get());
   }
-  // The budget counts the process as it stands with its windows open (GL, libraries, threads)
-  // and 32 MiB for the stacks and connection buffers to come; requests get the rest.
+  // The budget counts the process as it stands with its windows open and drawn once (GL and its
+  // shaders, libraries, threads) and 32 MiB for the stacks and connection buffers to come;
+  // requests get the rest.
+  for (auto& p : players) p->run_frame();
   serve::MemoryBudget budget(options.limits.memory_budget_bytes);
   const std::size_t baseline = serve::resident_bytes() + (32u << 20);
   budget.set_aside(baseline, "lfd serve itself");

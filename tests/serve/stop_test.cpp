@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 #include <httplib.h>
 
+#include "serve/listen_address.hpp"
 #include "serve/playlist_store.hpp"
 #include "tests/serve/serve_test_support.hpp"
 #include "util/atomic_file.hpp"
