@@ -4,6 +4,7 @@
 // are refused. The bounds are generous: they separate a bounded service from one that holds
 // every request, not fast from slow.
 #include <atomic>
+#include <cstdio>
 #include <chrono>
 #include <thread>
 
@@ -104,6 +105,8 @@ TEST_F(ServiceUnderLoadTest, ShowsOverTheBudgetAreAnsweredBusyAndMemoryStaysUnde
   EXPECT_GT(replies.busy.load(), 0);
   EXPECT_GT(replies.ok.load(), 0);
   const double grown_mib = (double(rss_peak) - double(rss_start)) / (1 << 20);
+  std::printf("busy %d, shown %d; resident memory grew by %.1f MiB at most (budget %zu MiB)\n", replies.busy.load(),
+              replies.ok.load(), grown_mib, kBudget >> 20);
   EXPECT_LT(grown_mib, kBudget / double(1 << 20) + 48) << "resident memory grew by " << grown_mib << " MiB";
   EXPECT_LE(service->budget().used(), std::size_t(kSide) * kSide * 3);  // only the one picture kept
 }
