@@ -33,6 +33,20 @@ std::size_t largest_picture_bytes(const Playlist& playlist) {
   return largest;
 }
 
+// What a cast (a playlist of one still quilt picture) shows: its file and layout; empty for
+// anything else (an RGB-D entry or a video moves or is made per frame; a longer playlist moves
+// from entry to entry).
+std::string still_playlist_key(const Playlist& playlist, int head_index) {
+  if (playlist.entries.size() != 1) return {};
+  std::string key = fmt::format("{} {}|", head_index, playlist.loop);
+  for (const PlaylistEntry& e : playlist.entries) {
+    if (e.rgbd || !media::is_image_file(e.file)) return {};
+    key += fmt::format("{}:{}x{}:{}:{}:{}|", e.file.string(), e.quilt.cols, e.quilt.rows, e.quilt.views, e.quilt.aspect,
+                       e.duration_ms);
+  }
+  return key;
+}
+
 }  // namespace
 
 PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays,
@@ -74,6 +88,7 @@ void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const Qu
     throw_input_error("quilt: {} x {} pixels hold no {} x {} tiles", quilt.width, quilt.height, s.cols, s.rows);
   p.show_quilt(std::move(picture));
   std::lock_guard lock(mutex_);
+  shown_key_[display].clear();
   showing_ = fmt::format("{} ({}x{} tiles, {} views)", label, s.cols, s.rows, s.views);
   if (display == playlist_display_) playlist_.clear();
 }
@@ -104,6 +119,7 @@ void PlayerDisplayService::wipe(int display) {
   hold_for_display(display, black.pixels.pixels.size() * 10 / 3, "wipe");
   p.show_quilt(std::move(black));
   std::lock_guard lock(mutex_);
+  shown_key_[display].clear();
   showing_ = "nothing (wiped)";
   if (display == playlist_display_) playlist_.clear();
 }
@@ -123,11 +139,25 @@ void PlayerDisplayService::play_playlist(int display, const Playlist& playlist, 
   }
   if (entries.empty()) throw_input_error("playlist {}: no entries", playlist.name);
   play::Player& p = player(display);
+  // The same still quilt cast again (bridge.js casts as a one-entry playlist, under another name
+  // each time): the display already shows it, so nothing is decoded again on its thread
+  // (decoding once per content, docs/serve.md "Memory"). Anything else plays anew.
+  const std::string key = still_playlist_key(playlist, head_index);
+  {
+    std::lock_guard lock(mutex_);
+    if (!key.empty() && key == shown_key_[display]) {
+      playlist_ = playlist.name;
+      playlist_display_ = display;
+      showing_ = "playlist " + playlist.name;
+      return p.play();
+    }
+  }
   hold_for_display(display, largest_picture_bytes(playlist) * 10 / 3, "playlist " + playlist.name);
   p.set_loop(playlist.loop);
   p.set_playlist(std::move(entries), std::max(head_index, 0));
   p.play();
   std::lock_guard lock(mutex_);
+  shown_key_[display] = key;
   playlist_ = playlist.name;
   playlist_display_ = display;
   showing_ = "playlist " + playlist.name;

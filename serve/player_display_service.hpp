@@ -52,6 +52,7 @@ class PlayerDisplayService : public DisplayService {
   std::string playlist_;      // the playlist the first display plays, empty if none
   int playlist_display_ = 0;
   std::string showing_;       // what was last shown through the service
+  std::map<int, std::string> shown_key_;  // per display: the still playlist set last (empty: other content)
   std::function<void(const PlaybackEvent&)> listener_;
 };
 
