@@ -1,11 +1,11 @@
 // `lfd serve`: the display's open Looking Glass service (docs/serve.md). Thin: serve/ speaks the
 // protocols, play/ shows on the display; this file reads the options, builds one Player per
-// display, runs their frames on the main thread and stops on SIGINT/SIGTERM.
+// display, runs their frames on the main thread and stops on SIGINT/SIGTERM within a second
+// (serve/stop_on_signal.hpp).
 //   lfd serve --device auto
 //   lfd serve --calibration calibration.json --allow-origin https://my.app.example
 //   lfd serve --status
-#include <csignal>
-#include <atomic>
+#include <chrono>
 #include <iostream>
 #include <memory>
 
@@ -19,13 +19,11 @@
 #include "serve/served_display.hpp"
 #include "serve/service.hpp"
 #include "serve/status_client.hpp"
+#include "serve/stop_on_signal.hpp"
 #include "util/error.hpp"
 
 namespace lfd::apps {
 namespace {
-
-std::atomic<bool> stop_requested{false};
-extern "C" void on_stop_signal(int) { stop_requested = true; }
 
 int print_status(const serve::ListenAddress& address) {
   const nlohmann::json s = serve::query_status(address);
@@ -50,12 +48,10 @@ std::vector<serve::ServedDisplay> displays_to_serve(const std::vector<std::strin
 }
 
 // The Players' frames until a signal or a window closes.
-void run_players(const std::vector<std::unique_ptr<play::Player>>& players) {
-  std::signal(SIGINT, on_stop_signal);
-  std::signal(SIGTERM, on_stop_signal);
-  while (!stop_requested)
+void run_players(const std::vector<std::unique_ptr<play::Player>>& players, serve::StopOnSignal& stop) {
+  while (!stop.requested())
     for (auto& p : players)
-      if (!p->run_frame()) stop_requested = true;
+      if (!p->run_frame()) stop.request();
 }
 
 }  // namespace
@@ -75,6 +71,7 @@ int RunServe(int argc, char** argv) {
   serve::ServeOptions options;
   play::PlayerOptions player_options;
   bool status = false;
+  std::size_t budget_mib = options.limits.memory_budget_bytes >> 20;
   std::string state_file = serve::default_state_file().string();
   app.add_option("--calibration", calibrations, "a display: lfd calibration.json or visual.json (repeat for several)")
       ->check(CLI::ExistingFile);
@@ -85,10 +82,18 @@ int RunServe(int argc, char** argv) {
   app.add_option("--state-file", state_file, "where playlists are kept")->capture_default_str();
   app.add_option("--monitor", player_options.monitor_prefix, "the displays' monitor name prefix")->capture_default_str();
   app.add_flag("--simulated", player_options.simulated_display, "show each display in a window (no display connected)");
+  app.add_option("--memory-budget", budget_mib,
+                 "MiB the service may keep resident in all: requests whose content would exceed it are answered busy")
+      ->capture_default_str()
+      ->check(CLI::Range(64, 1 << 20));
   app.add_flag("--status", status, "ask the running service what it shows, then exit");
   if (auto code = parse(app, argc, argv)) return *code;
   if (status) return print_status(options.listen);
 
+  // From the first signal on, at most a second until the process ends (stop_on_signal.hpp).
+  serve::StopOnSignal stop(std::chrono::milliseconds(1000));
+  serve::return_large_buffers_to_the_system();
+  options.limits.memory_budget_bytes = budget_mib << 20;
   options.allowed_origins = origins;
   options.state_file = state_file;
   const auto displays = displays_to_serve(calibrations, device);
@@ -102,8 +107,15 @@ int RunServe(int argc, char** argv) {
     players.push_back(std::make_unique<play::Player>(o));
     raw.push_back(players.back().get());
   }
-  serve::PlayerDisplayService display_service(raw, displays);
-  serve::Service service(display_service, options);
+  // The budget counts the process as it stands with its windows open and drawn once (GL and its
+  // shaders, libraries, threads) and 32 MiB for the stacks and connection buffers to come;
+  // requests get the rest.
+  for (auto& p : players) p->run_frame();
+  serve::MemoryBudget budget(options.limits.memory_budget_bytes);
+  const std::size_t baseline = serve::resident_bytes() + (32u << 20);
+  budget.set_aside(baseline, "lfd serve itself");
+  serve::PlayerDisplayService display_service(raw, displays, budget);
+  serve::Service service(display_service, options, &budget);
   service.start();
   for (const auto& line : service.describe()) std::cerr << "lfd serve: " << line << "\n";
   for (const auto& d : displays)
@@ -111,7 +123,9 @@ int RunServe(int argc, char** argv) {
                              d.hwid, d.calibration_path.string(), d.calibration_source, d.default_quilt.cols,
                              d.default_quilt.rows, d.default_quilt.views,
                              raw[d.index]->state().on_display ? "its monitor" : "a simulated display window");
-  run_players(players);
+  std::cerr << fmt::format("lfd serve: memory budget {} MiB, {} MiB of it the service itself\n", budget_mib,
+                           baseline >> 20);
+  run_players(players, stop);
   std::cerr << "lfd serve: stopping\n";
   service.stop();
   return 0;

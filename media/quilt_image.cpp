@@ -68,6 +68,28 @@ ImageFormat sniff_image_format(std::span<const uint8_t> b) {
   return ImageFormat::kUnknown;
 }
 
+ImageSize image_size(std::span<const uint8_t> bytes, const std::string& name) {
+  ImageSize size;
+  switch (sniff_image_format(bytes)) {
+    case ImageFormat::kPng:
+    case ImageFormat::kJpeg: {
+      if (bytes.size() > size_t(INT32_MAX)) throw_input_error("{}: file too large", name);
+      if (sniff_image_format(bytes) == ImageFormat::kPng) check_png_header(bytes, name);
+      int n = 0;
+      if (!stbi_info_from_memory(bytes.data(), int(bytes.size()), &size.width, &size.height, &n))
+        throw_input_error("{}: not a readable image ({})", name, stbi_failure_reason());
+      break;
+    }
+    case ImageFormat::kWebp:
+      if (!WebPGetInfo(bytes.data(), bytes.size(), &size.width, &size.height))
+        throw_input_error("{}: not a readable WebP image", name);
+      break;
+    case ImageFormat::kUnknown: throw_input_error("{}: not a PNG, JPEG or WebP image", name);
+  }
+  check_size(name, size.width, size.height);
+  return size;
+}
+
 Image8 decode_image(std::span<const uint8_t> bytes, const std::string& name) {
   switch (sniff_image_format(bytes)) {
     case ImageFormat::kPng:

@@ -26,6 +26,13 @@ enum class ImageFormat { kUnknown, kPng, kJpeg, kWebp };
 // From the first bytes (signature), not the name.
 ImageFormat sniff_image_format(std::span<const uint8_t> bytes);
 
+// The picture's width and height from its header, checked against the bounds above, without
+// decoding a pixel (what a caller budgets before decode_image). InputError as decode_image.
+struct ImageSize {
+  int width = 0, height = 0;
+};
+ImageSize image_size(std::span<const uint8_t> bytes, const std::string& name);
+
 // Decodes bytes to RGB (3 channels, rows top-down). InputError "NAME: ..." for an unknown or
 // corrupt format, a truncated file, or a picture over the bounds above.
 Image8 decode_image(std::span<const uint8_t> bytes, const std::string& name);

@@ -13,6 +13,7 @@
 #include "gpu/gl/display_window.hpp"
 #include "gpu/panel/gl_interlacer.hpp"
 #include "gpu/gl/glfw_session.hpp"
+#include "play/command_queue.hpp"
 #include "play/entry_content.hpp"
 #include "play/player_keys.hpp"
 #include "play/quilt_texture.hpp"
@@ -55,8 +56,7 @@ struct Player::Impl final : TransportOutput {
   std::unique_ptr<gpu::Texture> rgbd_quilt;
   std::unique_ptr<PlayerKeys> keys;
 
-  std::mutex command_mutex;
-  std::vector<std::function<void(Impl&)>> commands;
+  CommandQueue<Impl> commands;
   mutable std::mutex state_mutex;
   PlayerState published;
   std::mutex subscriber_mutex;
@@ -96,18 +96,10 @@ struct Player::Impl final : TransportOutput {
     quilt.reset();
   }
 
-  void enqueue(std::function<void(Impl&)> command) {
-    std::lock_guard lock(command_mutex);
-    commands.push_back(std::move(command));
-  }
+  void enqueue(std::function<void(Impl&)> command) { commands.push(std::move(command)); }
 
   void drain_commands() {
-    std::vector<std::function<void(Impl&)>> now;
-    {
-      std::lock_guard lock(command_mutex);
-      now.swap(commands);
-    }
-    for (auto& command : now) {
+    for (auto& command : commands.take()) {
       try {
         command(*this);
       } catch (const InputError& e) {  // a bad quilt handed over: the notice, the old picture stays
@@ -311,7 +303,7 @@ Player::~Player() = default;
 
 void Player::show_quilt(QuiltPicture picture) {
   auto shared = std::make_shared<QuiltPicture>(std::move(picture));
-  impl_->enqueue([shared](Impl& p) {
+  impl_->commands.push_content([shared](Impl& p) {
     shared->layout.check(shared->name);
     if (shared->layout.width != shared->pixels.width || shared->layout.height != shared->pixels.height ||
         shared->pixels.channels != 3)
@@ -329,7 +321,7 @@ void Player::show_quilt(QuiltPicture picture) {
 
 void Player::set_playlist(std::vector<PlaylistEntry> entries, int start) {
   auto shared = std::make_shared<std::vector<PlaylistEntry>>(std::move(entries));
-  impl_->enqueue([shared, start](Impl& p) { p.transport.set_playlist(std::move(*shared), start); });
+  impl_->commands.push_content([shared, start](Impl& p) { p.transport.set_playlist(std::move(*shared), start); });
 }
 
 void Player::play() { impl_->enqueue([](Impl& p) { p.transport.play(); }); }

@@ -87,9 +87,11 @@ class Player {
   Player& operator=(const Player&) = delete;
 
   // --- thread-safe: queued, applied at the start of the next frame -------------------------
-  // Replaces what is shown by one quilt held in memory (stays until the next command).
+  // Replaces what is shown by one quilt held in memory (stays until the next command). A show
+  // or playlist still waiting for its frame is dropped: the newest wins (play/command_queue.hpp).
   void show_quilt(QuiltPicture quilt);
-  // Replaces the playlist and starts its entry `start` (bad entries are skipped then).
+  // Replaces the playlist and starts its entry `start` (bad entries are skipped then); replaces
+  // a waiting show or playlist as show_quilt does.
   void set_playlist(std::vector<PlaylistEntry> entries, int start = 0);
   void play();
   void pause();

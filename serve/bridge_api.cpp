@@ -47,6 +47,8 @@ BridgeResponse BridgeApi::handle(const std::string& endpoint, std::string_view b
   try {
     const json request = parse_bridge_request(body, limits_.max_body_bytes);
     return {200, it->second(request).dump()};
+  } catch (const BusyError& e) {  // not logged: a line per refusal under load (docs/serve.md "Memory")
+    return {503, bridge_reply(endpoint, "", wstring("value", e.what()), "Failure").dump()};
   } catch (const UnknownOrchestration& e) {
     spdlog::warn("bridge {}: {}", endpoint, e.what());
     return {200, bridge_reply(endpoint, "", wstring("value", e.what()), "UnknownOrchestration").dump()};

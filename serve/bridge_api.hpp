@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "serve/display_service.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/event_hub.hpp"
 #include "serve/playlist_store.hpp"
 #include "serve/serve_limits.hpp"

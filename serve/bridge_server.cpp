@@ -1,6 +1,8 @@
 // Bridge's HTTP API server (docs/serve.md, "Bridge HTTP API").
 #include "serve/bridge_server.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -12,8 +14,14 @@
 
 namespace lfd::serve {
 
-BridgeServer::BridgeServer(BridgeApi& api, const OriginPolicy& origins, const ServeLimits& limits)
-    : api_(api), origins_(origins), limits_(limits), server_(std::make_unique<httplib::Server>()) {}
+namespace {
+// The body being read and handled on this worker thread: reserved before cpp-httplib reads it
+// (the pre-routing handler sees only the headers), released when the reply is made.
+thread_local MemoryBudget::Reservation body_reservation;
+}  // namespace
+
+BridgeServer::BridgeServer(BridgeApi& api, const OriginPolicy& origins, MemoryBudget& budget, const ServeLimits& limits)
+    : api_(api), origins_(origins), budget_(budget), limits_(limits), server_(std::make_unique<httplib::Server>()) {}
 
 BridgeServer::~BridgeServer() { stop(); }
 
@@ -27,7 +35,18 @@ void BridgeServer::add_routes() {
         res.set_header("Access-Control-Allow-Origin", origin);
         res.set_header("Vary", "Origin");
       }
-      return httplib::Server::HandlerResponse::Unhandled;
+      // The body as read, parsed to JSON and copied once more: three times its length. One
+      // over the body limit is cpp-httplib's 413, not ours.
+      const std::size_t length = std::min(req.get_header_value<std::uint64_t>("Content-Length"), std::uint64_t(limits_.max_body_bytes));
+      body_reservation.release();  // a request that never reached post-routing (a 413, say)
+      body_reservation = budget_.try_reserve(3 * length);
+      if (length == 0 || body_reservation) return httplib::Server::HandlerResponse::Unhandled;
+      res.status = 503;
+      res.set_header("Retry-After", "1");
+      res.set_content(bridge_reply("busy", "", wstring("value", "busy: the service's memory budget is in use; try again"),
+                                   "Failure").dump(),
+                      "application/json");
+      return httplib::Server::HandlerResponse::Handled;
     }
     ++refused_;
     spdlog::warn("bridge: refused {} {} ({})", req.method, req.path.substr(0, 64),
@@ -37,6 +56,7 @@ void BridgeServer::add_routes() {
                     "application/json");
     return httplib::Server::HandlerResponse::Handled;
   });
+  s.set_post_routing_handler([](const httplib::Request&, httplib::Response&) { body_reservation.release(); });
   s.Get("/", [](const httplib::Request&, httplib::Response& res) {
     res.set_content(R"({"service":"lfd serve"})", "application/json");
   });
@@ -50,6 +70,7 @@ void BridgeServer::add_routes() {
   const auto call = [this](const httplib::Request& req, httplib::Response& res) {
     const BridgeResponse reply = api_.handle(req.matches[1].str(), req.body);
     res.status = reply.http_status;
+    if (reply.http_status == 503) res.set_header("Retry-After", "1");  // busy: the budget is in use
     res.set_content(reply.body, "application/json");
   };
   s.Put(R"(/([A-Za-z_]{1,64}))", call);

@@ -3,13 +3,15 @@
 // JSON body to BridgeApi; GET / answers that the service runs (bridge.js's status check);
 // OPTIONS answers CORS preflights for allowed origins. Every request first passes the Origin
 // allow-list and, on a loopback listener, the Host check: a refused one gets 403 and reaches no
-// handler. Bodies, timeouts and connections are bounded (ServeLimits).
+// handler. Bodies, timeouts and connections are bounded (ServeLimits); a body the memory budget
+// cannot take now is answered 503 with Retry-After before it is read.
 #include <atomic>
 #include <memory>
 #include <thread>
 
 #include "serve/bridge_api.hpp"
 #include "serve/listen_address.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/origin_policy.hpp"
 
 namespace httplib {
@@ -20,7 +22,7 @@ namespace lfd::serve {
 
 class BridgeServer {
  public:
-  BridgeServer(BridgeApi& api, const OriginPolicy& origins, const ServeLimits& limits);
+  BridgeServer(BridgeApi& api, const OriginPolicy& origins, MemoryBudget& budget, const ServeLimits& limits);
   ~BridgeServer();
   void start(const ListenAddress& address);  // throws std::runtime_error naming the address
   void stop();
@@ -31,6 +33,7 @@ class BridgeServer {
 
   BridgeApi& api_;
   const OriginPolicy& origins_;
+  MemoryBudget& budget_;
   const ServeLimits& limits_;
   bool check_host_ = true;
   std::unique_ptr<httplib::Server> server_;

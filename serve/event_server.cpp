@@ -23,7 +23,8 @@ struct EventServer::Connection {
   std::array<char, 4096> buffer{};
   std::mutex mutex;
   std::condition_variable wake;
-  std::deque<std::string> queue;
+  std::deque<std::pair<std::string, MemoryBudget::Reservation>> queue;
+  MemoryBudget* budget = nullptr;
   bool closed = false;
   std::thread writer;
   int timeout_ms = 10000;
@@ -41,7 +42,13 @@ struct EventServer::Connection {
       std::lock_guard lock(mutex);
       if (closed) return;
       if (queue.size() >= kMaxQueuedEvents) queue.pop_front();  // a slow reader loses the oldest
-      queue.push_back(text);
+      auto held = budget->try_reserve(text.size());
+      if (!held && !queue.empty()) {  // the budget is full: this reader loses its oldest too
+        queue.pop_front();
+        held = budget->try_reserve(text.size());
+      }
+      if (!held) return;
+      queue.emplace_back(text, std::move(held));
     }
     wake.notify_one();
   }
@@ -65,7 +72,7 @@ struct EventServer::Connection {
         std::unique_lock lock(mutex);
         wake.wait(lock, [&] { return closed || !queue.empty(); });
         if (closed) break;
-        text = std::move(queue.front());
+        text = std::move(queue.front().first);
         queue.pop_front();
       }
       nng_iov iov{text.data(), text.size()};
@@ -89,8 +96,8 @@ struct EventServer::Connection {
   }
 };
 
-EventServer::EventServer(EventHub& hub, const OriginPolicy& origins, const ServeLimits& limits)
-    : hub_(hub), origins_(origins), limits_(limits) {}
+EventServer::EventServer(EventHub& hub, const OriginPolicy& origins, MemoryBudget& budget, const ServeLimits& limits)
+    : hub_(hub), origins_(origins), budget_(budget), limits_(limits) {}
 
 EventServer::~EventServer() { stop(); }
 
@@ -160,6 +167,7 @@ void EventServer::on_accept(void* arg) {
   auto c = std::make_shared<Connection>();
   c->stream = stream;
   c->timeout_ms = self->limits_.io_timeout_s * 1000;
+  c->budget = &self->budget_;
   if (nng_aio_alloc(&c->recv_aio, &Connection::on_recv, c.get()) != 0) return self->accept_next();
   c->writer = std::thread([raw = c.get()] { raw->write_loop(); });
   c->arm_recv();

@@ -4,8 +4,9 @@
 // `{"subscribe_orchestration_events": token}` and dispatches on payload.value.event.value).
 // Built on NNG's WebSocket stream API (the same library as the HoloPlay endpoint, so the service
 // has one WebSocket implementation). A refused Origin or a connection over the limit is closed at
-// once; each connection keeps a bounded queue, and one that does not take its messages within
-// the timeout is dropped.
+// once; each connection keeps a queue bounded in count and in bytes (the memory budget: an event
+// that does not fit is dropped for that connection), and one that does not take its messages
+// within the timeout is dropped.
 #include <atomic>
 #include <list>
 #include <memory>
@@ -16,6 +17,7 @@
 
 #include "serve/event_hub.hpp"
 #include "serve/listen_address.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/origin_policy.hpp"
 #include "serve/serve_limits.hpp"
 
@@ -23,7 +25,7 @@ namespace lfd::serve {
 
 class EventServer {
  public:
-  EventServer(EventHub& hub, const OriginPolicy& origins, const ServeLimits& limits);
+  EventServer(EventHub& hub, const OriginPolicy& origins, MemoryBudget& budget, const ServeLimits& limits);
   ~EventServer();
   void start(const ListenAddress& address);  // throws std::runtime_error naming the URL
   void stop();
@@ -39,6 +41,7 @@ class EventServer {
 
   EventHub& hub_;
   const OriginPolicy& origins_;
+  MemoryBudget& budget_;
   const ServeLimits& limits_;
   nng_stream_listener* listener_ = nullptr;
   nng_aio* accept_aio_ = nullptr;

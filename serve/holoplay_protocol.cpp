@@ -8,7 +8,6 @@
 
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
-#include "media/quilt_image.hpp"
 #include "serve/served_display_json.hpp"
 #include "util/error.hpp"
 
@@ -45,15 +44,21 @@ json holoplay_error(HoloPlayError error, const std::string& message) {
   return {{"error", static_cast<int>(error)}, {"errorMessage", message}};
 }
 
-HoloPlayProtocol::HoloPlayProtocol(DisplayService& displays, QuiltCache& cache, const ServeLimits& limits)
-    : displays_(displays), cache_(cache), limits_(limits) {}
+HoloPlayProtocol::HoloPlayProtocol(DisplayService& displays, QuiltCache& cache, DecodedQuilts& decoded,
+                                   MemoryBudget& budget, const ServeLimits& limits)
+    : displays_(displays), cache_(cache), decoded_(decoded), budget_(budget), limits_(limits) {}
 
 std::vector<std::uint8_t> HoloPlayProtocol::handle(std::span<const std::uint8_t> payload) {
   json reply;
   try {
+    // The message, the parsed CBOR's copy of `bin` and the request's: three times its size
+    // while it is handled (docs/serve.md, "Memory").
+    const MemoryBudget::Reservation message = budget_.reserve_or_busy(3 * payload.size(), "a HoloPlay message");
     const HoloPlayRequest request =
         parse_holoplay_request(payload, {limits_.max_cbor_depth, limits_.max_cbor_items});
     reply = handle_request(request);
+  } catch (const BusyError& e) {
+    reply = holoplay_error(HoloPlayError::kBusy, e.what());  // not logged: a log line per refusal under load
   } catch (const InputError& e) {
     spdlog::warn("holoplay: refused a request: {}", e.what());
     reply = holoplay_error(HoloPlayError::kBadMessage, e.what());
@@ -80,6 +85,8 @@ json HoloPlayProtocol::handle_request(const HoloPlayRequest& r) {
   } catch (const ProtocolError& e) {
     spdlog::warn("holoplay {}: {}", r.command.substr(0, 64), e.what());
     return holoplay_error(e.code, e.what());
+  } catch (const BusyError& e) {
+    return holoplay_error(HoloPlayError::kBusy, e.what());
   } catch (const InputError& e) {
     spdlog::warn("holoplay {}: {}", r.command.substr(0, 64), e.what());
     return holoplay_error(HoloPlayError::kBadArgument, e.what());
@@ -158,8 +165,8 @@ json HoloPlayProtocol::show(const HoloPlayRequest& r) {
   }
   if (source != "bindata") throw_input_error("show: source: {} is neither bindata nor cache", source.substr(0, 64));
   const QuiltSettings settings = holoplay_quilt_settings(quilt.value("settings", json()));
-  const Image8 image = media::decode_image(r.bin, "show: bin");
-  displays_.show_quilt(display, image, settings, "quilt sent by a HoloPlay client");
+  const std::shared_ptr<const Image8> image = decoded_.decode(r.bin, "show: bin");
+  displays_.show_quilt(display, *image, settings, "quilt sent by a HoloPlay client");
   return ok();
 }
 
@@ -169,8 +176,7 @@ json HoloPlayProtocol::cache(const HoloPlayRequest& r) {
   CachedQuilt entry;
   entry.name = quilt_name(quilt);
   entry.settings = holoplay_quilt_settings(quilt.value("settings", json()));
-  entry.image = std::make_shared<const Image8>(
-      media::decode_image(r.bin, "cache: bin"));
+  entry.image = decoded_.decode(r.bin, "cache: bin");
   const bool show = r.args.value("show", false);
   if (show) displays_.show_quilt(target_display(r.args), *entry.image, entry.settings, "cached quilt " + entry.name);
   cache_.put(std::move(entry));

@@ -9,8 +9,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include "serve/decoded_quilts.hpp"
 #include "serve/display_service.hpp"
 #include "serve/holoplay_request.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/quilt_cache.hpp"
 #include "serve/serve_limits.hpp"
 
@@ -24,13 +26,15 @@ enum class HoloPlayError : int {
   kBadArgument = 3,     // a field missing or out of range, an image that does not decode
   kNotFound = 4,        // a cached quilt that is not there
   kInternal = 5,        // the display failed
+  kBusy = 6,            // the memory budget or the decoders are in use now: try again (lfd's)
 };
 
 inline constexpr const char* kHoloPlayServiceVersion = "1.2.2";  // what `info` reports
 
 class HoloPlayProtocol {
  public:
-  HoloPlayProtocol(DisplayService& displays, QuiltCache& cache, const ServeLimits& limits);
+  HoloPlayProtocol(DisplayService& displays, QuiltCache& cache, DecodedQuilts& decoded, MemoryBudget& budget,
+                   const ServeLimits& limits);
   // A reply for any payload; bad input gets an error reply and a log line, never an exception.
   std::vector<std::uint8_t> handle(std::span<const std::uint8_t> payload);
   nlohmann::json handle_request(const HoloPlayRequest& request);
@@ -49,6 +53,8 @@ class HoloPlayProtocol {
 
   DisplayService& displays_;
   QuiltCache& cache_;
+  DecodedQuilts& decoded_;
+  MemoryBudget& budget_;
   const ServeLimits& limits_;
 };
 

@@ -19,6 +19,7 @@
 #include <nng/protocol/reqrep0/req.h>
 
 #include "serve/cbor_json.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/status_client.hpp"
 #include "util/error.hpp"
 
@@ -28,15 +29,10 @@ namespace {
 
 using json = nlohmann::json;
 using Clock = std::chrono::steady_clock;
-enum class Outcome { kAnswered, kRefused, kUnanswered };
+enum class Outcome { kAnswered, kBusy, kRefused, kUnanswered };
+constexpr int kHoloPlayBusy = 6;  // HoloPlayError::kBusy
 
-long rss_kb(int pid) {
-  std::ifstream status(fmt::format("/proc/{}/status", pid));
-  std::string line;
-  while (std::getline(status, line))
-    if (line.rfind("VmRSS:", 0) == 0) return std::stol(line.substr(6));
-  return 0;
-}
+long rss_kb(int pid) { return static_cast<long>(resident_bytes(pid) / 1024); }
 
 // A HoloPlay client: one REQ socket over WebSocket for the client's whole run, as holoplay-core
 // keeps its connection (closing an NNG socket per request hung NNG 1.5.2's client under this
@@ -67,7 +63,8 @@ struct HoloPlayClient {
     Outcome outcome = Outcome::kRefused;
     try {
       const json reply = decode_cbor({static_cast<const std::uint8_t*>(nng_msg_body(m)), nng_msg_len(m)}, {});
-      outcome = reply.value("error", -1) == 0 ? Outcome::kAnswered : Outcome::kRefused;
+      const int error = reply.value("error", -1);
+      outcome = error == 0 ? Outcome::kAnswered : error == kHoloPlayBusy ? Outcome::kBusy : Outcome::kRefused;
     } catch (const InputError&) {
     }
     nng_msg_free(m);
@@ -86,6 +83,7 @@ Outcome bridge_put(httplib::Client& c, const std::string& endpoint, const json& 
     const bool io_error = r.error() == httplib::Error::Read || r.error() == httplib::Error::Write;
     return io_error && waited_ms >= 0.9 * timeout_ms ? Outcome::kUnanswered : Outcome::kRefused;
   }
+  if (r->status == 503) return Outcome::kBusy;
   if (r->status != 200) return Outcome::kRefused;
   const json reply = json::parse(r->body, nullptr, false);
   return !reply.is_discarded() && reply["status"]["value"] == "Completion" ? Outcome::kAnswered : Outcome::kRefused;
@@ -136,6 +134,9 @@ struct Shared {
     if (outcome == Outcome::kAnswered) {
       ++k.answered;
       k.latency_ms.push_back(ms);
+    } else if (outcome == Outcome::kBusy) {
+      ++k.busy;
+      k.busy_latency_ms.push_back(ms);
     } else if (outcome == Outcome::kRefused) {
       ++k.refused;
     } else {
@@ -207,6 +208,7 @@ LoadBenchResult run_load_bench(const LoadBenchOptions& o) {
   result.service_pid = status.value("pid", 0);
   if (result.service_pid <= 0) throw_input_error("the service at the address did not say its process id");
   result.clients = o.clients;
+  result.quilt = o.quilt_description;
   result.seconds = o.seconds;
   Shared shared;
   for (const char* kind : {"holoplay info", "holoplay show (quilt bytes)", "bridge available_output_devices",
@@ -241,15 +243,18 @@ LoadBenchResult run_load_bench(const LoadBenchOptions& o) {
 std::string load_bench_table(const LoadBenchResult& r) {
   std::string out = fmt::format("lfd bench serve: {} clients for {:.0f} s against lfd serve (pid {})\n", r.clients,
                                 r.seconds, r.service_pid);
-  out += fmt::format("{:<34} {:>8} {:>9} {:>8} {:>11} {:>11} {:>11}\n", "request", "sent", "answered", "refused",
-                     "unanswered", "median ms", "p99 ms");
+  if (!r.quilt.empty()) out += "quilt: " + r.quilt + "\n";
+  out += fmt::format("{:<34} {:>6} {:>8} {:>6} {:>7} {:>10} {:>10} {:>9} {:>10}\n", "request", "sent", "answered",
+                     "busy", "refused", "unanswered", "median ms", "p99 ms", "busy p99");
   for (const auto& k : r.kinds) {
     if (!k.expects_answer) {
-      out += fmt::format("{:<34} {:>8} {:>9} {:>8} {:>11} {:>11} {:>11}\n", k.kind, k.sent, "-", "-", "-", "-", "-");
+      out += fmt::format("{:<34} {:>6} {:>8} {:>6} {:>7} {:>10} {:>10} {:>9} {:>10}\n", k.kind, k.sent, "-", "-", "-",
+                         "-", "-", "-", "-");
       continue;
     }
-    out += fmt::format("{:<34} {:>8} {:>9} {:>8} {:>11} {:>11.2f} {:>11.2f}\n", k.kind, k.sent, k.answered, k.refused,
-                       k.unanswered, percentile(k.latency_ms, 0.5), percentile(k.latency_ms, 0.99));
+    out += fmt::format("{:<34} {:>6} {:>8} {:>6} {:>7} {:>10} {:>10.2f} {:>9.2f} {:>10.2f}\n", k.kind, k.sent,
+                       k.answered, k.busy, k.refused, k.unanswered, percentile(k.latency_ms, 0.5),
+                       percentile(k.latency_ms, 0.99), percentile(k.busy_latency_ms, 0.99));
   }
   out += fmt::format("service RSS: start {:.1f} MiB, peak first half {:.1f} MiB, peak second half {:.1f} MiB, end {:.1f} MiB\n",
                      r.rss_start_kb / 1024.0, r.rss_peak_first_half_kb / 1024.0, r.rss_peak_second_half_kb / 1024.0,
@@ -261,13 +266,33 @@ std::string load_bench_table(const LoadBenchResult& r) {
 nlohmann::json load_bench_json(const LoadBenchResult& r) {
   json kinds = json::array();
   for (const auto& k : r.kinds)
-    kinds.push_back({{"kind", k.kind}, {"sent", k.sent}, {"answered", k.answered}, {"refused", k.refused},
+    kinds.push_back({{"kind", k.kind}, {"sent", k.sent}, {"answered", k.answered}, {"busy", k.busy}, {"refused", k.refused},
                      {"unanswered", k.unanswered}, {"median_ms", percentile(k.latency_ms, 0.5)},
-                     {"p99_ms", percentile(k.latency_ms, 0.99)}});
-  return {{"bench", "serve"}, {"clients", r.clients}, {"seconds", r.seconds}, {"service_pid", r.service_pid},
+                     {"p99_ms", percentile(k.latency_ms, 0.99)}, {"busy_p99_ms", percentile(k.busy_latency_ms, 0.99)}});
+  return {{"bench", "serve"}, {"quilt", r.quilt}, {"clients", r.clients}, {"seconds", r.seconds}, {"service_pid", r.service_pid},
           {"requests", kinds}, {"rss_start_kb", r.rss_start_kb}, {"rss_peak_first_half_kb", r.rss_peak_first_half_kb},
           {"rss_peak_second_half_kb", r.rss_peak_second_half_kb}, {"rss_end_kb", r.rss_end_kb},
           {"service_alive_after", r.service_alive_after}};
+}
+
+const std::vector<QuiltSizePreset>& quilt_size_presets() {
+  // Go's from its content as the vendor ships it (11x6 of 372x662); the others the standard
+  // quilt of each unit (../shared/reference/looking-glass.md, "Standard quilt per device").
+  static const std::vector<QuiltSizePreset> presets = {
+      {"go", "Looking Glass Go", 11, 6, 372, 662, 0.5625},
+      {"portrait", "Looking Glass Portrait", 8, 6, 420, 560, 0.75},
+      {"16in", "16\" Landscape (Gen3)", 7, 7, 857, 857, 1.77778},
+      {"32in", "32\" Landscape (Gen3)", 7, 7, 1170, 1170, 1.77778}};
+  return presets;
+}
+
+const QuiltSizePreset& quilt_size_preset(const std::string& name) {
+  std::string names;
+  for (const auto& p : quilt_size_presets()) {
+    if (p.name == name) return p;
+    names += (names.empty() ? "" : ", ") + p.name;
+  }
+  throw_input_error("--quilt-size: {} is not one of {}", name, names);
 }
 
 }  // namespace lfd::serve

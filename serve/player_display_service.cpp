@@ -1,18 +1,58 @@
 // The display service on lfd play's Players (docs/serve.md, "The display").
 #include "serve/player_display_service.hpp"
 
-#include <chrono>
+#include <algorithm>
+#include <fstream>
 #include <set>
-#include <thread>
 
 #include <fmt/format.h>
 
+#include "media/quilt_image.hpp"
 #include "util/error.hpp"
 
 namespace lfd::serve {
 
-PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays)
-    : players_(std::move(players)), displays_(std::move(displays)) {
+namespace {
+
+// The RGB size of the largest picture among a playlist's image files, from their headers (the
+// first 72 KiB of each: a PNG's or WebP's size is at its start, a JPEG's after its EXIF, which
+// is at most 64 KiB);
+// videos and files whose size is not found there count nothing.
+std::size_t largest_picture_bytes(const Playlist& playlist) {
+  std::size_t largest = 0;
+  std::vector<std::uint8_t> head(72 * 1024);
+  for (const PlaylistEntry& e : playlist.entries) {
+    std::ifstream in(e.file, std::ios::binary);
+    in.read(reinterpret_cast<char*>(head.data()), static_cast<std::streamsize>(head.size()));
+    try {
+      const media::ImageSize size = media::image_size({head.data(), static_cast<std::size_t>(in.gcount())}, e.file.string());
+      largest = std::max(largest, std::size_t(size.width) * size.height * 3);
+    } catch (const InputError&) {
+    }
+  }
+  return largest;
+}
+
+// What a cast (a playlist of one still quilt picture) shows: its file and layout; empty for
+// anything else (an RGB-D entry or a video moves or is made per frame; a longer playlist moves
+// from entry to entry).
+std::string still_playlist_key(const Playlist& playlist, int head_index) {
+  if (playlist.entries.size() != 1) return {};
+  std::string key = fmt::format("{} {}|", head_index, playlist.loop);
+  for (const PlaylistEntry& e : playlist.entries) {
+    if (e.rgbd || !media::is_image_file(e.file)) return {};
+    key += fmt::format("{}:{}x{}:{}:{}:{}|", e.file.string(), e.quilt.cols, e.quilt.rows, e.quilt.views, e.quilt.aspect,
+                       e.duration_ms);
+  }
+  return key;
+}
+
+}  // namespace
+
+PlayerDisplayService::PlayerDisplayService(std::vector<play::Player*> players, std::vector<ServedDisplay> displays,
+                                           MemoryBudget& budget)
+    : players_(std::move(players)), displays_(std::move(displays)), budget_(budget), held_(players_.size()),
+      handing_over_(std::make_unique<std::mutex[]>(players_.size())) {
   for (std::size_t i = 0; i < players_.size(); ++i)
     subscriptions_.push_back(players_[i]->subscribe(
         [this, i](const play::PlaybackEvent& e) { on_player_event(static_cast<int>(i), e); }));
@@ -29,6 +69,12 @@ play::Player& PlayerDisplayService::player(int display) const {
 }
 
 void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const QuiltSettings& s, const std::string& label) {
+  play::Player& p = player(display);
+  // One copy for a display at a time: a show that comes while another is being handed over is
+  // busy rather than a second copy in memory or a worker waiting (the newer would win anyway).
+  std::unique_lock handing_over(handing_over_[display], std::try_to_lock);
+  if (!handing_over.owns_lock()) throw BusyError("busy: another quilt is being handed to the display; try again");
+  hold_for_display(display, quilt.pixels.size() * 10 / 3, "a quilt for the display");
   play::QuiltPicture picture;
   picture.pixels = quilt;
   picture.layout.cols = s.cols;
@@ -40,21 +86,27 @@ void PlayerDisplayService::show_quilt(int display, const Image8& quilt, const Qu
   picture.name = label;
   if (picture.layout.tile_width() < 1 || picture.layout.tile_height() < 1)
     throw_input_error("quilt: {} x {} pixels hold no {} x {} tiles", quilt.width, quilt.height, s.cols, s.rows);
-  play::Player& p = player(display);
-  {
-    // Shows faster than the display draws wait for its next frame, up to 100 ms: the Player's
-    // queue, which holds each picture, grows by at most one picture per 100 ms per worker even
-    // when frames stall, and other requests are never held up for longer.
-    std::lock_guard show_lock(show_mutex_);
-    const auto queued_at = last_show_frame_.count(display) ? last_show_frame_[display] : -1;
-    for (int i = 0; i < 50 && p.state().frames_shown <= queued_at; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    p.show_quilt(std::move(picture));
-    last_show_frame_[display] = p.state().frames_shown;
-  }
+  p.show_quilt(std::move(picture));
   std::lock_guard lock(mutex_);
+  shown_key_[display].clear();
   showing_ = fmt::format("{} ({}x{} tiles, {} views)", label, s.cols, s.rows, s.views);
   if (display == playlist_display_) playlist_.clear();
+}
+
+// A display holds the picture shown (RGB), its quilt texture (RGBA: 4/3, which llvmpipe keeps in
+// main memory) and the picture replacing it: a show's copy waiting for its frame, or a playlist
+// picture being decoded (stb's buffer beside the picture it becomes). That is 10/3 of the
+// newest content's RGB bytes; a replaced waiting show is dropped (play/command_queue.hpp), so it
+// never adds up. Sized by the newest content, not added per request: a display never gets stuck
+// on content it cannot replace.
+void PlayerDisplayService::hold_for_display(int display, std::size_t bytes, const std::string& what) {
+  std::lock_guard lock(hold_mutex_);
+  MemoryBudget::Reservation& held = held_[display];
+  if (bytes <= held.bytes()) {
+    held.split(held.bytes() - bytes).release();
+    return;
+  }
+  held.merge(budget_.reserve_or_busy(bytes - held.bytes(), what));
 }
 
 // The idle picture: a black quilt (one tile) in place of whatever was shown.
@@ -63,8 +115,11 @@ void PlayerDisplayService::wipe(int display) {
   black.pixels = Image8(8, 8, 3);
   black.layout = {1, 1, 1, 1.0, 8, 8};
   black.name = "nothing (wiped)";
-  player(display).show_quilt(std::move(black));
+  play::Player& p = player(display);
+  hold_for_display(display, black.pixels.pixels.size() * 10 / 3, "wipe");
+  p.show_quilt(std::move(black));
   std::lock_guard lock(mutex_);
+  shown_key_[display].clear();
   showing_ = "nothing (wiped)";
   if (display == playlist_display_) playlist_.clear();
 }
@@ -84,10 +139,25 @@ void PlayerDisplayService::play_playlist(int display, const Playlist& playlist, 
   }
   if (entries.empty()) throw_input_error("playlist {}: no entries", playlist.name);
   play::Player& p = player(display);
+  // The same still quilt cast again (bridge.js casts as a one-entry playlist, under another name
+  // each time): the display already shows it, so nothing is decoded again on its thread
+  // (decoding once per content, docs/serve.md "Memory"). Anything else plays anew.
+  const std::string key = still_playlist_key(playlist, head_index);
+  {
+    std::lock_guard lock(mutex_);
+    if (!key.empty() && key == shown_key_[display]) {
+      playlist_ = playlist.name;
+      playlist_display_ = display;
+      showing_ = "playlist " + playlist.name;
+      return p.play();
+    }
+  }
+  hold_for_display(display, largest_picture_bytes(playlist) * 10 / 3, "playlist " + playlist.name);
   p.set_loop(playlist.loop);
   p.set_playlist(std::move(entries), std::max(head_index, 0));
   p.play();
   std::lock_guard lock(mutex_);
+  shown_key_[display] = key;
   playlist_ = playlist.name;
   playlist_display_ = display;
   showing_ = "playlist " + playlist.name;

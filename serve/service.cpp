@@ -18,17 +18,21 @@ std::filesystem::path default_state_file() {
   return {};
 }
 
-Service::Service(DisplayService& displays, ServeOptions options)
+Service::Service(DisplayService& displays, ServeOptions options, MemoryBudget* budget)
     : displays_(displays),
       options_(std::move(options)),
       origins_(options_.allowed_origins),
-      cache_(options_.limits.max_cache_bytes, options_.limits.max_cached_quilts),
+      own_budget_(budget ? nullptr : std::make_unique<MemoryBudget>(options_.limits.memory_budget_bytes)),
+      budget_(budget ? *budget : *own_budget_),
+      // Named quilts stay until deleted: a quarter of the budget, so they cannot starve shows.
+      cache_(options_.limits.memory_budget_bytes / 4, options_.limits.max_cached_quilts),
+      decoded_(budget_, options_.limits),
       playlists_(options_.state_file, options_.limits),
-      holoplay_(displays_, cache_, options_.limits),
+      holoplay_(displays_, cache_, decoded_, budget_, options_.limits),
       bridge_(displays_, playlists_, hub_, options_.limits),
       holoplay_server_(holoplay_, origins_, options_.limits),
-      bridge_server_(bridge_, origins_, options_.limits),
-      event_server_(hub_, origins_, options_.limits) {}
+      bridge_server_(bridge_, origins_, budget_, options_.limits),
+      event_server_(hub_, origins_, budget_, options_.limits) {}
 
 Service::~Service() { stop(); }
 

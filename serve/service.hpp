@@ -10,9 +10,11 @@
 #include "serve/bridge_server.hpp"
 #include "serve/event_hub.hpp"
 #include "serve/event_server.hpp"
+#include "serve/decoded_quilts.hpp"
 #include "serve/holoplay_protocol.hpp"
 #include "serve/holoplay_server.hpp"
 #include "serve/listen_address.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/origin_policy.hpp"
 #include "serve/playlist_store.hpp"
 #include "serve/quilt_cache.hpp"
@@ -31,7 +33,9 @@ std::filesystem::path default_state_file();
 
 class Service {
  public:
-  Service(DisplayService& displays, ServeOptions options);
+  // `budget`: the one the display service reserves from too (apps/serve.cpp); none: the
+  // service's own, of options.limits.memory_budget_bytes.
+  Service(DisplayService& displays, ServeOptions options, MemoryBudget* budget = nullptr);
   ~Service();
   // Listens, then plays the autostart playlist if one was chosen (set_named_autostart_playlist).
   // Throws std::runtime_error naming the address it cannot listen on.
@@ -40,6 +44,7 @@ class Service {
   // What it listens on and who may talk to it, one line each (printed at start).
   std::vector<std::string> describe() const;
   EventHub& events() { return hub_; }
+  MemoryBudget& budget() { return budget_; }
   std::size_t refused() const;
 
  private:
@@ -48,7 +53,10 @@ class Service {
   DisplayService& displays_;
   ServeOptions options_;
   OriginPolicy origins_;
+  std::unique_ptr<MemoryBudget> own_budget_;
+  MemoryBudget& budget_;
   QuiltCache cache_;
+  DecodedQuilts decoded_;
   PlaylistStore playlists_;
   EventHub hub_;
   HoloPlayProtocol holoplay_;

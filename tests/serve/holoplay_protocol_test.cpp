@@ -18,7 +18,9 @@ struct HoloPlayProtocolTest : ::testing::Test {
   ServeLimits limits;
   test::FakeDisplayService fake{{test::fixture_display()}};
   QuiltCache cache{1u << 26, 4};
-  HoloPlayProtocol protocol{fake, cache, limits};
+  MemoryBudget budget{limits.memory_budget_bytes};
+  DecodedQuilts decoded{budget, limits};
+  HoloPlayProtocol protocol{fake, cache, decoded, budget, limits};
   test::TempDir tmp;
 
   json call(const json& cmd, const std::vector<std::uint8_t>& bin = {}) {

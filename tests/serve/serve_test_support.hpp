@@ -1,7 +1,17 @@
 #pragma once
 // Fixtures of the serve tests: a served display from a real unit's visual.json, a small PNG
-// quilt in memory, a temporary folder.
+// quilt in memory, a temporary folder, a free loopback port, a HoloPlay client.
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
+
+#include <optional>
+
+#include <nng/nng.h>
+#include <nng/protocol/reqrep0/req.h>
+#include <nlohmann/json.hpp>
+
+#include "serve/cbor_json.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -50,5 +60,50 @@ inline std::vector<std::uint8_t> png_bytes(const Image8& image, const std::files
   bytes.resize(n);
   return bytes;
 }
+
+// A port nothing listens on now (the kernel's choice).
+inline int free_port() {
+  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ::bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a);
+  socklen_t n = sizeof a;
+  ::getsockname(s, reinterpret_cast<sockaddr*>(&a), &n);
+  ::close(s);
+  return ntohs(a.sin_port);
+}
+
+// One HoloPlay connection kept open (as holoplay-core keeps its own): NNG's REQ socket over
+// WebSocket. request() gives the reply map, or nothing when none came within the timeout.
+struct HoloPlayClient {
+  nng_socket socket{};
+  HoloPlayClient(int port, int timeout_ms) {
+    nng_req0_open(&socket);
+    nng_socket_set_ms(socket, NNG_OPT_RECVTIMEO, timeout_ms);
+    nng_socket_set_ms(socket, NNG_OPT_SENDTIMEO, timeout_ms);
+    nng_socket_set_ms(socket, NNG_OPT_REQ_RESENDTIME, 0);
+    nng_dial(socket, ("ws://localhost:" + std::to_string(port) + "/driver").c_str(), nullptr, 0);
+  }
+  ~HoloPlayClient() { nng_close(socket); }
+  HoloPlayClient(const HoloPlayClient&) = delete;
+  HoloPlayClient& operator=(const HoloPlayClient&) = delete;
+
+  std::optional<nlohmann::json> request(const nlohmann::json& cmd, const std::vector<std::uint8_t>& bin = {}) {
+    const auto bytes =
+        encode_cbor({{"cmd", cmd}, {"bin", bin.empty() ? nlohmann::json(nullptr) : nlohmann::json::binary(bin)}});
+    nng_msg* m = nullptr;
+    nng_msg_alloc(&m, 0);
+    nng_msg_append(m, bytes.data(), bytes.size());
+    if (nng_sendmsg(socket, m, 0) != 0) {
+      nng_msg_free(m);
+      return std::nullopt;
+    }
+    if (nng_recvmsg(socket, &m, 0) != 0) return std::nullopt;
+    nlohmann::json reply = decode_cbor({static_cast<const std::uint8_t*>(nng_msg_body(m)), nng_msg_len(m)}, {});
+    nng_msg_free(m);
+    return reply;
+  }
+};
 
 }  // namespace lfd::serve::test

@@ -14,24 +14,13 @@
 #include "serve/service.hpp"
 #include "tests/serve/fake_display_service.hpp"
 #include "tests/serve/serve_test_support.hpp"
-#include "tests/serve/serve_test_support.hpp"
 
 namespace lfd::serve {
 namespace {
 
 using json = nlohmann::json;
 
-int free_port() {
-  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ::bind(s, reinterpret_cast<sockaddr*>(&a), sizeof a);
-  socklen_t n = sizeof a;
-  ::getsockname(s, reinterpret_cast<sockaddr*>(&a), &n);
-  ::close(s);
-  return ntohs(a.sin_port);
-}
+using test::free_port;
 
 struct ServiceSocketsTest : ::testing::Test {
   test::FakeDisplayService fake{{test::fixture_display()}};
