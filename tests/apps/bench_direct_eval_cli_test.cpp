@@ -1,4 +1,5 @@
-// The evaluation commands of issue 24 end to end on a small display: `lfd bench direct
+// The evaluation commands of direct panel rendering (docs/rendering.md "Photographs between two
+// quilt views", "Per-view direct: the baseline") end to end on a small display: `lfd bench direct
 // --baseline` (per-view direct: its panel is the per-view panel exactly) and `lfd bench
 // direct-photos` (photographs between two quilt views); bad options are one line and exit 2.
 #include <algorithm>

@@ -1,8 +1,8 @@
-// The cover layer in a simulated photograph (issue #12): through a 3 cm acrylic block a camera
-// 30 degrees to the side sees, at each panel point, the view fraction the refracted ray
-// predicts (seen_fraction_through_cover), not the one the straight line to the camera would.
-// The simulator traces rays from the camera forward through Snell's law; the prediction solves
-// the ray from the panel point backward: two independent paths to one relation.
+// The cover layer in a simulated photograph (docs/display-model.md, "The cover layer"): through a 3
+// cm acrylic block a camera 30 degrees to the side sees, at each panel point, the view fraction the
+// refracted ray predicts (seen_fraction_through_cover), not the one the straight line to the camera
+// would. The simulator traces rays from the camera forward through Snell's law; the prediction
+// solves the ray from the panel point backward: two independent paths to one relation.
 #include <cmath>
 #include <complex>
 #include <numbers>

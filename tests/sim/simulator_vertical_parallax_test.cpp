@@ -1,6 +1,7 @@
-// Vertical parallax in a simulated photograph (issue #12): a camera in front of the screen sees
-// other views at the top of the screen than at the bottom, by what seen_fraction() predicts,
-// because a slanted lens has power only across its lines.
+// Vertical parallax in a simulated photograph (docs/display-model.md, "What a viewer sees: vertical
+// parallax of slanted lenses"): a camera in front of the screen sees other views at the top of the
+// screen than at the bottom, by what seen_fraction() predicts, because a slanted lens has power
+// only across its lines.
 #include <cmath>
 #include <complex>
 #include <numbers>
