@@ -7,6 +7,7 @@
 #include "display/calibration_file.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file.hpp"
+#include "lightfield/backend_choice.hpp"
 #include "lightfield/panel_interlacing.hpp"
 #include "util/error.hpp"
 #include "util/image.hpp"
@@ -55,8 +56,8 @@ int RunInterlace(int argc, char** argv) {
   options.overscan = overscan;
   options.invert_views = invert;
   const auto gl_context = open_backend(backend_name);
-  const ImageF panel = lightfield::interlace_panel(to_float(quilt8), layout, lens, options,
-                                                   gl_context ? lightfield::Backend::kGl : lightfield::Backend::kCpu);
+  const ImageF panel =
+      lightfield::interlace_panel(to_float(quilt8), layout, lens, options, lightfield::backend_of(gl_context.get()));
   write_png(out_path, to_uint8(panel));
   std::cout << "wrote " << out_path << " (" << panel.width << "x" << panel.height << ", "
             << layout.views << " views in " << layout.cols << "x" << layout.rows << " tiles)\n";

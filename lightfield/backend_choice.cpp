@@ -34,4 +34,6 @@ std::unique_ptr<gpu::HeadlessContext> open_backend_context(BackendChoice choice,
   }
 }
 
+Backend backend_of(const gpu::HeadlessContext* context) { return context ? Backend::kGl : Backend::kCpu; }
+
 }  // namespace lfd::lightfield

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "gpu/gl/gl_context.hpp"
+#include "lightfield/renderer_options.hpp"
 
 namespace lfd::lightfield {
 
@@ -28,5 +29,7 @@ CpuFallbackNotice cpu_fallback_notice_on_stderr(std::string field);
 // can be made.
 std::unique_ptr<gpu::HeadlessContext> open_backend_context(BackendChoice choice,
                                                           const CpuFallbackNotice& on_cpu_fallback);
+// The backend that runs with what open_backend_context gave: GL with a context, the CPU without.
+Backend backend_of(const gpu::HeadlessContext* context);
 
 }  // namespace lfd::lightfield

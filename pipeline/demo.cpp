@@ -191,7 +191,7 @@ void interlace_quilts(DemoRun& run) {
   const auto& layout = run.layout;
   const display::Calibration& assumed = run.recovered;
   const display::LensModel lens(assumed.display, assumed.correction);
-  const lightfield::Backend backend = gl ? lightfield::Backend::kGl : lightfield::Backend::kCpu;
+  const lightfield::Backend backend = lightfield::backend_of(gl.get());
   run.scene_panel = lightfield::interlace_panel(run.scene_quilt, layout, lens, {}, backend);
   run.numbered_panel = lightfield::interlace_panel(run.numbered, layout, lens, {}, backend);
   write_png(run.out / "scene_panel.png", to_uint8(run.scene_panel));
