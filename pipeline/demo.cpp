@@ -135,10 +135,10 @@ void choose_views(DemoRun& run) {
 // the GL tests' tolerances).
 void open_gpu(DemoRun& run) {
   const DemoOptions& o = run.o;
-  run.gl = lightfield::open_backend_context(o.use_gpu ? lightfield::BackendChoice::kAuto : lightfield::BackendChoice::kCpu,
-                                           [&](const std::string& reason) {
-                                             if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", reason);
-                                           });
+  const auto choice = o.use_gpu ? lightfield::BackendChoice::kAuto : lightfield::BackendChoice::kCpu;
+  run.gl = lightfield::open_backend_context(choice, [&](const std::string& reason) {
+    if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", reason);
+  });
 }
 
 // The quilts the display shows: the bundled scene through G2LF, and the numbered test quilt
