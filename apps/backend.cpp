@@ -10,13 +10,6 @@
 
 namespace lfd::apps {
 
-Backend parse_backend(const std::string& name) {
-  if (name == "cpu") return Backend::kCpu;
-  if (name == "gl") return Backend::kGl;
-  if (name == "auto") return Backend::kAuto;
-  throw_input_error("--backend: '{}' is not cpu, gl or auto", name);
-}
-
 CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::string& help) {
   return app.add_option("--backend", name, help)->check(CLI::IsMember({"cpu", "gl", "auto"}))->capture_default_str();
 }
@@ -63,18 +56,18 @@ gpu::RasterPath resolve_raster(gpu::RasterPath path, gpu::RasterSubject subject)
   return chosen;
 }
 
-std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend, bool verbose) {
-  if (backend == Backend::kCpu) return nullptr;
-  std::unique_ptr<gpu::HeadlessContext> context;
-  try {
-    context = std::make_unique<gpu::HeadlessContext>();
-  } catch (const gpu::GlUnavailable& e) {
-    if (backend == Backend::kGl) throw;
-    std::cerr << fmt::format("notice: --backend auto: running on the CPU ({})\n", e.what());
-    return nullptr;
-  }
-  if (verbose) std::cout << fmt::format("backend: gl on {}\n", context->info().summary());
+std::unique_ptr<gpu::HeadlessContext> open_backend(lightfield::BackendChoice backend, bool verbose) {
+  auto context = lightfield::open_backend_context(backend, lightfield::cpu_fallback_notice_on_stderr("--backend"));
+  if (context && verbose) std::cout << fmt::format("backend: gl on {}\n", context->info().summary());
   return context;
+}
+
+std::unique_ptr<gpu::HeadlessContext> open_backend(const std::string& name, bool verbose) {
+  return open_backend(lightfield::parse_backend_choice(name, "--backend"), verbose);
+}
+
+bool backend_is_cpu(const std::string& name) {
+  return lightfield::parse_backend_choice(name, "--backend") == lightfield::BackendChoice::kCpu;
 }
 
 }  // namespace lfd::apps

@@ -1,7 +1,7 @@
 #pragma once
-// `--backend cpu|gl|auto` for the commands that render or interlace: which implementation runs.
-// gl needs an OpenGL 4.5 core context (headless EGL); without one it is an input error (exit 2,
-// one line). auto takes the GPU when a context can be made and otherwise the CPU, saying why.
+// `--backend cpu|gl|auto` for the commands that render or interlace: the flag and the context it
+// opens. The rule (gl without a context: exit 2; auto: the CPU, saying why) is
+// lightfield/backend_choice.hpp's, which Python follows too.
 #include <functional>
 #include <memory>
 #include <string>
@@ -13,12 +13,9 @@
 #include "gpu/gl/gl_context.hpp"
 #include "gpu/probes/gl_raster_probe.hpp"
 #include "gpu/gl/raster_path.hpp"
+#include "lightfield/backend_choice.hpp"
 
 namespace lfd::apps {
-
-enum class Backend { kCpu, kGl, kAuto };
-
-Backend parse_backend(const std::string& name);  // InputError for another name
 
 // Adds `--backend` (choices cpu, gl, auto) to `app`, bound to `name`.
 CLI::Option* add_backend_option(CLI::App& app, std::string& name, const std::string& help);
@@ -42,10 +39,15 @@ nlohmann::ordered_json run_per_raster(const CLI::App& app, const std::vector<std
 // hardware 45.6 ms)".
 gpu::RasterPath resolve_raster(gpu::RasterPath path, gpu::RasterSubject subject);
 
-// What will run: a headless context for gl (GlUnavailable propagates: exit 2), for auto a context
-// or, when none can be made, null with a notice on stderr naming the reason; null for cpu.
-// With a context and `verbose`, prints "backend: gl on <GlInfo::summary()>" to stdout (a command
-// that reports the renderer itself, such as a benchmark table, passes false).
-std::unique_ptr<gpu::HeadlessContext> open_backend(Backend backend, bool verbose = true);
+// What `--backend NAME` runs on (lightfield::open_backend_context): a headless context for gl
+// (GlUnavailable propagates: exit 2), for auto a context or, when none can be made, null with the
+// notice "notice: --backend auto: running on the CPU (reason)" on stderr; null for cpu. With a
+// context and `verbose`, prints "backend: gl on <GlInfo::summary()>" to stdout (a command that
+// reports the renderer itself, such as a benchmark table, passes false).
+std::unique_ptr<gpu::HeadlessContext> open_backend(lightfield::BackendChoice backend, bool verbose = true);
+// The same for the flag's text (InputError for a name that is not cpu, gl or auto).
+std::unique_ptr<gpu::HeadlessContext> open_backend(const std::string& name, bool verbose = true);
+// Whether the flag's text is cpu (InputError for a name that is not cpu, gl or auto).
+bool backend_is_cpu(const std::string& name);
 
 }  // namespace lfd::apps

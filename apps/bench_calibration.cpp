@@ -67,7 +67,8 @@ void add_bench_calibration_options(CLI::App& app, BenchCalibrationArgs& a) {
   app.add_flag("--no-row-exposure-fix", o.no_row_exposure_fix,
                "diagnostic: one gain per photo, without fitting the banding along the rows");
   app.add_flag("--above-below", a.above_below,
-               "cameras above and below the screen centre: issue #12's (-0.06, +0.05, 0.45), "
+               "cameras above and below the screen centre (docs/calibration.md, \"With vertical parallax\"): "
+               "(-0.06, +0.05, 0.45), "
                "(0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled to each display's size");
   app.add_flag("--off-axis", a.off_axis,
                "the second camera 30 degrees to the right of the screen's centre, the third 25 "

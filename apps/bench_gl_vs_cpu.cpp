@@ -35,7 +35,7 @@ int RunBenchGlVsCpu(int argc, char** argv) {
   app.add_option("--views", views, "views in one row")->capture_default_str()->check(CLI::Range(1, 256));
   if (auto code = parse(app, argc, argv)) return *code;
 
-  const auto context = open_backend(Backend::kGl, false);
+  const auto context = open_backend(lightfield::BackendChoice::kGl, false);
   std::printf("backend: gl on %s\n", context->info().summary().c_str());
   std::vector<bench::GlVsCpuRow> rows;
   auto run = [&](const bench::GlVsCpuScene& scene) {

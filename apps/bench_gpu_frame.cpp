@@ -90,7 +90,7 @@ int RunBenchGpuFrame(int argc, char** argv) {
     return 2;
   }
 
-  const auto context = open_backend(Backend::kGl, false);
+  const auto context = open_backend(lightfield::BackendChoice::kGl, false);
   std::printf("backend: gl on %s\n", context->info().summary().c_str());
   bench::GlVsCpuScene scene =
       scene_path.empty() ? bench::gl_vs_cpu_tabletop(generated, size) : bench::gl_vs_cpu_scene_file(scene_path, size);

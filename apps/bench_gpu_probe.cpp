@@ -38,7 +38,7 @@ int RunBenchGpuProbe(int argc, char** argv) {
     o.copy_bytes /= 16;
     o.fill_layers /= 16;
   }
-  const auto context = open_backend(Backend::kGl, false);
+  const auto context = open_backend(lightfield::BackendChoice::kGl, false);
   const std::string device = context->info().summary();
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   std::printf("gpu-probe on %s, medians of %d runs after %d warm-up\n\n", device.c_str(), o.runs, o.warmup);

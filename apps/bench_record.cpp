@@ -9,7 +9,7 @@
 #include "apps/bench.hpp"
 #include "apps/cli.hpp"
 #include "bench/timing_stats.hpp"
-#include "gpu/gl/gl_context.hpp"
+#include "lightfield/backend_choice.hpp"
 #include "lightfield/gl_device.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"
@@ -82,13 +82,11 @@ int RunBenchRecord(int argc, char** argv) {
   std::vector<record::RecordBenchRow> rows;
   std::vector<Summary> summaries;
   for (const std::string& backend : backends) {
-    std::shared_ptr<lightfield::GlDevice> device;
-    if (backend == "gl") try {
-        device = lightfield::GlDevice::open_headless();
-      } catch (const gpu::GlUnavailable& e) {
-        std::cerr << "notice: GL skipped: " << e.what() << "\n";
-        continue;
-      }
+    // gl where a context can be made; without one the row is skipped, not an error.
+    const auto device = lightfield::GlDevice::adopt(lightfield::open_backend_context(
+        backend == "gl" ? lightfield::BackendChoice::kAuto : lightfield::BackendChoice::kCpu,
+        [](const std::string& reason) { std::cerr << "notice: GL skipped: " << reason << "\n"; }));
+    if (backend == "gl" && !device) continue;
     lightfield::RendererOptions options;
     options.backend = lightfield::backend_for(device);
     const auto renderer = lightfield::make_renderer(options, scene.kind(), device);

@@ -1,6 +1,5 @@
 // lfd bench simulate: time of one synthetic capture (1920x1080 camera, 3840x2160 panel).
 #include <algorithm>
-#include <chrono>
 #include <ctime>
 #include <cstdio>
 #include <random>
@@ -13,6 +12,7 @@
 #include "display/calibration_file.hpp"
 #include "sim/simulator.hpp"
 #include "util/atomic_file.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::apps {
 
@@ -66,12 +66,12 @@ int RunBenchSimulate(int argc, char** argv) {
   // where other jobs steal the cores.
   std::vector<double> seconds, cpu_seconds;
   for (int r = 0; r < repeat; ++r) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch stopwatch;
     const std::clock_t c0 = std::clock();
     const ImageF capture = sim.capture(panel, camera, fx);
     cpu_seconds.push_back(double(std::clock() - c0) / CLOCKS_PER_SEC);
     seconds.push_back(
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+        stopwatch.seconds());
   }
   const double best = *std::min_element(seconds.begin(), seconds.end());
   const double best_cpu = *std::min_element(cpu_seconds.begin(), cpu_seconds.end());

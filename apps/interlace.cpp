@@ -5,9 +5,10 @@
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "display/calibration_file.hpp"
-#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file.hpp"
+#include "lightfield/backend_choice.hpp"
+#include "lightfield/panel_interlacing.hpp"
 #include "util/error.hpp"
 #include "util/image.hpp"
 
@@ -54,9 +55,9 @@ int RunInterlace(int argc, char** argv) {
   options.blend = interlace::parse_view_blend(blend);
   options.overscan = overscan;
   options.invert_views = invert;
-  const auto gl_context = open_backend(parse_backend(backend_name));
-  const ImageF panel = gl_context ? gpu::interlace_on_gpu(to_float(quilt8), layout, lens, options)
-                                  : interlace::interlace(to_float(quilt8), layout, lens, options);
+  const auto gl_context = open_backend(backend_name);
+  const ImageF panel =
+      lightfield::interlace_panel(to_float(quilt8), layout, lens, options, lightfield::backend_of(gl_context.get()));
   write_png(out_path, to_uint8(panel));
   std::cout << "wrote " << out_path << " (" << panel.width << "x" << panel.height << ", "
             << layout.views << " views in " << layout.cols << "x" << layout.rows << " tiles)\n";

@@ -9,7 +9,6 @@
 // measured one if present), the view count (its recommendation unless --views), the tile grid
 // and the view aspect; --panel interlaces the quilt for it in the same run, or with --direct
 // renders the panel straight from the sweeping planes with no quilt (interlace/direct_panel.hpp).
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -24,9 +23,9 @@
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
 #include "display/lens_model.hpp"
-#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
 #include "interlace/quilt_file_name.hpp"
+#include "lightfield/panel_interlacing.hpp"
 #include "lightfield/render_settings.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"
@@ -35,6 +34,7 @@
 #include "scene/scene_sequence.hpp"
 #include "util/default_display.hpp"
 #include "util/error.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::apps {
 namespace {
@@ -80,11 +80,7 @@ void write_panel(const RenderFlags& f, const DisplayChoice& display, const Image
   interlace::InterlaceOptions options;
   options.blend = interlace::parse_view_blend(f.blend);
   options.overscan = f.overscan;
-  ImageF panel;
-  if (backend == lightfield::Backend::kGl)
-    panel = gpu::interlace_on_gpu(to_float(quilt8), as_written, lens, options);
-  else
-    panel = interlace::interlace(to_float(quilt8), as_written, lens, options);
+  const ImageF panel = lightfield::interlace_panel(to_float(quilt8), as_written, lens, options, backend);
   write_png(f.panel_path, to_uint8(panel));
   std::cout << fmt::format("wrote {} ({}x{} panel)\n", f.panel_path, panel.width, panel.height);
 }
@@ -150,7 +146,7 @@ int RunRender(int argc, char** argv) {
   const RendererChoice choice = choose_renderer(f, kind);
   const lightfield::RendererOptions& options = choice.options;
 
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   // A moving scene is framed by its first frame (nothing jumps as it plays), and shows frame K.
   const scene::Scene first = scene::load_scene(sequence.frames.front());
   const scene::Scene scene = f.s.frame == 0 ? first : scene::load_scene(frame_file);
@@ -161,7 +157,7 @@ int RunRender(int argc, char** argv) {
   renderer->set_scene(scene);
   const std::string written =
       f.direct ? render_direct_panel(f, display, *renderer, plan) : render_and_write(f, display, *renderer, plan);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = stopwatch.seconds();
   std::cout << fmt::format("wrote {} ({} {}, {} on the {}, {} views of {}x{}, view cone {:.1f} deg) in {:.2f} s\n",
                            written, scene.size(), scene.primitives(),
                            f.view >= 0 ? fmt::format("view {}", f.view)

@@ -91,7 +91,7 @@ void check_output_flags(RenderFlags& f, const CLI::App& app) {
   const CLI::Option* frame_option = app.get_option_no_throw("--frame");  // lfd render's only
   f.s.frame_given = frame_option && frame_option->count() > 0;
   lightfield::check_render_settings(f.s, kFlags);
-  lightfield::check_backend_settings(f.s, parse_backend(f.backend_name) == Backend::kCpu, kFlags);
+  lightfield::check_backend_settings(f.s, backend_is_cpu(f.backend_name), kFlags);
 }
 
 DisplayChoice choose_display(RenderFlags& f) {
@@ -105,7 +105,7 @@ DisplayChoice choose_display(RenderFlags& f) {
 
 RendererChoice choose_renderer(const RenderFlags& f, scene::SceneKind kind) {
   RendererChoice r;
-  r.device = lightfield::GlDevice::adopt(open_backend(parse_backend(f.backend_name)));
+  r.device = lightfield::GlDevice::adopt(open_backend(f.backend_name));
   r.options = lightfield::renderer_options(f.s, kind, f.scene_path, lightfield::backend_for(r.device), kFlags);
   if (r.device) r.options.gl.raster = resolve_raster(r.options.gl.raster, gpu::raster_subject_of(kind));
   return r;

@@ -65,7 +65,7 @@ int RunRgbdQuilt(int argc, char** argv) {
   // Tiles within a pixel of the display's aspect are named with it (no pillarbox column).
   if (display_aspect) layout.aspect = render::snap_to_display_aspect(layout.aspect, layout.tile_height(), *display_aspect);
   const std::string written = interlace::quilt_file_name(out_path, layout, "out");
-  const auto gl_context = open_backend(parse_backend(backend_name));
+  const auto gl_context = open_backend(backend_name);
   const ImageF quilt = gl_context ? rgbd::render_rgbd_quilt_on_gpu(frame, options, layout, view_cone_deg)
                                   : rgbd::render_rgbd_quilt(frame, options, layout, view_cone_deg);
   write_png(written, to_uint8(quilt));

@@ -1,7 +1,6 @@
 #include "bench/direct_baseline_benchmark.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,14 +19,12 @@
 #include "render/scene_generator.hpp"
 #include "scene/gaussian_io.hpp"
 #include "util/error.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The views the display asks for around the scene's framing (as `lfd bench direct` frames them).
 struct Frame {
@@ -61,9 +58,9 @@ nlohmann::ordered_json run_row(lightfield::LightFieldRenderer& sweeping, const S
   interlace::InterlaceOptions io;
   io.blend = options.blend;
   const interlace::Interlacer interlacer(lens, f.layout, io);
-  auto t0 = Clock::now();
+  Stopwatch stopwatch;
   const interlace::ViewMasks masks = interlace::view_masks(interlacer);
-  const double mask_seconds = seconds_since(t0);
+  const double mask_seconds = stopwatch.seconds();
   const double fraction_in = masks.fraction_in();
 
   lightfield::RendererOptions direct = sweeping.options();
@@ -74,16 +71,16 @@ nlohmann::ordered_json run_row(lightfield::LightFieldRenderer& sweeping, const S
   std::vector<double> full_s, masked_s, direct_s;
   ImageF full_panel, masked_panel;
   for (int i = 0; i < options.warmup + options.runs; ++i) {
-    t0 = Clock::now();
+    stopwatch.restart();
     full_panel = interlacer.interlace(render::render_quilt_per_view(gaussians, f.geometry, f.layout));
-    const double full = seconds_since(t0);
-    t0 = Clock::now();
+    const double full = stopwatch.seconds();
+    stopwatch.restart();
     masked_panel =
         interlacer.interlace(render::render_quilt_per_view_masked(gaussians, f.geometry, f.layout, masks.masks));
-    const double masked = seconds_since(t0);
-    t0 = Clock::now();
+    const double masked = stopwatch.seconds();
+    stopwatch.restart();
     sweeping.render_panel(f.geometry, lens, {});
-    const double direct_frame = seconds_since(t0);
+    const double direct_frame = stopwatch.seconds();
     if (i < options.warmup) continue;
     full_s.push_back(full);
     masked_s.push_back(masked);

@@ -1,12 +1,12 @@
 #pragma once
-// `lfd bench direct --baseline` (issue 24; docs/performance.md "Direct panel rendering"): the
-// per-view direct baseline. Each quilt view rasterised with the exact 3DGS forward pass
-// (render/rasterizer_cpu.hpp) only where the panel reads it (interlace/view_masks.hpp), then
-// interlaced, against the same views rasterised whole, and against the direct pass of the
-// sweeping planes, on the CPU in one process, the three sides alternating. Per display and
-// scene: the fraction of view pixels masked in, the median frame time of each side after
-// warm-up, and the largest difference between the masked and the unmasked panel (0: the mask
-// changes nothing the panel shows). Prints a Markdown table as rows finish; returns JSON.
+// `lfd bench direct --baseline` (docs/performance.md "Direct panel rendering"): the per-view direct
+// baseline. Each quilt view rasterised with the exact 3DGS forward pass (render/rasterizer_cpu.hpp)
+// only where the panel reads it (interlace/view_masks.hpp), then interlaced, against the same views
+// rasterised whole, and against the direct pass of the sweeping planes, on the CPU in one process,
+// the three sides alternating. Per display and scene: the fraction of view pixels masked in, the
+// median frame time of each side after warm-up, and the largest difference between the masked and
+// the unmasked panel (0: the mask changes nothing the panel shows). Prints a Markdown table as rows
+// finish; returns JSON.
 #include <string>
 #include <vector>
 

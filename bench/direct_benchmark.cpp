@@ -1,6 +1,5 @@
 #include "bench/direct_benchmark.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -26,14 +25,12 @@
 #include "util/error.hpp"
 #include "voxel/voxel_generator.hpp"
 #include "scene/voxel_io.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // One display's frame: the views the display asks for around the scene's framing.
 struct Frame {
@@ -74,14 +71,14 @@ class QuiltInterlacer {
   }
   // The last quilt into the panel; returns the seconds (GL: until the GPU is done).
   double interlace() {
-    const auto t0 = Clock::now();
+    const Stopwatch stopwatch;
     if (gl_) {
       gl_interlacer_->interlace(gl_->gl_device().quilt(layout_, renderer_.options().gl.quilt_format), gl_panel_);
       glFinish();
     } else {
       panel_ = interlace::interlace(renderer_.read_quilt(), layout_, lens_, options_);
     }
-    return seconds_since(t0);
+    return stopwatch.seconds();
   }
   ImageF panel() const { return gl_ ? gpu::image_from_texture(gl_panel_) : panel_; }
 
@@ -206,9 +203,9 @@ class Runner {
                 f.layout.width, f.layout.height, f.quilt.view_cone_deg);
     std::optional<ImageF> reference;
     if (per_view_ && options_.reference_views > 0) {
-      const auto t0 = Clock::now();
+      const Stopwatch stopwatch;
       reference = reference_panel(*per_view_, f, lens, options_.reference_views);
-      std::printf("(reference: %d per-view renders in %.1f s)\n\n", options_.reference_views, seconds_since(t0));
+      std::printf("(reference: %d per-view renders in %.1f s)\n\n", options_.reference_views, stopwatch.seconds());
     }
     std::printf("| N_chunk | swizzle [s] | interlace [s] | after planes: quilt [s] | direct pass [s] | speed-up "
                 "| frame: quilt [s] | frame: direct [s] | speed-up | quilt [MB] | PSNR direct [dB] "
@@ -253,10 +250,10 @@ class Runner {
     std::vector<double> swizzle, interlace_s, after_quilt, direct_pass, frame_quilt, frame_direct;
     std::vector<double> interlace_fragment, direct_pass_fragment, direct_pass_plane_major;
     for (int i = 0; i < options_.warmup + runs_; ++i) {
-      auto t0 = Clock::now();
+      Stopwatch stopwatch;
       const lightfield::QuiltStats q = sweeping_.render_quilt(f.geometry, f.layout);
       const double il = nearest.interlace();
-      const double quilt_frame = seconds_since(t0);
+      const double quilt_frame = stopwatch.seconds();
       const double il_fragment = gl ? nearest_fragment->interlace() : 0.0;
       double direct_fragment_seconds = 0;
       if (gl) {  // first, so the compute pass's panel is the one read back below
@@ -269,9 +266,9 @@ class Runner {
         plane_major_seconds = sweeping_.render_panel(f.geometry, lens, {}).seconds_swizzle;
       }
       sweeping_.set_options(direct);
-      t0 = Clock::now();
+      stopwatch.restart();
       const lightfield::QuiltStats d = sweeping_.render_panel(f.geometry, lens, {});
-      const double direct_frame = seconds_since(t0);
+      const double direct_frame = stopwatch.seconds();
       sweeping_.set_options(o);
       if (i < options_.warmup) continue;
       if (gl) {

@@ -1,13 +1,13 @@
 #pragma once
-// `lfd bench direct` (issue 24; docs/performance.md "Direct panel rendering"): the panel of a
-// display rendered two ways from the same sweeping planes on one backend, in one process, the
-// runs alternating: the quilt path (swizzle blend into the quilt, then the interlacer) and the
-// direct pass (every subpixel composited at its own view offset, no quilt). Per display, scene
-// and plane count: the median time after the planes (swizzle + interlace against the direct
-// pass) and of the whole frame after warm-up, the quilt's memory, and the quality of both
-// against a continuous reference (the panel from per-view renders at many views, nearest view
-// per subpixel): PSNR over the panel for the direct panel and for the quilt path with nearest
-// and linear view blending. Prints Markdown tables as rows finish; returns the figures as JSON.
+// `lfd bench direct` (docs/performance.md "Direct panel rendering"): the panel of a display
+// rendered two ways from the same sweeping planes on one backend, in one process, the runs
+// alternating: the quilt path (swizzle blend into the quilt, then the interlacer) and the direct
+// pass (every subpixel composited at its own view offset, no quilt). Per display, scene and plane
+// count: the median time after the planes (swizzle + interlace against the direct pass) and of the
+// whole frame after warm-up, the quilt's memory, and the quality of both against a continuous
+// reference (the panel from per-view renders at many views, nearest view per subpixel): PSNR over
+// the panel for the direct panel and for the quilt path with nearest and linear view blending.
+// Prints Markdown tables as rows finish; returns the figures as JSON.
 #include <string>
 #include <vector>
 

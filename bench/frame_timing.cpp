@@ -2,14 +2,10 @@
 
 #include <sys/resource.h>
 
-#include <chrono>
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // User + system time of all threads: on a shared machine it tells the work done, which wall
 // time does not when other jobs take the cores.
@@ -29,15 +25,15 @@ FrameTimings time_frames(lightfield::LightFieldRenderer& renderer, const render:
   std::vector<double> render, with_png, cpu;
   for (int r = 0; r < plan.runs; ++r) {
     const double c0 = process_cpu_seconds();
-    const auto t0 = Clock::now();
+    const Stopwatch stopwatch;
     m.stats.push_back(renderer.render_quilt(geometry, layout));
-    const double t = seconds_since(t0);
+    const double t = stopwatch.seconds();
     render.push_back(t);
     cpu.push_back(process_cpu_seconds() - c0);
     if (r < plan.png_runs) {
-      const auto t1 = Clock::now();
+      const Stopwatch png_write;
       write_png(plan.png_path, to_uint8(renderer.read_quilt()));
-      with_png.push_back(t + seconds_since(t1));
+      with_png.push_back(t + png_write.seconds());
     }
   }
   m.peak_bytes = renderer.peak_memory_bytes();

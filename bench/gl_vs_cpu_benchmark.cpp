@@ -1,7 +1,5 @@
 #include "bench/gl_vs_cpu_benchmark.hpp"
 
-#include <chrono>
-
 #include <fmt/format.h>
 #include <glm/glm.hpp>
 
@@ -17,6 +15,7 @@
 #include "render/scene_generator.hpp"
 #include "scene/gaussian_io.hpp"
 #include "util/default_display.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 
@@ -27,10 +26,6 @@ std::string describe(const render::G2lfOptions& o) {
                      o.binning == render::ChunkBinning::kMixed ? "mixed" : "quantile",
                      o.filter == render::PlaneFilter::kNearest ? "nearest" : "bilinear",
                      o.plane_scale, o.precision == render::PlanePrecision::kU8 ? "u8" : "f32");
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace
@@ -97,12 +92,12 @@ std::vector<GlVsCpuRow> run_gl_vs_cpu(const GlVsCpuScene& s, int views, const gp
     gpu::GlG2lfOptions options;
     options.g2lf = g2lf;
     options.gpu_timers = true;  // the frame waits for the GPU: its wall time is the frame's
-    auto t0 = std::chrono::steady_clock::now();
+    Stopwatch stopwatch;
     renderer.render_quilt(geometry, layout, options, {}, quilt);
-    const double gl_seconds = seconds_since(t0);
-    t0 = std::chrono::steady_clock::now();
+    const double gl_seconds = stopwatch.seconds();
+    stopwatch.restart();
     const ImageF cpu = render::render_quilt_g2lf(s.scene, geometry, layout, g2lf);
-    const double cpu_seconds = seconds_since(t0);
+    const double cpu_seconds = stopwatch.seconds();
     const gpu::GlG2lfStats& st = renderer.stats();
     GlVsCpuRow r;
     r.scene = s.name;

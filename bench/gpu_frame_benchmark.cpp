@@ -1,7 +1,6 @@
 #include "bench/gpu_frame_benchmark.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -20,21 +19,20 @@
 #include "render/per_view_quilt.hpp"
 #include "util/default_display.hpp"
 #include "voxel/voxel_generator.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // Median wall time of `frame` (which must leave the GPU idle or not: glFinish follows each
 // batch) over options.runs batches after options.warmup, per frame.
 double median_frame_seconds(const GpuFrameOptions& o, int batch, const std::function<void()>& frame) {
   std::vector<double> per_frame;
   for (int run = 0; run < o.warmup + o.runs; ++run) {
-    const auto t0 = Clock::now();
+    const Stopwatch stopwatch;
     for (int i = 0; i < batch; ++i) frame();
     glFinish();
-    if (run >= o.warmup) per_frame.push_back(std::chrono::duration<double>(Clock::now() - t0).count() / batch);
+    if (run >= o.warmup) per_frame.push_back(stopwatch.seconds() / batch);
   }
   return summarize(per_frame).median;
 }
@@ -72,7 +70,7 @@ std::vector<GpuFrameRow> g2lf_rows(const gpu::GlScene& scene, const gpu::GlInfo&
     for (size_t v = 0; v < n; ++v) {
       const gpu::GlG2lfOptions& options = variants[v].options;
       const int batch = options.timer_reads == gpu::TimerReads::kLate ? o.batch : 1;
-      const auto t0 = Clock::now();
+      const Stopwatch stopwatch;
       for (int i = 0; i < batch; ++i) {
         renderers[v]->render_quilt(geometry, layout, options, {}, quilt);
         const gpu::GlG2lfStats& st = renderers[v]->stats();
@@ -82,7 +80,7 @@ std::vector<GpuFrameRow> g2lf_rows(const gpu::GlScene& scene, const gpu::GlInfo&
         stages[v].swizzle.push_back(st.seconds_swizzle);
       }
       glFinish();
-      if (run >= o.warmup) frames[v].push_back(std::chrono::duration<double>(Clock::now() - t0).count() / batch);
+      if (run >= o.warmup) frames[v].push_back(stopwatch.seconds() / batch);
     }
   std::vector<GpuFrameRow> rows;
   for (size_t v = 0; v < n; ++v) {
@@ -173,11 +171,11 @@ std::vector<GpuFrameRow> interleaved_rows(const GpuFrameOptions& o, const std::s
   std::vector<std::vector<double>> seconds(variants.size()), sort(variants.size());
   for (int run = 0; run < o.warmup + o.runs; ++run) {
     for (size_t v = 0; v < variants.size(); ++v) {
-      const auto t0 = Clock::now();
+      const Stopwatch stopwatch;
       const double sort_s = frame(v);
       glFinish();
       if (run < o.warmup) continue;
-      seconds[v].push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+      seconds[v].push_back(stopwatch.seconds());
       sort[v].push_back(sort_s);
     }
   }

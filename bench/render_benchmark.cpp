@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -21,16 +20,12 @@
 #include "render/scene_generator.hpp"
 #include "scene/gaussian_io.hpp"
 #include "util/error.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // A tabletop framed as a person would: 3 units above the ground (y = +1, "up" is -y), 7.5 in
 // front of the middle object row, looking down 18 degrees at the objects, which fill the view;
@@ -77,10 +72,10 @@ class Runner {
                 g2lf_.name().c_str(), g2lf_.device().c_str(), runs_, options_.warmup,
                 std::min(options_.png_runs, runs_), g2lf_.memory_kind().c_str());
     for (const SceneSource& source : options_.scenes) {
-      const auto t0 = Clock::now();
+      const Stopwatch stopwatch;
       const scene::Scene scene(source.path.empty() ? generated_scene(source.generated)
                                                                   : scene::load_gaussian_scene(source.path));
-      const double load_seconds = seconds_since(t0);
+      const double load_seconds = stopwatch.seconds();
       per_view_.set_scene(scene);
       g2lf_.set_scene(scene);
       for (int views : options_.views)

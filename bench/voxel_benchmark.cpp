@@ -1,6 +1,5 @@
 #include "bench/voxel_benchmark.hpp"
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -20,11 +19,10 @@
 #include "voxel/v2lf.hpp"
 #include "voxel/voxel_generator.hpp"
 #include "scene/voxel_io.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::bench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // The generated tabletop's camera (docs/voxels.md): elevated, in the empty space inside the
 // sky shell, objects filling the view.
@@ -90,17 +88,17 @@ struct LoadedScene {
 };
 
 LoadedScene load_scene(const VoxelBenchOptions& options) {
-  const auto t_load = Clock::now();
+  const Stopwatch load;
   if (!options.scene_path.empty()) {
     scene::Scene scene(scene::load_voxel_scene(options.scene_path));
     return {std::move(scene), std::filesystem::path(options.scene_path).filename().string(),
-            std::chrono::duration<double>(Clock::now() - t_load).count()};
+            load.seconds()};
   }
   voxel::VoxelGeneratorOptions g;
   g.detail_level = options.generated_level;
   scene::Scene scene(voxel::generate_voxel_scene(g));
   return {std::move(scene), fmt::format("generated tabletop (level {})", options.generated_level),
-          std::chrono::duration<double>(Clock::now() - t_load).count()};
+          load.seconds()};
 }
 
 // Prints one table row and returns it as JSON (`v2lf`: with the planes' figures).

@@ -1,8 +1,8 @@
 #pragma once
-// The cover layer a Looking Glass unit family has in front of its lens array, by default
-// (issue #12). visual.json holds no such field, so a plain visual.json reads as a bare panel;
-// the calibration pipeline starts from the family's value, and calibration.json's "cover"
-// records what was used (docs/display-model.md, "The cover layer").
+// The cover layer a Looking Glass unit family has in front of its lens array, by default.
+// visual.json holds no such field, so a plain visual.json reads as a bare panel; the calibration
+// pipeline starts from the family's value, and calibration.json's "cover" records what was used
+// (docs/display-model.md, "The cover layer").
 #include <string>
 
 #include "display/display_calibration.hpp"

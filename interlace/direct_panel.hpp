@@ -1,13 +1,13 @@
 #pragma once
-// Direct panel rendering (docs/rendering.md "Direct panel rendering"; issue 24): the panel
-// straight from the sweeping planes, with no quilt. Each panel subpixel shows the view fraction
-// the lens model gives it (display::LensModel: correction field and Gen3 cells included, the
-// relation the interlacer uses); that fraction stands for a camera at the continuous view
-// position s = f - 1/2 (the quilt's view j sits at the centre (j + 1/2) / V - 1/2 of the
-// fractions that select it), and the planes are composited along the ray of that camera
-// through the subpixel's point in the view (the interlacer's aspect fit) for the subpixel's
-// colour channel alone. At a fraction on a view centre this is the quilt path's ray exactly;
-// between them the quilt path rounds (nearest) or mixes two views (linear), this does neither.
+// Direct panel rendering (docs/rendering.md "Direct panel rendering"): the panel straight from the
+// sweeping planes, with no quilt. Each panel subpixel shows the view fraction the lens model gives
+// it (display::LensModel: correction field and Gen3 cells included, the relation the interlacer
+// uses); that fraction stands for a camera at the continuous view position s = f - 1/2 (the quilt's
+// view j sits at the centre (j + 1/2) / V - 1/2 of the fractions that select it), and the planes
+// are composited along the ray of that camera through the subpixel's point in the view (the
+// interlacer's aspect fit) for the subpixel's colour channel alone. At a fraction on a view centre
+// this is the quilt path's ray exactly; between them the quilt path rounds (nearest) or mixes two
+// views (linear), this does neither.
 #include <glm/glm.hpp>
 
 #include "display/lens_model.hpp"

@@ -1,11 +1,11 @@
 #pragma once
-// Per-view direct (issue 24; docs/rendering.md "Per-view direct"): which pixels of each quilt
+// Per-view direct (docs/rendering.md "Per-view direct: the baseline"): which pixels of each quilt
 // view the panel shows at all. The interlacer (interlacer.hpp) gives every panel subpixel a view
 // (two when blending linearly) and a bilinear lookup of four texels in that view's tile; a view
 // pixel no subpixel reads never reaches the panel, so a per-view renderer may skip it. The masks
 // are that lookup run backwards (Interlacer::sample_for and tile_texels: the one relation), so
-// rendering only the masked-in pixels, then interlacing, gives the panel of the full views
-// bit for bit (tests/interlace/view_masks_test.cpp).
+// rendering only the masked-in pixels, then interlacing, gives the panel of the full views bit for
+// bit (tests/interlace/view_masks_test.cpp).
 #include <cstdint>
 #include <vector>
 

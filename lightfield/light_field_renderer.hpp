@@ -68,10 +68,10 @@ class LightFieldRenderer {
   // show in the process's peak memory; elsewhere a copy of read_quilt().
   virtual ImageF take_quilt() { return read_quilt(); }
 
-  // Direct panel rendering (docs/rendering.md "Direct panel rendering", issue 24): the panel of
-  // `lens`'s display straight from the sweeping planes, every subpixel at its own view angle, no
-  // quilt (QuiltStats::seconds_swizzle is the direct pass). Sweeping-plane renderers only: the
-  // others throw InputError. Checks the options against `geometry` first.
+  // Direct panel rendering (docs/rendering.md "Direct panel rendering"): the panel of `lens`'s
+  // display straight from the sweeping planes, every subpixel at its own view angle, no quilt
+  // (QuiltStats::seconds_swizzle is the direct pass). Sweeping-plane renderers only: the others
+  // throw InputError. Checks the options against `geometry` first.
   virtual QuiltStats render_panel(const render::QuiltGeometry& geometry, const display::LensModel& lens,
                                   const PanelOptions& options);
   // The last panel (screenW x screenH RGB floats, top row first), read back if it lives elsewhere.

@@ -1,6 +1,5 @@
 #include "pipeline/calibration_benchmark.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -12,16 +11,9 @@
 #include "calib/undescribed.hpp"
 #include "sim/undescribed_units.hpp"
 #include "util/error.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::pipeline {
-
-namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 const std::vector<BenchmarkDisplay>& benchmark_displays() {
   static const std::vector<BenchmarkDisplay> displays = {
@@ -165,10 +157,10 @@ CalibrationBenchmarkRow calibrate_row(const CalibrationBenchmarkOptions& o, cons
   if (o.cover_unknown) options.cover = calib::CoverGiven::unknown();
   if (o.true_poses)
     for (const auto& pose : rig.poses) options.known_camera_positions_m.push_back(pose.position_m);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   try {
     const calib::CalibrationOutcome out = calib::calibrate_display(set, captures, options);
-    row.calibrate_s = seconds_since(t0);
+    row.calibrate_s = stopwatch.seconds();
     row.errors = sim::compare_with_truth(out.calibration, unit.truth);
     row.within_bars = bars.met_by(*row.errors);
     row.gate_failures = out.gate_failures;
@@ -242,7 +234,7 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
   first.poses.resize(1);
 
   CalibrationBenchmarkRow measured = shared_row(o, d, seed, rig);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   const auto coarse_captures = cached_captures(
       o.cache_dir, capture_cache_key(o, d, seed, coarse, unit) + "-probes", coarse, unit.truth, first);
   calib::ProbeRound found;
@@ -250,7 +242,7 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
     found = calib::fine_set_from_probes(coarse, coarse_captures.front());
   } catch (const std::exception& ex) {
     measured.failure = std::string("probes: ") + ex.what();
-    measured.simulate_s = seconds_since(t0);
+    measured.simulate_s = stopwatch.seconds();
     if (on_row) on_row(measured);
     rows.push_back(measured);
     return;
@@ -273,7 +265,7 @@ void run_undescribed(const CalibrationBenchmarkOptions& o, const AccuracyBars& b
                                            capture_cache_key(o, d, seed, fine, unit),
                                            lens.pitch_lpi, lens.slope, lens.bgr ? "bgr" : "rgb");
   const auto captures = cached_captures(o.cache_dir, fine_key, fine, unit.truth, rig);
-  measured.simulate_s = seconds_since(t0);
+  measured.simulate_s = stopwatch.seconds();
   for (const bool self_calibrate : {false, true}) {
     if (self_calibrate && !o.self_calibrated) break;
     CalibrationBenchmarkRow row = calibrate_row(o, bars, fine, captures, unit, rig, measured, self_calibrate);
@@ -310,10 +302,10 @@ std::vector<CalibrationBenchmarkRow> run_calibration_benchmark(
       const sim::CaptureRig rig = benchmark_rig(o, unit, seed);
 
       CalibrationBenchmarkRow measured = shared_row(o, d, seed, rig);
-      const auto t0 = std::chrono::steady_clock::now();
+      const Stopwatch stopwatch;
       const auto captures =
           cached_captures(o.cache_dir, capture_cache_key(o, d, seed, set, unit), set, unit.truth, rig);
-      measured.simulate_s = seconds_since(t0);
+      measured.simulate_s = stopwatch.seconds();
       // Registration and the solver read the cover from the nominal description.
       if (o.solver_without_cover) set.nominal.display.cover = display::CoverLayer{};
 

@@ -63,8 +63,9 @@ struct CalibrationBenchmarkOptions {
   // (photos keep the cover), to measure what ignoring it costs.
   bool bare_panels = false;
   bool solver_without_cover = false;
-  // The calibration is told the cover is unknown (0-25 mm) instead of the family's estimate
-  // (or, for a panel nobody described, none): the cover layer's honest case (issue #36).
+  // The calibration is told the cover is unknown (0-25 mm) instead of the family's estimate (or,
+  // for a panel nobody described, none): the cover layer's honest case (docs/calibration.md, "An
+  // unknown cover").
   bool cover_unknown = false;
   // Panels nobody described (sim/undescribed_units.hpp) instead of the shared calibrations:
   // the lens probes photographed from the first position, the fine set drawn for the lens
@@ -92,8 +93,9 @@ struct CalibrationBenchmarkRow {
   std::vector<std::string> gate_failures;
   nlohmann::ordered_json gate_values;  // what the fit gates measured (calib/solver/quality_gates.hpp)
   std::map<std::string, double> uncertainty;
-  // Each error over its reported 1-sigma (slant, pitch, center, cone, warp): whether the
-  // sigmas cover the errors (issue #12); absent where a sigma is missing or zero.
+  // Each error over its reported 1-sigma (slant, pitch, center, cone, warp): whether the sigmas
+  // cover the errors (docs/calibration.md, "With vertical parallax: cameras above and below the
+  // centre"); absent where a sigma is missing or zero.
   std::map<std::string, double> error_over_sigma;
   std::vector<PoseError> poses;
   // Undescribed panels: what the probes found (pitch, slant, subpixel order) against the truth.

@@ -1,6 +1,5 @@
 #include "pipeline/demo.hpp"
 
-#include <chrono>
 #include <iostream>
 #include <memory>
 #include <cmath>
@@ -17,8 +16,8 @@
 #include "sim/synthetic_unit.hpp"
 #include "display/view_count.hpp"
 #include "gpu/gl/gl_context.hpp"
-#include "gpu/panel/gl_interlacer.hpp"
-#include "interlace/interlacer.hpp"
+#include "lightfield/backend_choice.hpp"
+#include "lightfield/panel_interlacing.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "lightfield/view_plan.hpp"
 #include "pipeline/numbered_quilt.hpp"
@@ -33,27 +32,26 @@
 #include "validate/miscalibration.hpp"
 #include "report/validation_report.hpp"
 #include "validate/view_metrics.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::pipeline {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 class Step {
  public:
-  Step(bool verbose, std::string what) : verbose_(verbose), what_(std::move(what)), t0_(Clock::now()) {
+  Step(bool verbose, std::string what) : verbose_(verbose), what_(std::move(what)) {
     if (verbose_) fmt::print("  {} ...", what_), std::fflush(stdout);
   }
   ~Step() {
     if (verbose_)
-      fmt::print(" {:.1f} s\n", std::chrono::duration<double>(Clock::now() - t0_).count());
+      fmt::print(" {:.1f} s\n", stopwatch_.seconds());
   }
 
  private:
   bool verbose_;
   std::string what_;
-  Clock::time_point t0_;
+  Stopwatch stopwatch_;
 };
 
 // What passes from one stage of the demo to the next (docs/architecture.md, "Long pipelines
@@ -137,12 +135,10 @@ void choose_views(DemoRun& run) {
 // the GL tests' tolerances).
 void open_gpu(DemoRun& run) {
   const DemoOptions& o = run.o;
-  if (!o.use_gpu) return;
-  try {
-    run.gl = std::make_unique<gpu::HeadlessContext>();
-  } catch (const gpu::GlUnavailable& e) {
-    if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", e.what());
-  }
+  const auto choice = o.use_gpu ? lightfield::BackendChoice::kAuto : lightfield::BackendChoice::kCpu;
+  run.gl = lightfield::open_backend_context(choice, [&](const std::string& reason) {
+    if (o.verbose) std::cerr << fmt::format("notice: rendering on the CPU ({})\n", reason);
+  });
 }
 
 // The quilts the display shows: the bundled scene through G2LF, and the numbered test quilt
@@ -195,8 +191,9 @@ void interlace_quilts(DemoRun& run) {
   const auto& layout = run.layout;
   const display::Calibration& assumed = run.recovered;
   const display::LensModel lens(assumed.display, assumed.correction);
-  run.scene_panel = gl ? gpu::interlace_on_gpu(run.scene_quilt, layout, lens) : interlace::interlace(run.scene_quilt, layout, lens);
-  run.numbered_panel = gl ? gpu::interlace_on_gpu(run.numbered, layout, lens) : interlace::interlace(run.numbered, layout, lens);
+  const lightfield::Backend backend = lightfield::backend_of(gl.get());
+  run.scene_panel = lightfield::interlace_panel(run.scene_quilt, layout, lens, {}, backend);
+  run.numbered_panel = lightfield::interlace_panel(run.numbered, layout, lens, {}, backend);
   write_png(run.out / "scene_panel.png", to_uint8(run.scene_panel));
   write_png(run.out / "numbered_panel.png", to_uint8(run.numbered_panel));
 }

@@ -1,12 +1,12 @@
 #pragma once
-// `lfd bench direct --photos` (issue 24; docs/performance.md "Direct panel rendering"): what an
-// eye between two quilt views sees of each rendering path. For one display and scene: the
-// direct panel and the quilt-path panel (nearest and linear view blending, the display's
-// recommended view count) from the same sweeping planes, photographed through the optics
-// simulator from eyes at fractions t between views j and j + 1, each photograph compared with
-// the photograph of the per-view render at that exact eye's view position
-// (validate/eye_photographs.hpp). The quilt path from exact per-view renders (nearest and
-// linear) is photographed too: what view rounding costs without the planes' approximation. Prints a Markdown table row per eye; returns JSON.
+// `lfd bench direct --photos` (docs/performance.md "Direct panel rendering"): what an eye between
+// two quilt views sees of each rendering path. For one display and scene: the direct panel and the
+// quilt-path panel (nearest and linear view blending, the display's recommended view count) from
+// the same sweeping planes, photographed through the optics simulator from eyes at fractions t
+// between views j and j + 1, each photograph compared with the photograph of the per-view render at
+// that exact eye's view position (validate/eye_photographs.hpp). The quilt path from exact per-view
+// renders (nearest and linear) is photographed too: what view rounding costs without the planes'
+// approximation. Prints a Markdown table row per eye; returns JSON.
 #include <string>
 #include <vector>
 

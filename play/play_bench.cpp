@@ -1,6 +1,5 @@
 #include "play/play_bench.hpp"
 
-#include <chrono>
 #include <thread>
 
 #include <fmt/format.h>
@@ -9,12 +8,10 @@
 #include "media/synthetic_quilt.hpp"
 #include "media/video_decoder.hpp"
 #include "play/player.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::play {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 render::QuiltLayout bench_layout(const PlayBenchOptions& o) {
   render::QuiltLayout q;
@@ -34,14 +31,14 @@ std::filesystem::path ensure_video(const PlayBenchOptions& o, int fps, std::ostr
                                              o.codec, render::quilt_suffix(q.cols, q.rows, q.aspect));
   if (std::filesystem::exists(path)) return path;
   std::filesystem::create_directories(o.work_dir);
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   media::EncoderOptions e;
   e.codec = o.codec;
   e.frame_rate = fps;
   const auto partial = path.string() + ".partial.mp4";
   media::write_synthetic_quilt_video(partial, q, int(std::lround(o.seconds * fps)), e);
   std::filesystem::rename(partial, path);
-  out << fmt::format("encoded {} in {:.1f} s (once; kept for the next run)\n", path.string(), seconds_since(start));
+  out << fmt::format("encoded {} in {:.1f} s (once; kept for the next run)\n", path.string(), stopwatch.seconds());
   return path;
 }
 
@@ -53,10 +50,10 @@ struct DecodeRun {
 
 DecodeRun decode_all(const std::filesystem::path& video, const PlayBenchOptions& o) {
   media::VideoDecoder decoder(video, {o.hardware_decode, o.decoder_threads});
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   DecodeRun run;
   while (decoder.next_frame()) ++run.frames;
-  run.frames_per_s = run.frames / seconds_since(start);
+  run.frames_per_s = run.frames / stopwatch.seconds();
   run.path = decoder.decode_path();
   return run;
 }
@@ -83,9 +80,9 @@ PlayerOptions player_options(const PlayBenchOptions& o) {
 PlayRun play_once(Player& player, const std::filesystem::path& video) {
   bool ended = false;
   std::optional<double> first;
-  const auto start = Clock::now();
+  const Stopwatch stopwatch;
   const int id = player.subscribe([&](const PlaybackEvent& e) {
-    if (e.kind == PlaybackEventKind::kEntryStarted && !first) first = seconds_since(start);
+    if (e.kind == PlaybackEventKind::kEntryStarted && !first) first = stopwatch.seconds();
     if (e.kind == PlaybackEventKind::kPlaylistEnded || e.kind == PlaybackEventKind::kEntrySkipped) ended = true;
   });
   const PlayerState before = player.state();
@@ -95,7 +92,7 @@ PlayRun play_once(Player& player, const std::filesystem::path& video) {
   while (!ended && player.run_frame()) {
   }
   player.unsubscribe(id);
-  const double wall = seconds_since(start);
+  const double wall = stopwatch.seconds();
   const PlayerState s = player.state();
   PlayRun run;
   run.wall_s = wall;

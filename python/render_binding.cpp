@@ -4,8 +4,8 @@
 #include <pybind11/stl.h>
 
 #include "display/lens_model.hpp"
-#include "gpu/panel/gl_interlacer.hpp"
 #include "interlace/interlacer.hpp"
+#include "lightfield/panel_interlacing.hpp"
 #include "python/arrays.hpp"
 #include "python/bindings.hpp"
 #include "python/display_binding.hpp"
@@ -88,9 +88,8 @@ Image8 interlace_quilt(const PyQuilt& quilt, const display::Calibration& calibra
   options.overscan = overscan;
   if (backend != "cpu" && backend != "gl") throw_input_error("backend: '{}' is not cpu or gl", backend);
   if (backend == "gl") use_gl_context();
-  const ImageF panel = backend == "gl" ? gpu::interlace_on_gpu(to_float(quilt.image), quilt.layout, lens, options)
-                                       : interlace::interlace(to_float(quilt.image), quilt.layout, lens, options);
-  return to_uint8(panel);
+  return to_uint8(lightfield::interlace_panel(to_float(quilt.image), quilt.layout, lens, options,
+                                              backend == "gl" ? lightfield::Backend::kGl : lightfield::Backend::kCpu));
 }
 
 }  // namespace

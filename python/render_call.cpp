@@ -1,13 +1,10 @@
 #include "python/render_call.hpp"
 
-#include <iostream>
 #include <map>
 #include <mutex>
 #include <thread>
 
-#include <fmt/format.h>
-
-#include "gpu/gl/gl_context.hpp"
+#include "lightfield/backend_choice.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "util/error.hpp"
 
@@ -22,20 +19,14 @@ std::map<std::thread::id, std::shared_ptr<lightfield::GlDevice>> g_devices;
 // The GL device of this thread (made on first use: a context is current on one thread), or null
 // for the CPU; "auto" falls back to the CPU with a notice, as `lfd render --backend auto`.
 std::shared_ptr<lightfield::GlDevice> device_for(const std::string& backend) {
-  if (backend == "cpu") return nullptr;
-  if (backend != "gl" && backend != "auto") throw_input_error("backend: '{}' is not cpu, gl or auto", backend);
+  const lightfield::BackendChoice choice = lightfield::parse_backend_choice(backend, "backend");
+  if (choice == lightfield::BackendChoice::kCpu) return nullptr;
   const std::lock_guard lock(g_devices_mutex);
-  auto& device = g_devices[std::this_thread::get_id()];
-  if (!device) {
-    try {
-      device = lightfield::GlDevice::open_headless();
-    } catch (const gpu::GlUnavailable& e) {
-      g_devices.erase(std::this_thread::get_id());
-      if (backend == "gl") throw;
-      std::cerr << fmt::format("notice: backend auto: running on the CPU ({})\n", e.what());
-      return nullptr;
-    }
-  }
+  const std::thread::id thread = std::this_thread::get_id();
+  if (const auto found = g_devices.find(thread); found != g_devices.end()) return found->second;
+  auto device = lightfield::GlDevice::adopt(
+      lightfield::open_backend_context(choice, lightfield::cpu_fallback_notice_on_stderr("backend")));
+  if (device) g_devices[thread] = device;
   return device;
 }
 

@@ -1,27 +1,24 @@
 #include "record/record_bench.hpp"
 
-#include <chrono>
-
 #include "record/frame_cameras.hpp"
 #include "record/recorder.hpp"
 #include "record/video_file.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::record {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 // One run of the frames: rendered, read back and converted; encoded too when `file` is given,
 // its encoder flushed and the file closed inside the time (the recording's whole cost).
 double frames_per_s(lightfield::LightFieldRenderer& renderer, const std::vector<FramePlan>& plans, VideoFile* file) {
-  const auto t0 = Clock::now();
+  const Stopwatch stopwatch;
   for (const FramePlan& f : plans) {
     renderer.render_quilt(f.plan.geometry, f.plan.layout);
     const Image8 quilt8 = to_uint8(renderer.read_quilt());
     if (file) file->add(quilt8);
   }
   if (file) file->finish();
-  return double(plans.size()) / std::chrono::duration<double>(Clock::now() - t0).count();
+  return double(plans.size()) / stopwatch.seconds();
 }
 
 }  // namespace

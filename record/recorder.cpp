@@ -1,16 +1,16 @@
 #include "record/recorder.hpp"
 
-#include <chrono>
 #include <memory>
 
 #include <fmt/format.h>
 
 #include "display/lens_model.hpp"
-#include "gpu/panel/gl_interlacer.hpp"
+#include "lightfield/panel_interlacing.hpp"
 #include "record/video_file.hpp"
 #include "render/camera_json.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
+#include "util/stopwatch.hpp"
 
 namespace lfd::record {
 
@@ -39,26 +39,13 @@ FramePlan plan_frame(const lightfield::ViewRequest& request, const CameraMotion&
   return f;
 }
 
-namespace {
-
-// The panel of a quilt as `lfd interlace` makes it of the 8-bit quilt; on the GPU when the
-// quilt was rendered there.
-Image8 interlace_quilt(const Image8& quilt8, const render::QuiltLayout& layout, const display::LensModel& lens,
-                       const interlace::InterlaceOptions& options, lightfield::Backend backend) {
-  const ImageF quilt = to_float(quilt8);
-  return to_uint8(backend == lightfield::Backend::kGl ? gpu::interlace_on_gpu(quilt, layout, lens, options)
-                                                      : interlace::interlace(quilt, layout, lens, options));
-}
-
-}  // namespace
-
 RecordResult record_video(const lightfield::ViewRequest& request, const CameraMotion& motion,
                           const scene::Scene& framing, const SceneOfFrame& scene_of_frame, lightfield::LightFieldRenderer& renderer,
                           const display::Calibration* display, const RecordOptions& options,
                           const std::atomic<bool>* stop, const std::function<void(int)>& progress) {
   options.check();
   if (!options.panel_video.empty() && !display) throw_input_error("panel: needs the display");
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch stopwatch;
   const int last = options.last < 0 ? options.frames - 1 : options.last;
   media::EncoderOptions video = options.video;
   video.frame_rate = options.fps;
@@ -104,14 +91,17 @@ RecordResult record_video(const lightfield::ViewRequest& request, const CameraMo
     renderer.render_quilt(f.plan.geometry, layout);
     const Image8 quilt8 = to_uint8(renderer.read_quilt());
     if (quilt_file) quilt_file->add(quilt8);
+    // The panel as `lfd interlace` makes it of the 8-bit quilt; on the GPU when the quilt was
+    // rendered there.
     if (panel_file)
-      panel_file->add(interlace_quilt(quilt8, layout, *lens, options.panel, renderer.options().backend));
+      panel_file->add(to_uint8(
+          lightfield::interlace_panel(to_float(quilt8), layout, *lens, options.panel, renderer.options().backend)));
     ++result.frames_done;
     if (progress) progress(result.frames_done);
   }
   if (quilt_file) result.written.push_back(quilt_file->finish());
   if (panel_file) result.written.push_back(panel_file->finish());
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  result.seconds = stopwatch.seconds();
   return result;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // A sparse-voxel radiance field in SVRaster's representation (Sun et al., "Sparse Voxels
-// Rasterization", CVPR 2025; issue #13): octree leaves only, each with its integer octree
-// coordinates and level, raw (pre-activation) densities at its 8 corners and SH colour.
-// Structure of arrays, like GaussianScene, so a GPU port can upload each array as it is.
+// Rasterization", CVPR 2025; docs/voxels.md, "The representation"): octree leaves only, each with
+// its integer octree coordinates and level, raw (pre-activation) densities at its 8 corners and SH
+// colour. Structure of arrays, like GaussianScene, so a GPU port can upload each array as it is.
 #include <array>
 #include <cstdint>
 #include <string>

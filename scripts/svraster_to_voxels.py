@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Convert an SVRaster checkpoint (NVlabs/svraster) to lfd's .voxels file (issue #13).
+"""Convert an SVRaster checkpoint (NVlabs/svraster) to lfd's .voxels file (docs/voxels.md, "Files").
 
     python3 scripts/svraster_to_voxels.py RUN/checkpoints/iter020000_model.pt --out scene.voxels
         [--config RUN/config.yaml]

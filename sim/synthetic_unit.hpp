@@ -39,14 +39,14 @@ struct CaptureRig {
   bool glare_moves = false;  // new glare in every photo (a room that changes between photos)
 };
 
-// Where the rig's cameras stand. kSides: at clearly different distances and sides, a few
-// hundredths of the distance above or below the centre. kAboveBelow: issue #12's positions
-// (-0.06, +0.05, 0.45), (0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled by the distance at
-// which the screen spans 70 % of the image over 0.45 m (x1.05 for a 16" Gen2, x0.37 for a
-// Portrait), so every display is framed alike and sees the same vertical parallax.
-// kOffAxis: kSides' distances, the second camera 30 degrees to the right of the screen's
-// centre and the third 25 degrees to the left, where the cover layer's refraction differs
-// from a shift of the panel (docs/calibration.md, "The cover layer").
+// Where the rig's cameras stand. kSides: at clearly different distances and sides, a few hundredths
+// of the distance above or below the centre. kAboveBelow: the positions of docs/calibration.md
+// "With vertical parallax" (-0.06, +0.05, 0.45), (0.01, -0.04, 0.52), (0.07, +0.03, 0.60) m, scaled
+// by the distance at which the screen spans 70 % of the image over 0.45 m (x1.05 for a 16" Gen2,
+// x0.37 for a Portrait), so every display is framed alike and sees the same vertical parallax.
+// kOffAxis: kSides' distances, the second camera 30 degrees to the right of the screen's centre and
+// the third 25 degrees to the left, where the cover layer's refraction differs from a shift of the
+// panel (docs/calibration.md, "The cover layer").
 enum class RigLayout { kSides, kAboveBelow, kOffAxis };
 
 // `positions` (1-3) cameras, with a `width_px` wide image in which the screen spans about 70 %

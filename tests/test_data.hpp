@@ -46,11 +46,22 @@ inline std::vector<std::filesystem::path> fixture_calibrations() {
                    << (::lfd::test::shared_data() / (relative)).string();                 \
   } while (0)
 
+inline std::filesystem::path temp_dir_path(const std::string& name) {
+  return std::filesystem::temp_directory_path() / ("lfd_test_" + name + "_" + std::to_string(::getpid()));
+}
+
 // A fresh temporary directory per test.
 inline std::filesystem::path temp_dir(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() /
-             ("lfd_test_" + name + "_" + std::to_string(::getpid()));
+  const std::filesystem::path dir = temp_dir_path(name);
   std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+// One temporary directory for the tests of a file, made on first use and kept, not emptied, for
+// the files several calls write and read in turn.
+inline std::filesystem::path scratch_dir(const std::string& name) {
+  const std::filesystem::path dir = temp_dir_path(name);
   std::filesystem::create_directories(dir);
   return dir;
 }

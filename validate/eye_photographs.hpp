@@ -1,13 +1,13 @@
 #pragma once
-// Photographs of a panel from eyes between two quilt views (issue 24; docs/performance.md
-// "Direct panel rendering", docs/rendering.md "Direct panel rendering"). The quilt path shows a
-// viewer between views j and j + 1 one of them (nearest) or a mix (linear); the direct pass
-// shows the view at the viewer's own angle. An eye is placed where the display sends the view
-// fraction f = (j + 1/2 + t) / V toward it (display/lens_relations.hpp tan_of_seen_fraction, the
-// one relation), photographed through the optics simulator (sim/simulator.hpp: the lens model,
-// its point spread, the camera), and the photograph is compared with the photograph of what an
-// ideal display would show that eye: the per-view render at the continuous view position
-// s = f - 1/2 (render::QuiltGeometry::view_camera_at) on every subpixel.
+// Photographs of a panel from eyes between two quilt views (docs/performance.md "Direct panel
+// rendering", docs/rendering.md "Photographs between two quilt views"). The quilt path shows a
+// viewer between views j and j + 1 one of them (nearest) or a mix (linear); the direct pass shows
+// the view at the viewer's own angle. An eye is placed where the display sends the view fraction f
+// = (j + 1/2 + t) / V toward it (display/lens_relations.hpp tan_of_seen_fraction, the one
+// relation), photographed through the optics simulator (sim/simulator.hpp: the lens model, its
+// point spread, the camera), and the photograph is compared with the photograph of what an ideal
+// display would show that eye: the per-view render at the continuous view position s = f - 1/2
+// (render::QuiltGeometry::view_camera_at) on every subpixel.
 //
 // The eye stands far (kEyeDistanceInPanelWidths panel widths): a lens sends a view fraction in
 // one direction from every point of the panel and the quilt's views are rendered for exactly

@@ -1,9 +1,9 @@
 #pragma once
-// What one viewer sees down the screen (issue #12, vertical parallax): a slanted lens has power
-// only across its lines, so an eye at a fixed place sees different views at the top and the
-// bottom of the screen even straight in front of it, by H_m line_tilt k / Cz of the cone
-// (display/lens_relations.hpp). Measured through the simulator's optics and set beside
-// the relation's prediction.
+// What one viewer sees down the screen (vertical parallax; docs/display-model.md, "What a viewer
+// sees: vertical parallax of slanted lenses"): a slanted lens has power only across its lines, so
+// an eye at a fixed place sees different views at the top and the bottom of the screen even
+// straight in front of it, by H_m line_tilt k / Cz of the cone (display/lens_relations.hpp).
+// Measured through the simulator's optics and set beside the relation's prediction.
 #include <vector>
 
 #include <Eigen/Core>

@@ -183,11 +183,11 @@ render::CameraSpec frame_voxel_scene(const scene::VoxelScene& scene, float fov_y
   const glm::vec3 back = spec.position - spec.look_at;
   if (glm::length(back) > limit) spec.position = spec.look_at + limit * glm::normalize(back);
   // The 99% rule does not know where the shell is: the camera could sit within the shell's
-  // thickness, in a gap between its inner and outer surface voxels, or inside a voxel; per view
-  // it then sees the shell from behind (only sky) while V2LF's reference camera, further in on
-  // the axis, sees the content (issue #13). Move in until the camera and the outermost views of
-  // the default 40-degree cone lie outside every voxel and see look_at past no voxel of the
-  // coarsest level (the background).
+  // thickness, in a gap between its inner and outer surface voxels, or inside a voxel; per view it
+  // then sees the shell from behind (only sky) while V2LF's reference camera, further in on the
+  // axis, sees the content (docs/voxels.md, "Rendering"). Move in until the camera and the
+  // outermost views of the default 40-degree cone lie outside every voxel and see look_at past no
+  // voxel of the coarsest level (the background).
   const glm::vec3 right = glm::normalize(glm::cross(spec.look_at - spec.position, spec.up));
   const float cone_half_tan = std::tan(glm::radians(20.0f));
   const auto blocked = [&](const glm::vec3& p) {

@@ -1,12 +1,12 @@
 #pragma once
-// The exact CPU sparse-voxel rasterizer: SVRaster's forward pass (issue #13), the oracle for
-// V2LF and any GPU port. Per pixel, the voxels its tile overlaps in the order of the ray's
-// sign octant (ray_order.hpp); per voxel a ray-box slab test, K samples of the scene::trilinear raw
-// density through scene::exp_linear_11, tau = sum 100 dt sigma, alpha = min(0.99999, 1 - exp(-tau)),
-// skip alpha < 1e-5, stop once T < 1e-4; colour = SH from the camera to the voxel centre (+0.5,
-// clamped at 0); out = C + T background. Rendered at ss times the size and downsampled with
-// antialiasing. Stages: preprocess (colour and screen rectangle per voxel), tile binning,
-// per-tile order and per-pixel compositing. Multithreaded over tiles with OpenMP.
+// The exact CPU sparse-voxel rasterizer: SVRaster's forward pass (docs/voxels.md, "The forward
+// pass"), the oracle for V2LF and any GPU port. Per pixel, the voxels its tile overlaps in the
+// order of the ray's sign octant (ray_order.hpp); per voxel a ray-box slab test, K samples of the
+// scene::trilinear raw density through scene::exp_linear_11, tau = sum 100 dt sigma, alpha =
+// min(0.99999, 1 - exp(-tau)), skip alpha < 1e-5, stop once T < 1e-4; colour = SH from the camera
+// to the voxel centre (+0.5, clamped at 0); out = C + T background. Rendered at ss times the size
+// and downsampled with antialiasing. Stages: preprocess (colour and screen rectangle per voxel),
+// tile binning, per-tile order and per-pixel compositing. Multithreaded over tiles with OpenMP.
 #include <optional>
 #include <vector>
 

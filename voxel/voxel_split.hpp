@@ -1,10 +1,11 @@
 #pragma once
-// A voxel split into its 8 octree children (issue #13: V2LF may split a voxel that straddles a
-// chunk boundary, "which keeps the density field identical"). A child's corner densities are
-// the parent's scene::trilinear field at the child's corners; scene::trilinear interpolation restricted to an
-// axis-aligned sub-box is again scene::trilinear there, so every point has the same raw density (and so
-// the same activated density) before and after. SH is copied: SVRaster evaluates it along the
-// direction to the voxel centre, so a child's view-dependent colour differs slightly.
+// A voxel split into its 8 octree children (docs/voxels.md, "V2LF": V2LF may split a voxel that
+// straddles a chunk boundary, "which keeps the density field identical"). A child's corner
+// densities are the parent's scene::trilinear field at the child's corners; scene::trilinear
+// interpolation restricted to an axis-aligned sub-box is again scene::trilinear there, so every
+// point has the same raw density (and so the same activated density) before and after. SH is
+// copied: SVRaster evaluates it along the direction to the voxel centre, so a child's
+// view-dependent colour differs slightly.
 #include <cstddef>
 
 #include <glm/glm.hpp>

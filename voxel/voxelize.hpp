@@ -1,6 +1,6 @@
 #pragma once
-// A 3DGS scene turned into SVRaster sparse voxels (`lfd scene voxelize`, issue #13), so real
-// Gaussian scenes give voxel scenes of realistic structure.
+// A 3DGS scene turned into SVRaster sparse voxels (`lfd scene voxelize`; docs/voxels.md, "Test
+// content from Gaussian scenes"), so real Gaussian scenes give voxel scenes of realistic structure.
 //   - Octree: SVRaster's inside cube (the centres' 0.5-99.5% quantiles, 10% margin), doubled
 //     until it holds every centre (at most 4 outside levels, like SVRaster's background), and
 //     split breadth-first wherever a cell holds, in Gaussians thinner than the cell, more mass

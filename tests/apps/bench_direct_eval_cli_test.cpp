@@ -1,4 +1,5 @@
-// The evaluation commands of issue 24 end to end on a small display: `lfd bench direct
+// The evaluation commands of direct panel rendering (docs/rendering.md "Photographs between two
+// quilt views", "Per-view direct: the baseline") end to end on a small display: `lfd bench direct
 // --baseline` (per-view direct: its panel is the per-view panel exactly) and `lfd bench
 // direct-photos` (photographs between two quilt views); bad options are one line and exit 2.
 #include <algorithm>
@@ -11,7 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
+#include "tests/support/small_displays.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd {
@@ -21,12 +23,10 @@ namespace fs = std::filesystem;
 
 const std::string kScene = (test::project_data() / "scenes" / "demo.ply").string();
 
-// LKG-2K's lens on a 320x200 panel (as tests/interlace/direct_panel_test.cpp), 8 views.
+// LKG-2K's lens on a 320x200 panel, with the fringe gain (tests/support/small_displays.hpp).
 std::string small_display(const fs::path& dir) {
   const fs::path path = dir / "small.visual.json";
-  std::ofstream(path) << R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
-                         R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
-                         R"("screenW":{"value":320},"screenH":{"value":200},"fringe":{"value":0.1}})";
+  std::ofstream(path) << test::small_lkg_2k_visual_json(0.1);
   return path.string();
 }
 

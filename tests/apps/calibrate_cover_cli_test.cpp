@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 

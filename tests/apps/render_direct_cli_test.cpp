@@ -1,6 +1,7 @@
-// `lfd render --direct` end to end (issue 24): the panel straight from the sweeping planes, no
-// quilt file; it is the quilt path's panel where views agree (close in PSNR), and every option
-// that needs a quilt, or a missing display or --panel, is one line and exit 2 with nothing written.
+// `lfd render --direct` end to end (docs/rendering.md "Direct panel rendering"): the panel straight
+// from the sweeping planes, no quilt file; it is the quilt path's panel where views agree (close in
+// PSNR), and every option that needs a quilt, or a missing display or --panel, is one line and exit
+// 2 with nothing written.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -12,7 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/image.hpp"

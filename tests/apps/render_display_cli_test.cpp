@@ -13,7 +13,7 @@
 
 #include "display/calibration_file.hpp"
 #include "display/display_quilt.hpp"
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"
 #include "util/image.hpp"

@@ -9,28 +9,24 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
+#include "tests/test_data.hpp"
 
 #include <nlohmann/json.hpp>
 
 namespace {
 
 using Result = lfd::test::RunResult;
+using lfd::test::run_lfd;
 
-Result run(const std::string& args) { return lfd::test::run_lfd(args); }
-
-std::filesystem::path temp_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / ("lfd_scene_cli_test_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+std::filesystem::path temp_dir() { return lfd::test::scratch_dir("scene_cli"); }
 
 TEST(SceneCli, GenerateThenInfoAsJson) {
   const auto out = temp_dir() / "corridor.ply";
-  const Result gen = run("scene generate --kind corridor --count 5000 --seed 4 --sh-degree 2 --out " +
+  const Result gen = run_lfd("scene generate --kind corridor --count 5000 --seed 4 --sh-degree 2 --out " +
                          out.string());
   ASSERT_EQ(gen.exit_code, 0) << gen.output;
-  const Result info = run("scene info --json " + out.string());
+  const Result info = run_lfd("scene info --json " + out.string());
   ASSERT_EQ(info.exit_code, 0) << info.output;
   const auto j = nlohmann::json::parse(info.output);
   EXPECT_EQ(j["gaussians"], 5000);
@@ -39,7 +35,7 @@ TEST(SceneCli, GenerateThenInfoAsJson) {
 }
 
 TEST(SceneCli, InfoReadsTheBundledDemoScene) {
-  const Result info = run(std::string("scene info --json ") + LFD_SOURCE_DIR "/data/scenes/demo.ply");
+  const Result info = run_lfd(std::string("scene info --json ") + LFD_SOURCE_DIR "/data/scenes/demo.ply");
   ASSERT_EQ(info.exit_code, 0) << info.output;
   const auto j = nlohmann::json::parse(info.output);
   EXPECT_EQ(j["gaussians"], 27000);
@@ -51,25 +47,25 @@ TEST(SceneCli, BadSceneFileIsExitTwoNamingTheFile) {
   const auto bad = temp_dir() / "truncated.ply";
   std::ofstream(bad) << "ply\nformat binary_little_endian 1.0\nelement vertex 10\n"
                         "property float x\nend_header\n";
-  const Result r = run("scene info " + bad.string());
+  const Result r = run_lfd("scene info " + bad.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("truncated"), std::string::npos) << r.output;
 }
 
 TEST(SceneCli, UnknownKindAndMissingOutputAreExitTwo) {
-  EXPECT_EQ(run("scene generate --kind nebula --out x.ply").exit_code, 2);
-  EXPECT_EQ(run("scene generate --kind tabletop").exit_code, 2);
-  EXPECT_EQ(run("scene").exit_code, 2);
-  EXPECT_EQ(run("scene --help").exit_code, 0);
+  EXPECT_EQ(run_lfd("scene generate --kind nebula --out x.ply").exit_code, 2);
+  EXPECT_EQ(run_lfd("scene generate --kind tabletop").exit_code, 2);
+  EXPECT_EQ(run_lfd("scene").exit_code, 2);
+  EXPECT_EQ(run_lfd("scene --help").exit_code, 0);
 }
 
 TEST(SceneCli, ConvertWritesSpzAndRefusesBadInputWritingNothing) {
   const auto spz = temp_dir() / "playbot.spz";
   std::filesystem::remove(spz);
-  const Result ok = run(std::string("scene convert ") + LFD_SOURCE_DIR "/data/scenes/playbot.sog " + spz.string());
+  const Result ok = run_lfd(std::string("scene convert ") + LFD_SOURCE_DIR "/data/scenes/playbot.sog " + spz.string());
   ASSERT_EQ(ok.exit_code, 0) << ok.output;
-  const auto j = nlohmann::json::parse(run("scene info --json " + spz.string()).output);
+  const auto j = nlohmann::json::parse(run_lfd("scene info --json " + spz.string()).output);
   EXPECT_EQ(j["gaussians"], 31000);
   EXPECT_EQ(j["sh_degree"], 2);
   // A truncated SOG: one line naming it, exit 2, no output file.
@@ -79,7 +75,7 @@ TEST(SceneCli, ConvertWritesSpzAndRefusesBadInputWritingNothing) {
   std::ofstream(bad, std::ios::binary) << bytes.substr(0, bytes.size() / 3);
   const auto out = temp_dir() / "never.ply";
   std::filesystem::remove(out);
-  const Result r = run("scene convert " + bad.string() + " " + out.string());
+  const Result r = run_lfd("scene convert " + bad.string() + " " + out.string());
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.output.find(bad.string()), std::string::npos) << r.output;
   EXPECT_FALSE(std::filesystem::exists(out));

@@ -10,7 +10,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
+#include "tests/test_data.hpp"
 
 #include "util/image.hpp"
 
@@ -18,22 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int code;
-  std::string out;
-};
+using Result = lfd::test::RunResult;
+using lfd::test::run_lfd;
 
-// Output through a pipe, not a shared log file: CTest runs these tests in parallel.
-Result run(const std::string& args) {
-  const auto r = lfd::test::run_lfd(args);
-  return {r.exit_code, r.output};
-}
-
-fs::path temp_dir() {
-  const fs::path d = fs::temp_directory_path() / ("lfd_simulate_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path temp_dir() { return lfd::test::scratch_dir("simulate_cli"); }
 
 // LKG-APW92011's optics at a tenth of the resolution: 384 x 216 pixels, 17 subpixels per lens.
 fs::path small_display() {
@@ -54,11 +43,11 @@ fs::path white_panel(int w, int h, const std::string& name) {
 TEST(SimulateCli, WritesACaptureOfTheRequestedSize) {
   const fs::path out = temp_dir() / "capture.png";
   fs::remove(out);
-  const Result r = run("simulate --calibration " + small_display().string() + " --panel " +
+  const Result r = run_lfd("simulate --calibration " + small_display().string() + " --panel " +
                        white_panel(384, 216, "white.png").string() +
                        " --camera-pos 0.02,0.01,0.6 --fov 40 --size 160x90 --supersample 2"
                        " --noise 0.01 --seed 3 --out " + out.string());
-  ASSERT_EQ(r.code, 0) << r.out;
+  ASSERT_EQ(r.exit_code, 0) << r.output;
   const lfd::Image8 img = lfd::read_image(out);
   EXPECT_EQ(img.width, 160);
   EXPECT_EQ(img.height, 90);
@@ -66,30 +55,30 @@ TEST(SimulateCli, WritesACaptureOfTheRequestedSize) {
 
 TEST(SimulateCli, PanelOfTheWrongSizeExitsTwoNamingTheFile) {
   const fs::path panel = white_panel(200, 100, "wrong_size.png");
-  const Result r = run("simulate --calibration " + small_display().string() + " --panel " +
+  const Result r = run_lfd("simulate --calibration " + small_display().string() + " --panel " +
                        panel.string() + " --camera-pos 0,0,0.6 --size 64x36 --out " +
                        (temp_dir() / "never.png").string());
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("wrong_size.png"), std::string::npos) << r.out;
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("wrong_size.png"), std::string::npos) << r.output;
   EXPECT_FALSE(fs::exists(temp_dir() / "never.png"));
 }
 
 TEST(SimulateCli, MissingCameraFileExitsTwo) {
-  const Result r = run("simulate --calibration " + small_display().string() + " --panel " +
+  const Result r = run_lfd("simulate --calibration " + small_display().string() + " --panel " +
                        white_panel(384, 216, "white.png").string() +
                        " --camera-pos 0,0,0.6 --camera /nonexistent/cam.yaml --out " +
                        (temp_dir() / "never.png").string());
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("cam.yaml"), std::string::npos) << r.out;
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("cam.yaml"), std::string::npos) << r.output;
 }
 
 TEST(ValidateCli, ReportsSeparationAsJsonAndWritesTheReport) {
   const fs::path dir = temp_dir() / "report";
   fs::remove_all(dir);
-  const Result r = run("validate --calibration " + small_display().string() +
+  const Result r = run_lfd("validate --calibration " + small_display().string() +
                        " --views 16 --points 60 --angles-per-view 3 --json --out " + dir.string());
-  ASSERT_EQ(r.code, 0) << r.out;
-  const auto j = nlohmann::json::parse(r.out.substr(r.out.find('[')));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const auto j = nlohmann::json::parse(r.output.substr(r.output.find('[')));
   ASSERT_EQ(j.size(), 1u);
   EXPECT_EQ(j[0]["views"].get<int>(), 16);
   EXPECT_GT(j[0]["mean_separation"].get<double>(), 0.6);
@@ -98,16 +87,16 @@ TEST(ValidateCli, ReportsSeparationAsJsonAndWritesTheReport) {
 }
 
 TEST(ValidateCli, MissingAssumedCalibrationExitsTwo) {
-  const Result r = run("validate --calibration " + small_display().string() +
+  const Result r = run_lfd("validate --calibration " + small_display().string() +
                        " --assumed /nonexistent/assumed.json --out " +
                        (temp_dir() / "r2").string());
-  EXPECT_EQ(r.code, 2) << r.out;
-  EXPECT_NE(r.out.find("assumed.json"), std::string::npos) << r.out;
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("assumed.json"), std::string::npos) << r.output;
 }
 
 TEST(BenchCli, UnknownBenchmarkExitsTwo) {
-  EXPECT_EQ(run("bench no-such-benchmark").code, 2);
-  EXPECT_EQ(run("bench --help").code, 0);
+  EXPECT_EQ(run_lfd("bench no-such-benchmark").exit_code, 2);
+  EXPECT_EQ(run_lfd("bench --help").exit_code, 0);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/test_data.hpp"
 
 namespace {

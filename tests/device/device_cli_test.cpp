@@ -11,7 +11,7 @@
 
 #include "display/calibration_file.hpp"
 #include "display/visual_json.hpp"
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/device/device_test_tree.hpp"
 #include "tests/test_data.hpp"
 #include "util/atomic_file.hpp"

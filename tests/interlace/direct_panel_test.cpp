@@ -13,14 +13,11 @@
 #include "render/per_view_quilt.hpp"
 #include "render/swizzle_blend.hpp"
 #include "tests/interlace/flat_layer_planes.hpp"
-#include "tests/interlace/small_displays.hpp"
+#include "tests/support/small_displays.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::interlace {
 namespace {
-
-using test_displays::small_display;
-using test_displays::small_gen3_display;
 
 struct Comparison {
   int on_view = 0;      // subpixels whose fraction lies on a view centre, in flat quilt texels
@@ -73,7 +70,7 @@ Comparison compare_on_views(const test_planes::FlatLayerScene& s, const display:
 
 TEST(DirectPanel, EqualsTheQuiltPathWhereAFractionFallsOnAView) {
   const test_planes::FlatLayerScene s = test_planes::flat_layer_scene(160, 100, 8);
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k(0.1));
   for (bool invert : {false, true}) {
     const Comparison c = compare_on_views(s, lens, invert);
     EXPECT_GT(c.on_view, 20) << "invert " << invert;
@@ -85,7 +82,7 @@ TEST(DirectPanel, EqualsTheQuiltPathWhereAFractionFallsOnAView) {
 
 TEST(DirectPanel, EqualsTheQuiltPathOnGen3SubpixelCells) {
   const test_planes::FlatLayerScene s = test_planes::flat_layer_scene(108, 192, 8);
-  const display::LensModel lens(small_gen3_display());
+  const display::LensModel lens(test::small_gen3_portrait_template());
   const Comparison c = compare_on_views(s, lens, false);
   EXPECT_GT(c.on_view, 20);
   EXPECT_LT(c.max_diff, 1e-5);

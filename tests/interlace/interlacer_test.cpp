@@ -6,6 +6,8 @@
 
 #include "display/visual_json.hpp"
 #include "interlace/quilt_file.hpp"
+#include "tests/support/quilt_layouts.hpp"
+#include "tests/support/small_displays.hpp"
 #include "tests/test_data.hpp"
 #include "util/error.hpp"
 
@@ -27,30 +29,12 @@ ImageF constant_tile_quilt(const QuiltLayout& q, const std::function<float(int)>
   return img;
 }
 
-QuiltLayout layout(int cols, int rows, int w, int h, double aspect) {
-  QuiltLayout q;
-  q.cols = cols;
-  q.rows = rows;
-  q.views = cols * rows;
-  q.width = w;
-  q.height = h;
-  q.aspect = aspect;
-  return q;
-}
-
-DisplayCalibration small_display() {
-  // A real unit's lens scaled down to a small panel so tests stay fast.
-  return display::parse_visual_json(
-      R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
-      R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
-      R"("screenW":{"value":320},"screenH":{"value":200}})",
-      "small");
-}
+using test::quilt_layout;
 
 TEST(Interlacer, EverySubpixelShowsTheViewTheVendorFormulaSelects) {
-  const DisplayCalibration c = small_display();
+  const DisplayCalibration c = test::small_lkg_2k();
   const LensModel lens(c);
-  const QuiltLayout q = layout(5, 9, 500, 900, 1.6);
+  const QuiltLayout q = quilt_layout(5, 9, 500, 900, 1.6);
   const ImageF quilt = constant_tile_quilt(q, [&](int k) { return (k + 0.5f) / q.views; });
   const ImageF panel = interlace(quilt, q, lens);
   ASSERT_EQ(panel.width, c.screen_w);
@@ -69,9 +53,9 @@ TEST(Interlacer, EverySubpixelShowsTheViewTheVendorFormulaSelects) {
 }
 
 TEST(Interlacer, LinearBlendInterpolatesBetweenViewCentres) {
-  const DisplayCalibration c = small_display();
+  const DisplayCalibration c = test::small_lkg_2k();
   const LensModel lens(c);
-  const QuiltLayout q = layout(5, 9, 500, 900, 1.6);
+  const QuiltLayout q = quilt_layout(5, 9, 500, 900, 1.6);
   const ImageF quilt = constant_tile_quilt(q, [&](int k) { return float(k) / (q.views - 1); });
   InterlaceOptions o;
   o.blend = ViewBlend::kLinear;
@@ -92,9 +76,9 @@ TEST(Interlacer, ViewBlendNamesParseBackAndOthersAreRefused) {
 }
 
 TEST(Interlacer, ViewZeroIsTheBottomLeftTile) {
-  const DisplayCalibration c = small_display();
+  const DisplayCalibration c = test::small_lkg_2k();
   const LensModel lens(c);
-  const QuiltLayout q = layout(4, 2, 80, 40, 1.0);
+  const QuiltLayout q = quilt_layout(4, 2, 80, 40, 1.0);
   ImageF quilt(80, 40, 3, 0.f);
   for (int y = 20; y < 40; ++y)  // bottom half of the image, left quarter
     for (int x = 0; x < 20; ++x) quilt.at(x, y, 1) = 1.f;
@@ -105,9 +89,9 @@ TEST(Interlacer, ViewZeroIsTheBottomLeftTile) {
 }
 
 TEST(Interlacer, SamplesNeverBleedIntoTheNeighbouringTile) {
-  const DisplayCalibration c = small_display();
+  const DisplayCalibration c = test::small_lkg_2k();
   const LensModel lens(c);
-  const QuiltLayout q = layout(2, 1, 20, 10, 1.0);
+  const QuiltLayout q = quilt_layout(2, 1, 20, 10, 1.0);
   ImageF quilt(20, 10, 3, 0.f);
   for (int y = 0; y < 10; ++y)
     for (int x = 10; x < 20; ++x) quilt.at(x, y, 0) = 1.f;
@@ -117,9 +101,9 @@ TEST(Interlacer, SamplesNeverBleedIntoTheNeighbouringTile) {
 }
 
 TEST(Interlacer, SquareQuiltOnAWidePanelGetsBlackBarsUnlessOverscan) {
-  const DisplayCalibration c = small_display();  // 320x200, aspect 1.6
+  const DisplayCalibration c = test::small_lkg_2k();  // 320x200, aspect 1.6
   const LensModel lens(c);
-  const QuiltLayout q = layout(5, 9, 500, 900, 1.0);
+  const QuiltLayout q = quilt_layout(5, 9, 500, 900, 1.0);
   const ImageF quilt = constant_tile_quilt(q, [](int) { return 1.f; });
   const ImageF fit = interlace(quilt, q, lens);
   EXPECT_EQ(fit.at(0, 100, 1), 0.f);     // left bar
@@ -133,10 +117,10 @@ TEST(Interlacer, SquareQuiltOnAWidePanelGetsBlackBarsUnlessOverscan) {
 }
 
 TEST(Interlacer, TilesWithinAPixelOfThePanelAspectFillItWithNoBlackColumn) {
-  const DisplayCalibration c = small_display();  // 320x200, aspect 1.6
+  const DisplayCalibration c = test::small_lkg_2k();  // 320x200, aspect 1.6
   const LensModel lens(c);
   // 5 x 3: tiles of 83x52 pixels (1.5962; 1.6 would be 83.2 wide), named by their pixels.
-  const QuiltLayout q = layout(5, 3, 415, 156, 83.0 / 52.0);
+  const QuiltLayout q = quilt_layout(5, 3, 415, 156, 83.0 / 52.0);
   const ImageF filled = interlace(constant_tile_quilt(q, [](int) { return 1.f; }), q, lens);
   for (int row = 0; row < c.screen_h; ++row) {
     EXPECT_EQ(filled.at(0, row, 1), 1.f) << "row " << row;
@@ -154,7 +138,7 @@ TEST(Interlacer, EveryRealCalibrationInterlacesToItsPanelSize) {
     SCOPED_TRACE(file.string());
     const DisplayCalibration c = display::read_visual_json(file);
     const LensModel lens(c);
-    const QuiltLayout q = layout(5, 9, 250, 450, double(c.screen_w) / c.screen_h);
+    const QuiltLayout q = quilt_layout(5, 9, 250, 450, double(c.screen_w) / c.screen_h);
     const ImageF quilt = constant_tile_quilt(q, [&](int k) { return (k + 0.5f) / q.views; });
     const ImageF panel = interlace(quilt, q, lens);
     EXPECT_EQ(panel.width, c.screen_w);
@@ -169,9 +153,9 @@ TEST(Interlacer, EveryRealCalibrationInterlacesToItsPanelSize) {
 }
 
 TEST(Interlacer, RejectsAQuiltOfTheWrongSize) {
-  const DisplayCalibration c = small_display();
+  const DisplayCalibration c = test::small_lkg_2k();
   const LensModel lens(c);
-  const QuiltLayout q = layout(5, 9, 500, 900, 1.6);
+  const QuiltLayout q = quilt_layout(5, 9, 500, 900, 1.6);
   EXPECT_THROW(interlace(ImageF(400, 900, 3), q, lens), InputError);
 }
 

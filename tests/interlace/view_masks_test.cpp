@@ -10,14 +10,11 @@
 #include "render/default_camera.hpp"
 #include "render/per_view_quilt.hpp"
 #include "render/scene_generator.hpp"
-#include "tests/interlace/small_displays.hpp"
+#include "tests/support/small_displays.hpp"
 #include "tests/test_data.hpp"
 
 namespace lfd::interlace {
 namespace {
-
-using test_displays::small_display;
-using test_displays::small_gen3_display;
 
 struct Fixture {
   scene::GaussianScene scene;
@@ -71,15 +68,15 @@ void expect_same_panel(const display::DisplayCalibration& cal, ViewBlend blend, 
 }
 
 TEST(ViewMasks, MaskedPerViewInterlacesToTheUnmaskedPanel) {
-  expect_same_panel(small_display(), ViewBlend::kNearest, 400, 250);
+  expect_same_panel(test::small_lkg_2k(0.1), ViewBlend::kNearest, 400, 250);
 }
 
 TEST(ViewMasks, MaskedPerViewInterlacesToTheUnmaskedPanelWithLinearBlending) {
-  expect_same_panel(small_display(), ViewBlend::kLinear, 400, 250);
+  expect_same_panel(test::small_lkg_2k(0.1), ViewBlend::kLinear, 400, 250);
 }
 
 TEST(ViewMasks, MaskedPerViewInterlacesToTheUnmaskedPanelOnGen3Cells) {
-  expect_same_panel(small_gen3_display(), ViewBlend::kNearest, 270, 480);
+  expect_same_panel(test::small_gen3_portrait_template(), ViewBlend::kNearest, 270, 480);
 }
 
 }  // namespace

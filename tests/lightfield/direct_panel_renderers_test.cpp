@@ -1,6 +1,7 @@
-// LightFieldRenderer::render_panel (issue 24): the CPU sweeping-plane renderers' direct panel is
-// interlace::render_direct_panel of the planes render_planes_g2lf / render_planes_v2lf make, bit
-// for bit; the GL ones agree with them; per-view renderers refuse with an InputError.
+// LightFieldRenderer::render_panel (docs/rendering.md "Direct panel rendering"): the CPU
+// sweeping-plane renderers' direct panel is interlace::render_direct_panel of the planes
+// render_planes_g2lf / render_planes_v2lf make, bit for bit; the GL ones agree with them; per-view
+// renderers refuse with an InputError.
 #include <algorithm>
 #include <cmath>
 

@@ -9,6 +9,7 @@
 #include "lightfield/scene_framing.hpp"
 #include "lightfield/view_plan.hpp"
 #include "tests/lightfield/light_field_test_scenes.hpp"
+#include "tests/support/scene_fixtures.hpp"
 #include "tests/test_data.hpp"
 #include "util/default_display.hpp"
 #include "util/error.hpp"
@@ -16,12 +17,8 @@
 namespace lfd::lightfield {
 namespace {
 
-display::Calibration portrait() {
-  return display::read_calibration(test::fixture_calibration("LKG-PORT-portrait.visual.json"));
-}
-
 TEST(ViewPlan, ADisplayDecidesViewsConeGridAndSize) {
-  const display::Calibration calibration = portrait();
+  const display::Calibration calibration = test::portrait_calibration();
   ViewRequest request;
   request.display = &calibration;
   request.view_height = 200;
@@ -44,7 +41,7 @@ TEST(ViewPlan, ADisplayDecidesViewsConeGridAndSize) {
 }
 
 TEST(ViewPlan, TheRequestOverridesTheDisplay) {
-  const display::Calibration calibration = portrait();
+  const display::Calibration calibration = test::portrait_calibration();
   ViewRequest request;
   request.display = &calibration;
   request.views = 12;
@@ -66,7 +63,7 @@ TEST(ViewPlan, TheRequestOverridesTheDisplay) {
 }
 
 TEST(ViewPlan, ACameraWithItsOwnSizeKeepsItOnADisplay) {
-  const display::Calibration calibration = portrait();
+  const display::Calibration calibration = test::portrait_calibration();
   ViewRequest request;
   request.display = &calibration;
   request.camera = scene_framing(test_gaussians());

@@ -10,6 +10,7 @@
 #include "media/quilt_image.hpp"
 #include "media/synthetic_quilt.hpp"
 #include "render/image_metrics.hpp"
+#include "tests/support/quilt_layouts.hpp"
 #include "util/error.hpp"
 
 namespace lfd::media {
@@ -17,16 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-render::QuiltLayout small_layout() {
-  render::QuiltLayout q;
-  q.cols = 4;
-  q.rows = 2;
-  q.views = 8;
-  q.aspect = 1.0;
-  q.width = 128;
-  q.height = 64;
-  return q;
-}
+render::QuiltLayout small_layout() { return test::quilt_layout(4, 2, 128, 64); }
 
 std::vector<uint8_t> png_bytes(const Image8& image) {
   const fs::path path = fs::temp_directory_path() / "lfd_media_quilt_image_test.png";

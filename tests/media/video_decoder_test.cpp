@@ -16,6 +16,7 @@ extern "C" {
 #include "media/synthetic_quilt.hpp"
 #include "media/video_decoder.hpp"
 #include "render/image_metrics.hpp"
+#include "tests/support/quilt_layouts.hpp"
 #include "util/error.hpp"
 
 namespace lfd::media {
@@ -23,16 +24,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-render::QuiltLayout tiny_layout() {
-  render::QuiltLayout q;
-  q.cols = 4;
-  q.rows = 2;
-  q.views = 8;
-  q.aspect = 1.0;
-  q.width = 160;
-  q.height = 80;
-  return q;
-}
+render::QuiltLayout tiny_layout() { return test::quilt_layout(4, 2, 160, 80); }
 
 constexpr int kFrames = 12;
 

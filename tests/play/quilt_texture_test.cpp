@@ -13,22 +13,15 @@
 #include "media/video_decoder.hpp"
 #include "play/quilt_texture.hpp"
 #include "render/image_metrics.hpp"
+#include "tests/support/quilt_layouts.hpp"
 
 namespace lfd::play {
 namespace {
 
 namespace fs = std::filesystem;
 
-render::QuiltLayout layout() {
-  render::QuiltLayout q;
-  q.cols = 4;
-  q.rows = 3;
-  q.views = 12;
-  q.aspect = 1.0;
-  q.width = 192;  // odd chroma sizes would be 96 x 71: use an odd height too
-  q.height = 142;
-  return q;
-}
+// Odd chroma sizes (96 x 71): the height is odd too.
+render::QuiltLayout layout() { return test::quilt_layout(4, 3, 192, 142); }
 
 int max_difference(const Image8& a, const ImageF& b) {
   int worst = 0;

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "media/video_decoder.hpp"
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"
 

@@ -10,7 +10,7 @@
 
 #include "rgbd/rgbd_quilt.hpp"
 #include "rgbd/rgbd_view_model.hpp"
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/rgbd/rgbd_fixture.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"

@@ -1,11 +1,9 @@
-// The cover layer in a simulated photograph (issue #12): through a 3 cm acrylic block a camera
-// 30 degrees to the side sees, at each panel point, the view fraction the refracted ray
-// predicts (seen_fraction_through_cover), not the one the straight line to the camera would.
-// The simulator traces rays from the camera forward through Snell's law; the prediction solves
-// the ray from the panel point backward: two independent paths to one relation.
+// The cover layer in a simulated photograph (docs/display-model.md, "The cover layer"): through a 3
+// cm acrylic block a camera 30 degrees to the side sees, at each panel point, the view fraction the
+// refracted ray predicts (seen_fraction_through_cover), not the one the straight line to the camera
+// would. The simulator traces rays from the camera forward through Snell's law; the prediction
+// solves the ray from the panel point backward: two independent paths to one relation.
 #include <cmath>
-#include <complex>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -17,8 +15,6 @@
 
 namespace lfd::sim {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 double wrapped(double x) { return x - std::round(x); }
 
@@ -42,14 +38,7 @@ TEST(SimulatorThroughCover, APhotoFromTheSideShowsTheRefractedViewFractions) {
     const display::Point3 e = display::cover_exit_point({p.x(), p.y(), 0.0}, {eye.x(), eye.y(), eye.z()}, d.cover);
     Eigen::Vector2d px;
     EXPECT_TRUE(cam.project(Eigen::Vector3d(e.x, e.y, e.z), px));
-    std::complex<double> z = 0;
-    for (int y = int(px.y()) - 4; y <= int(px.y()) + 4; ++y)
-      for (int x = int(px.x()) - 6; x <= int(px.x()) + 6; ++x)
-        for (int ch = 0; ch < 3; ++ch) {
-          const double w = 0.5 * photo_white.at(x, y, ch);
-          z += std::complex<double>(photo_cos.at(x, y, ch) - w, photo_sin.at(x, y, ch) - w);
-        }
-    return std::arg(z) / kTwoPi;
+    return testing::seen_fraction_around(photo_cos, photo_sin, photo_white, int(px.x()), int(px.y()));
   };
   for (double x : {-0.3, 0.0, 0.3}) {
     const Eigen::Vector3d p(x * d.width_m(), 0.1 * d.height_m(), 0.0);

@@ -1,5 +1,7 @@
 #pragma once
 // Displays and panels shared by the simulator tests.
+#include <complex>
+#include <numbers>
 #include <string>
 
 #include "display/calibration_file.hpp"
@@ -59,6 +61,21 @@ inline ImageF view_index_panel(const display::LensModel& lens, int views) {
             float(display::LensModel::view_index(lens.subpixel_view_fraction(x, row, ch), views)) /
             float(views - 1);
   return panel;
+}
+
+// The view fraction seen around photo pixel (x, y), in turns: the phasor of the photos of the
+// cosine and sine fraction panels (display/fraction_panel.hpp), less half the white panel's photo,
+// summed over the 13 x 9 pixels around it.
+inline double seen_fraction_around(const ImageF& photo_cos, const ImageF& photo_sin, const ImageF& photo_white, int x,
+                                   int y) {
+  std::complex<double> z = 0;
+  for (int py = y - 4; py <= y + 4; ++py)
+    for (int px = x - 6; px <= x + 6; ++px)
+      for (int ch = 0; ch < 3; ++ch) {
+        const double w = 0.5 * photo_white.at(px, py, ch);
+        z += std::complex<double>(photo_cos.at(px, py, ch) - w, photo_sin.at(px, py, ch) - w);
+      }
+  return std::arg(z) / (2.0 * std::numbers::pi);
 }
 
 }  // namespace lfd::sim::testing

@@ -1,9 +1,8 @@
-// Vertical parallax in a simulated photograph (issue #12): a camera in front of the screen sees
-// other views at the top of the screen than at the bottom, by what seen_fraction() predicts,
-// because a slanted lens has power only across its lines.
+// Vertical parallax in a simulated photograph (docs/display-model.md, "What a viewer sees: vertical
+// parallax of slanted lenses"): a camera in front of the screen sees other views at the top of the
+// screen than at the bottom, by what seen_fraction() predicts, because a slanted lens has power
+// only across its lines.
 #include <cmath>
-#include <complex>
-#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -14,8 +13,6 @@
 
 namespace lfd::sim {
 namespace {
-
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 double wrapped(double x) { return x - std::round(x); }
 
@@ -40,14 +37,7 @@ TEST(SimulatorVerticalParallax, TopAndBottomOfAPhotoShowTheViewsSeenFractionPred
     auto seen_at = [&](const Eigen::Vector3d& p) {
       Eigen::Vector2d px;
       EXPECT_TRUE(cam.project(p, px));
-      std::complex<double> z = 0;
-      for (int y = int(px.y()) - 4; y <= int(px.y()) + 4; ++y)
-        for (int x = int(px.x()) - 6; x <= int(px.x()) + 6; ++x)
-          for (int ch = 0; ch < 3; ++ch) {
-            const double w = 0.5 * photo_white.at(x, y, ch);
-            z += std::complex<double>(photo_cos.at(x, y, ch) - w, photo_sin.at(x, y, ch) - w);
-          }
-      return std::arg(z) / kTwoPi;
+      return testing::seen_fraction_around(photo_cos, photo_sin, photo_white, int(px.x()), int(px.y()));
     };
     auto predicted_at = [&](const Eigen::Vector3d& p) {
       const Eigen::Vector3d d = eye - p;

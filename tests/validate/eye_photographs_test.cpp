@@ -8,21 +8,13 @@
 #include "display/visual_json.hpp"
 #include "interlace/interlacer.hpp"
 #include "render/quilt_layout.hpp"
+#include "tests/support/small_displays.hpp"
 #include "util/error.hpp"
 
 namespace lfd::validate {
 namespace {
 
 constexpr int kViews = 8, kW = 80, kH = 50;
-
-display::DisplayCalibration small_display() {
-  // LKG-2K's lens on a 320x200 panel (as tests/interlace/direct_panel_test.cpp).
-  return display::parse_visual_json(
-      R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
-      R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
-      R"("screenW":{"value":320},"screenH":{"value":200},"fringe":{"value":0}})",
-      "small");
-}
 
 std::array<float, 3> colour(double j) { return {float(j / (kViews - 1)), float(1 - j / (kViews - 1)), 0.5f}; }
 
@@ -54,7 +46,7 @@ ImageF quilt_panel(const display::LensModel& lens, interlace::ViewBlend blend) {
 }
 
 struct Photos {
-  const display::LensModel lens{small_display()};
+  const display::LensModel lens{test::small_lkg_2k()};
   const sim::DisplaySimulator simulator{lens};
   ImageF photo(const ImageF& panel, const EyeBetweenViews& eye) const { return photograph(simulator, panel, eye, 96, 0.002, 2); }
   // PSNR of the photograph of `panel` against the photograph of an ideal panel of flat colour c.
@@ -85,7 +77,7 @@ TEST(EyePhotographs, LinearPanelShowsTheMixHalfwayBetweenViews) {
 }
 
 TEST(EyePhotographs, EyeStandsWhereTheDisplaySendsItsFraction) {
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k());
   const EyeBetweenViews centre = eye_between_views(lens, kViews, 3, 0.5);
   EXPECT_DOUBLE_EQ(centre.fraction, 0.5);
   EXPECT_NEAR(centre.eye.x(), 0.0, 1e-12);
@@ -95,7 +87,7 @@ TEST(EyePhotographs, EyeStandsWhereTheDisplaySendsItsFraction) {
 }
 
 TEST(EyePhotographs, BadPositionsAreInputErrors) {
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k());
   EXPECT_THROW(eye_between_views(lens, kViews, kViews, 0.0), InputError);
   EXPECT_THROW(eye_between_views(lens, kViews, 2, 1.5), InputError);
   EXPECT_THROW(eye_between_views(lens, kViews, kViews - 1, 0.5), InputError);

@@ -1,5 +1,6 @@
 // What one eye sees from the bottom to the top of a Looking Glass Portrait (vertical parallax,
-// issue #12): measured through the simulator's optics, it follows seen_fraction().
+// docs/display-model.md "What a viewer sees"): measured through the simulator's optics, it follows
+// seen_fraction().
 #include "validate/seen_down_the_screen.hpp"
 
 #include <gtest/gtest.h>

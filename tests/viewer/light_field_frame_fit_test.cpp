@@ -13,23 +13,14 @@
 #include "gpu/splats/gl_scene.hpp"
 #include "render/default_camera.hpp"
 #include "render/scene_generator.hpp"
+#include "tests/support/scene_fixtures.hpp"
 #include "util/error.hpp"
 #include "viewer/light_field_frame.hpp"
 
 namespace lfd::viewer {
 namespace {
 
-display::Calibration test_display() {
-  return display::read_calibration(std::filesystem::path(LFD_TEST_DATA_DIR) / "calibrations" /
-                                 "LKG-PORT-portrait.visual.json");
-}
-
-scene::GaussianScene test_scene() {
-  render::SceneGeneratorOptions o;
-  o.count = 3000;
-  o.sh_degree = 3;
-  return render::generate_scene(o);
-}
+scene::GaussianScene test_scene() { return test::generated_gaussians(3000, 3); }
 
 ViewerSettings small_settings() {
   ViewerSettings s;
@@ -48,7 +39,7 @@ TEST(LightFieldFrameFit, ASceneAboveTheFreeMemoryIsShownAtTheLargestShDegreeThat
   const scene::GaussianScene scene = test_scene();
   gpu::GlInfo info = context.info();
   info.free_memory_bytes = (long long)needed_bytes(scene.size(), 1);  // degree 2 and 3 do not fit
-  LightFieldFrame frame(scene, test_display(), info);
+  LightFieldFrame frame(scene, test::portrait_calibration(), info);
   EXPECT_EQ(frame.scene_sh_degree(), 1);
   EXPECT_NE(frame.scene_fit_notice().find("SH degree 1 (its own: 3)"), std::string::npos)
       << frame.scene_fit_notice();
@@ -61,7 +52,7 @@ TEST(LightFieldFrameFit, ASceneAboveTheFreeMemoryIsShownAtTheLargestShDegreeThat
 
 TEST(LightFieldFrameFit, ASceneThatFitsIsUploadedWhole) {
   gpu::HeadlessContext context;
-  LightFieldFrame frame(test_scene(), test_display(), context.info());
+  LightFieldFrame frame(test_scene(), test::portrait_calibration(), context.info());
   EXPECT_EQ(frame.scene_sh_degree(), 3);
   EXPECT_TRUE(frame.scene_fit_notice().empty());
 }
@@ -71,7 +62,7 @@ TEST(LightFieldFrameFit, ASceneAboveTheMemoryEvenAtDegreeZeroIsRefusedWithTheNum
   gpu::GlInfo info = context.info();
   info.free_memory_bytes = (long long)needed_bytes(3000, 0) - 1;
   try {
-    LightFieldFrame frame(test_scene(), test_display(), info);
+    LightFieldFrame frame(test_scene(), test::portrait_calibration(), info);
     FAIL() << "a scene above the memory at SH degree 0 was accepted";
   } catch (const InputError& e) {
     const std::string message = e.what();
@@ -85,7 +76,7 @@ TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   const scene::GaussianScene scene = test_scene();
   ViewerSettings s = small_settings();
   s.g2lf.precision = render::PlanePrecision::kF32;
-  const lightfield::ViewPlan plan = plan_frame(test_display(), render::frame_scene(scene), s);
+  const lightfield::ViewPlan plan = plan_frame(test::portrait_calibration(), render::frame_scene(scene), s);
   // u8 planes drawn layered are RGBA16F (half of RGBA32F; RGBA8 with a float accumulation
   // array of one layer here when those do not fit), so u8 needs less than RGBA32F.
   gpu::GlG2lfOptions f32, u8;
@@ -99,7 +90,7 @@ TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   FrameOptions options;
   options.g2lf_memory_budget_bytes = need(u8);
   options.g2lf_accumulation_budget_bytes = 1;
-  LightFieldFrame frame(scene, test_display(), context.info(), options);
+  LightFieldFrame frame(scene, test::portrait_calibration(), context.info(), options);
   frame.render(render::frame_scene(scene), s);
   EXPECT_NE(frame.plane_fit_notice().find("RGBA8"), std::string::npos) << frame.plane_fit_notice();
   // Below the RGBA16F planes, u8 planes fall back to batched RGBA8 (gpu::g2lf_fitting_options);
@@ -110,7 +101,7 @@ TEST(LightFieldFrameFit, Rgba32fPlanesThatDoNotFitFallBackToRgba8) {
   FrameOptions tight;
   tight.g2lf_memory_budget_bytes = need(u8_batched) - 1;
   tight.g2lf_accumulation_budget_bytes = 1;
-  LightFieldFrame refused(scene, test_display(), context.info(), tight);
+  LightFieldFrame refused(scene, test::portrait_calibration(), context.info(), tight);
   try {
     refused.render(render::frame_scene(scene), s);
     FAIL() << "planes above the budget were accepted";

@@ -9,6 +9,7 @@
 #include "gpu/gl/gl_context.hpp"
 #include "gpu/splats/gl_per_view_renderer.hpp"
 #include "render/image_metrics.hpp"
+#include "tests/support/scene_fixtures.hpp"
 #include "util/error.hpp"
 #include "viewer/light_field_frame.hpp"
 #include "scene/scene.hpp"
@@ -19,11 +20,6 @@
 
 namespace lfd::viewer {
 namespace {
-
-display::Calibration test_display() {
-  return display::read_calibration(std::filesystem::path(LFD_TEST_DATA_DIR) / "calibrations" /
-                                 "LKG-PORT-portrait.visual.json");
-}
 
 scene::VoxelScene test_scene() {
   voxel::VoxelGeneratorOptions o;
@@ -44,7 +40,7 @@ ViewerSettings small_settings(Method method) {
 TEST(LightFieldFrameVoxels, QuiltsAreTheCpusForBothMethods) {
   gpu::HeadlessContext context;
   const scene::VoxelScene scene = test_scene();
-  LightFieldFrame frame(scene, test_display(), context.info());
+  LightFieldFrame frame(scene, test::portrait_calibration(), context.info());
   EXPECT_TRUE(frame.shows_voxels());
   const render::CameraSpec camera = voxel::frame_voxel_scene(scene);
   for (const Method method : {Method::kG2lf, Method::kPerView}) {

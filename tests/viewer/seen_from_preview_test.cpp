@@ -14,6 +14,7 @@
 #include "display/lens_relations.hpp"
 #include "display/visual_json.hpp"
 #include "interlace/interlacer.hpp"
+#include "tests/support/small_displays.hpp"
 #include "util/error.hpp"
 #include "viewer/seen_from_preview.hpp"
 
@@ -25,15 +26,6 @@ constexpr int kViews = 8;
 // R / (R + B), tells which view (and which mix of neighbours) an eye sees, whatever the lenses
 // do to the brightness.
 std::array<float, 3> view_colour(int k) { return {float(kViews - 1 - k) / (kViews - 1), 0.0f, float(k) / (kViews - 1)}; }
-
-display::DisplayCalibration small_display() {
-  // A real unit's lens (LKG-PORT-like) on a small panel so the test stays fast: 24 x 15 mm.
-  return display::parse_visual_json(
-      R"({"pitch":{"value":47.56401443481445},"slope":{"value":-5.48},"center":{"value":0.374},)"
-      R"("viewCone":{"value":40},"invView":{"value":1},"DPI":{"value":338},)"
-      R"("screenW":{"value":320},"screenH":{"value":200}})",
-      "small");
-}
 
 ImageF flat_view_panel(const display::LensModel& lens) {
   render::QuiltLayout q;
@@ -78,7 +70,7 @@ SeenFromOptions small_preview() {
 }
 
 TEST(SeenFromPreview, HasThePanelsAspect) {
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k());
   const ImageF preview = seen_from_preview(lens, flat_view_panel(lens), SeenFromEye{}, small_preview());
   EXPECT_EQ(preview.height, 48);
   EXPECT_EQ(preview.width, 77);  // 48 x 320 / 200
@@ -86,7 +78,7 @@ TEST(SeenFromPreview, HasThePanelsAspect) {
 }
 
 TEST(SeenFromPreview, FromTheAngleOfViewJTheCentreShowsViewJ) {
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k());
   const ImageF panel = flat_view_panel(lens);
   for (int j = 0; j < kViews; ++j) {
     SeenFromEye eye;
@@ -99,7 +91,7 @@ TEST(SeenFromPreview, FromTheAngleOfViewJTheCentreShowsViewJ) {
 }
 
 TEST(SeenFromPreview, AnEyeMovingAcrossTheConeWalksThroughTheViewsInOrder) {
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k());
   const ImageF panel = flat_view_panel(lens);
   std::vector<double> walked;
   // From view 0's centre to view 7's (+-17.7 deg): past them, toward the cone's edges (+-20),
@@ -123,7 +115,7 @@ TEST(SeenFromPreview, IsRecomputedOnlyWhenShownChangedAndNotTooOften) {
 }
 
 TEST(SeenFromPreview, BadOptionsAndPanelsAreInputErrors) {
-  const display::LensModel lens(small_display());
+  const display::LensModel lens(test::small_lkg_2k());
   SeenFromOptions o;
   o.height_px = 0;
   EXPECT_THROW(seen_from_preview(lens, flat_view_panel(lens), SeenFromEye{}, o), InputError);

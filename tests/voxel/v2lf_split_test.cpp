@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "render/image_metrics.hpp"
+#include "tests/support/voxel_tabletop.hpp"
 #include "voxel/plane_lowpass.hpp"
 #include "voxel/v2lf.hpp"
 #include "voxel/voxel_generator.hpp"
@@ -69,33 +70,15 @@ TEST(VoxelSplit, ChildrenTileTheParent) {
   EXPECT_EQ(hi, s.voxel_min(0) + s.voxel_size(0));
 }
 
-struct Fixture {
-  scene::VoxelScene scene;
-  render::QuiltGeometry geometry;
-  render::QuiltLayout layout;
-  ImageF truth;
-};
+using Fixture = test::VoxelTabletop;
 
-// The level-6 tabletop, 5 views of 128x96, as V2lf.ManyChunksApproachThePerViewQuilt; the truth
-// with SVRaster's supersampling (ss 1.5), the filter V2LF's low-pass stands in for.
+// The tabletop of V2lf.ManyChunksApproachThePerViewQuilt; the truth with SVRaster's supersampling
+// (ss 1.5), the filter V2LF's low-pass stands in for.
 const Fixture& fixture() {
-  static const Fixture f = [] {
-    Fixture f;
-    VoxelGeneratorOptions o;
-    o.detail_level = 6;
-    o.sh_degree = 0;
-    f.scene = generate_voxel_scene(o);
-    // K = 8: fine enough that the density field, not the midpoint rule on a coarse voxel,
-    // decides the image, so splitting's effect on the chunking shows (with K = 1 children move
-    // a sharp surface inside their parent: voxel/v2lf.hpp).
-    f.scene.samples_per_voxel = 8;
-    const render::Camera base =
-        render::make_look_at_camera({0, -1.5f, -5.5f}, {0, 0.5f, 0}, {0, -1, 0}, 0.8f, 128, 96);
-    f.geometry = render::make_quilt_geometry(base, std::sqrt(2.0f * 2.0f + 6.0f * 6.0f), 40.0f, 5);
-    f.layout = render::make_quilt_layout(f.geometry, 5, 1);
-    f.truth = render_voxel_quilt_per_view(f.scene, f.geometry, f.layout);
-    return f;
-  }();
+  // K = 8: fine enough that the density field, not the midpoint rule on a coarse voxel, decides
+  // the image, so splitting's effect on the chunking shows (with K = 1 children move a sharp
+  // surface inside their parent: voxel/v2lf.hpp).
+  static const Fixture f = test::make_voxel_tabletop([](scene::VoxelScene& s) { s.samples_per_voxel = 8; });
   return f;
 }
 

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "render/image_metrics.hpp"
+#include "tests/support/voxel_tabletop.hpp"
 #include "voxel/plane_lowpass.hpp"
 #include "voxel/ray_order.hpp"
 #include "voxel/v2lf.hpp"
@@ -16,28 +17,11 @@
 namespace lfd::voxel {
 namespace {
 
-struct Fixture {
-  scene::VoxelScene scene;
-  render::QuiltGeometry geometry;
-  render::QuiltLayout layout;
-  ImageF truth;
-};
+using Fixture = test::VoxelTabletop;
 
 const Fixture& fixture() {
-  static const Fixture f = [] {
-    Fixture f;
-    VoxelGeneratorOptions o;
-    o.detail_level = 6;
-    o.sh_degree = 0;  // V2LF's planes are view-independent; leave that trade-off out of the bar
-    f.scene = generate_voxel_scene(o);
-    f.scene.supersampling = 1.0f;  // V2LF renders its planes without supersampling
-    const render::Camera base =
-        render::make_look_at_camera({0, -1.5f, -5.5f}, {0, 0.5f, 0}, {0, -1, 0}, 0.8f, 128, 96);
-    f.geometry = render::make_quilt_geometry(base, std::sqrt(2.0f * 2.0f + 6.0f * 6.0f), 40.0f, 5);
-    f.layout = render::make_quilt_layout(f.geometry, 5, 1);
-    f.truth = render_voxel_quilt_per_view(f.scene, f.geometry, f.layout);
-    return f;
-  }();
+  // V2LF renders its planes without supersampling.
+  static const Fixture f = test::make_voxel_tabletop([](scene::VoxelScene& s) { s.supersampling = 1.0f; });
   return f;
 }
 

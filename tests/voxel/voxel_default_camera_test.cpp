@@ -1,6 +1,6 @@
 // The default camera of a generated scene sits in empty space, so per-view and V2LF quilts of it
-// agree (issue #13: it sat within the sky shell's thickness, and the per-view quilt showed only
-// the shell from behind, 13 dB from V2LF's).
+// agree (docs/voxels.md, "Rendering": it sat within the sky shell's thickness, and the per-view
+// quilt showed only the shell from behind, 13 dB from V2LF's).
 #include <gtest/gtest.h>
 
 #include <cmath>

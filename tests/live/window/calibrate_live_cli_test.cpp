@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "tests/live/window/live_test_display.hpp"
 
 namespace {

@@ -11,7 +11,7 @@
 #include "media/video_decoder.hpp"
 #include "render/image_metrics.hpp"
 #include "tests/rgbd/rgbd_fixture.hpp"
-#include "tests/apps/run_lfd.hpp"
+#include "tests/support/run_lfd.hpp"
 #include "util/image.hpp"
 
 namespace lfd {

@@ -13,6 +13,7 @@
 #include "render/image_metrics.hpp"
 #include "scene/ply_writer.hpp"
 #include "render/scene_generator.hpp"
+#include "tests/support/scene_fixtures.hpp"
 #include "util/atomic_file.hpp"
 #include "util/error.hpp"
 #include "viewer/light_field_frame.hpp"
@@ -25,17 +26,7 @@ namespace fs = std::filesystem;
 
 const fs::path kDir = fs::temp_directory_path() / "lfd_viewer_window_test";
 
-display::Calibration test_display() {
-  // The Xvfb screen is this panel's size (CMakeLists.txt), so the viewer finds its "monitor".
-  return display::read_calibration(fs::path(LFD_TEST_DATA_DIR) / "calibrations" / "LKG-PORT-portrait.visual.json");
-}
-
-scene::GaussianScene test_scene() {
-  render::SceneGeneratorOptions o;
-  o.count = 3000;
-  o.sh_degree = 1;
-  return render::generate_scene(o);
-}
+scene::GaussianScene test_scene() { return test::generated_gaussians(3000, 1); }
 
 // Small quilts so llvmpipe keeps up: 8 views of 96 px height.
 ViewerSettings small_settings() {
@@ -69,7 +60,8 @@ Files write_inputs(const ViewerSettings& s, const std::string& tag) {
 ViewerOptions scripted(const Files& f) {
   ViewerOptions o;
   o.scene_path = f.scene;
-  o.calibration = test_display();
+  // The Xvfb screen is this panel's size (CMakeLists.txt), so the viewer finds its "monitor".
+  o.calibration = test::portrait_calibration();
   o.display_name = "LKG-PORT-portrait (test)";
   o.camera_path = f.camera;
   o.settings_path = f.settings;
@@ -80,7 +72,7 @@ ViewerOptions scripted(const Files& f) {
 
 ImageF headless_panel(const ViewerSettings& s) {
   gpu::HeadlessContext context;
-  LightFieldFrame frame(test_scene(), test_display(), context.info());
+  LightFieldFrame frame(test_scene(), test::portrait_calibration(), context.info());
   frame.render(render::frame_scene(test_scene()), s);
   return gpu::image_from_texture(frame.panel());
 }
