@@ -23,7 +23,7 @@ LFD_IO_INT(kVoxelDensitiesBinding, 1)  // corners 0-3, 4-7
 LFD_IO_INT(kVoxelOrderBinding, 2)      // eight octant orders (gpu/voxels/gl_voxel_raster.hpp)
 
 // The splat passes and the sort between them (gpu/splats/gl_splat_preprocess.hpp).
-LFD_IO_INT(kSplatRecordsBinding, 4)     // SplatRecord (gpu/splats/shaders/splat_record.glsl)
+LFD_IO_INT(kSplatRecordsBinding, 4)     // SplatRecord (gpu/splats/shaders/splat_record_io.h)
 LFD_IO_INT(kSplatKeysBinding, 5)        // sort keys
 LFD_IO_INT(kSplatValuesBinding, 6)      // sorted: the primitive index of each sorted position
 LFD_IO_INT(kSplatDrawBinding, 7)        // the raster's indirect draw
