@@ -43,7 +43,6 @@ struct SplatBuffers {
   size_t bytes() const {
     return records.bytes() + keys.bytes() + values.bytes() + draw.bytes() + depth_range.bytes();
   }
-  void bind() const;  // records, keys, values, draw, depth_range at their bindings
 };
 
 class GlSplatPreprocess {
