@@ -1,8 +1,8 @@
 // The sweeping-plane frame's contract (G2LF and V2LF on GL: gpu/planes/gl_sweeping_planes.hpp and the
 // passes it runs): the storage-buffer binding points of the scene, the splat preprocess, the
 // depth binning, the plane raster and the voxel passes, which share one set of binding points
-// (a pass's output stays bound for the next pass to read), the binning's limits and every
-// pass's work-group size. The plane table is gpu/planes/shaders/plane_table_io.h; the plane images'
+// (each pass declares what it reads and writes there and binds it itself: docs/gpu.md "Binding
+// points"), the binning's limits and every pass's work-group size. The plane table is gpu/planes/shaders/plane_table_io.h; the plane images'
 // units gpu/planes/shaders/plane_io.h. Read by C++ and GLSL (gpu/gl/shaders/shader_io.h).
 #ifndef LFD_GPU_SHADERS_FRAME_IO_H
 #define LFD_GPU_SHADERS_FRAME_IO_H
