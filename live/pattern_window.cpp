@@ -45,8 +45,9 @@ PatternWindow::PatternWindow(const gpu::GlfwSession& session, GLFWmonitor* monit
   glfwSetKeyCallback(handle, on_key);
   window_->make_current();  // vsync (DisplayWindow): a swap replaces a whole frame, never half of one
 
-  program_ = gpu::Program("pattern window", {{GL_VERTEX_SHADER, pattern_window_vert_glsl},
-                                             {GL_FRAGMENT_SHADER, pattern_window_frag_glsl}});
+  program_ = gpu::Program("pattern window",
+                          {{GL_VERTEX_SHADER, pattern_window_vert_glsl}, {GL_FRAGMENT_SHADER, pattern_window_frag_glsl}},
+                          {}, {gpu::texture("pattern", kPatternUnit)});
   texture_ = gpu::Texture(GL_RGBA8, width_px, height_px);
   vertex_array_ = std::make_unique<gpu::VertexArray>();  // core profile draws need one, even without buffers
   glDisable(GL_DITHER);
@@ -68,9 +69,9 @@ void PatternWindow::draw() {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width_, height_);
   program_.use();
-  glBindTextureUnit(kPatternUnit, texture_.id());
+  program_.bind("pattern", texture_);
   glBindVertexArray(vertex_array_->id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  program_.draw_arrays(GL_TRIANGLES, 0, 3);
 }
 
 void PatternWindow::show(const Image8& pattern) {

@@ -26,8 +26,10 @@ void upload_plane(gpu::Texture& texture, GLenum format, GLenum data_format, int 
 }  // namespace
 
 QuiltTexture::QuiltTexture()
-    : program_("quilt convert", {{GL_VERTEX_SHADER, quilt_convert_vert_glsl},
-                                 {GL_FRAGMENT_SHADER, quilt_convert_frag_glsl}}) {}
+    : program_("quilt convert", {{GL_VERTEX_SHADER, quilt_convert_vert_glsl}, {GL_FRAGMENT_SHADER, quilt_convert_frag_glsl}},
+               {},
+               {gpu::texture("plane0", kQuiltPlane0Unit), gpu::texture("plane1", kQuiltPlane1Unit),
+                gpu::texture("plane2", kQuiltPlane2Unit)}) {}
 
 void QuiltTexture::ensure_quilt(int width, int height) {
   if (quilt_.width() == width && quilt_.height() == height) return;
@@ -64,10 +66,13 @@ void QuiltTexture::convert(bool yuv, const media::YuvToRgb& t) {
     glUniformMatrix3fv(program_.uniform("u_yuv_matrix"), 1, GL_FALSE, t.matrix.data());
     glUniform3fv(program_.uniform("u_yuv_offset"), 1, t.offset.data());
   }
-  const GLuint units[] = {kQuiltPlane0Unit, kQuiltPlane1Unit, kQuiltPlane2Unit};
-  for (int p = 0; p < (yuv ? 3 : 1); ++p) glBindTextureUnit(units[p], planes_[p].id());
+  // An RGB picture is plane 0 alone; the shader reads U and V only for YUV, so the picture
+  // stands at their points too (every declared point holds a texture of ours).
+  program_.bind("plane0", planes_[0]);
+  program_.bind("plane1", planes_[yuv ? 1 : 0]);
+  program_.bind("plane2", planes_[yuv ? 2 : 0]);
   glBindVertexArray(triangle_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  program_.draw_arrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   gpu::check_gl("converting the quilt");
 }

@@ -19,9 +19,9 @@
 namespace lfd::rgbd {
 namespace {
 
-gpu::Program make_pass(const std::string& label, const std::string& fragment) {
-  return gpu::Program(label, {{GL_VERTEX_SHADER, rgbd_fullscreen_vert_glsl},
-                              {GL_FRAGMENT_SHADER, fragment.c_str()}});
+gpu::Program make_pass(const std::string& label, const std::string& fragment, std::vector<gpu::Binding> bindings) {
+  return gpu::Program(label, {{GL_VERTEX_SHADER, rgbd_fullscreen_vert_glsl}, {GL_FRAGMENT_SHADER, fragment.c_str()}},
+                      {}, std::move(bindings));
 }
 
 // Restores the caller's framebuffer binding and viewport when a render returns or throws.
@@ -50,9 +50,10 @@ void set_rect(GLint location, const PixelRect& r) {
 }  // namespace
 
 GlRgbdViews::GlRgbdViews()
-    : resample_(make_pass("rgbd resample", rgbd_resample_frag_glsl)),
-      warp_(make_pass("rgbd warp", rgbd_warp_frag_glsl)),
-      fill_(make_pass("rgbd fill", rgbd_fill_frag_glsl)) {
+    : resample_(make_pass("rgbd resample", rgbd_resample_frag_glsl, {gpu::texture("frame", kRgbdFrameUnit)})),
+      warp_(make_pass("rgbd warp", rgbd_warp_frag_glsl,
+                      {gpu::texture("source", kRgbdSourceUnit), gpu::texture("shift_per_z", kRgbdShiftPerZUnit)})),
+      fill_(make_pass("rgbd fill", rgbd_fill_frag_glsl, {gpu::texture("warped", kRgbdWarpedUnit)})) {
   glCreateSamplers(1, &sampler_);
   glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -72,12 +73,12 @@ void GlRgbdViews::ensure_intermediates(const render::QuiltLayout& layout) {
   if (shifts_.width() != layout.views) shifts_ = gpu::Texture(GL_R32F, layout.views, 1);
 }
 
-void GlRgbdViews::draw_into(const gpu::Texture& target, int width, int height) const {
+void GlRgbdViews::draw_into(const gpu::Program& pass, const gpu::Texture& target, int width, int height) const {
   target_.attach(0, target);
   target_.finish(1);
   glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
   glViewport(0, 0, width, height);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  pass.draw_arrays(GL_TRIANGLES, 0, 3);
 }
 
 void GlRgbdViews::render(const gpu::Texture& frame, const RgbdOptions& options,
@@ -120,7 +121,7 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   for (GLuint unit = 0; unit < kRgbdSampledUnits; ++unit) glBindSampler(unit, sampler_);
 
   resample_.use();
-  glBindTextureUnit(kRgbdFrameUnit, frame.id);
+  resample_.bind_texture_id("frame", frame.id);
   set_rect(resample_.uniform("colour_rect"), split.colour);
   set_rect(resample_.uniform("depth_rect"), split.depth);
   glUniform1i(resample_.uniform("frame_height"), frame.height);
@@ -131,22 +132,22 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
   glUniform1i(resample_.uniform("chroma_depth"), options.chroma_depth ? 1 : 0);
   glUniform1i(resample_.uniform("depth_inversion"), options.depth_inversion ? 1 : 0);
   glUniform1f(resample_.uniform("depth_cutoff"), float(options.depth_cutoff));
-  draw_into(source_, tw, th);
+  draw_into(resample_, source_, tw, th);
 
   warp_.use();
-  glBindTextureUnit(kRgbdSourceUnit, source_.id());
-  glBindTextureUnit(kRgbdShiftPerZUnit, shifts_.id());
+  warp_.bind("source", source_);
+  warp_.bind("shift_per_z", shifts_);
   glUniform2i(warp_.uniform("tile_size"), tw, th);
   glUniform3i(warp_.uniform("grid"), layout.cols, layout.rows, layout.views);
   glUniform1f(warp_.uniform("relief_slope"), float(options.depthiness * kReliefRatio));
   glUniform1f(warp_.uniform("focus"), float(options.focus));
   glUniform1i(warp_.uniform("radius"), radius);
-  draw_into(warped_, layout.width, layout.height);
+  draw_into(warp_, warped_, layout.width, layout.height);
 
   fill_.use();
-  glBindTextureUnit(kRgbdWarpedUnit, warped_.id());
+  fill_.bind("warped", warped_);
   glUniform2i(fill_.uniform("tile_size"), tw, th);
-  draw_into(quilt, layout.width, layout.height);
+  draw_into(fill_, quilt, layout.width, layout.height);
 
   for (GLuint unit = 0; unit < kRgbdSampledUnits; ++unit) glBindSampler(unit, 0);
   glBindVertexArray(0);

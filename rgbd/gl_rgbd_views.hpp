@@ -51,7 +51,7 @@ class GlRgbdViews {
 
  private:
   void ensure_intermediates(const render::QuiltLayout& layout);
-  void draw_into(const gpu::Texture& target, int width, int height) const;
+  void draw_into(const gpu::Program& pass, const gpu::Texture& target, int width, int height) const;
 
   gpu::Program resample_, warp_, fill_;
   gpu::VertexArray triangle_;

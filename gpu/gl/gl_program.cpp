@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/shader_source.hpp"
 
 namespace lfd::gpu {
@@ -43,8 +44,8 @@ bool strict_gl_checks() {
 }
 
 Program::Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
-                 const std::vector<std::string>& defines)
-    : label_(label) {
+                 const std::vector<std::string>& defines, std::vector<Binding> bindings)
+    : label_(label), bindings_(std::move(bindings)) {
   std::string header = "#version 450 core\n";
   for (const std::string& d : defines) header += "#define " + d + "\n";
   const GLuint program = glCreateProgram();
@@ -83,6 +84,16 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
   }
   list_uniforms();
   check_bindings();
+  if (bindings_.empty()) return;
+  const std::vector<ActiveResource> active = active_resources(program);
+  verify_declaration(label_, bindings_, active);
+  for (const Binding& b : bindings_) {
+    GLenum query = 0;
+    for (const ActiveResource& r : active)
+      if (r.resource == b.resource && r.point == b.point) query = r.texture_binding;
+    texture_queries_.push_back(query);
+  }
+  bound_.assign(bindings_.size(), 0);
 }
 
 void Program::list_uniforms() {
@@ -134,13 +145,102 @@ GLint Program::uniform(const char* name) const {
   return -1;
 }
 
+const Binding& Program::declared(const std::string& name, bool buffer) const {
+  for (const Binding& b : bindings_) {
+    if (b.name != name) continue;
+    const bool is_buffer = b.resource == Resource::storage_buffer || b.resource == Resource::uniform_buffer;
+    if (is_buffer != buffer)
+      throw std::logic_error(fmt::format("pass '{}': '{}' is declared as {} {}, not bound as a {}", label_, name,
+                                         resource_name(b.resource), b.point, buffer ? "buffer" : "texture"));
+    return b;
+  }
+  throw std::logic_error(fmt::format("pass '{}': no binding '{}' is declared", label_, name));
+}
+
+void Program::record(const Binding& binding, GLuint object) const {
+  bound_[size_t(&binding - bindings_.data())] = object;
+}
+
+void Program::bind(const std::string& name, const Buffer& buffer) const {
+  const Binding& b = declared(name, true);
+  glBindBufferBase(b.resource == Resource::storage_buffer ? GL_SHADER_STORAGE_BUFFER : GL_UNIFORM_BUFFER,
+                   GLuint(b.point), buffer.id());
+  record(b, buffer.id());
+}
+
+void Program::bind(const std::string& name, const Texture& texture) const {
+  const Binding& b = declared(name, false);
+  if (b.resource == Resource::texture) {
+    glBindTextureUnit(GLuint(b.point), texture.id());
+  } else {
+    const GLenum access = b.access == Access::read    ? GL_READ_ONLY
+                          : b.access == Access::write ? GL_WRITE_ONLY
+                                                      : GL_READ_WRITE;
+    glBindImageTexture(GLuint(b.point), texture.id(), 0, texture.layers() ? GL_TRUE : GL_FALSE, 0, access,
+                       texture.internal_format());
+  }
+  record(b, texture.id());
+}
+
+void Program::bind_texture_id(const std::string& name, GLuint texture) const {
+  const Binding& b = declared(name, false);
+  if (b.resource != Resource::texture)
+    throw std::logic_error(fmt::format("pass '{}': '{}' is an image; bind it as a Texture", label_, name));
+  glBindTextureUnit(GLuint(b.point), texture);
+  record(b, texture);
+}
+
+void Program::check_bindings_before_use() const {
+  if (bindings_.empty() || !strict_gl_checks()) return;
+  GLint current = 0;
+  glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+  if (GLuint(current) != id())
+    throw std::logic_error(fmt::format("pass '{}': used while program {} is current, not its own ({})", label_,
+                                       current, id()));
+  for (size_t i = 0; i < bindings_.size(); ++i) {
+    const Binding& b = bindings_[i];
+    const char* kind = resource_name(b.resource);
+    if (bound_[i] == 0)
+      throw std::logic_error(fmt::format("pass '{}': point {} ({} '{}') was never bound through the pass", label_,
+                                         b.point, kind, b.name));
+    const GLuint holds = bound_object(b, texture_queries_[i]);
+    if (holds != bound_[i])
+      throw std::logic_error(fmt::format("pass '{}': point {} ({} '{}') holds {} {}, not the one bound as '{}' ({})",
+                                         label_, b.point, kind, b.name,
+                                         b.resource == Resource::image || b.resource == Resource::texture ? "texture"
+                                                                                                           : "buffer",
+                                         holds, b.name, bound_[i]));
+  }
+}
+
+void Program::dispatch(GLuint x, GLuint y, GLuint z) const {
+  check_bindings_before_use();
+  glDispatchCompute(x, y, z);
+}
+
 void Program::dispatch_1d(size_t items, int local_size) const {
   const size_t groups = (items + size_t(local_size) - 1) / size_t(local_size);
   if (groups == 0) return;
   // Beyond the 65535-group limit of one dimension, spread over y (shaders use gl_NumWorkGroups).
   const GLuint x = GLuint(std::min<size_t>(groups, 65535));
   const GLuint y = GLuint((groups + 65534) / 65535);
-  glDispatchCompute(x, y, 1);
+  dispatch(x, y, 1);
+}
+
+void Program::dispatch_indirect(GLintptr offset) const {
+  check_bindings_before_use();
+  glDispatchComputeIndirect(offset);
+}
+
+void Program::draw_arrays(GLenum mode, GLint first, GLsizei count, GLsizei instances) const {
+  check_bindings_before_use();
+  if (instances == 1) glDrawArrays(mode, first, count);
+  else glDrawArraysInstanced(mode, first, count, instances);
+}
+
+void Program::draw_arrays_indirect(GLenum mode, GLintptr offset) const {
+  check_bindings_before_use();
+  glDrawArraysIndirect(mode, reinterpret_cast<const void*>(offset));
 }
 
 }  // namespace lfd::gpu

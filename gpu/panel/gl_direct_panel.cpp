@@ -43,10 +43,14 @@ const Program& GlDirectPanel::program(render::PlaneFilter filter, GLenum panel_f
       defines.push_back(std::string("PANEL_FORMAT ") + image_format_qualifier(panel_format, "panel texture"));
       defines.push_back(std::string("PLANE_MAJOR ") + (pass_ == DirectPanelPass::kComputePlaneMajor ? "1" : "0"));
     }
+    std::vector<Binding> bindings{texture("planes", kDirectPanelPlanesUnit),
+                                  storage_buffer("plane_table", kPlaneTableBinding, Access::read)};
+    if (panel_format) bindings.push_back(image("panel", kDirectPanelImage, Access::write));
+    bindings = GlLensView::bindings_after(std::move(bindings));
     Program p = panel_format
-                    ? Program(name, {{GL_COMPUTE_SHADER, direct_panel_comp_glsl}}, defines)
+                    ? Program(name, {{GL_COMPUTE_SHADER, direct_panel_comp_glsl}}, defines, std::move(bindings))
                     : Program(name, {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, direct_panel_frag_glsl}},
-                              defines);
+                              defines, std::move(bindings));
     lens_view_.set_uniforms(p);
     it = programs_.emplace(key, std::move(p)).first;
   }
@@ -77,11 +81,11 @@ const Program& GlDirectPanel::prepare(const GlPlanes& planes, const render::Quil
   glProgramUniform1f(id, at("fringe"), float(calibration_.fringe));
   glProgramUniform3f(id, at("background"), options.background.x, options.background.y, options.background.z);
   p.use();
-  lens_view_.bind();
-  glBindTextureUnit(kDirectPanelPlanesUnit, planes.texels.id());
+  lens_view_.bind(p);
+  p.bind("planes", planes.texels);
   const bool sampled = hardware_bilinear_ && options.filter == render::PlaneFilter::kBilinear;
   glBindSampler(kDirectPanelPlanesUnit, sampled ? linear_.id() : 0);
-  planes.table.buffer.bind_storage(kPlaneTableBinding);
+  p.bind("plane_table", planes.table.buffer);
   return p;
 }
 
@@ -91,9 +95,9 @@ void GlDirectPanel::draw(const GlPlanes& planes, const render::QuiltGeometry& ge
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, panel_width_, panel_height_);
-  prepare(planes, geometry, ref, options, 0);
+  const Program& p = prepare(planes, geometry, ref, options, 0);
   glBindVertexArray(triangle_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  p.draw_arrays(GL_TRIANGLES, 0, 3);
   glBindSampler(kDirectPanelPlanesUnit, 0);
   check_gl("the direct panel pass");
 }
@@ -112,10 +116,10 @@ void GlDirectPanel::run(const GlPlanes& planes, const render::QuiltGeometry& geo
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     return;
   }
-  prepare(planes, geometry, ref, options, panel.internal_format());
-  glBindImageTexture(kDirectPanelImage, panel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, panel.internal_format());
-  glDispatchCompute((GLuint(panel_width_) + kDirectPanelTileWidth - 1) / kDirectPanelTileWidth,
-                    (GLuint(panel_height_) + kDirectPanelTileHeight - 1) / kDirectPanelTileHeight, 1);
+  const Program& p = prepare(planes, geometry, ref, options, panel.internal_format());
+  p.bind("panel", panel);
+  p.dispatch((GLuint(panel_width_) + kDirectPanelTileWidth - 1) / kDirectPanelTileWidth,
+             (GLuint(panel_height_) + kDirectPanelTileHeight - 1) / kDirectPanelTileHeight);
   glBindSampler(kDirectPanelPlanesUnit, 0);
   // The panel is read next by texture fetches (a window's blit), image loads or a read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

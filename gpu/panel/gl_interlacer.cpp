@@ -23,8 +23,8 @@ GlInterlacer::GlInterlacer(const display::LensModel& lens, const render::QuiltLa
       calibration_(lens.calibration()),
       panel_width_(lens.calibration().screen_w),
       panel_height_(lens.calibration().screen_h),
-      program_("interlace", {{GL_VERTEX_SHADER, interlace_vert_glsl},
-                             {GL_FRAGMENT_SHADER, interlace_frag_glsl}}),
+      program_("interlace", {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, interlace_frag_glsl}}, {},
+               GlLensView::bindings_after({texture("quilt", kInterlaceQuiltUnit)})),
       lens_view_(lens) {
   layout_.check("quilt");
   set_uniforms(program_);
@@ -51,7 +51,9 @@ const Program& GlInterlacer::compute_program(GLenum panel_format) {
   auto it = compute_programs_.find(panel_format);
   if (it == compute_programs_.end()) {
     Program p("interlace (compute)", {{GL_COMPUTE_SHADER, interlace_comp_glsl}},
-              {std::string("PANEL_FORMAT ") + image_format_qualifier(panel_format, "panel texture")});
+              {std::string("PANEL_FORMAT ") + image_format_qualifier(panel_format, "panel texture")},
+              GlLensView::bindings_after(
+                  {texture("quilt", kInterlaceQuiltUnit), image("panel", kInterlacePanelImage, Access::write)}));
     set_uniforms(p);
     it = compute_programs_.emplace(panel_format, std::move(p)).first;
   }
@@ -72,10 +74,10 @@ void GlInterlacer::draw(const Texture& quilt) const {
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, panel_width_, panel_height_);
   program_.use();
-  glBindTextureUnit(kInterlaceQuiltUnit, quilt.id());
-  lens_view_.bind();
+  program_.bind("quilt", quilt);
+  lens_view_.bind(program_);
   glBindVertexArray(triangle_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  program_.draw_arrays(GL_TRIANGLES, 0, 3);
   check_gl("interlacing");
 }
 
@@ -94,10 +96,10 @@ void GlInterlacer::interlace(const Texture& quilt, Texture& panel) {
   check_quilt(quilt);
   const Program& p = compute_program(panel.internal_format());
   p.use();
-  glBindTextureUnit(kInterlaceQuiltUnit, quilt.id());
-  lens_view_.bind();
-  glBindImageTexture(kInterlacePanelImage, panel.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, panel.internal_format());
-  glDispatchCompute((GLuint(panel_width_) + kInterlaceGroupWidth - 1) / kInterlaceGroupWidth,
+  p.bind("quilt", quilt);
+  lens_view_.bind(p);
+  p.bind("panel", panel);
+  p.dispatch((GLuint(panel_width_) + kInterlaceGroupWidth - 1) / kInterlaceGroupWidth,
                     (GLuint(panel_height_) + kInterlaceGroupHeight - 1) / kInterlaceGroupHeight, 1);
   // The panel is read next by texture fetches (a window's blit), image loads or a read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

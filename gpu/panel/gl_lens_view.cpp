@@ -139,9 +139,15 @@ void GlLensView::set_uniforms(const Program& program) const {
   check_gl("setting the lens model's uniforms");
 }
 
-void GlLensView::bind() const {
-  glBindTextureUnit(kLensCorrectionUnit, correction_.id());
-  phase_parts_.bind_storage(kLensPhasePartsBinding);
+std::vector<Binding> GlLensView::bindings_after(std::vector<Binding> program_own) {
+  program_own.push_back(texture("lens_correction", kLensCorrectionUnit));
+  program_own.push_back(storage_buffer("lens_phase_parts", kLensPhasePartsBinding, Access::read));
+  return program_own;
+}
+
+void GlLensView::bind(const Program& program) const {
+  program.bind("lens_correction", correction_);
+  program.bind("lens_phase_parts", phase_parts_);
 }
 
 ImageF view_fractions_on_gpu(const display::LensModel& lens, int first_row, int rows) {
@@ -150,8 +156,9 @@ ImageF view_fractions_on_gpu(const display::LensModel& lens, int first_row, int 
     throw_input_error("view fractions: rows {}..{} are outside the panel's {}", first_row, first_row + rows - 1,
                       cal.screen_h);
   const GlLensView view(lens);
-  const Program program("lens view probe", {{GL_VERTEX_SHADER, interlace_vert_glsl},
-                                            {GL_FRAGMENT_SHADER, lens_view_probe_frag_glsl}});
+  const Program program("lens view probe",
+                        {{GL_VERTEX_SHADER, interlace_vert_glsl}, {GL_FRAGMENT_SHADER, lens_view_probe_frag_glsl}}, {},
+                        GlLensView::bindings_after({}));
   view.set_uniforms(program);
   // The band's lowest row bottom-up: top-down rows first_row .. first_row + rows - 1.
   glProgramUniform1i(program.id(), program.uniform("first_j"), cal.screen_h - first_row - rows);
@@ -166,9 +173,9 @@ ImageF view_fractions_on_gpu(const display::LensModel& lens, int first_row, int 
   glDisable(GL_SCISSOR_TEST);
   glViewport(0, 0, cal.screen_w, rows);
   program.use();
-  view.bind();
+  view.bind(program);
   glBindVertexArray(triangle.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  program.draw_arrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   check_gl("probing the lens view");
   const std::vector<float> rgba = read_texture_rgba(band);

@@ -30,9 +30,12 @@ class GlLensView {
 
   // Sets lens_view.glsl's uniforms in `program` (once, after linking).
   void set_uniforms(const Program& program) const;
-  // Binds the correction grid (kLensCorrectionUnit) and the phase parts (kLensPhasePartsBinding;
-  // gpu/panel/shaders/lens_view_io.h).
-  void bind() const;
+  // What lens_view.glsl reads, for the declaration of a program that includes it, after the
+  // program's own: the correction grid (kLensCorrectionUnit) and the phase parts
+  // (kLensPhasePartsBinding; gpu/panel/shaders/lens_view_io.h).
+  static std::vector<Binding> bindings_after(std::vector<Binding> program_own);
+  // Binds both through `program`, which declared them with bindings_after.
+  void bind(const Program& program) const;
 
   // w(u, v) at grid point (i, j) = (i / (width - 1), j / (height - 1)), R32F; 2 x 2 zeros
   // without a correction field.

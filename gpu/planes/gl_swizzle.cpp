@@ -34,8 +34,11 @@ GlSwizzle::GlSwizzle(const SwizzleOptions& options) : options_(options) {
   if (options_.views_per_invocation < 1 || options_.views_per_invocation > 64)
     throw std::invalid_argument("GlSwizzle: views per invocation must be 1..64");
   if (options_.factor_table)
-    table_ = Program("g2lf swizzle: views x planes table",
-                     {{GL_COMPUTE_SHADER, swizzle_table_comp_glsl}});
+    table_ = Program("g2lf swizzle: views x planes table", {{GL_COMPUTE_SHADER, swizzle_table_comp_glsl}}, {},
+                     {storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+                      storage_buffer("view_offsets", kSwizzleViewOffsetsBinding, Access::read),
+                      storage_buffer("plane_factors", kSwizzlePlaneFactorsBinding, Access::write),
+                      storage_buffer("view_plane_columns", kSwizzleViewPlaneColumnsBinding, Access::write)});
   if (options_.hardware_bilinear) set_plane_bilinear(linear_);
 }
 
@@ -44,13 +47,22 @@ const Program& GlSwizzle::program(render::PlaneFilter filter, GLenum quilt_forma
   auto it = programs_.find(key);
   if (it == programs_.end()) {
     const bool bilinear = filter == render::PlaneFilter::kBilinear;
+    std::vector<Binding> bindings{texture("planes", kSwizzlePlanesUnit), image("quilt", kSwizzleQuiltImage, Access::write),
+                                  storage_buffer("plane_table", kPlaneTableBinding, Access::read)};
+    if (options_.factor_table) {  // the table pass's columns; without it the view offsets
+      bindings.push_back(storage_buffer("plane_factors", kSwizzlePlaneFactorsBinding, Access::read));
+      bindings.push_back(storage_buffer("view_plane_columns", kSwizzleViewPlaneColumnsBinding, Access::read));
+    } else {
+      bindings.push_back(storage_buffer("view_offsets", kSwizzleViewOffsetsBinding, Access::read));
+    }
     Program p(std::string("g2lf swizzle (") + (bilinear ? "bilinear" : "nearest") + ")",
               {{GL_COMPUTE_SHADER, swizzle_comp_glsl}},
               {std::string("BILINEAR ") + (bilinear ? "1" : "0"),
                std::string("HW_BILINEAR ") + (options_.hardware_bilinear ? "1" : "0"),
                std::string("TABLE ") + (options_.factor_table ? "1" : "0"),
                std::string("QUILT_FORMAT ") + image_format_qualifier(quilt_format, "quilt texture"),
-               "VIEWS " + std::to_string(options_.views_per_invocation)});
+               "VIEWS " + std::to_string(options_.views_per_invocation)},
+              std::move(bindings));
     it = programs_.emplace(key, std::move(p)).first;
   }
   return it->second;
@@ -63,17 +75,16 @@ void GlSwizzle::write_table(const GlPlanes& planes, const render::QuiltGeometry&
   view_plane_columns_.ensure(size_t(std::max(planes.max_planes, 1)) * size_t(V) * sizeof(float));
   const Program& p = table_;
   p.use();
-  planes.table.buffer.bind_storage(kPlaneTableBinding);
-  view_offsets_.bind_storage(kSwizzleViewOffsetsBinding);
-  plane_factors_.bind_storage(kSwizzlePlaneFactorsBinding);
-  view_plane_columns_.bind_storage(kSwizzleViewPlaneColumnsBinding);
+  p.bind("plane_table", planes.table.buffer);
+  p.bind("view_offsets", view_offsets_);
+  p.bind("plane_factors", plane_factors_);
+  p.bind("view_plane_columns", view_plane_columns_);
   glUniform2i(p.uniform("view_size"), geometry.base.width, geometry.base.height);
   glUniform2i(p.uniform("plane_size"), planes.width, planes.height);
   set_camera_uniforms(p, geometry, ref);
   glUniform1i(p.uniform("view_count"), V);
   // Every possible plane (the count is on the GPU); those past it return at once.
-  glDispatchCompute((GLuint(V) + kSwizzleTableGroupSize - 1) / kSwizzleTableGroupSize,
-                    GLuint(std::max(planes.max_planes, 1)), 1);
+  p.dispatch((GLuint(V) + kSwizzleTableGroupSize - 1) / kSwizzleTableGroupSize, GLuint(std::max(planes.max_planes, 1)));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
@@ -93,15 +104,16 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
 
   const Program& p = program(filter, quilt.internal_format());
   p.use();
-  glBindTextureUnit(kSwizzlePlanesUnit, planes.texels.id());
+  p.bind("planes", planes.texels);
   const bool sampled = options_.hardware_bilinear && filter == render::PlaneFilter::kBilinear;
   glBindSampler(kSwizzlePlanesUnit, sampled ? linear_.id() : 0);
-  glBindImageTexture(kSwizzleQuiltImage, quilt.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, quilt.internal_format());
-  planes.table.buffer.bind_storage(kPlaneTableBinding);
-  view_offsets_.bind_storage(kSwizzleViewOffsetsBinding);
+  p.bind("quilt", quilt);
+  p.bind("plane_table", planes.table.buffer);
   if (options_.factor_table) {
-    plane_factors_.bind_storage(kSwizzlePlaneFactorsBinding);
-    view_plane_columns_.bind_storage(kSwizzleViewPlaneColumnsBinding);
+    p.bind("plane_factors", plane_factors_);
+    p.bind("view_plane_columns", view_plane_columns_);
+  } else {
+    p.bind("view_offsets", view_offsets_);
   }
   const int W = geometry.base.width, H = geometry.base.height;
   glUniform2i(p.uniform("view_size"), W, H);
@@ -113,8 +125,8 @@ void GlSwizzle::run(const GlPlanes& planes, const render::QuiltGeometry& geometr
   glUniform3f(p.uniform("background"), background.x, background.y, background.z);
   glUniform1i(p.uniform("view_count"), V);
   const int view_groups = (V + options_.views_per_invocation - 1) / options_.views_per_invocation;
-  glDispatchCompute((GLuint(W) + kSwizzleGroupWidth - 1) / kSwizzleGroupWidth, (GLuint(H) + kSwizzleGroupHeight - 1) / kSwizzleGroupHeight,
-                    GLuint(view_groups));
+  p.dispatch((GLuint(W) + kSwizzleGroupWidth - 1) / kSwizzleGroupWidth,
+             (GLuint(H) + kSwizzleGroupHeight - 1) / kSwizzleGroupHeight, GLuint(view_groups));
   glBindSampler(kSwizzlePlanesUnit, 0);
   // The quilt is read next by texture fetches (interlacing) or a read-back.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |

@@ -36,25 +36,28 @@ double median_seconds(const ThroughputProbeOptions& o, const std::function<void(
 ThroughputProbe probe_throughput(const ThroughputProbeOptions& o) {
   ThroughputProbe p;
   {
-    Program fma("probe: fma", {{GL_COMPUTE_SHADER, probe_fma_comp_glsl}});
+    Program fma("probe: fma", {{GL_COMPUTE_SHADER, probe_fma_comp_glsl}}, {},
+                {storage_buffer("result", kProbeTargetBinding, Access::write)});
     Buffer out(o.invocations * 4);
     glProgramUniform1ui(fma.id(), fma.uniform("iterations"), o.fma_iterations);
     glProgramUniform1f(fma.id(), fma.uniform("seed"), 1e-3f);
     p.fma_s = median_seconds(o, [&] {
-      out.bind_storage(kProbeTargetBinding);
+      fma.bind("result", out);
       fma.use();
       fma.dispatch_1d(o.invocations, int(kProbeGroupSize));
     });
     p.fma_gflops = double(o.invocations) * o.fma_iterations * 8 * 2 / p.fma_s / 1e9;
   }
   {
-    Program copy("probe: copy", {{GL_COMPUTE_SHADER, probe_copy_comp_glsl}});
+    Program copy("probe: copy", {{GL_COMPUTE_SHADER, probe_copy_comp_glsl}}, {},
+                 {storage_buffer("source", kProbeSourceBinding, Access::read),
+                  storage_buffer("target", kProbeTargetBinding, Access::write)});
     const size_t count = o.copy_bytes / 16;
     Buffer source(count * 16), target(count * 16);
     glProgramUniform1ui(copy.id(), copy.uniform("count"), GLuint(count));
     p.copy_s = median_seconds(o, [&] {
-      source.bind_storage(kProbeSourceBinding);
-      target.bind_storage(kProbeTargetBinding);
+      copy.bind("source", source);
+      copy.bind("target", target);
       copy.use();
       copy.dispatch_1d(count, int(kProbeGroupSize));
     });
@@ -74,7 +77,7 @@ ThroughputProbe probe_throughput(const ThroughputProbeOptions& o) {
       glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
       glBindVertexArray(vertices.id());
       fill.use();
-      glDrawArraysInstanced(GL_TRIANGLES, 0, 3, o.fill_layers);
+      fill.draw_arrays(GL_TRIANGLES, 0, 3, o.fill_layers);
       glDisable(GL_BLEND);
       glBindVertexArray(0);
       glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -15,18 +17,31 @@ namespace lfd::gpu {
 namespace {
 
 // A pass that reads depths from sorted keys: depth_key.glsl with the keys' encoding first.
-Program depth_pass(const char* label, const char* source, DepthKeys keys) {
+Program depth_pass(const char* label, const char* source, DepthKeys keys, std::vector<Binding> bindings) {
   return Program(label, {{GL_COMPUTE_SHADER, source}},
-                 {keys == DepthKeys::kSigned ? "SIGNED_DEPTH_KEYS 1" : "SIGNED_DEPTH_KEYS 0"});
+                 {keys == DepthKeys::kSigned ? "SIGNED_DEPTH_KEYS 1" : "SIGNED_DEPTH_KEYS 0"}, std::move(bindings));
 }
 
 }  // namespace
 
 GlDepthBinning::GlDepthBinning(DepthKeys keys)
-    : keys_("g2lf binning: keys", {{GL_COMPUTE_SHADER, binning_keys_comp_glsl}}),
-      cuts_(depth_pass("depth binning: cuts", binning_cuts_comp_glsl, keys)),
-      chunks_(depth_pass("depth binning: chunks", binning_chunks_comp_glsl, keys)),
-      layers_("g2lf binning: layers", {{GL_COMPUTE_SHADER, binning_layers_comp_glsl}}),
+    : keys_("g2lf binning: keys", {{GL_COMPUTE_SHADER, binning_keys_comp_glsl}}, {},
+            {storage_buffer("positions", kScenePositionsBinding, Access::read),
+             storage_buffer("keys", kSplatKeysBinding, Access::write),
+             storage_buffer("values", kSplatValuesBinding, Access::write),
+             storage_buffer("plane_table", kPlaneTableBinding, Access::read_write)}),
+      cuts_(depth_pass("depth binning: cuts", binning_cuts_comp_glsl, keys,
+                       {storage_buffer("keys", kSplatKeysBinding, Access::read),
+                        storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+                        storage_buffer("cuts", kBinningCutsBinding, Access::write)})),
+      chunks_(depth_pass("depth binning: chunks", binning_chunks_comp_glsl, keys,
+                         {storage_buffer("keys", kSplatKeysBinding, Access::read),
+                          storage_buffer("draw", kSplatDrawBinding, Access::read_write),
+                          storage_buffer("plane_table", kPlaneTableBinding, Access::read_write),
+                          storage_buffer("cuts", kBinningCutsBinding, Access::read)})),
+      layers_("g2lf binning: layers", {{GL_COMPUTE_SHADER, binning_layers_comp_glsl}}, {},
+              {storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+               storage_buffer("layers", kSplatLayersBinding, Access::write)}),
       cut_positions_(sizeof(uint32_t) * (kBinningMaxCuts + 1)),
       unused_draw_(sizeof(DrawArraysIndirect)) {}
 
@@ -46,14 +61,6 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
   const PlaneTableHeader zero;
   table.buffer.upload(&zero, sizeof(zero));
 
-  scene.bind();
-  keys.bind_storage(kSplatKeysBinding);
-  values.bind_storage(kSplatValuesBinding);
-  layers.bind_storage(kSplatLayersBinding);
-  table.buffer.bind_storage(kPlaneTableBinding);
-  cut_positions_.bind_storage(kBinningCutsBinding);
-  (draw ? *draw : unused_draw_).bind_storage(kSplatDrawBinding);
-
   {
     const GLuint p = keys_.id();
     glProgramUniform1ui(p, keys_.uniform("gaussian_count"), GLuint(n));
@@ -62,6 +69,10 @@ void GlDepthBinning::run(const GlScene& scene, const render::ReferenceCamera& re
     glProgramUniform3fv(p, keys_.uniform("camera_position"), 1, glm::value_ptr(cam.position_world));
     glProgramUniform2f(p, keys_.uniform("limit"), 1.3f * cam.tan_half_fov_x(), 1.3f * cam.tan_half_fov_y());
     keys_.use();
+    keys_.bind("positions", scene.positions());
+    keys_.bind("keys", keys);
+    keys_.bind("values", values);
+    keys_.bind("plane_table", table.buffer);
     keys_.dispatch_1d(n, kBinningKeysGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
@@ -81,12 +92,6 @@ void GlDepthBinning::chunk_sorted(const render::ReferenceCamera& ref, int chunks
   const bool mixed = binning == render::ChunkBinning::kMixed;
   const GLuint count_chunks = GLuint(mixed ? chunks - chunks / 2 : chunks);
   const GLuint disparity_chunks = GLuint(mixed ? chunks / 2 : 0);
-  // The sort binds its own buffers: bind ours again.
-  keys.bind_storage(kSplatKeysBinding);
-  layers.bind_storage(kSplatLayersBinding);
-  table.buffer.bind_storage(kPlaneTableBinding);
-  cut_positions_.bind_storage(kBinningCutsBinding);
-  (draw ? *draw : unused_draw_).bind_storage(kSplatDrawBinding);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   for (const Program* program : {&cuts_, &chunks_}) {
@@ -96,12 +101,21 @@ void GlDepthBinning::chunk_sorted(const render::ReferenceCamera& ref, int chunks
     glProgramUniform1f(p, program->uniform("d_forward_eff"), ref.d_forward_eff);
   }
   cuts_.use();
-  glDispatchCompute((count_chunks + disparity_chunks + kBinningCutsGroupSize - 1) / kBinningCutsGroupSize, 1, 1);
+  cuts_.bind("keys", keys);
+  cuts_.bind("plane_table", table.buffer);
+  cuts_.bind("cuts", cut_positions_);
+  cuts_.dispatch((count_chunks + disparity_chunks + kBinningCutsGroupSize - 1) / kBinningCutsGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   chunks_.use();
-  glDispatchCompute(1, 1, 1);  // one work group merges every cut
+  chunks_.bind("keys", keys);
+  chunks_.bind("draw", draw ? *draw : unused_draw_);
+  chunks_.bind("plane_table", table.buffer);
+  chunks_.bind("cuts", cut_positions_);
+  chunks_.dispatch(1);  // one work group merges every cut
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   layers_.use();
+  layers_.bind("plane_table", table.buffer);
+  layers_.bind("layers", layers);
   layers_.dispatch_1d(n, kBinningLayersGroupSize);
   // Next: the layered raster (storage reads, indirect draw), the swizzle, read-backs.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

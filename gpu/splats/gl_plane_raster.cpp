@@ -21,7 +21,10 @@ constexpr size_t kAccumulationTexel = 16;  // RGBA32F
 Program plane_convert_program(const char* format, bool quantize_u8) {
   return Program(std::string("planes: convert to ") + format,
                  {{GL_COMPUTE_SHADER, g2lf_plane_convert_comp_glsl}},
-                 {std::string("PLANE_FORMAT ") + format, std::string("QUANTIZE_U8 ") + (quantize_u8 ? "1" : "0")});
+                 {std::string("PLANE_FORMAT ") + format, std::string("QUANTIZE_U8 ") + (quantize_u8 ? "1" : "0")},
+                 {storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+                  image("accumulation", kPlaneAccumulationImage, Access::read_write),
+                  image("planes", kPlaneTexelsImage, Access::write)});
 }
 
 const char* plane_raster_name(PlaneRaster raster) {
@@ -41,9 +44,16 @@ size_t plane_raster_bytes(PlaneFormat format, int batch_layers, int width, int h
 }
 
 GlPlaneRaster::GlPlaneRaster()
-    : batches_("g2lf planes: batches",
-               {{GL_COMPUTE_SHADER, g2lf_plane_batches_comp_glsl}}),
-      copy_("g2lf planes: batch copy", {{GL_COMPUTE_SHADER, g2lf_plane_copy_comp_glsl}}),
+    : batches_("g2lf planes: batches", {{GL_COMPUTE_SHADER, g2lf_plane_batches_comp_glsl}}, {},
+               {storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+                storage_buffer("batches", kPlaneBatchesBinding, Access::write)}),
+      copy_("g2lf planes: batch copy", {{GL_COMPUTE_SHADER, g2lf_plane_copy_comp_glsl}}, {},
+            {storage_buffer("batches", kPlaneBatchesBinding, Access::read),
+             storage_buffer("batch_draw", kPlaneBatchDrawBinding, Access::write),
+             storage_buffer("sorted_ids", kSplatValuesBinding, Access::read),
+             storage_buffer("layers", kSplatLayersBinding, Access::read),
+             storage_buffer("batch_ids", kPlaneBatchIdsBinding, Access::write),
+             storage_buffer("batch_layers", kPlaneBatchLayersBinding, Access::write)}),
       convert_u8_(plane_convert_program("rgba8", true)),
       convert_f16_(plane_convert_program("rgba16f", false)),
       batch_draw_(sizeof(DrawArraysIndirect)) {}
@@ -100,12 +110,12 @@ void GlPlaneRaster::run(const Buffer& records, const Buffer& sorted_ids, const B
   }
 
   const GLuint batches = GLuint((planes.max_planes + batch_layers - 1) / batch_layers);
-  planes.table.buffer.bind_storage(kPlaneTableBinding);
-  batch_commands_.bind_storage(kPlaneBatchesBinding);
   glProgramUniform1ui(batches_.id(), batches_.uniform("batch_count"), batches);
   glProgramUniform1ui(batches_.id(), batches_.uniform("batch_layers"), GLuint(batch_layers));
   batches_.use();
-  glDispatchCompute((batches + kPlaneBatchesGroupSize - 1) / kPlaneBatchesGroupSize, 1, 1);
+  batches_.bind("plane_table", planes.table.buffer);
+  batches_.bind("batches", batch_commands_);
+  batches_.dispatch((batches + kPlaneBatchesGroupSize - 1) / kPlaneBatchesGroupSize);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
   const Program& convert = planes.format == PlaneFormat::kRgba8 ? convert_u8_ : convert_f16_;
@@ -115,30 +125,28 @@ void GlPlaneRaster::run(const Buffer& records, const Buffer& sorted_ids, const B
   target.framebuffer = accumulation_framebuffer_.id();
   for (GLuint b = 0; b < batches; ++b) {
     // The raster and the convert pass bind storage and images of their own: bind ours each time.
-    planes.table.buffer.bind_storage(kPlaneTableBinding);
-    batch_commands_.bind_storage(kPlaneBatchesBinding);
-    batch_draw_.bind_storage(kPlaneBatchDrawBinding);
-    sorted_ids.bind_storage(kSplatValuesBinding);
-    layers.bind_storage(kSplatLayersBinding);
-    batch_ids_.bind_storage(kPlaneBatchIdsBinding);
-    batch_layers_.bind_storage(kPlaneBatchLayersBinding);
     glProgramUniform1ui(copy_.id(), copy_.uniform("batch"), b);
     copy_.use();
+    copy_.bind("batches", batch_commands_);
+    copy_.bind("batch_draw", batch_draw_);
+    copy_.bind("sorted_ids", sorted_ids);
+    copy_.bind("layers", layers);
+    copy_.bind("batch_ids", batch_ids_);
+    copy_.bind("batch_layers", batch_layers_);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, batch_commands_.id());
-    glDispatchComputeIndirect(GLintptr(b * sizeof(PlaneBatch)));
+    copy_.dispatch_indirect(GLintptr(b * sizeof(PlaneBatch)));
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
     raster_.draw(records, batch_ids_, batch_draw_, target, &batch_layers_);
 
-    planes.table.buffer.bind_storage(kPlaneTableBinding);
-    glBindImageTexture(kPlaneAccumulationImage, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-    glBindImageTexture(kPlaneTexelsImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY,
-                       gl_internal_format(planes.format));
     glProgramUniform1ui(convert.id(), convert.uniform("batch"), b);
     convert.use();
-    glDispatchCompute((GLuint(planes.width) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
-                      (GLuint(planes.height) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, GLuint(batch_layers));
+    convert.bind("plane_table", planes.table.buffer);
+    convert.bind("accumulation", accumulation_);
+    convert.bind("planes", planes.texels);
+    convert.dispatch((GLuint(planes.width) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
+                     (GLuint(planes.height) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, GLuint(batch_layers));
     // The reset accumulation is drawn into next; the planes are fetched by the swizzle; the
     // batch buffers are rewritten by the next copy.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |

@@ -8,7 +8,7 @@
 namespace lfd::gpu {
 namespace {
 
-constexpr size_t kRecordBytes = 64;            // SplatRecord (gl_splat_preprocess.hpp)
+constexpr size_t kRecordBytes = 64;            // SplatRecord (gpu/splats/shaders/splat_record_io.h)
 
 double mib(double bytes) { return bytes / 1048576.0; }
 

@@ -8,8 +8,6 @@
 #include "gpu/splats/shaders/splat_preprocess.comp.glsl.hpp"
 
 namespace lfd::gpu {
-namespace {
-}
 
 void SplatBuffers::ensure(size_t gaussians) {
   if (gaussians <= capacity && draw.bytes()) return;
@@ -22,16 +20,17 @@ void SplatBuffers::ensure(size_t gaussians) {
   capacity = n;
 }
 
-void SplatBuffers::bind() const {
-  records.bind_storage(kSplatRecordsBinding);
-  keys.bind_storage(kSplatKeysBinding);
-  values.bind_storage(kSplatValuesBinding);
-  draw.bind_storage(kSplatDrawBinding);
-  depth_range.bind_storage(kSplatDepthRangeBinding);
-}
-
 GlSplatPreprocess::GlSplatPreprocess() {
-  program_ = Program("splat preprocess", {{GL_COMPUTE_SHADER, splat_preprocess_comp_glsl}});
+  program_ = Program("splat preprocess", {{GL_COMPUTE_SHADER, splat_preprocess_comp_glsl}}, {},
+                     {storage_buffer("positions", kScenePositionsBinding, Access::read),
+                      storage_buffer("scales", kSceneScalesBinding, Access::read),
+                      storage_buffer("rotations", kSceneRotationsBinding, Access::read),
+                      storage_buffer("sh", kSceneShBinding, Access::read),
+                      storage_buffer("records", kSplatRecordsBinding, Access::write),
+                      storage_buffer("keys", kSplatKeysBinding, Access::write),
+                      storage_buffer("values", kSplatValuesBinding, Access::write),
+                      storage_buffer("draw", kSplatDrawBinding, Access::read_write),
+                      storage_buffer("depth_range", kSplatDepthRangeBinding, Access::read_write)});
 }
 
 void GlSplatPreprocess::run(const GlScene& scene, const render::Camera& camera,
@@ -63,9 +62,16 @@ void GlSplatPreprocess::run(const GlScene& scene, const render::Camera& camera,
   glProgramUniform1i(p, program_.uniform("sh_stride"), scene.sh_vec4_stride());
   glProgramUniform3fv(p, program_.uniform("sh_origin"), 1, glm::value_ptr(sh_origin));
 
-  scene.bind();
-  buffers.bind();
   program_.use();
+  program_.bind("positions", scene.positions());
+  program_.bind("scales", scene.scales());
+  program_.bind("rotations", scene.rotations());
+  program_.bind("sh", scene.sh());
+  program_.bind("records", buffers.records);
+  program_.bind("keys", buffers.keys);
+  program_.bind("values", buffers.values);
+  program_.bind("draw", buffers.draw);
+  program_.bind("depth_range", buffers.depth_range);
   program_.dispatch_1d(scene.size(), kSplatPreprocessGroupSize);
   // What the consumers read: the sort (storage), the indirect draw (command), downloads (update).
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

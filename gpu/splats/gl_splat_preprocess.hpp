@@ -22,22 +22,13 @@
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/splats/shaders/frame_io.h"
+#include "gpu/splats/shaders/splat_record_io.h"
 #include "render/camera.hpp"
 #include "render/preprocess.hpp"
 
 namespace lfd::gpu {
 
-// std430 record of one projected Gaussian (gpu/splats/shaders/splat_record.glsl), 64 bytes.
-struct SplatRecord {
-  float mean_px[2];  // reference pixel coordinates: pixel (i, j) centred at (i, j), row 0 = top
-  float depth;       // view-space z
-  float opacity;
-  float conic[3];    // inverse 2D covariance (xx, xy, yy)
-  float radius_px;   // 0: culled
-  float color[4];    // RGB (not clamped above), w unused
-  int32_t rect_min[2], rect_max[2];  // tile rectangle, max exclusive
-};
-static_assert(sizeof(SplatRecord) == 64);
+static_assert(sizeof(SplatRecord) == 64);  // std430 (gpu/splats/shaders/splat_record_io.h)
 
 // DrawArraysIndirectCommand (GL 4.2): one triangle-strip quad per instance.
 struct DrawArraysIndirect {
@@ -52,7 +43,6 @@ struct SplatBuffers {
   size_t bytes() const {
     return records.bytes() + keys.bytes() + values.bytes() + draw.bytes() + depth_range.bytes();
   }
-  void bind() const;  // records, keys, values, draw, depth_range at their bindings
 };
 
 class GlSplatPreprocess {

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -16,9 +17,12 @@ namespace lfd::gpu {
 namespace {
 
 Program splat_program(bool layered) {
+  std::vector<Binding> bindings{storage_buffer("records", kSplatRecordsBinding, Access::read),
+                                storage_buffer("sorted_ids", kSplatValuesBinding, Access::read)};
+  if (layered) bindings.push_back(storage_buffer("layers", kSplatLayersBinding, Access::read));
   return Program(layered ? "splat raster (layered)" : "splat raster",
                  {{GL_VERTEX_SHADER, splat_raster_vert_glsl}, {GL_FRAGMENT_SHADER, splat_raster_frag_glsl}},
-                 layered ? std::vector<std::string>{"LAYERED 1"} : std::vector<std::string>{});
+                 layered ? std::vector<std::string>{"LAYERED 1"} : std::vector<std::string>{}, std::move(bindings));
 }
 
 glm::ivec4 region(const SplatRasterTarget& t) {
@@ -33,7 +37,7 @@ GlSplatRaster::GlSplatRaster()
                        {{GL_VERTEX_SHADER, splat_composite_vert_glsl}, {GL_FRAGMENT_SHADER, splat_composite_frag_glsl}}),
       composite_copy_("splat composite (from a texture)",
                       {{GL_VERTEX_SHADER, splat_composite_vert_glsl}, {GL_FRAGMENT_SHADER, splat_composite_frag_glsl}},
-                      {"FROM_TEXTURE 1"}) {
+                      {"FROM_TEXTURE 1"}, {texture("accumulation", kSplatAccumulationUnit)}) {
   if (epoxy_has_gl_extension("GL_ARB_shader_viewport_layer_array")) splats_layered_ = splat_program(true);
 }
 
@@ -83,16 +87,16 @@ void GlSplatRaster::draw(const Buffer& records, const Buffer& sorted_ids, const 
   if (!program.id())
     throw std::runtime_error("layered splat raster needs GL_ARB_shader_viewport_layer_array");
   begin(target);
-  records.bind_storage(kSplatRecordsBinding);
-  sorted_ids.bind_storage(kSplatValuesBinding);
-  if (layers) layers->bind_storage(kSplatLayersBinding);
+  program.bind("records", records);
+  program.bind("sorted_ids", sorted_ids);
+  if (layers) program.bind("layers", *layers);
   glProgramUniform2i(program.id(), program.uniform("image_size"), target.image_size.x, target.image_size.y);
   glProgramUniform2f(program.id(), program.uniform("viewport_origin"), float(target.viewport_origin.x),
                      float(target.viewport_origin.y));
   program.use();
   enable_front_to_back_blend();
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, indirect.id());
-  glDrawArraysIndirect(GL_TRIANGLE_STRIP, nullptr);
+  program.draw_arrays_indirect(GL_TRIANGLE_STRIP, 0);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   end();
   check_gl("drawing splats");
@@ -114,7 +118,7 @@ void GlSplatRaster::composite_background(const SplatRasterTarget& target, const 
   // rgb: bg * T + C; alpha: T kept (0 * 0 + T) or 1 * 1 + 0.
   glBlendFuncSeparate(GL_DST_ALPHA, GL_ONE, keep_transmittance ? GL_ZERO : GL_ONE,
                       keep_transmittance ? GL_ONE : GL_ZERO);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  composite_blend_.draw_arrays(GL_TRIANGLES, 0, 3);
   end();
   check_gl("compositing the background");
 }
@@ -126,10 +130,10 @@ void GlSplatRaster::composite_from(const Texture& accumulation, const SplatRaste
   glProgramUniform3fv(p, composite_copy_.uniform("background"), 1, glm::value_ptr(background));
   glProgramUniform2i(p, composite_copy_.uniform("viewport_origin"), target.viewport_origin.x,
                      target.viewport_origin.y);
-  glBindTextureUnit(kSplatAccumulationUnit, accumulation.id());
+  composite_copy_.bind("accumulation", accumulation);
   composite_copy_.use();
   glDisable(GL_BLEND);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  composite_copy_.draw_arrays(GL_TRIANGLES, 0, 3);
   glBindTextureUnit(kSplatAccumulationUnit, 0);
   end();
   check_gl("compositing into the target");

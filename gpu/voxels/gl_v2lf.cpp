@@ -88,7 +88,9 @@ GlV2lfRenderer::GlV2lfRenderer(const GlVoxelScene& scene, const GlInfo& info)
       convert_u8_(plane_convert_program("rgba8", true)),
       convert_f16_(plane_convert_program("rgba16f", false)),
       convert_f32_(plane_convert_program("rgba32f", false)),
-      lowpass_("v2lf plane low-pass", {{GL_COMPUTE_SHADER, voxel_plane_lowpass_comp_glsl}}) {}
+      lowpass_("v2lf plane low-pass", {{GL_COMPUTE_SHADER, voxel_plane_lowpass_comp_glsl}}, {},
+               {image("accumulation", kPlaneAccumulationImage, Access::read_write),
+                image("scratch", kPlaneLowpassScratchImage, Access::read_write)}) {}
 
 // How a per-plane pass (filter, convert) is dispatched over plane k: its work groups (16 x 8
 // texels each), or with the GPU binning the indirect dispatch it wrote, empty past the frame's
@@ -98,13 +100,13 @@ struct GlV2lfRenderer::PlaneDispatch {
   const Buffer* indirect = nullptr;
   int max_planes = 0;
 
-  void operator()(int k) const {
+  void operator()(const Program& program, int k) const {
     if (!indirect) {
-      glDispatchCompute(groups.x, groups.y, 1);
+      program.dispatch(groups.x, groups.y);
       return;
     }
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, indirect->id());
-    glDispatchComputeIndirect(GLintptr(GlVoxelBinning::plane_dispatch_offset(k, max_planes)));
+    program.dispatch_indirect(GLintptr(GlVoxelBinning::plane_dispatch_offset(k, max_planes)));
   }
 };
 
@@ -127,12 +129,12 @@ bool GlV2lfRenderer::prepare_lowpass(float variance_px2) {
 }
 
 void GlV2lfRenderer::lowpass(int k, const PlaneDispatch& dispatch) {
-  glBindImageTexture(kPlaneAccumulationImage, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(kPlaneLowpassScratchImage, lowpass_scratch_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  lowpass_.bind("accumulation", accumulation_);
+  lowpass_.bind("scratch", lowpass_scratch_);
   lowpass_.use();
   for (int along_y = 0; along_y < 2; ++along_y) {
     glProgramUniform1i(lowpass_.id(), lowpass_.uniform("along_y"), along_y);
-    dispatch(k);
+    dispatch(lowpass_, k);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   }
 }
@@ -187,12 +189,12 @@ void GlV2lfRenderer::draw_planes(int count, const ChunkDraw& draw_chunk, float l
 // Layer k of the planes from the accumulation layer (which the pass resets to empty).
 void GlV2lfRenderer::convert_plane(int k, const Program& convert, const PlaneDispatch& dispatch, GlPlanes& planes) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-  glBindImageTexture(kPlaneAccumulationImage, accumulation_.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glBindImageTexture(kPlaneTexelsImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, gl_internal_format(planes.format));
-  planes.table.buffer.bind_storage(kPlaneTableBinding);
+  convert.bind("accumulation", accumulation_);
+  convert.bind("planes", planes.texels);
+  convert.bind("plane_table", planes.table.buffer);
   glProgramUniform1ui(convert.id(), convert.uniform("batch"), GLuint(k));
   convert.use();
-  dispatch(k);
+  dispatch(convert, k);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

@@ -16,16 +16,30 @@ namespace lfd::gpu {
 namespace {
 
 Program keys_program() {
-  return Program("v2lf binning: keys", {{GL_COMPUTE_SHADER, voxel_binning_keys_comp_glsl}}, {"SIGNED_DEPTH_KEYS 1"});
+  return Program("v2lf binning: keys", {{GL_COMPUTE_SHADER, voxel_binning_keys_comp_glsl}}, {"SIGNED_DEPTH_KEYS 1"},
+                 {storage_buffer("boxes", kVoxelBoxesBinding, Access::read),
+                  storage_buffer("keys", kSplatKeysBinding, Access::write),
+                  storage_buffer("values", kSplatValuesBinding, Access::write),
+                  storage_buffer("plane_table", kPlaneTableBinding, Access::read_write)});
 }
 
 }  // namespace
 
 GlVoxelBinning::GlVoxelBinning()
     : keys_(keys_program()),
-      chunk_of_("v2lf binning: chunk of", {{GL_COMPUTE_SHADER, voxel_binning_chunk_of_comp_glsl}}),
-      orders_("v2lf binning: orders", {{GL_COMPUTE_SHADER, voxel_binning_orders_comp_glsl}}),
-      draws_pass_("v2lf binning: draws", {{GL_COMPUTE_SHADER, voxel_binning_draws_comp_glsl}}),
+      chunk_of_("v2lf binning: chunk of", {{GL_COMPUTE_SHADER, voxel_binning_chunk_of_comp_glsl}}, {},
+                {storage_buffer("values", kSplatValuesBinding, Access::read),
+                 storage_buffer("layers", kSplatLayersBinding, Access::read),
+                 storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+                 storage_buffer("chunk_of", kVoxelChunkOfBinding, Access::write)}),
+      orders_("v2lf binning: orders", {{GL_COMPUTE_SHADER, voxel_binning_orders_comp_glsl}}, {},
+              {storage_buffer("order", kVoxelOrderBinding, Access::read),
+               storage_buffer("keys", kSplatKeysBinding, Access::write),
+               storage_buffer("values", kSplatValuesBinding, Access::write),
+               storage_buffer("chunk_of", kVoxelChunkOfBinding, Access::read)}),
+      draws_pass_("v2lf binning: draws", {{GL_COMPUTE_SHADER, voxel_binning_draws_comp_glsl}}, {},
+                  {storage_buffer("plane_table", kPlaneTableBinding, Access::read),
+                   storage_buffer("draws", kVoxelDrawsBinding, Access::write)}),
       chunking_(DepthKeys::kSigned) {}
 
 size_t GlVoxelBinning::bytes() const {
@@ -38,10 +52,10 @@ void GlVoxelBinning::keys(const GlVoxelScene& scene, const render::Camera& camer
   // The header counts binned voxels with atomics: start from zero.
   const PlaneTableHeader zero;
   table.buffer.upload(&zero, sizeof(zero));
-  scene.bind();
-  keys_buffer_.bind_storage(kSplatKeysBinding);
-  values_.bind_storage(kSplatValuesBinding);
-  table.buffer.bind_storage(kPlaneTableBinding);
+  keys_.bind("boxes", scene.boxes());
+  keys_.bind("keys", keys_buffer_);
+  keys_.bind("values", values_);
+  keys_.bind("plane_table", table.buffer);
   const glm::vec3 f = glm::abs(camera.forward());  // as voxel/v2lf.cpp's depth_span
   const GLuint p = keys_.id();
   glProgramUniform1ui(p, keys_.uniform("voxel_count"), GLuint(n));
@@ -68,10 +82,10 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   group_sorted_.ensure(std::max<size_t>(n, 1) * sizeof(uint32_t));
   group_values_.ensure(std::max<size_t>(n * slots, 1) * sizeof(uint32_t));
 
-  values_.bind_storage(kSplatValuesBinding);
-  layers_.bind_storage(kSplatLayersBinding);
-  table.buffer.bind_storage(kPlaneTableBinding);
-  chunk_of_buffer_.bind_storage(kVoxelChunkOfBinding);
+  chunk_of_.bind("values", values_);
+  chunk_of_.bind("layers", layers_);
+  chunk_of_.bind("plane_table", table.buffer);
+  chunk_of_.bind("chunk_of", chunk_of_buffer_);
   glProgramUniform1ui(chunk_of_.id(), chunk_of_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(chunk_of_.id(), chunk_of_.uniform("unbinned"), GLuint(max_planes));
   chunk_of_.use();
@@ -82,10 +96,10 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
   const GLuint p = orders_.id();
   glProgramUniform1ui(p, orders_.uniform("voxel_count"), GLuint(n));
   for (GLuint s = 0; s < slots; ++s) {
-    scene.order_buffer().bind_storage(kVoxelOrderBinding);
-    group_keys_.bind_storage(kSplatKeysBinding);
-    group_sorted_.bind_storage(kSplatValuesBinding);
-    chunk_of_buffer_.bind_storage(kVoxelChunkOfBinding);
+    orders_.bind("order", scene.order_buffer());  // the sort binds its own buffers: ours each time
+    orders_.bind("keys", group_keys_);
+    orders_.bind("values", group_sorted_);
+    orders_.bind("chunk_of", chunk_of_buffer_);
     glProgramUniform1ui(p, orders_.uniform("octant"), GLuint(octant_of_slot[s]));
     orders_.use();
     orders_.dispatch_1d(n, kVoxelBinningGroupSize);
@@ -96,8 +110,8 @@ void GlVoxelBinning::group_orders(const GlVoxelScene& scene, uint32_t octants, i
                                GLsizeiptr(n * sizeof(uint32_t)));
   }
 
-  draws_.bind_storage(kVoxelDrawsBinding);
-  table.buffer.bind_storage(kPlaneTableBinding);
+  draws_pass_.bind("draws", draws_);
+  draws_pass_.bind("plane_table", table.buffer);
   const GLuint d = draws_pass_.id();
   glProgramUniform1ui(d, draws_pass_.uniform("voxel_count"), GLuint(n));
   glProgramUniform1ui(d, draws_pass_.uniform("max_planes"), GLuint(max_planes));

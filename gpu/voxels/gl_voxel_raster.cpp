@@ -12,12 +12,18 @@ namespace lfd::gpu {
 namespace {
 
 Program voxel_program() {
-  return Program("voxel raster", {{GL_VERTEX_SHADER, voxel_raster_vert_glsl}, {GL_FRAGMENT_SHADER, voxel_raster_frag_glsl}});
+  return Program("voxel raster", {{GL_VERTEX_SHADER, voxel_raster_vert_glsl}, {GL_FRAGMENT_SHADER, voxel_raster_frag_glsl}},
+                 {},
+                 {storage_buffer("boxes", kVoxelBoxesBinding, Access::read),
+                  storage_buffer("densities", kVoxelDensitiesBinding, Access::read),
+                  storage_buffer("order", kVoxelOrderBinding, Access::read),
+                  storage_buffer("sh", kSceneShBinding, Access::read),
+                  storage_buffer("draws", kVoxelDrawsBinding, Access::read)});
 }
 
 }  // namespace
 
-GlVoxelRaster::GlVoxelRaster() : program_(voxel_program()) {}
+GlVoxelRaster::GlVoxelRaster() : program_(voxel_program()), no_draws_(4 * sizeof(uint32_t)) {}
 
 uint32_t GlVoxelRaster::set_view(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
                                  const Buffer& order, const SplatRasterTarget& target) const {
@@ -37,8 +43,10 @@ uint32_t GlVoxelRaster::set_view(const GlVoxelScene& scene, const render::Camera
   glProgramUniform1i(p, program_.uniform("sh_degree"), scene.scene().sh_degree);
   glProgramUniform1i(p, program_.uniform("sh_stride"), sh_vec4_stride(scene.scene().sh_degree));
   glProgramUniform1i(p, program_.uniform("samples_per_voxel"), scene.scene().samples_per_voxel);
-  scene.bind();
-  order.bind_storage(kVoxelOrderBinding);
+  program_.bind("boxes", scene.boxes());
+  program_.bind("densities", scene.densities());
+  program_.bind("sh", scene.sh());
+  program_.bind("order", order);
   return octants_in_view(camera);
 }
 
@@ -58,12 +66,13 @@ void GlVoxelRaster::draw(const GlVoxelScene& scene, const render::Camera& camera
                          const Buffer& order, const VoxelOrderRanges& ranges, const SplatRasterTarget& target) const {
   const GLuint p = program_.id();
   glProgramUniform1i(p, program_.uniform("draw_command"), -1);
+  program_.bind("draws", no_draws_);  // draw_command -1: the shader reads no command
   draw_octants(set_view(scene, camera, sh_origin, order, target), target, [&](int octant) {
     const VoxelOrderRange& range = ranges[size_t(octant)];
     if (range.count == 0) return;
     glProgramUniform1ui(p, program_.uniform("order_offset"), range.offset);
     glProgramUniform1i(p, program_.uniform("octant"), octant);
-    glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, GLsizei(range.count));
+    program_.draw_arrays(GL_TRIANGLE_STRIP, 0, 4, GLsizei(range.count));
   });
 }
 
@@ -72,7 +81,7 @@ void GlVoxelRaster::begin_indirect(const GlVoxelScene& scene, const render::Came
                                    const SplatRasterTarget& target) {
   glProgramUniform1ui(program_.id(), program_.uniform("order_offset"), 0u);
   indirect_octants_ = set_view(scene, camera, sh_origin, order, target);
-  draws.bind_storage(kVoxelDrawsBinding);
+  program_.bind("draws", draws);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, draws.id());
 }
 
@@ -82,7 +91,7 @@ void GlVoxelRaster::draw_indirect(int plane, const SplatRasterTarget& target) co
     const int command = int(kVoxelOctants) * plane + octant;
     glProgramUniform1i(p, program_.uniform("draw_command"), command);
     glProgramUniform1i(p, program_.uniform("octant"), octant);
-    glDrawArraysIndirect(GL_TRIANGLE_STRIP, reinterpret_cast<const void*>(size_t(command) * 4 * sizeof(uint32_t)));
+    program_.draw_arrays_indirect(GL_TRIANGLE_STRIP, GLintptr(size_t(command) * 4 * sizeof(uint32_t)));
   });
 }
 

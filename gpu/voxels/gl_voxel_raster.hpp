@@ -62,6 +62,7 @@ class GlVoxelRaster {
                     const std::function<void(int octant)>& issue) const;
 
   Program program_;
+  Buffer no_draws_;  // at the draws' point for the direct draws, which read no command
   VertexArray vertex_array_;
   uint32_t indirect_octants_ = 0;  // begin_indirect's view
 };

@@ -43,7 +43,10 @@ class GlVoxelScene {
   // Octant o's front-to-back order (voxel indices), as uploaded.
   const std::vector<uint32_t>& order(int octant) const { return orders_[size_t(octant)]; }
   const Buffer& order_buffer() const { return order_; }
-  // Binds boxes, densities and SH at their bindings.
+  const Buffer& boxes() const { return boxes_; }  // min xyz, edge per voxel
+  const Buffer& densities() const { return densities_; }
+  const Buffer& sh() const { return sh_; }
+  // Binds boxes, densities and SH at their bindings (for passes that do not declare theirs).
   void bind() const;
 
  private:

@@ -20,7 +20,8 @@ namespace {
 
 Program make_downsample(const char* format) {
   return Program(std::string("voxel downsample into ") + format,
-                 {{GL_COMPUTE_SHADER, voxel_downsample_comp_glsl}}, {std::string("OUT_FORMAT ") + format});
+                 {{GL_COMPUTE_SHADER, voxel_downsample_comp_glsl}}, {std::string("OUT_FORMAT ") + format},
+                 {texture("source", kDownsampleSourceUnit), image("target", kDownsampleTargetImage, Access::write)});
 }
 
 // voxel::rasterize_voxels' supersampling: the scene's ss unless the settings say.
@@ -77,13 +78,12 @@ void GlVoxelViews::downsample(const Texture& source, glm::ivec2 source_size, int
   glProgramUniform1i(p, program.uniform("add_background"), add_background ? 1 : 0);
   if (add_background) glProgramUniform3fv(p, program.uniform("background"), 1, glm::value_ptr(*add_background));
   glProgramUniform1f(p, program.uniform("alpha_out"), tiles.keep_transmittance ? -1.0f : 1.0f);
-  glBindTextureUnit(kDownsampleSourceUnit, source.id());
-  glBindImageTexture(kDownsampleTargetImage, tiles.target->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
-                     tiles.target->internal_format());
+  program.bind("source", source);
+  program.bind("target", *tiles.target);
   program.use();
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);  // the passes before wrote what this one reads
-  glDispatchCompute((GLuint(view_size.x) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
-                    (GLuint(view_size.y) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, GLuint(count));
+  program.dispatch((GLuint(view_size.x) + kPlaneGroupWidth - 1) / kPlaneGroupWidth,
+                   (GLuint(view_size.y) + kPlaneGroupHeight - 1) / kPlaneGroupHeight, GLuint(count));
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glBindTextureUnit(kDownsampleSourceUnit, 0);
   check_gl("downsampling voxel views");

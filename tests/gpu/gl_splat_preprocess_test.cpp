@@ -43,7 +43,7 @@ float relative(float a, float b) { return std::abs(a - b) / std::max(1e-6f, std:
 // A conic element's error against the conic's scale (its larger diagonal element): the
 // off-diagonal element of a nearly axis-aligned footprint is close to 0, and measured against
 // itself its last bits are all there is (an H200 gave 2.4e-4 of a small one).
-float conic_error(const float (&gpu)[3], const glm::vec3& cpu, int k) {
+float conic_error(const glm::vec4& gpu, const glm::vec3& cpu, int k) {
   const float scale = std::max({1e-6f, std::abs(cpu[0]), std::abs(cpu[2])});
   return std::abs(gpu[k] - cpu[k]) / scale;
 }
@@ -60,7 +60,8 @@ void expect_matches_cpu(const HeadlessContext& context, const scene::GaussianSce
     const render::ProjectedGaussian& c = cpu[i];
     const SplatRecord& g = gpu.records[i];
     ASSERT_EQ(gpu.values[i], i);
-    const bool gpu_visible = g.radius_px > 0.0f;
+    const float radius_px = g.conic_radius.w;
+    const bool gpu_visible = radius_px > 0.0f;
     if ((c.radius_px > 0) != gpu_visible) {
       ++integer_mismatches;
       continue;
@@ -71,19 +72,19 @@ void expect_matches_cpu(const HeadlessContext& context, const scene::GaussianSce
     }
     ++visible;
     uint32_t depth_bits;
-    std::memcpy(&depth_bits, &g.depth, 4);
+    std::memcpy(&depth_bits, &g.mean_depth_opacity.z, 4);
     ASSERT_EQ(gpu.keys[i], depth_bits) << i;
-    if (int(g.radius_px) != c.radius_px || g.rect_min[0] != c.rect_min.x || g.rect_min[1] != c.rect_min.y ||
-        g.rect_max[0] != c.rect_max.x || g.rect_max[1] != c.rect_max.y) {
+    if (int(radius_px) != c.radius_px || g.rect.x != c.rect_min.x || g.rect.y != c.rect_min.y ||
+        g.rect.z != c.rect_max.x || g.rect.w != c.rect_max.y) {
       ++integer_mismatches;
-      EXPECT_LE(std::abs(int(g.radius_px) - c.radius_px), 1) << i;
+      EXPECT_LE(std::abs(int(radius_px) - c.radius_px), 1) << i;
     }
-    EXPECT_NEAR(g.mean_px[0], c.mean_px.x, 2e-3f) << i;
-    EXPECT_NEAR(g.mean_px[1], c.mean_px.y, 2e-3f) << i;
-    EXPECT_LT(relative(g.depth, c.depth), 1e-6f) << i;
-    EXPECT_EQ(g.opacity, c.opacity) << i;
+    EXPECT_NEAR(g.mean_depth_opacity.x, c.mean_px.x, 2e-3f) << i;
+    EXPECT_NEAR(g.mean_depth_opacity.y, c.mean_px.y, 2e-3f) << i;
+    EXPECT_LT(relative(g.mean_depth_opacity.z, c.depth), 1e-6f) << i;
+    EXPECT_EQ(g.mean_depth_opacity.w, c.opacity) << i;
     for (int k = 0; k < 3; ++k) {
-      EXPECT_LT(conic_error(g.conic, c.conic, k), 2e-4f) << i << " conic " << k;
+      EXPECT_LT(conic_error(g.conic_radius, c.conic, k), 2e-4f) << i << " conic " << k;
       EXPECT_NEAR(g.color[k], c.color[k], 2e-5f) << i << " colour " << k;
     }
   }

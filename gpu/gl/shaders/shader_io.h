@@ -14,8 +14,9 @@
 // - LFD_IO_ZERO after a struct member: zero-initialised in C++ (a default member initializer,
 //   which GLSL has no syntax for), nothing in GLSL.
 // - LFD_IO_BEGIN(module) ... LFD_IO_END: the names are in namespace lfd::module in C++ (the
-//   module that owns the shaders), where `uint` is std::uint32_t, so struct members read the same
-//   as in GLSL; GLSL has no namespaces.
+//   module that owns the shaders), where `uint` is std::uint32_t and `vec4`, `ivec4`, `uvec4` are
+//   glm's (16 bytes, 4-byte aligned: a struct of them has its std430 layout), so struct members
+//   read the same as in GLSL; GLSL has no namespaces.
 // Include guards, not #pragma once: GLSL would warn about an unknown pragma (the embedder
 // pastes each file once anyway).
 #ifndef LFD_GPU_SHADERS_SHADER_IO_H
@@ -23,9 +24,14 @@
 
 #ifdef __cplusplus
 #include <cstdint>
-#define LFD_IO_BEGIN(module) \
-  namespace lfd::module {   \
-  using uint = std::uint32_t;
+
+#include <glm/vec4.hpp>
+#define LFD_IO_BEGIN(module)  \
+  namespace lfd::module {    \
+  using uint = std::uint32_t; \
+  using vec4 = glm::vec4;     \
+  using ivec4 = glm::ivec4;   \
+  using uvec4 = glm::uvec4;
 #define LFD_IO_END }
 #define LFD_IO_INT(name, value) inline constexpr int name = value;
 #define LFD_IO_UINT(name, value) inline constexpr std::uint32_t name = value;

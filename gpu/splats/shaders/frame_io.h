@@ -1,8 +1,8 @@
 // The sweeping-plane frame's contract (G2LF and V2LF on GL: gpu/planes/gl_sweeping_planes.hpp and the
 // passes it runs): the storage-buffer binding points of the scene, the splat preprocess, the
 // depth binning, the plane raster and the voxel passes, which share one set of binding points
-// (a pass's output stays bound for the next pass to read), the binning's limits and every
-// pass's work-group size. The plane table is gpu/planes/shaders/plane_table_io.h; the plane images'
+// (each pass declares what it reads and writes there and binds it itself: docs/gpu.md "Binding
+// points"), the binning's limits and every pass's work-group size. The plane table is gpu/planes/shaders/plane_table_io.h; the plane images'
 // units gpu/planes/shaders/plane_io.h. Read by C++ and GLSL (gpu/gl/shaders/shader_io.h).
 #ifndef LFD_GPU_SHADERS_FRAME_IO_H
 #define LFD_GPU_SHADERS_FRAME_IO_H
@@ -23,7 +23,7 @@ LFD_IO_INT(kVoxelDensitiesBinding, 1)  // corners 0-3, 4-7
 LFD_IO_INT(kVoxelOrderBinding, 2)      // eight octant orders (gpu/voxels/gl_voxel_raster.hpp)
 
 // The splat passes and the sort between them (gpu/splats/gl_splat_preprocess.hpp).
-LFD_IO_INT(kSplatRecordsBinding, 4)     // SplatRecord (gpu/splats/shaders/splat_record.glsl)
+LFD_IO_INT(kSplatRecordsBinding, 4)     // SplatRecord (gpu/splats/shaders/splat_record_io.h)
 LFD_IO_INT(kSplatKeysBinding, 5)        // sort keys
 LFD_IO_INT(kSplatValuesBinding, 6)      // sorted: the primitive index of each sorted position
 LFD_IO_INT(kSplatDrawBinding, 7)        // the raster's indirect draw
