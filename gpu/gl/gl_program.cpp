@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/shader_dump.hpp"
 #include "gpu/gl/shader_source.hpp"
 
 namespace lfd::gpu {
@@ -83,6 +84,7 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
   }
   list_uniforms();
   check_bindings();
+  for (const auto& [type, source] : stages) dump_shader_variant(label, type, header, source);
 }
 
 void Program::list_uniforms() {
