@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/shader_dump.hpp"
 #include "gpu/gl/shader_source.hpp"
 
@@ -84,6 +85,8 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
   }
   list_uniforms();
   check_bindings();
+  if (std::any_of(stages.begin(), stages.end(), [](const auto& s) { return s.first == GL_COMPUTE_SHADER; }))
+    check_work_group_fits();
   for (const auto& [type, source] : stages) dump_shader_variant(label, type, header, source);
 }
 
@@ -143,6 +146,17 @@ void Program::dispatch_1d(size_t items, int local_size) const {
   const GLuint x = GLuint(std::min<size_t>(groups, 65535));
   const GLuint y = GLuint((groups + 65534) / 65535);
   glDispatchCompute(x, y, 1);
+}
+
+void Program::check_work_group_fits() const {
+  GLint size[3] = {1, 1, 1};
+  glGetProgramiv(id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+  const long long invocations = 1ll * size[0] * size[1] * size[2];
+  const GlLimits limits = gl_limits();
+  if (limits.invocations > 0 && invocations > limits.invocations)
+    throw std::runtime_error(fmt::format("program '{}': a work group of {}x{}x{} invocations exceeds this GPU's {} "
+                                         "(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS)",
+                                         label_, size[0], size[1], size[2], limits.invocations));
 }
 
 }  // namespace lfd::gpu

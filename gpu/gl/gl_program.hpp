@@ -40,6 +40,7 @@ class Program {
  private:
   void list_uniforms();   // fills active_ after the link
   void check_bindings();  // throws when two resources share a binding point
+  void check_work_group_fits() const;  // a compute program's group within the device's invocations
 
   GlName<delete_program> name_;
   std::string label_;
