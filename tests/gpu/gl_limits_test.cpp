@@ -1,7 +1,7 @@
 // The device's limits are read, not assumed (gpu/gl/gl_limits.hpp; docs/gpu.md "Drivers and
 // limits"): LFD_GL_LIMITS lowers them and is checked like any input; with a GPU's smaller limits
 // (NVIDIA's 48 KiB of shared memory and 1024 invocations, a 16384-texel texture and a storage
-// block of 1 MiB, far below any GPU's, so the tile rasterizers split every frame into passes)
+// block of 4 MiB, far below any GPU's, so the tile rasterizers split every frame into passes)
 // the compute paths write the same bytes as with llvmpipe's own.
 #include <filesystem>
 #include <string>
@@ -62,7 +62,7 @@ Image8 rendered(const fs::path& dir, const std::string& environment, const std::
 
 TEST(GlLimits, ComputePathsWriteTheSameBytesUnderAGpusSmallerLimits) {
   const fs::path dir = test::temp_dir("gl_limits");
-  const std::string small = "LFD_GL_LIMITS=storage=1048576,shared=49152,invocations=1024,texture=16384";
+  const std::string small = "LFD_GL_LIMITS=storage=4194304,shared=49152,invocations=1024,texture=16384";
   const std::string voxels = (dir / "scene.voxels").string();
   ASSERT_EQ(test::run_lfd("scene generate --kind voxels --level 5 --out '" + voxels + "'").exit_code, 0);
   const std::string demo = (test::project_data() / "scenes" / "demo.ply").string();
