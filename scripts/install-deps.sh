@@ -22,6 +22,9 @@ PACKAGES=(
   libtbb-dev
   # tests and benchmarks (numpy: the SVRaster converter's test, scripts/svraster_to_voxels.py)
   libgtest-dev libgmock-dev libbenchmark-dev python3-numpy
+  # the reference GLSL front end over every shader variant (scripts/check-shader-variants.sh) and
+  # the second GL driver, zink over lavapipe (docs/gpu.md "Drivers and limits")
+  glslang-tools mesa-vulkan-drivers
   # the Python package lfd (docs/python.md): pybind11, its tests (pytest), torch tensors as input
   python3-dev python3-pybind11 pybind11-dev python3-pytest python3-torch
   # plots in validation reports

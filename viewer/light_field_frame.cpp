@@ -1,9 +1,12 @@
 #include "viewer/light_field_frame.hpp"
 
+#include <iostream>
+
 #include <fmt/format.h>
 #include <glm/glm.hpp>
 
 #include "display/display_quilt.hpp"
+#include "gpu/gl/gl_fault.hpp"
 #include "gpu/voxels/gl_voxel_scene.hpp"
 #include "lightfield/renderer_factory.hpp"
 #include "render/per_view_quilt.hpp"
@@ -136,6 +139,22 @@ lightfield::QuiltStats LightFieldFrame::render_g2lf(lightfield::GlLightFieldRend
 }
 
 lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& settings, bool timed) {
+  try {
+    return render_quilt_by(options_.raster, settings, timed);
+  } catch (const gpu::GlPathFailed& failed) {
+    // The compute path failed on this driver (docs/gpu.md "Drivers and limits"): the viewer
+    // keeps running on the raster pipeline and says so once.
+    if (options_.raster == gpu::RasterPath::kHardware) throw;
+    options_.raster = gpu::RasterPath::kHardware;
+    drop_renderers();
+    raster_notice_ = fmt::format("the compute raster path failed ({}): drawing with the hardware path", failed.what());
+    std::cerr << "notice: " << raster_notice_ << "\n";
+    return render_quilt_by(options_.raster, settings, timed);
+  }
+}
+
+lightfield::QuiltStats LightFieldFrame::render_quilt_by(gpu::RasterPath raster, const ViewerSettings& settings,
+                                                        bool timed) {
   lightfield::RendererOptions o;
   o.backend = lightfield::Backend::kGl;
   const bool sweeping = settings.method != Method::kPerView;
@@ -158,7 +177,7 @@ lightfield::QuiltStats LightFieldFrame::render_quilt(const ViewerSettings& setti
   o.gl.per_view_accumulation_format = GL_RGBA16F;
   o.gl.memory_budget_bytes = options_.g2lf_memory_budget_bytes;
   o.gl.accumulation_budget_bytes = options_.g2lf_accumulation_budget_bytes;
-  o.gl.raster = options_.raster;
+  o.gl.raster = raster;
   const scene::SceneKind kind = shows_voxels() ? scene::SceneKind::kVoxels : scene::SceneKind::kGaussians;
   std::unique_ptr<lightfield::GlLightFieldRenderer>& renderer = sweeping ? sweeping_ : per_view_;
   if (!renderer)

@@ -77,6 +77,8 @@ class LightFieldFrame {
   int scene_sh_degree() const;
   const std::string& scene_fit_notice() const { return scene_fit_notice_; }
   const std::string& plane_fit_notice() const { return plane_fit_notice_; }
+  // Why the raster path changed (the compute path failed on this device); empty: it did not.
+  const std::string& raster_notice() const { return raster_notice_; }
   const display::LensModel& lens() const { return lens_; }
   const display::Calibration& calibration() const { return calibration_; }
 
@@ -88,8 +90,10 @@ class LightFieldFrame {
  private:
   // The members every scene kind shares (the lens, the panel); the public constructors add the scene.
   LightFieldFrame(const display::Calibration& calibration, const gpu::GlInfo& info, FrameOptions options);
-  // The quilt of `settings`' method into quilt_; its figures.
+  // The quilt of `settings`' method into quilt_; its figures. A compute path that fails on the
+  // device is left for the hardware one (raster_notice()).
   lightfield::QuiltStats render_quilt(const ViewerSettings& settings, bool timed);
+  lightfield::QuiltStats render_quilt_by(gpu::RasterPath raster, const ViewerSettings& settings, bool timed);
   // G2LF, falling back from RGBA32F to RGBA8 planes when those do not fit.
   lightfield::QuiltStats render_g2lf(lightfield::GlLightFieldRenderer& renderer, lightfield::RendererOptions options);
   void fill_report(const ViewerSettings& settings, const lightfield::QuiltStats& stats, FrameReport& report);
@@ -99,7 +103,7 @@ class LightFieldFrame {
   display::LensModel lens_;
   gpu::GlInfo info_;
   FrameOptions options_;
-  std::string scene_fit_notice_, plane_fit_notice_;
+  std::string scene_fit_notice_, plane_fit_notice_, raster_notice_;
   std::shared_ptr<lightfield::GlDevice> device_;  // the current context and the uploaded scene
   std::unique_ptr<lightfield::GlLightFieldRenderer> per_view_, sweeping_;  // made on first use
   std::unique_ptr<gpu::GlInterlacer> interlacer_;

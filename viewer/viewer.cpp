@@ -306,7 +306,7 @@ void render_frame(FrameLoop& loop, int frame_index) {
     report_fit(loop.plane_notice);
   }
   loop.report.fit_notices.clear();
-  for (const std::string& notice : {frame.scene_fit_notice(), loop.plane_notice})
+  for (const std::string& notice : {frame.scene_fit_notice(), loop.plane_notice, frame.raster_notice()})
     if (!notice.empty()) loop.report.fit_notices.push_back(notice);
   if (loop.controls) loop.previewer.update(loop.seen_from, frame, loop.camera.spec(), loop.settings);
   display.draw(frame.panel());

@@ -1,6 +1,7 @@
 #include "gpu/gl/gl_context.hpp"
 
 #include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/gl_program.hpp"
 
 #include <cstdlib>
@@ -109,11 +110,10 @@ GlInfo query_gl_info(const std::string& platform) {
   info.platform = platform;
   info.software = info.renderer.find("llvmpipe") != std::string::npos ||
                   info.renderer.find("softpipe") != std::string::npos;
-  GLint64 ssbo = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &ssbo);
-  info.max_ssbo_bytes = ssbo;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &info.max_texture_size);
-  glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &info.max_array_layers);
+  const GlLimits limits = gl_limits();
+  info.max_ssbo_bytes = limits.storage_block_bytes;
+  info.max_texture_size = limits.texture_size;
+  info.max_array_layers = limits.array_layers;
   // GL_NVX_gpu_memory_info / GL_ATI_meminfo report kilobytes.
   if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
     GLint kb = 0;

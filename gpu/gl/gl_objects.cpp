@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_fault.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -91,9 +92,9 @@ void Buffer::ensure(size_t bytes) {
   glCreateBuffers(1, &id);
   name_ = GlName<delete_buffer>(id);
   glNamedBufferStorage(id, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw std::runtime_error(fmt::format("GPU out of memory allocating a {:.1f} MiB buffer",
-                                         bytes / 1048576.0));
+  if (glGetError() == GL_OUT_OF_MEMORY || gl_fault(GlFault::kOutOfMemory))
+    throw GlPathFailed(fmt::format("GPU out of memory allocating a {:.1f} MiB buffer ({:.1f} MiB held already)",
+                                   bytes / 1048576.0, gpu_bytes_allocated() / 1048576.0));
   bytes_ = bytes;
   count_alloc(bytes_);
 }
@@ -145,8 +146,10 @@ Texture::Texture(GLenum internal_format, int width, int height, int layers)
     glTextureStorage3D(id, 1, internal_format, width, height, layers);
   else
     glTextureStorage2D(id, 1, internal_format, width, height);
-  if (const GLenum e = glGetError(); e != GL_NO_ERROR)
-    throw std::runtime_error(fmt::format(
+  GLenum e = glGetError();
+  if (e == GL_NO_ERROR && gl_fault(GlFault::kOutOfMemory)) e = GL_OUT_OF_MEMORY;
+  if (e != GL_NO_ERROR)
+    throw GlPathFailed(fmt::format(
         "GPU could not allocate a {}x{}x{} texture ({:.1f} MiB): {}", width, height,
         std::max(layers, 1), double(width) * height * std::max(layers, 1) * bytes_per_texel(internal_format) / 1048576.0,
         gl_error_name(e)));

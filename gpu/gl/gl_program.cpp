@@ -9,6 +9,8 @@
 
 #include "gpu/gl/gl_debug.hpp"
 #include "gpu/gl/gl_objects.hpp"
+#include "gpu/gl/gl_limits.hpp"
+#include "gpu/gl/shader_dump.hpp"
 #include "gpu/gl/shader_source.hpp"
 
 namespace lfd::gpu {
@@ -84,6 +86,9 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
   }
   list_uniforms();
   check_bindings();
+  if (std::any_of(stages.begin(), stages.end(), [](const auto& s) { return s.first == GL_COMPUTE_SHADER; }))
+    check_work_group_fits();
+  for (const auto& [type, source] : stages) dump_shader_variant(label, type, header, source);
   if (bindings_.empty()) return;
   const std::vector<ActiveResource> active = active_resources(program);
   verify_declaration(label_, bindings_, active);
@@ -241,6 +246,17 @@ void Program::draw_arrays(GLenum mode, GLint first, GLsizei count, GLsizei insta
 void Program::draw_arrays_indirect(GLenum mode, GLintptr offset) const {
   check_bindings_before_use();
   glDrawArraysIndirect(mode, reinterpret_cast<const void*>(offset));
+}
+
+void Program::check_work_group_fits() const {
+  GLint size[3] = {1, 1, 1};
+  glGetProgramiv(id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+  const long long invocations = 1ll * size[0] * size[1] * size[2];
+  const GlLimits limits = gl_limits();
+  if (limits.invocations > 0 && invocations > limits.invocations)
+    throw std::runtime_error(fmt::format("program '{}': a work group of {}x{}x{} invocations exceeds this GPU's {} "
+                                         "(GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS)",
+                                         label_, size[0], size[1], size[2], limits.invocations));
 }
 
 }  // namespace lfd::gpu

@@ -70,6 +70,7 @@ class Program {
   void check_bindings();  // throws when two resources share a binding point
   const Binding& declared(const std::string& name, bool buffer) const;
   void record(const Binding& binding, GLuint object) const;
+  void check_work_group_fits() const;  // a compute program's group within the device's invocations
 
   GlName<delete_program> name_;
   std::string label_;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gpu/gl/gl_limits.hpp"
 #include "gpu/panel/shaders/interlace.comp.glsl.hpp"
 #include "gpu/panel/shaders/interlace.frag.glsl.hpp"
 #include "gpu/panel/shaders/interlace.vert.glsl.hpp"
@@ -146,8 +147,7 @@ ImageF interlace_on_gpu(const ImageF& quilt, const render::QuiltLayout& layout,
   if (quilt.width != layout.width || quilt.height != layout.height)
     throw_input_error("quilt: image is {}x{} but the layout says {}x{}", quilt.width,
                       quilt.height, layout.width, layout.height);
-  GLint max_size = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+  const int max_size = gl_limits().texture_size;
   const auto& cal = lens.calibration();
   if (std::max(quilt.width, quilt.height) > max_size ||
       std::max(cal.screen_w, cal.screen_h) > max_size)

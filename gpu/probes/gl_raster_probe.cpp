@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdio>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <epoxy/gl.h>
 
 #include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_fault.hpp"
+#include "gpu/gl/gl_objects.hpp"
 #include "gpu/splats/gl_per_view_renderer.hpp"
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/voxels/gl_voxel_scene.hpp"
@@ -42,13 +47,40 @@ double median_frame_seconds(const std::function<void()>& frame) {
   return seconds[seconds.size() / 2];
 }
 
-// Both paths' median quilt time; `frame(path)` renders one probe quilt by `path`.
-RasterProbe time_both_paths(RasterSubject subject, const std::function<void(RasterPath)>& frame) {
+// Both paths' median quilt time; `make(path)` builds a renderer for `path` and returns the
+// function that renders one probe quilt with it. A path that fails (cannot be built, a GL error,
+// out of memory: docs/gpu.md "Drivers and limits") is recorded and the other one chosen; when both
+// fail, GlPathFailed names both.
+RasterProbe time_both_paths(RasterSubject subject,
+                            const std::function<std::function<void()>(RasterPath)>& make) {
   RasterProbe probe;
   probe.subject = subject;
-  probe.hardware_s = median_frame_seconds([&] { frame(RasterPath::kHardware); });
-  probe.compute_s = median_frame_seconds([&] { frame(RasterPath::kCompute); });
-  probe.faster = probe.compute_s <= probe.hardware_s ? RasterPath::kCompute : RasterPath::kHardware;
+  const auto time = [&](RasterPath path, double& seconds, std::string& failure) {
+    try {
+      const std::function<void()> frame = make(path);
+      seconds = median_frame_seconds(frame);
+      check_gl("the raster probe");
+    } catch (const std::exception& e) {
+      failure = e.what();
+      take_gl_debug_error();  // the failure is reported here, not by the next pass's check
+      while (glGetError() != GL_NO_ERROR) {
+      }
+    }
+  };
+  time(RasterPath::kHardware, probe.hardware_s, probe.hardware_failure);
+  time(RasterPath::kCompute, probe.compute_s, probe.compute_failure);
+  if (!probe.hardware_failure.empty() && !probe.compute_failure.empty())
+    throw GlPathFailed(fmt::format("--raster auto: neither raster path draws {} on this device (compute: {}; "
+                                   "hardware: {})",
+                                   raster_subject_name(subject), probe.compute_failure, probe.hardware_failure));
+  if (!probe.compute_failure.empty()) probe.faster = RasterPath::kHardware;
+  else if (!probe.hardware_failure.empty()) probe.faster = RasterPath::kCompute;
+  else probe.faster = probe.compute_s <= probe.hardware_s ? RasterPath::kCompute : RasterPath::kHardware;
+  const std::string& failure = probe.compute_failure.empty() ? probe.hardware_failure : probe.compute_failure;
+  if (!failure.empty())
+    std::fprintf(stderr, "notice: --raster auto: the %s path failed on this device (%s); drawing %s with %s\n",
+                 raster_path_name(probe.faster == RasterPath::kCompute ? RasterPath::kHardware : RasterPath::kCompute),
+                 failure.c_str(), raster_subject_name(subject), raster_path_name(probe.faster));
   return probe;
 }
 
@@ -71,11 +103,13 @@ RasterProbe probe_gaussians() {
   const scene::GaussianScene scene = render::generate_scene(g);
   const GlScene gl_scene(scene, query_gl_info("current context"));
   ProbeQuilt q(render::make_look_at_camera({0, -1, -5}, {0, 0, 0}, {0, -1, 0}, 0.8f, 128, 128), 5.1f);
-  GlPerViewOptions compute;
-  compute.raster = RasterPath::kCompute;
-  GlPerViewRenderer renderers[2] = {GlPerViewRenderer(gl_scene), GlPerViewRenderer(gl_scene, compute)};
-  return time_both_paths(RasterSubject::kGaussians, [&](RasterPath path) {
-    renderers[path == RasterPath::kCompute ? 1 : 0].render_quilt(q.geometry, q.layout, {}, q.texture);
+  std::optional<GlPerViewRenderer> renderer;
+  return time_both_paths(RasterSubject::kGaussians, [&](RasterPath path) -> std::function<void()> {
+    GlPerViewOptions options;
+    options.raster = path;
+    renderer.reset();
+    renderer.emplace(gl_scene, options);
+    return [&] { renderer->render_quilt(q.geometry, q.layout, {}, q.texture); };
   });
 }
 
@@ -85,9 +119,11 @@ RasterProbe probe_voxels() {
   const scene::VoxelScene scene = voxel::generate_voxel_scene(g);
   const GlVoxelScene gl_scene(scene, query_gl_info("current context"));
   ProbeQuilt q(render::make_look_at_camera({0, -1.5f, -5.5f}, {0, 0.5f, 0}, {0, -1, 0}, 0.8f, 96, 96), 5.85f);
-  GlVoxelViews views[2] = {GlVoxelViews(gl_scene, RasterPath::kHardware), GlVoxelViews(gl_scene, RasterPath::kCompute)};
-  return time_both_paths(RasterSubject::kVoxels, [&](RasterPath path) {
-    views[path == RasterPath::kCompute ? 1 : 0].render_quilt(q.geometry, q.layout, {}, q.texture);
+  std::optional<GlVoxelViews> views;
+  return time_both_paths(RasterSubject::kVoxels, [&](RasterPath path) -> std::function<void()> {
+    views.reset();
+    views.emplace(gl_scene, path);
+    return [&] { views->render_quilt(q.geometry, q.layout, {}, q.texture); };
   });
 }
 

@@ -9,6 +9,7 @@
 // Each runs once per process (the first auto that needs it) and its answer is kept for the rest
 // of the run: milliseconds on a GPU, seconds on llvmpipe.
 #include <optional>
+#include <string>
 
 #include "gpu/gl/raster_path.hpp"
 #include "scene/scene.hpp"
@@ -27,10 +28,12 @@ RasterSubject raster_subject_of(scene::SceneKind kind);
 struct RasterProbe {
   RasterSubject subject = RasterSubject::kGaussians;
   double hardware_s = 0, compute_s = 0;  // median seconds of a probe quilt
-  RasterPath faster = RasterPath::kCompute;
+  RasterPath faster = RasterPath::kCompute;  // or the one that works, when the other failed
+  std::string hardware_failure, compute_failure;  // why a path failed on this device; empty: it ran
 };
 
-// Measures now (needs a current GL context).
+// Measures now (needs a current GL context). A path that fails is not chosen (a one-line notice
+// on stderr says why); GlPathFailed when both fail.
 RasterProbe probe_raster_paths(RasterSubject subject = RasterSubject::kGaussians);
 // `requested`, or for kAuto the probe's choice for `subject` (measured on first use, then kept).
 RasterPath resolve_raster_path(RasterPath requested, RasterSubject subject = RasterSubject::kGaussians);

@@ -9,6 +9,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_limits.hpp"
 #include "gpu/splats/gl_per_view_renderer.hpp"
 #include "gpu/gl/gl_quilt_target.hpp"
 #include "gpu/planes/shaders/plane_io.h"
@@ -124,8 +125,7 @@ void GlVoxelViews::render_views_compute(std::span<const render::Camera> big, glm
   // unless the quilt is huge); each group: one clear, one tile pass (GlVoxelTileRaster splits it
   // further only when its buffers would not fit), one downsample.
   const glm::ivec2 cell(big[0].width, big[0].height);
-  GLint max_texture = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_texture);
+  const int max_texture = gl_limits().texture_size;
   const int max_cols = max_texture / cell.x, max_rows = max_texture / cell.y;
   if (max_cols < 1 || max_rows < 1)
     throw_input_error("--raster compute: a supersampled {}x{} view exceeds the GPU's largest texture ({})", cell.x,
