@@ -59,6 +59,11 @@ class GlTileKeys {
 
   Buffer& keys() { return keys_; }
   Buffer& values() { return values_; }
+  // What the ranges pass leaves (read by the tests): per slot uvec2 (first key, end key), the
+  // non-empty slots, and the TileState.
+  const Buffer& ranges() const { return ranges_buffer_; }
+  const Buffer& work() const { return work_; }
+  const Buffer& state() const { return state_; }
   GlRadixSort& sorter() { return sort_; }  // for a client's own sorts (one set of scratch buffers)
   size_t bytes() const;
 

@@ -43,15 +43,6 @@ double compare_view(GlPerViewRenderer& renderer, const scene::GaussianScene& sce
   return testing::compare_view(renderer, scene, camera, settings, "compute " + what);
 }
 
-TEST(GlTileKeys, SlotBitsHoldEverySlot) {
-  EXPECT_EQ(slot_bits(1), 1);
-  EXPECT_EQ(slot_bits(2), 1);
-  EXPECT_EQ(slot_bits(3), 2);
-  EXPECT_EQ(slot_bits(1024), 10);
-  EXPECT_EQ(slot_bits(1025), 11);
-  EXPECT_EQ(slot_bits(45u * 1824u), 17);
-}
-
 TEST(GlTileSplats, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
   HeadlessContext context;
   const auto scene = generated_scene(3, 4000);
