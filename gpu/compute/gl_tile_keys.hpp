@@ -15,6 +15,8 @@
 // sort_and_find_ranges_to_capacity read nothing back.
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/gl_program.hpp"
@@ -22,6 +24,13 @@
 #include "gpu/compute/shaders/tile_io.h"
 
 namespace lfd::gpu {
+
+// A client's key pass counts each item's keys, or writes them (tile_key_writer.glsl's EMIT).
+enum class KeyStep { kCount, kEmit };
+// What a client's images are: a quilt's views, or the sweeping planes (the shaders' PLANES).
+enum class TileImages { kViews, kPlanes };
+// The defines of a client's key pass ("EMIT 0|1", "PLANES 0|1").
+std::vector<std::string> key_pass_defines(KeyStep step, TileImages images);
 
 class GlTileKeys {
  public:

@@ -58,7 +58,7 @@ size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometr
   // after a frame's scan, so they are counted at kComputePlaneKeysPerGaussian a Gaussian.
   const size_t tiles = size_t((wp + render::kTileSize - 1) / render::kTileSize) *
                        size_t((hp + render::kTileSize - 1) / render::kTileSize);
-  return binning + GlTileSplats::plane_path_bytes(gaussians, tiles * size_t(options.g2lf.chunks),
+  return binning + GlSplatTileRaster::plane_path_bytes(gaussians, tiles * size_t(options.g2lf.chunks),
                                                   gaussians * kComputePlaneKeysPerGaussian);
 }
 
@@ -129,7 +129,7 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
   raster_ = options.plane_raster;
   raster_path_ = options.raster;
   if (raster_path_ == RasterPath::kCompute && !tile_splats_) {
-    tile_splats_ = std::make_unique<GlTileSplats>();
+    tile_splats_ = std::make_unique<GlSplatTileRaster>();
     tile_splats_->set_split_keys(requested.compute_split_keys);
   }
   request_ = request;

@@ -141,7 +141,7 @@ void GlVoxelViews::render_views_compute(std::span<const render::Camera> big, glm
   for (size_t first = 0; first < big.size(); first += per_group) {
     const size_t count = std::min(per_group, big.size() - first);
     glClearTexImage(atlas.id(), 0, GL_RGBA, GL_FLOAT, empty);
-    tile_raster_->draw_views(scene_, big.subspan(first, count), atlas, cols);
+    tile_raster_->render_views(scene_, big.subspan(first, count), atlas, cols);
     passes_ += tile_raster_->passes();
     ++atlas_groups_;
     downsample(atlas, cell, cols, view_size, int(first), int(count), tiles, &background);

@@ -1,4 +1,4 @@
-// The compute tile rasterizer's compositing (gpu/splats/gl_tile_splats.hpp): the reference's renderCUDA
+// The compute tile rasterizer's compositing (gpu/splats/gl_splat_tile_raster.hpp): the reference's renderCUDA
 // (forward.cu; the CPU's render/blend.cpp), one work group a (image, tile) slot, one invocation a
 // pixel. The slot's splats, front to back, are loaded kTilePixels at a time into shared memory
 // (one each), then every pixel blends the batch with the reference's alpha rules
@@ -19,6 +19,7 @@
 #include "gpu/splats/shaders/tile_splat_target.glsl"
 
 layout(local_size_x = kTileSide, local_size_y = kTileSide) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileValuesBinding) readonly buffer Values { uint values[]; };
@@ -43,7 +44,7 @@ shared vec3 batch_color[kTilePixels];
 shared uint batch_alive;
 
 void main() {
-  uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint group = flat_group_index();
 #if SPLIT_PART
   if (group >= min(split.parts, kTileSplatMaxParts)) return;
   uvec2 part = split_parts[group];

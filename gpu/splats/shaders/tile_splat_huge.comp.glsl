@@ -1,4 +1,4 @@
-// The huge items' keys (gpu/splats/gl_tile_splats.hpp; docs/gpu.md "Balancing"): one work group an item
+// The huge items' keys (gpu/splats/gl_splat_tile_raster.hpp; docs/gpu.md "Balancing"): one work group an item
 // listed by tile_splat_keys.comp.glsl, one invocation a tile of its rectangle, so a splat that
 // covers the whole image costs one group's few steps, not one invocation's loop over every tile.
 // EMIT 0 counts the tiles it covers into counts[j]; EMIT 1 writes its keys from its first key (in
@@ -11,6 +11,7 @@
 #include "gpu/splats/shaders/frame_io.h"
 
 layout(local_size_x = kTileSplatHugeGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileSplatEntriesBinding) readonly buffer Entries { uint entries[]; };
@@ -29,7 +30,7 @@ uniform uint key_capacity;  // keys the buffers hold (GlTileKeys::scan_to_capaci
 shared uint covered;
 
 void main() {
-  uint h = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint h = flat_group_index();
   if (h >= huge.count) return;
   uint j = huge_items[h];
   uint entry = entries[j];

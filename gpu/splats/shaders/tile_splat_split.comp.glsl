@@ -1,4 +1,4 @@
-// The split of hot tiles (gpu/splats/gl_tile_splats.hpp; docs/gpu.md "Balancing"), one invocation a
+// The split of hot tiles (gpu/splats/gl_splat_tile_raster.hpp; docs/gpu.md "Balancing"), one invocation a
 // non-empty slot of the work list: a slot whose list holds more than split_keys keys gets
 // ceil(keys / split_keys) parts of the split list (while they fit in kTileSplatMaxParts) and its
 // range is emptied, so the whole-slot compositing skips it; tile_splat_composite (SPLIT_PART 1)
@@ -8,6 +8,7 @@
 #include "gpu/splats/shaders/tile_splat_io.h"
 
 layout(local_size_x = kTileSplatSplitGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 layout(std430, binding = kTileRangesBinding) buffer Ranges { uvec2 ranges[]; };
 layout(std430, binding = kTileWorkBinding) readonly buffer Work { uint work[]; };
 layout(std430, binding = kTileStateBinding) readonly buffer State { TileState state; };
@@ -16,7 +17,7 @@ layout(std430, binding = kTileStateBinding) readonly buffer State { TileState st
 uniform uint split_keys;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint i = flat_invocation_index();
   if (i >= state.work_count) return;
   uint slot = work[i];
   uvec2 range = ranges[slot];

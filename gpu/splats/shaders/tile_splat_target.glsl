@@ -1,5 +1,5 @@
 // Where the compute tile rasterizer's compositing writes a slot's pixels (tile_splat_composite,
-// tile_splat_merge; gpu/splats/gl_tile_splats.hpp):
+// tile_splat_merge; gpu/splats/gl_splat_tile_raster.hpp):
 //   TARGET_ARRAY 0: views into a quilt (image = view; its cell at (view % cols, view / cols),
 //                   bottom-up, cropped to the cell), C + T background and alpha T or 1.
 //   TARGET_ARRAY 1: planes (image = plane = layer), (C, T) with a zero background.
