@@ -29,6 +29,9 @@ namespace lfd::gpu {
 enum class KeyStep { kCount, kEmit };
 // What a client's images are: a quilt's views, or the sweeping planes (the shaders' PLANES).
 enum class TileImages { kViews, kPlanes };
+// What a view's alpha holds once composited over the background: 1 (a quilt) or the
+// transmittance T (one view's image, for a caller that composites it further).
+enum class TargetAlpha { kOpaque, kTransmittance };
 // The defines of a client's key pass ("EMIT 0|1", "PLANES 0|1").
 std::vector<std::string> key_pass_defines(KeyStep step, TileImages images);
 

@@ -165,7 +165,7 @@ class GlG2lfRenderer {
   GlRadixSort sort_;
   GlDepthBinning binning_;
   GlPlaneRaster plane_raster_;
-  std::unique_ptr<GlSplatTileRaster> tile_splats_;  // --raster compute, made on first use
+  std::unique_ptr<GlSplatTileRaster> tile_raster_;  // --raster compute, made on first use
   RasterPath raster_path_ = RasterPath::kHardware;  // as drawn
   GlSweepingPlanes sweeping_;
   SplatBuffers buffers_;

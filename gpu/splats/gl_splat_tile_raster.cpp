@@ -11,13 +11,13 @@
 #include "gpu/splats/gl_splat_preprocess.hpp"
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/compute/shaders/radix_sort_io.h"
-#include "gpu/splats/shaders/tile_splat_composite.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_huge.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_io.h"
-#include "gpu/splats/shaders/tile_splat_keys.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_merge.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_split.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_preprocess.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_composite.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_huge.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_io.h"
+#include "gpu/splats/shaders/splat_tile_keys.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_merge.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_split.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_preprocess.comp.glsl.hpp"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
@@ -69,18 +69,18 @@ TileViewCamera view_camera(const render::Camera& camera, const render::RasterSet
 }  // namespace
 
 GlSplatTileRaster::KeyPrograms::KeyPrograms(TileImages images)
-    : count(keys_program("compute splats: count keys", tile_splat_keys_comp_glsl, KeyStep::kCount, images)),
-      emit(keys_program("compute splats: write keys", tile_splat_keys_comp_glsl, KeyStep::kEmit, images)),
-      huge_count(keys_program("compute splats: count huge keys", tile_splat_huge_comp_glsl, KeyStep::kCount, images)),
-      huge_emit(keys_program("compute splats: write huge keys", tile_splat_huge_comp_glsl, KeyStep::kEmit, images)) {}
+    : count(keys_program("compute splats: count keys", splat_tile_keys_comp_glsl, KeyStep::kCount, images)),
+      emit(keys_program("compute splats: write keys", splat_tile_keys_comp_glsl, KeyStep::kEmit, images)),
+      huge_count(keys_program("compute splats: count huge keys", splat_tile_huge_comp_glsl, KeyStep::kCount, images)),
+      huge_emit(keys_program("compute splats: write huge keys", splat_tile_huge_comp_glsl, KeyStep::kEmit, images)) {}
 
 GlSplatTileRaster::GlSplatTileRaster()
-    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, tile_splat_preprocess_comp_glsl}}),
-      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, tile_splat_split_comp_glsl}}),
+    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, splat_tile_preprocess_comp_glsl}}),
+      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, splat_tile_split_comp_glsl}}),
       view_keys_(TileImages::kViews),
       plane_keys_(TileImages::kPlanes) {}
 
-// The defines of a program that includes tile_splat_target.glsl.
+// The defines of a program that includes splat_tile_target.glsl.
 std::vector<std::string> target_defines(GLenum format, TileImages images) {
   const bool planes = images == TileImages::kPlanes;
   const bool quantize = planes && format == GL_RGBA8;
@@ -102,7 +102,7 @@ const Program& GlSplatTileRaster::composite_program(GLenum format, TileImages im
                                          image_format_name(format);
     it = composite_
              .emplace(std::tuple(format, images, share),
-                      Program(label, {{GL_COMPUTE_SHADER, tile_splat_composite_comp_glsl}}, defines))
+                      Program(label, {{GL_COMPUTE_SHADER, splat_tile_composite_comp_glsl}}, defines))
              .first;
   }
   return it->second;
@@ -115,7 +115,7 @@ const Program& GlSplatTileRaster::merge_program(GLenum format, TileImages images
              .emplace(std::pair(format, images),
                       Program(std::string("compute splats: merge split tiles into ") +
                                   (images == TileImages::kPlanes ? "planes " : "views ") + image_format_name(format),
-                              {{GL_COMPUTE_SHADER, tile_splat_merge_comp_glsl}}, target_defines(format, images)))
+                              {{GL_COMPUTE_SHADER, splat_tile_merge_comp_glsl}}, target_defines(format, images)))
              .first;
   return it->second;
 }

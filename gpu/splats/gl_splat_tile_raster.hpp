@@ -8,9 +8,9 @@
 //               per-view preprocess (gpu/splats/shaders/splat_project.glsl); its depth key
 //   depth sort  GlRadixSort of every entry's depth key, culled ones dropped: the items, front to
 //               back, all views mixed (32-bit float keys: the exact order, ties by entry)
-//   keys        per item the tiles its opacity-aware ellipse covers (tile_splat_cover.glsl),
+//   keys        per item the tiles its opacity-aware ellipse covers (splat_tile_cover.glsl),
 //               counted, scanned and written as slot keys (view * tiles + tile); items with big
-//               rectangles by a whole work group each (tile_splat_huge.comp.glsl)
+//               rectangles by a whole work group each (splat_tile_huge.comp.glsl)
 //   tile sort   GlTileKeys: a stable sort by slot, so each (view, tile) lists its splats front
 //               to back, and the ranges
 //   composite   one work group a (view, tile): batches of 256 splats in shared memory, the
@@ -39,7 +39,7 @@
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/compute/gl_key_capacity.hpp"
 #include "gpu/compute/gl_tile_keys.hpp"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 #include "render/camera.hpp"
 #include "render/preprocess.hpp"
 
@@ -47,9 +47,8 @@ namespace lfd::gpu {
 
 // Where the views go: view v into cell (v % cols, v / cols) of `texture` (cells cell_size,
 // bottom-up: cell row r starts at GL row r * cell height, the view's top row at the cell's top),
-// cropped to the cell; rgb = C + T background, alpha = T (kTransmittance: one view's image) or 1
-// (kOpaque: a quilt).
-enum class TargetAlpha { kOpaque, kTransmittance };
+// cropped to the cell; rgb = C + T background, alpha = T (TargetAlpha::kTransmittance: one view's
+// image) or 1 (kOpaque: a quilt).
 struct TileViewsTarget {
   Texture* texture = nullptr;  // RGBA32F, RGBA16F or RGBA8
   int cols = 1;

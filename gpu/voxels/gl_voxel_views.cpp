@@ -76,7 +76,7 @@ void GlVoxelViews::downsample(const Texture& source, glm::ivec2 source_size, int
   glProgramUniform2i(p, program.uniform("tile_size"), tiles.tile_size.x, tiles.tile_size.y);
   glProgramUniform1i(p, program.uniform("add_background"), add_background ? 1 : 0);
   if (add_background) glProgramUniform3fv(p, program.uniform("background"), 1, glm::value_ptr(*add_background));
-  glProgramUniform1f(p, program.uniform("alpha_out"), tiles.keep_transmittance ? -1.0f : 1.0f);
+  glProgramUniform1f(p, program.uniform("alpha_out"), tiles.alpha == TargetAlpha::kTransmittance ? -1.0f : 1.0f);
   glBindTextureUnit(kDownsampleSourceUnit, source.id());
   glBindImageTexture(kDownsampleTargetImage, tiles.target->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY,
                      tiles.target->internal_format());
@@ -157,13 +157,14 @@ void GlVoxelViews::render_quilt(const render::QuiltGeometry& geometry, const ren
   for (int view = 0; view < geometry.views; ++view) cameras.push_back(geometry.view_camera(view));
   render_views(cameras, settings,
                {.target = &quilt, .cols = layout.cols, .tile_size = {layout.tile_width(), layout.tile_height()},
-                .keep_transmittance = false});
+                .alpha = TargetAlpha::kOpaque});
 }
 
 render::RasterImage GlVoxelViews::render_view(const render::Camera& camera, const voxel::VoxelRenderSettings& settings) {
   const Texture image(GL_RGBA32F, camera.width, camera.height);
   render_views({&camera, 1}, settings,
-               {.target = &image, .cols = 1, .tile_size = {camera.width, camera.height}, .keep_transmittance = true});
+               {.target = &image, .cols = 1, .tile_size = {camera.width, camera.height},
+                .alpha = TargetAlpha::kTransmittance});
   const ImageF rgba = read_image_top_down(image, 4);
   render::RasterImage out;
   out.width = rgba.width;

@@ -98,7 +98,7 @@ TEST(GlSplatTileRaster, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
 }
 
 // Splats far larger than the image: their rectangles hold every tile, so their keys are
-// counted and written by a work group each (tile_splat_huge.comp.glsl); faint ones too, whose
+// counted and written by a work group each (splat_tile_huge.comp.glsl); faint ones too, whose
 // opacity-aware ellipse covers fewer tiles than their rectangle.
 TEST(GlSplatTileRaster, HugeSplatsMatchTheCpu) {
   HeadlessContext context;

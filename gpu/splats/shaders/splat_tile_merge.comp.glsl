@@ -7,10 +7,10 @@
 // whole slot's, up to the rounding of the products.
 #include "gpu/splats/shaders/splat_record.glsl"
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 #include "gpu/splats/shaders/frame_io.h"
-#include "gpu/splats/shaders/tile_splat_blend.glsl"
-#include "gpu/splats/shaders/tile_splat_target.glsl"
+#include "gpu/splats/shaders/splat_tile_blend.glsl"
+#include "gpu/splats/shaders/splat_tile_target.glsl"
 
 layout(local_size_x = kTileSide, local_size_y = kTileSide) in;
 #include "gpu/gl/shaders/flat_group.glsl"
@@ -18,7 +18,7 @@ layout(local_size_x = kTileSide, local_size_y = kTileSide) in;
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileValuesBinding) readonly buffer Values { uint values[]; };
 #define SPLIT_LIST_ACCESS readonly
-#include "gpu/splats/shaders/tile_splat_split_list.glsl"
+#include "gpu/splats/shaders/splat_tile_split_list.glsl"
 layout(std430, binding = kTileSplatPartialsBinding) readonly buffer Partials { vec4 partials[]; };
 uniform uint split_keys;
 

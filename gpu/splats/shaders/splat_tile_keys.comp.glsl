@@ -1,14 +1,14 @@
 // The compute tile rasterizer's keys (gpu/splats/gl_splat_tile_raster.hpp), one invocation an item (a splat in
-// one image, front to back): EMIT 0 counts the tiles it covers (tile_splat_cover.glsl) into
+// one image, front to back): EMIT 0 counts the tiles it covers (splat_tile_cover.glsl) into
 // counts[j], EMIT 1 writes its keys (slot = image * tiles + tile, value = its record) from its
 // first key, counts[j] after the scan. Items with more than kTileSplatHugeTiles tiles in their
-// rectangle are listed for tile_splat_huge.comp.glsl instead. PLANES 0: the image is the view,
+// rectangle are listed for splat_tile_huge.comp.glsl instead. PLANES 0: the image is the view,
 // entry / gaussian_count; PLANES 1: the item's plane, layers[j].
 #include "gpu/splats/shaders/splat_record.glsl"
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
-#include "gpu/splats/shaders/tile_splat_cover.glsl"
-#include "gpu/splats/shaders/tile_splat_item.glsl"
+#include "gpu/splats/shaders/splat_tile_io.h"
+#include "gpu/splats/shaders/splat_tile_cover.glsl"
+#include "gpu/splats/shaders/splat_tile_item.glsl"
 #include "gpu/splats/shaders/frame_io.h"
 #define TILE_KEY_CAPACITY 1
 #include "gpu/compute/shaders/tile_key_writer.glsl"

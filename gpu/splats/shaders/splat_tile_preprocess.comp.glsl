@@ -4,7 +4,7 @@
 // (0xFFFFFFFF: culled) for the depth sort of all entries.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/splats/shaders/splat_record.glsl"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 
 layout(local_size_x = kSplatPreprocessGroupSize) in;
 #include "gpu/gl/shaders/flat_group.glsl"

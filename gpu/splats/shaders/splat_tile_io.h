@@ -1,9 +1,9 @@
 // The compute tile rasterizer of Gaussians' contract (gpu/splats/gl_splat_tile_raster.hpp;
-// gpu/splats/shaders/tile_splat_*.comp.glsl), on top of the generic tile machinery's
+// gpu/splats/shaders/splat_tile_*.comp.glsl), on top of the generic tile machinery's
 // (gpu/compute/shaders/tile_io.h; bindings not named here are its and the splat passes',
 // gpu/splats/shaders/frame_io.h). Read by C++ and GLSL (gpu/gl/shaders/shader_io.h).
-#ifndef LFD_GPU_SHADERS_TILE_SPLAT_IO_H
-#define LFD_GPU_SHADERS_TILE_SPLAT_IO_H
+#ifndef LFD_GPU_SHADERS_SPLAT_TILE_IO_H
+#define LFD_GPU_SHADERS_SPLAT_TILE_IO_H
 #include "gpu/gl/shaders/shader_io.h"
 
 LFD_IO_BEGIN(gpu)
