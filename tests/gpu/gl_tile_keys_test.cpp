@@ -3,7 +3,8 @@
 // scan of the per-item counts, the sort by slot, the per-slot ranges, the work list and its
 // indirect dispatch, at the sizes where the passes change shape (0, 1, a block of 1024 items and
 // one either side, more than 65535 work groups) and with more keys than the capacity (the
-// capacity path leaves keys out and reports the total, so the client can grow and redraw).
+// capacity path leaves keys out and reports the total, so the client can grow and redraw), and
+// the client's half of that recovery (GlKeyCapacity).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "gpu/compute/gl_key_capacity.hpp"
 #include "gpu/compute/gl_tile_keys.hpp"
 #include "gpu/gl/gl_context.hpp"
 #include "gpu/gl/gl_program.hpp"
@@ -277,6 +279,33 @@ TEST(GlTileKeys, MoreKeysThanTheCapacityLeavesKeysOutAndReportsTheTotal) {
       }
     }
   }
+}
+
+// The tile rasterizers' recovery (gpu/compute/gl_key_capacity.hpp): a capacity kept from pass to
+// pass, each pass's total copied on the GPU into its word (the words kept as the buffer grows),
+// one read that names the passes over the capacity and grows it past the largest total.
+TEST(GlKeyCapacity, ReadsEveryPassTotalOnceAndGrowsPastTheLargest) {
+  HeadlessContext context;
+  GlTileKeys tiles;
+  GlKeyCapacity capacity;
+  EXPECT_EQ(capacity.for_pass(100), 100u) << "at first a key an item";
+  EXPECT_EQ(capacity.for_pass(5), 100u) << "then kept";
+  for (uint32_t pass = 0; pass < 6; ++pass) {  // 0, 30, .. 150 keys
+    upload_counts(tiles, std::vector<uint32_t>(30 * pass, 1u));
+    tiles.scan_to_capacity(30 * pass, capacity.keys());
+    capacity.record(tiles, pass);
+  }
+  const GlKeyCapacity::FrameKeys frame = capacity.read_frame(6);
+  EXPECT_EQ(frame.totals, (std::vector<uint32_t>{0, 30, 60, 90, 120, 150}));
+  EXPECT_EQ(frame.sum, 450u);
+  EXPECT_EQ(frame.overflowed, (std::vector<uint32_t>{4, 5}));
+  EXPECT_EQ(capacity.keys(), 150u + 150u / 4 + 1024u) << "a quarter over the largest, and some";
+  // Nothing over: the capacity stays; a largest bound caps the growth.
+  EXPECT_TRUE(capacity.read_frame(4).overflowed.empty());
+  EXPECT_EQ(capacity.keys(), 1211u);
+  capacity.set_keys(10);
+  EXPECT_EQ(capacity.read_frame(6, 100).overflowed, (std::vector<uint32_t>{1, 2, 3, 4, 5}));
+  EXPECT_EQ(capacity.keys(), 100u);
 }
 
 }  // namespace
