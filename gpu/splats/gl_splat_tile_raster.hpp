@@ -149,7 +149,8 @@ class GlSplatTileRaster {
   // total as pass `pass`'s (GlKeyCapacity); nothing is read back.
   void make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid,
                  uint32_t slots, uint32_t pass);
-  // GlKeyCapacity::read_overflowed, the frame's key sum into counts_.keys.
+  // GlKeyCapacity::read_frame (the frame's one read), its key sum into counts_.keys; the passes
+  // whose keys outgrew the capacity.
   std::vector<uint32_t> overflowed_passes(uint32_t passes);
   // One pass of render_planes.
   void draw_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
