@@ -10,6 +10,7 @@
 #include "gpu/compute/shaders/radix_scatter.comp.glsl.hpp"
 #include "gpu/compute/shaders/radix_setup.comp.glsl.hpp"
 #include "gpu/compute/shaders/radix_sort_io.h"
+#include "gpu/gl/shaders/work_groups_io.h"
 
 namespace lfd::gpu {
 namespace {
@@ -104,7 +105,9 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
   if (count == 0 || (count == 1 && !how.drop_culled)) return;
 
   const BlockLayout first = block_layout(count);
-  if (first.blocks > 65535) throw std::invalid_argument("GlRadixSort: too many keys for one dispatch");
+  // The passes index blocks by gl_WorkGroupID.x alone (the later ones are dispatched indirectly
+  // from radix_setup's one row).
+  if (first.blocks > kMaxWorkGroupsX) throw std::invalid_argument("GlRadixSort: too many keys for one dispatch");
   keys_tmp_.ensure(size_t(count) * 4);
   values_tmp_.ensure(size_t(count) * 4);
   // The later passes' layout (for at most `count` kept keys) has at most max(first, kRadixTargetBlocks) blocks.

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/compute/shaders/tile_dispatch.comp.glsl.hpp"
 #include "gpu/compute/shaders/tile_ranges.comp.glsl.hpp"
 #include "gpu/compute/shaders/tile_scan_blocks.comp.glsl.hpp"
@@ -19,6 +20,11 @@ static_assert(sizeof(TileState) == 32 && offsetof(TileState, groups_x) == 16, "T
 Program compute(const char* label, const char* source) { return Program(label, {{GL_COMPUTE_SHADER, source}}); }
 
 }  // namespace
+
+std::vector<std::string> key_pass_defines(KeyStep step, TileImages images) {
+  return {std::string("EMIT ") + (step == KeyStep::kEmit ? "1" : "0"),
+          std::string("PLANES ") + (images == TileImages::kPlanes ? "1" : "0")};
+}
 
 int slot_bits(uint32_t slots) {
   int bits = 1;
@@ -54,13 +60,13 @@ bool GlTileKeys::run_scan(uint32_t items) {
   glProgramUniform1ui(items_.id(), items_.uniform("item_count"), items);
   glProgramUniform1ui(totals_.id(), totals_.uniform("block_count"), blocks);
   blocks_.use();
-  blocks_.dispatch_1d(size_t(blocks) * kTileScanGroupSize, int(kTileScanGroupSize));
+  dispatch_work_groups(blocks);  // a group a block
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   totals_.use();
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   items_.use();
-  items_.dispatch_1d(size_t(blocks) * kTileScanGroupSize, int(kTileScanGroupSize));
+  dispatch_work_groups(blocks);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   check_gl("the tile scan");
   return true;
@@ -120,7 +126,7 @@ void GlTileKeys::find_ranges(uint32_t keys, uint32_t slots, bool count_from_stat
     glProgramUniform1ui(ranges_.id(), ranges_.uniform("key_count"), keys);
     glProgramUniform1i(ranges_.id(), ranges_.uniform("count_from_state"), count_from_state ? 1 : 0);
     ranges_.use();
-    ranges_.dispatch_1d(keys, int(kTileRangesGroupSize));
+    dispatch_work_groups((size_t(keys) + kTileRangesGroupSize - 1) / kTileRangesGroupSize);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   write_dispatch(state_, offsetof(TileState, work_count) / 4, offsetof(TileState, groups_x) / 4);

@@ -15,6 +15,8 @@
 // sort_and_find_ranges_to_capacity read nothing back.
 #include <cstddef>
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/gl_program.hpp"
@@ -22,6 +24,16 @@
 #include "gpu/compute/shaders/tile_io.h"
 
 namespace lfd::gpu {
+
+// A client's key pass counts each item's keys, or writes them (tile_key_writer.glsl's EMIT).
+enum class KeyStep { kCount, kEmit };
+// What a client's images are: a quilt's views, or the sweeping planes (the shaders' PLANES).
+enum class TileImages { kViews, kPlanes };
+// What a view's alpha holds once composited over the background: 1 (a quilt) or the
+// transmittance T (one view's image, for a caller that composites it further).
+enum class TargetAlpha { kOpaque, kTransmittance };
+// The defines of a client's key pass ("EMIT 0|1", "PLANES 0|1").
+std::vector<std::string> key_pass_defines(KeyStep step, TileImages images);
 
 class GlTileKeys {
  public:
@@ -59,6 +71,11 @@ class GlTileKeys {
 
   Buffer& keys() { return keys_; }
   Buffer& values() { return values_; }
+  // What the ranges pass leaves (read by the tests): per slot uvec2 (first key, end key), the
+  // non-empty slots, and the TileState.
+  const Buffer& ranges() const { return ranges_buffer_; }
+  const Buffer& work() const { return work_; }
+  const Buffer& state() const { return state_; }
   GlRadixSort& sorter() { return sort_; }  // for a client's own sorts (one set of scratch buffers)
   size_t bytes() const;
 

@@ -58,7 +58,7 @@ size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometr
   // after a frame's scan, so they are counted at kComputePlaneKeysPerGaussian a Gaussian.
   const size_t tiles = size_t((wp + render::kTileSize - 1) / render::kTileSize) *
                        size_t((hp + render::kTileSize - 1) / render::kTileSize);
-  return binning + GlTileSplats::plane_path_bytes(gaussians, tiles * size_t(options.g2lf.chunks),
+  return binning + GlSplatTileRaster::plane_path_bytes(gaussians, tiles * size_t(options.g2lf.chunks),
                                                   gaussians * kComputePlaneKeysPerGaussian);
 }
 
@@ -108,14 +108,14 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
     throw std::invalid_argument("G2LF on the GPU: resolve --raster auto before rendering");
   const PlaneRequest request{requested.format(), requested.plane_raster, requested.raster, o.chunks, wp, hp,
                              requested.accumulation_budget_bytes, requested.memory_budget_bytes};
-  if (tile_splats_) tile_splats_->set_split_keys(requested.compute_split_keys);
+  if (tile_raster_) tile_raster_->set_split_keys(requested.compute_split_keys);
   if (request_ && *request_ == request) {
     GlG2lfOptions drawn = requested;
     drawn.plane_raster = raster_;
     return check_g2lf_fits(drawn, geometry, scene_.size(), info_, std::nullopt);
   }
   const size_t held = sweeping_.bytes() + buffers_.bytes() + layers_.bytes() + sort_.scratch_bytes() +
-                      plane_raster_.bytes() + (tile_splats_ ? tile_splats_->bytes() : 0);
+                      plane_raster_.bytes() + (tile_raster_ ? tile_raster_->bytes() : 0);
   // What the driver says is free, plus what this renderer would give back before allocating.
   std::optional<long long> free_bytes;
   if (requested.memory_budget_bytes == 0) {
@@ -128,9 +128,9 @@ void GlG2lfRenderer::ensure_planes(const GlG2lfOptions& requested, const render:
   batch_layers_ = batch_layers_for(options, geometry);  // GlPlaneRaster sizes its accumulation array to it
   raster_ = options.plane_raster;
   raster_path_ = options.raster;
-  if (raster_path_ == RasterPath::kCompute && !tile_splats_) {
-    tile_splats_ = std::make_unique<GlTileSplats>();
-    tile_splats_->set_split_keys(requested.compute_split_keys);
+  if (raster_path_ == RasterPath::kCompute && !tile_raster_) {
+    tile_raster_ = std::make_unique<GlSplatTileRaster>();
+    tile_raster_->set_split_keys(requested.compute_split_keys);
   }
   request_ = request;
 }
@@ -157,7 +157,7 @@ void GlG2lfRenderer::bin(const render::ReferenceCamera& ref, const render::G2lfO
 
 void GlG2lfRenderer::draw_planes(GlPlanes& planes) {
   if (raster_path_ == RasterPath::kCompute)
-    return tile_splats_->render_planes(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(),
+    return tile_raster_->render_planes(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(),
                                        planes);
   plane_raster_.run(buffers_.records, buffers_.values, layers_, buffers_.draw, scene_.size(), batch_layers_,
                     planes);
@@ -171,9 +171,9 @@ void GlG2lfRenderer::record_stats(bool timed, TimerReads reads) {
   stats_.plane_format = planes.format;
   stats_.plane_raster = raster_;
   stats_.raster = raster_path_;
-  if (tile_splats_ && raster_path_ == RasterPath::kCompute) stats_.compute_keys = tile_splats_->counts().keys;
+  if (tile_raster_ && raster_path_ == RasterPath::kCompute) stats_.compute_keys = tile_raster_->counts().keys;
   stats_.gpu_bytes = scene_.bytes() + sweeping_.bytes() + buffers_.bytes() + layers_.bytes() +
-                     sort_.scratch_bytes() + plane_raster_.bytes() + (tile_splats_ ? tile_splats_->bytes() : 0);
+                     sort_.scratch_bytes() + plane_raster_.bytes() + (tile_raster_ ? tile_raster_->bytes() : 0);
   stats_.gpu_bytes_peak = gpu_bytes_peak();
   if (!timed) return;
   const std::optional<GlSweepingPlaneReadout> r = sweeping_.readout(reads);

@@ -28,7 +28,7 @@
 #include "gpu/panel/gl_direct_panel.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/splats/gl_plane_raster.hpp"
-#include "gpu/splats/gl_tile_splats.hpp"
+#include "gpu/splats/gl_splat_tile_raster.hpp"
 #include "gpu/gl/raster_path.hpp"
 #include "gpu/planes/gl_planes.hpp"
 #include "gpu/compute/gl_radix_sort.hpp"
@@ -53,12 +53,12 @@ struct GlG2lfOptions {
   // rounded once) when the RGBA16F ones exceed the memory budget (docs/gpu.md "Planes").
   PlaneRaster plane_raster = PlaneRaster::kLayered;
   // kHardware: the planes drawn as plane_raster says; kCompute: by the compute tile rasterizer
-  // (GlTileSplats::render_planes: keys (plane | tile), the non-empty pairs only), which sums in
+  // (GlSplatTileRaster::render_planes: keys (plane | tile), the non-empty pairs only), which sums in
   // float registers and writes each texel once, so u8-precision planes are RGBA8 (the CPU's,
   // rounded once) with no batches. kAuto must be resolved first (gpu::resolve_raster_path).
   RasterPath raster = RasterPath::kHardware;
   // kCompute: a (plane, tile) with more splats than this is composited in parts, merged after
-  // (GlTileSplats::set_split_keys; 0: never split).
+  // (GlSplatTileRaster::set_split_keys; 0: never split).
   uint32_t compute_split_keys = kTileSplatSplitKeys;
   // GPU bytes G2LF may allocate (planes + per-Gaussian buffers); 0: the free memory the driver
   // reports, no limit beyond the texture limits when it reports none (llvmpipe).
@@ -109,7 +109,7 @@ struct GlG2lfStats {
 // lists) and the float accumulation layers.
 size_t g2lf_plane_array_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry);
 // --raster compute: the rest holds the compute path's key buffers instead of the accumulation
-// layers (GlTileSplats::plane_path_bytes), their keys counted at kComputePlaneKeysPerGaussian.
+// layers (GlSplatTileRaster::plane_path_bytes), their keys counted at kComputePlaneKeysPerGaussian.
 size_t g2lf_other_bytes(const GlG2lfOptions& options, const render::QuiltGeometry& geometry, size_t gaussians);
 // The (plane, tile) keys a Gaussian is counted at in the memory check of --raster compute (a frame's
 // keys are known only after its scan; docs/gpu.md "Memory and passes" gives the measured ratios).
@@ -165,7 +165,7 @@ class GlG2lfRenderer {
   GlRadixSort sort_;
   GlDepthBinning binning_;
   GlPlaneRaster plane_raster_;
-  std::unique_ptr<GlTileSplats> tile_splats_;  // --raster compute, made on first use
+  std::unique_ptr<GlSplatTileRaster> tile_raster_;  // --raster compute, made on first use
   RasterPath raster_path_ = RasterPath::kHardware;  // as drawn
   GlSweepingPlanes sweeping_;
   SplatBuffers buffers_;

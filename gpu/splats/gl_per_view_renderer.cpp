@@ -24,8 +24,8 @@ GlPerViewRenderer::GlPerViewRenderer(const GlScene& scene, const GlPerViewOption
   if (options_.raster == RasterPath::kAuto)
     throw std::invalid_argument("per-view renderer: resolve --raster auto before making the renderer");
   if (options_.raster == RasterPath::kCompute) {
-    tiles_ = std::make_unique<GlTileSplats>();
-    tiles_->set_max_entries_per_pass(options_.compute_entries_per_pass);
+    tiles_ = std::make_unique<GlSplatTileRaster>();
+    tiles_->set_pass_limit(options_.compute_pass_limit);
     tiles_->set_split_keys(options_.compute_split_keys);
   }
 }
@@ -101,7 +101,7 @@ const Texture& GlPerViewRenderer::render_view(const render::Camera& camera, cons
   if (tiles_) {
     render_compute(std::span(&camera, 1), settings,
                    {.texture = &view_target_, .cols = 1, .cell_size = {camera.width, camera.height},
-                    .background = settings.background, .keep_transmittance = true});
+                    .background = settings.background, .alpha = TargetAlpha::kTransmittance});
     finish_stats(1, 1);
     return view_target_;
   }
@@ -143,7 +143,7 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
     for (int view = 0; view < geometry.views; ++view) cameras.push_back(geometry.view_camera(view));
     render_compute(cameras, settings,
                    {.texture = &quilt, .cols = layout.cols, .cell_size = {layout.tile_width(), layout.tile_height()},
-                    .background = settings.background, .keep_transmittance = false});
+                    .background = settings.background, .alpha = TargetAlpha::kOpaque});
     finish_stats(geometry.views, 1);
     return;
   }

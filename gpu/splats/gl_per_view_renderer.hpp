@@ -22,7 +22,7 @@
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/splats/gl_splat_preprocess.hpp"
 #include "gpu/splats/gl_splat_raster.hpp"
-#include "gpu/splats/gl_tile_splats.hpp"
+#include "gpu/splats/gl_splat_tile_raster.hpp"
 #include "gpu/gl/raster_path.hpp"
 #include "render/blend.hpp"
 #include "render/quilt_geometry.hpp"
@@ -41,15 +41,15 @@ struct GlPerViewStats {
 
 struct GlPerViewOptions {
   // kHardware: per view, the three passes below with the raster pipeline's instanced quads;
-  // kCompute: every view in one pass of the compute tile rasterizer (GlTileSplats; exact 32-bit
+  // kCompute: every view in one pass of the compute tile rasterizer (GlSplatTileRaster; exact 32-bit
   // depth order, so the depth-key options below do not apply). kAuto must be resolved first
   // (gpu::resolve_raster_path).
   RasterPath raster = RasterPath::kHardware;
-  // kCompute: the most (view, Gaussian) entries one pass holds (GlTileSplats::
-  // set_max_entries_per_pass; 0: as the GPU's storage buffers allow).
-  size_t compute_entries_per_pass = 0;
+  // kCompute: the bytes of records one pass may bind (GlSplatTileRaster::set_pass_limit, a
+  // SplatRecord a (view, Gaussian) entry; 0: the GPU's largest storage buffer).
+  size_t compute_pass_limit = 0;
   // kCompute: a tile with more splats than this is composited in parts, merged after
-  // (GlTileSplats::set_split_keys; 0: never split).
+  // (GlSplatTileRaster::set_split_keys; 0: never split).
   uint32_t compute_split_keys = kTileSplatSplitKeys;
   // Format of the (C, T) accumulation target: GL_RGBA32F (matches the CPU to rounding) or
   // GL_RGBA16F (half the bandwidth; ~1e-3 relative rounding per blend).
@@ -123,7 +123,7 @@ class GlPerViewRenderer {
   Texture view_target_;
   Framebuffer view_framebuffer_;
   Framebuffer quilt_framebuffer_;
-  std::unique_ptr<GlTileSplats> tiles_;  // --raster compute
+  std::unique_ptr<GlSplatTileRaster> tiles_;  // --raster compute
   std::optional<GlFrameRing> timers_;
   GlPerViewStats stats_;
 };

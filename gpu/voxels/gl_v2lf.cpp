@@ -245,16 +245,22 @@ GlSweepingPlaneStages GlV2lfRenderer::cpu_binned_stages(const render::QuiltGeome
   stages.draw_planes = [this, &geometry, &o, &options](const render::ReferenceCamera& ref, GlPlanes& planes) {
     const GlVoxelScene& scene = split_scene_ ? *split_scene_ : scene_;
     const glm::vec3& sh_origin = geometry.base.position_world;
-    draw_planes(
-        int(ranges_.size()),
-        [&](int k, const SplatRasterTarget& target) {
-          if (options.raster == RasterPath::kCompute)
-            tile_raster_->draw(scene, ref.camera, sh_origin, chunk_orders_, ranges_[size_t(k)], accumulation_,
-                               glm::ivec2(0));
-          else
-            raster_.draw(scene, ref.camera, sh_origin, chunk_orders_, ranges_[size_t(k)], target);
-        },
-        lowpass_variance(geometry, ref, o), nullptr, planes);
+    const auto draw = [&] {
+      draw_planes(
+          int(ranges_.size()),
+          [&](int k, const SplatRasterTarget& target) {
+            if (options.raster == RasterPath::kCompute)
+              tile_raster_->render_view(scene, ref.camera, sh_origin, chunk_orders_, ranges_[size_t(k)], accumulation_,
+                                        glm::ivec2(0));
+            else
+              raster_.draw(scene, ref.camera, sh_origin, chunk_orders_, ranges_[size_t(k)], target);
+          },
+          lowpass_variance(geometry, ref, o), nullptr, planes);
+    };
+    draw();
+    // The compute path's one read, after the planes: a plane whose keys outgrew the capacity
+    // marched nothing, so the planes are drawn again with it grown (docs/gpu.md "Memory and passes").
+    if (options.raster == RasterPath::kCompute && tile_raster_->planes_outgrew_capacity()) draw();
   };
   return stages;
 }
@@ -270,11 +276,17 @@ GlSweepingPlaneStages GlV2lfRenderer::gpu_binned_stages(const render::QuiltGeome
   stages.draw_planes = [this, &geometry, &o, &options](const render::ReferenceCamera& ref, GlPlanes& planes) {
     const glm::vec3& sh_origin = geometry.base.position_world;
     if (options.raster == RasterPath::kCompute) {
-      // Every plane's keys in one sort (one read-back: the key total), then a plane's run of slots a plane.
-      tile_raster_->begin_planes(scene_, ref.camera, sh_origin, binning_.orders(), binning_.chunk_of(), planes.max_planes);
-      draw_planes(
-          o.chunks, [&](int k, const SplatRasterTarget&) { tile_raster_->draw_plane(k, accumulation_); },
-          lowpass_variance(geometry, ref, o), &binning_.draws(), planes);
+      // Every plane's keys in one sort, then a plane's run of slots a plane; the one read after the
+      // planes: keys that outgrew the capacity are drawn again with it grown (docs/gpu.md "Memory and passes").
+      const auto draw = [&] {
+        tile_raster_->begin_planes(scene_, ref.camera, sh_origin, binning_.orders(), binning_.chunk_of(),
+                                   planes.max_planes);
+        draw_planes(
+            o.chunks, [&](int k, const SplatRasterTarget&) { tile_raster_->render_plane(k, accumulation_); },
+            lowpass_variance(geometry, ref, o), &binning_.draws(), planes);
+      };
+      draw();
+      if (tile_raster_->planes_outgrew_capacity()) draw();
       return;
     }
     raster_.begin_indirect(scene_, ref.camera, sh_origin, binning_.orders(), binning_.draws(),

@@ -7,6 +7,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/voxels/shaders/voxel_tile_keys.comp.glsl.hpp"
 #include "gpu/voxels/shaders/voxel_tile_march.comp.glsl.hpp"
@@ -18,10 +19,10 @@ namespace {
 static_assert(sizeof(VoxelTileView) == 96, "VoxelTileView is std430: packed floats");
 static_assert(sizeof(VoxelTileRange) == 16, "VoxelTileRange is std430: packed uints");
 
-Program keys_program(bool emit, bool planes) {
-  const std::string label = std::string("voxel tiles: ") + (emit ? "keys" : "counts") + (planes ? " (planes)" : "");
-  return Program(label, {{GL_COMPUTE_SHADER, voxel_tile_keys_comp_glsl}},
-                 {std::string("EMIT ") + (emit ? "1" : "0"), std::string("PLANES ") + (planes ? "1" : "0")});
+Program keys_program(KeyStep step, TileImages images) {
+  const std::string label = std::string("voxel tiles: ") + (step == KeyStep::kEmit ? "keys" : "counts") +
+                            (images == TileImages::kPlanes ? " (planes)" : "");
+  return Program(label, {{GL_COMPUTE_SHADER, voxel_tile_keys_comp_glsl}}, key_pass_defines(step, images));
 }
 
 // The image's uniforms (gpu/voxels/shaders/voxel_tile_view.glsl); tile_grid where the pass reads it.
@@ -55,10 +56,10 @@ VoxelTileView voxel_tile_view(const render::Camera& camera, const glm::vec3& sh_
 }
 
 GlVoxelTileRaster::GlVoxelTileRaster()
-    : count_(keys_program(false, false)),
-      emit_(keys_program(true, false)),
-      count_planes_(keys_program(false, true)),
-      emit_planes_(keys_program(true, true)),
+    : count_(keys_program(KeyStep::kCount, TileImages::kViews)),
+      emit_(keys_program(KeyStep::kEmit, TileImages::kViews)),
+      count_planes_(keys_program(KeyStep::kCount, TileImages::kPlanes)),
+      emit_planes_(keys_program(KeyStep::kEmit, TileImages::kPlanes)),
       march_("voxel tiles: march", {{GL_COMPUTE_SHADER, voxel_tile_march_comp_glsl}}) {}
 
 size_t GlVoxelTileRaster::pass_limit() const {
@@ -76,9 +77,8 @@ void GlVoxelTileRaster::upload_views(std::span<const render::Camera> cameras, co
   if (!views.empty()) views_.upload(views.data(), views.size() * sizeof(VoxelTileView));
 }
 
-GlVoxelTileRaster::Keys GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, glm::ivec2 image_size,
-                                                     std::span<const Run> runs, const Buffer& order,
-                                                     const Buffer* chunk_of, int plane_capacity, size_t key_limit) {
+bool GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, glm::ivec2 image_size, std::span<const Run> runs,
+                                  const Buffer& order, const Buffer* chunk_of, int plane_capacity, uint32_t pass) {
   scene_ = &scene;
   image_size_ = image_size;
   tile_grid_ = tile_grid_of(image_size);
@@ -91,12 +91,15 @@ GlVoxelTileRaster::Keys GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, 
                      .image = run.image});
   }
   run_count_ = int(table.size());
-  last_items_ = last_keys_ = 0;
-  if (items == 0) return Keys::kNone;
   if (items >= (uint64_t(1) << 32)) throw std::length_error("voxel tile raster: over 2^32 items a pass");
   const uint64_t slots = uint64_t(chunk_of ? plane_capacity : 1) * uint64_t(run_count_) * uint64_t(tile_grid_.x) *
                          uint64_t(tile_grid_.y);
   if (slots >= (uint64_t(1) << 32)) throw std::length_error("voxel tile raster: over 2^32 (image, octant, tile) slots");
+  if (items == 0) {  // the pass's total is 0 all the same (the scan of no items writes it)
+    keys_.scan_to_capacity(0, capacity_.for_pass(1));
+    capacity_.record(keys_, pass);
+    return false;
+  }
   runs_.ensure(table.size() * sizeof(VoxelTileRange));
   runs_.upload(table.data(), table.size() * sizeof(VoxelTileRange));
 
@@ -120,19 +123,17 @@ GlVoxelTileRaster::Keys GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, 
   count.use();
   count.dispatch_1d(items, int(kVoxelTileItemsGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  const uint32_t total = keys_.scan(uint32_t(items));
-  last_items_ = uint32_t(items);
-  last_keys_ = total;
-  if (total == 0) return Keys::kNone;
-  if (key_limit > 0 && size_t(total) > key_limit) return Keys::kOverLimit;
+  keys_.scan_to_capacity(uint32_t(items), capacity_.for_pass(uint32_t(items)));
+  glProgramUniform1ui(emit.id(), emit.uniform("key_capacity"), keys_.capacity());
   bind_inputs();
   keys_.keys().bind_storage(kTileKeysBinding);
   keys_.values().bind_storage(kTileValuesBinding);
   emit.use();
   emit.dispatch_1d(items, int(kVoxelTileItemsGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  keys_.sort_and_find_ranges(total, uint32_t(slots));
-  return Keys::kReady;
+  keys_.sort_and_find_ranges_to_capacity(uint32_t(slots));
+  capacity_.record(keys_, pass);
+  return true;
 }
 
 void GlVoxelTileRaster::march(const Texture& target, glm::ivec2 origin, int cols, int images, uint32_t slot_base,
@@ -153,6 +154,7 @@ void GlVoxelTileRaster::march(const Texture& target, glm::ivec2 origin, int cols
   glProgramUniform1i(p, march_.uniform("sh_stride"), sh_vec4_stride(scene.sh_degree));
   glProgramUniform1ui(p, march_.uniform("slot_base"), slot_base);
   glProgramUniform1ui(p, march_.uniform("slot_run"), slot_run);
+  glProgramUniform1ui(p, march_.uniform("key_capacity"), keys_.capacity());
   scene_->bind();
   keys_.bind();
   views_.bind_storage(kVoxelTileViewsBinding);
@@ -163,15 +165,15 @@ void GlVoxelTileRaster::march(const Texture& target, glm::ivec2 origin, int cols
   if (slot_run == 0)
     keys_.dispatch_work();
   else
-    march_.dispatch_1d(slot_run, 1);  // one group a slot (spread over y past 65535)
+    dispatch_work_groups(slot_run);  // one group a slot
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   check_gl("the voxel tile raster");
 }
 
-void GlVoxelTileRaster::draw_views(const GlVoxelScene& scene, std::span<const render::Camera> cameras,
-                                   const Texture& target, int cols) {
+void GlVoxelTileRaster::render_views(const GlVoxelScene& scene, std::span<const render::Camera> cameras,
+                                     const Texture& target, int cols) {
   planes_ready_ = false;
-  passes_ = 0;
+  passes_ = redrawn_ = 0;
   items_ = keys_total_ = 0;
   if (cameras.empty() || scene.size() == 0) return;
   if (cols < 1) throw std::invalid_argument("voxel tile raster: cols must be at least 1");
@@ -180,66 +182,89 @@ void GlVoxelTileRaster::draw_views(const GlVoxelScene& scene, std::span<const re
       throw std::invalid_argument("voxel tile raster: views of different sizes");
   upload_views(cameras, nullptr);
   // Passes of consecutive views whose items' counts fit the limit (4 bytes an item); the keys
-  // are known after the scan (draw_view_pass halves a pass whose keys do not fit).
+  // are known after the frame (a pass whose keys outgrow the limit is drawn again in halves).
   const size_t max_items = pass_limit() / 4, n = scene.size();
-  size_t first = 0;
-  while (first < cameras.size()) {
-    size_t count = 0, items = 0;
-    while (first + count < cameras.size()) {
-      const size_t view_items = size_t(std::popcount(octants_in_view(cameras[first + count]))) * n;
-      if (view_items > max_items)
+  const auto view_items = [&](size_t view) { return size_t(std::popcount(octants_in_view(cameras[view]))) * n; };
+  const auto views = [&](size_t first, size_t count) {
+    ViewPass pass{.first = first, .count = count, .items = 0};
+    for (size_t view = first; view < first + count; ++view) pass.items += view_items(view);
+    return pass;
+  };
+  std::vector<ViewPass> todo;
+  for (size_t first = 0; first < cameras.size();) {
+    ViewPass pass{.first = first, .count = 0, .items = 0};
+    while (first + pass.count < cameras.size()) {
+      const size_t items = view_items(first + pass.count);
+      if (items > max_items)
         throw_input_error("--raster compute: {} voxels seen in {} octants need {:.0f} MiB of tile counts a view, over "
                           "the GPU's largest storage buffer ({:.0f} MiB); use --raster hardware",
-                          n, view_items / n, double(view_items) * 4.0 / 1048576.0, double(pass_limit()) / 1048576.0);
-      if (count > 0 && items + view_items > max_items) break;
-      items += view_items;
-      ++count;
+                          n, items / n, double(items) * 4.0 / 1048576.0, double(pass_limit()) / 1048576.0);
+      if (pass.count > 0 && pass.items + items > max_items) break;
+      pass.items += items;
+      ++pass.count;
     }
-    draw_view_pass(scene, cameras, first, count, target, cols);
-    first += count;
+    todo.push_back(pass);
+    first += pass.count;
+  }
+  // Every pass issued, then the frame's one read; the passes whose keys did not fit (they marched
+  // nothing) go again with the capacity grown, those whose keys outgrow the limit in halves.
+  const uint32_t key_limit = uint32_t(std::min<size_t>(max_items, UINT32_MAX));
+  const glm::ivec2 size(cameras[0].width, cameras[0].height);
+  while (!todo.empty()) {
+    capacity_.set_keys(std::min(capacity_.keys(), key_limit));
+    for (size_t p = 0; p < todo.size(); ++p) render_view_pass(scene, cameras, todo[p], uint32_t(p), target, cols);
+    const uint32_t capacity = capacity_.keys();  // what the passes wrote to (a key an item the first time)
+    const GlKeyCapacity::FrameKeys frame = capacity_.read_frame(uint32_t(todo.size()), key_limit);
+    std::vector<ViewPass> again;
+    for (size_t p = 0; p < todo.size(); ++p) {
+      const ViewPass& pass = todo[p];
+      if (frame.totals[p] <= capacity) {
+        if (frame.totals[p] == 0) continue;  // nothing marched
+        ++passes_;
+        items_ += pass.items;
+        keys_total_ += frame.totals[p];
+        continue;
+      }
+      ++redrawn_;
+      if (frame.totals[p] <= key_limit) {
+        again.push_back(pass);
+        continue;
+      }
+      if (pass.count == 1)
+        throw_input_error("--raster compute: one {}x{} view of {} voxels has more tile keys than the GPU's largest "
+                          "storage buffer holds ({:.0f} MiB); use --raster hardware",
+                          size.x, size.y, n, double(pass_limit()) / 1048576.0);
+      again.push_back(views(pass.first, pass.count / 2));
+      again.push_back(views(pass.first + pass.count / 2, pass.count - pass.count / 2));
+    }
+    todo = std::move(again);
   }
 }
 
-void GlVoxelTileRaster::draw_view_pass(const GlVoxelScene& scene, std::span<const render::Camera> cameras,
-                                       size_t first, size_t count, const Texture& target, int cols) {
+void GlVoxelTileRaster::render_view_pass(const GlVoxelScene& scene, std::span<const render::Camera> cameras,
+                                         const ViewPass& views, uint32_t pass, const Texture& target, int cols) {
   const uint32_t n = uint32_t(scene.size());
   std::vector<Run> runs;
-  for (size_t view = first; view < first + count; ++view) {
+  for (size_t view = views.first; view < views.first + views.count; ++view) {
     const uint32_t octants = octants_in_view(cameras[view]);
     for (uint32_t octant = 0; octant < 8; ++octant)
       if (octants & (1u << octant)) runs.push_back({uint32_t(view), octant, octant * n, n});
   }
-  const size_t key_limit = pass_limit() / 4;
   const glm::ivec2 size(cameras[0].width, cameras[0].height);
-  switch (make_keys(scene, size, runs, scene.order_buffer(), nullptr, 0, key_limit)) {
-    case Keys::kNone: return;
-    case Keys::kReady:
-      march(target, glm::ivec2(0), cols, int(cameras.size()), 0, 0);
-      ++passes_;
-      items_ += last_items_;
-      keys_total_ += last_keys_;
-      return;
-    case Keys::kOverLimit:
-      if (count == 1)
-        throw_input_error("--raster compute: one {}x{} view of {} voxels has more tile keys than the GPU's largest "
-                          "storage buffer holds ({:.0f} MiB); use --raster hardware",
-                          size.x, size.y, n, double(pass_limit()) / 1048576.0);
-      draw_view_pass(scene, cameras, first, count / 2, target, cols);
-      draw_view_pass(scene, cameras, first + count / 2, count - count / 2, target, cols);
-      return;
-  }
+  if (make_keys(scene, size, runs, scene.order_buffer(), nullptr, 0, pass))
+    march(target, glm::ivec2(0), cols, int(cameras.size()), 0, 0);
 }
 
-void GlVoxelTileRaster::draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
-                             const Buffer& order, const VoxelOrderRanges& ranges, const Texture& target,
-                             glm::ivec2 origin) {
+void GlVoxelTileRaster::render_view(const GlVoxelScene& scene, const render::Camera& camera,
+                                    const glm::vec3& sh_origin, const Buffer& order, const VoxelOrderRanges& ranges,
+                                    const Texture& target, glm::ivec2 origin) {
   planes_ready_ = false;
   upload_views({&camera, 1}, &sh_origin);
   std::vector<Run> runs;
   const uint32_t octants = octants_in_view(camera);
   for (uint32_t octant = 0; octant < 8; ++octant)
     if (octants & (1u << octant)) runs.push_back({0, octant, ranges[octant].offset, ranges[octant].count});
-  if (make_keys(scene, {camera.width, camera.height}, runs, order, nullptr, 0, 0) == Keys::kReady)
+  if (make_keys(scene, {camera.width, camera.height}, runs, order, nullptr, 0, plane_passes_++))
     march(target, origin, 1, 1, 0, 0);
 }
 
@@ -253,14 +278,21 @@ void GlVoxelTileRaster::begin_planes(const GlVoxelScene& scene, const render::Ca
   uint32_t slot = 0;
   for (uint32_t octant = 0; octant < 8; ++octant)
     if (octants & (1u << octant)) runs.push_back({0, octant, n * slot++, n});
-  planes_ready_ = make_keys(scene, {camera.width, camera.height}, runs, orders, &chunk_of, plane_capacity, 0) ==
-                  Keys::kReady;
+  planes_ready_ =
+      make_keys(scene, {camera.width, camera.height}, runs, orders, &chunk_of, plane_capacity, plane_passes_++);
 }
 
-void GlVoxelTileRaster::draw_plane(int plane, const Texture& target) {
+void GlVoxelTileRaster::render_plane(int plane, const Texture& target) {
   if (!planes_ready_) return;  // no voxel has a key: every plane stays empty
   const uint32_t run = uint32_t(run_count_) * uint32_t(tile_grid_.x * tile_grid_.y);
   march(target, glm::ivec2(0), 1, 1, uint32_t(plane) * run, run);
+}
+
+bool GlVoxelTileRaster::planes_outgrew_capacity() {
+  const GlKeyCapacity::FrameKeys frame = capacity_.read_frame(plane_passes_);
+  plane_passes_ = 0;
+  redrawn_ = int(frame.overflowed.size());
+  return !frame.overflowed.empty();
 }
 
 }  // namespace lfd::gpu

@@ -23,6 +23,7 @@
 
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/gl_program.hpp"
+#include "gpu/compute/gl_key_capacity.hpp"
 #include "gpu/compute/gl_tile_keys.hpp"
 #include "gpu/voxels/gl_voxel_raster.hpp"
 #include "gpu/voxels/gl_voxel_scene.hpp"
@@ -37,28 +38,45 @@ class GlVoxelTileRaster {
 
   // Every camera of `cameras` (one image size W x H), SH seen from each camera's position, into
   // its cell of `target` (GL_RGBA32F): view i at ((i % cols) W, (i / cols) H), rows bottom-up.
-  // One pass (one sort, one indirect dispatch) when the pass's buffers fit the largest storage
+  // One pass (one sort, one indirect dispatch) when the items' counts fit the largest storage
   // block (pass_limit), else as few passes as fit. Octants no pixel's ray takes are skipped.
-  void draw_views(const GlVoxelScene& scene, std::span<const render::Camera> cameras, const Texture& target, int cols);
+  // Keys go into buffers of the capacity kept from frame to frame; a pass whose keys outgrew it
+  // marches nothing, and after every pass is issued the totals are read once and those passes
+  // drawn again with it grown (GlKeyCapacity; docs/gpu.md "Memory and passes"), in two halves
+  // when their keys outgrow the pass limit itself.
+  void render_views(const GlVoxelScene& scene, std::span<const render::Camera> cameras, const Texture& target,
+                    int cols);
   // The voxels of `ranges` (indices into `order`) of `scene`, seen by `camera`, SH seen from
   // `sh_origin`, into `target` (GL_RGBA32F) at `origin` (the view's bottom-left texel; the view is
-  // camera.width x camera.height texels, rows bottom-up). V2LF's CPU-binned planes.
-  void draw(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
-            const Buffer& order, const VoxelOrderRanges& ranges, const Texture& target, glm::ivec2 origin);
+  // camera.width x camera.height texels, rows bottom-up). V2LF's CPU-binned planes: a pass each.
+  void render_view(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
+                   const Buffer& order, const VoxelOrderRanges& ranges, const Texture& target, glm::ivec2 origin);
   // V2LF's planes binned on the GPU (gpu/voxels/gl_voxel_binning.hpp): the keys of every plane at once
   // from its grouped orders (`orders`, the octants in view's slots of scene.size() entries each)
   // and its chunk-of buffer (planes >= plane_capacity: not binned), one sort a frame (begin_planes);
-  // then per plane its run of slots into `target` (draw_plane; the plane's image is `camera`'s).
+  // then per plane its run of slots into `target` (render_plane; the plane's image is `camera`'s).
   void begin_planes(const GlVoxelScene& scene, const render::Camera& camera, const glm::vec3& sh_origin,
                     const Buffer& orders, const Buffer& chunk_of, int plane_capacity);
-  void draw_plane(int plane, const Texture& target);
+  void render_plane(int plane, const Texture& target);
+  // After a frame's planes (render_view a plane, or begin_planes and render_plane): the one read
+  // of their key totals. True when a pass's keys outgrew the capacity (it marched nothing; the
+  // capacity is grown now): the caller draws the frame's planes again.
+  bool planes_outgrew_capacity();
 
   // The largest buffer one pass may bind, in bytes (the items' counts, the keys, the values):
-  // 0 (the default) is GL_MAX_SHADER_STORAGE_BLOCK_SIZE. Smaller values split draw_views into
-  // more passes (the tests' way to check that passes do not change the image).
+  // 0 (the default) is GL_MAX_SHADER_STORAGE_BLOCK_SIZE. Smaller values split render_views into
+  // more passes (the tests' way to check that passes do not change the image). The same unit and
+  // default as GlSplatTileRaster::set_pass_limit.
   void set_pass_limit(size_t bytes) { pass_limit_ = bytes; }
   size_t pass_limit() const;
-  // Passes (sorts and marches) the last draw_views took, and the items and keys they held.
+  // Keys the key buffers hold: kept from frame to frame, first a key an item, grown to a quarter
+  // over a frame's largest total when a pass's keys did not fit. Setting it (tests) starts from
+  // another capacity.
+  void set_key_capacity(uint32_t keys) { capacity_.set_keys(keys); }
+  uint32_t key_capacity() const { return capacity_.keys(); }
+  // Passes of the last render_views or planes drawn again because their keys outgrew the capacity.
+  int redrawn_passes() const { return redrawn_; }
+  // Passes (sorts and marches) the last render_views took, and the items and keys they held.
   int passes() const { return passes_; }
   uint64_t items() const { return items_; }
   uint64_t keys() const { return keys_total_; }
@@ -69,24 +87,30 @@ class GlVoxelTileRaster {
   struct Run {
     uint32_t image = 0, octant = 0, order_offset = 0, count = 0;
   };
-  enum class Keys { kNone, kReady, kOverLimit };
+  // Consecutive views [first, first + count) of render_views, and their items.
+  struct ViewPass {
+    size_t first = 0, count = 0;
+    uint64_t items = 0;
+  };
   // Uploads the runs, counts, scans, writes and sorts the keys of their voxels (per plane when
-  // chunk_of is given) for images of image_size whose cameras are in views_. kOverLimit (nothing
-  // written) when the keys would pass key_limit (0: no limit).
-  Keys make_keys(const GlVoxelScene& scene, glm::ivec2 image_size, std::span<const Run> runs, const Buffer& order,
-                 const Buffer* chunk_of, int plane_capacity, size_t key_limit);
-  // Views [first, first + count) of the cameras in views_: one pass, or halves when the keys pass
-  // the limit.
-  void draw_view_pass(const GlVoxelScene& scene, std::span<const render::Camera> cameras, size_t first,
-                      size_t count, const Texture& target, int cols);
+  // chunk_of is given) for images of image_size whose cameras are in views_, into buffers of the
+  // kept capacity, and records the key total as pass `pass` (GlKeyCapacity); nothing is read
+  // back. False when no item has a key to look for (nothing to march).
+  bool make_keys(const GlVoxelScene& scene, glm::ivec2 image_size, std::span<const Run> runs, const Buffer& order,
+                 const Buffer* chunk_of, int plane_capacity, uint32_t pass);
+  // One pass of render_views, its keys' total recorded as pass `pass`.
+  void render_view_pass(const GlVoxelScene& scene, std::span<const render::Camera> cameras, const ViewPass& views,
+                        uint32_t pass, const Texture& target, int cols);
   // The march over the work list (slot_run 0) or over slots [slot_base, slot_base + slot_run),
-  // image i into the cell at origin + (i % cols, i / cols) * image size.
+  // image i into the cell at origin + (i % cols, i / cols) * image size; nothing when the keys
+  // outgrew the capacity (the march reads the total on the GPU).
   void march(const Texture& target, glm::ivec2 origin, int cols, int images, uint32_t slot_base, uint32_t slot_run);
   // Uploads the cameras' views (SH from sh_origin, or each camera's position when null).
   void upload_views(std::span<const render::Camera> cameras, const glm::vec3* sh_origin);
 
   Program count_, emit_, count_planes_, emit_planes_, march_;
   GlTileKeys keys_;
+  GlKeyCapacity capacity_;
   Buffer views_, runs_;
   // The images of the keys made last (march's uniforms) and whether begin_planes made them.
   const GlVoxelScene* scene_ = nullptr;
@@ -94,10 +118,10 @@ class GlVoxelTileRaster {
   glm::ivec2 tile_grid_{0};
   int run_count_ = 0;
   bool planes_ready_ = false;
+  uint32_t plane_passes_ = 0;  // passes of the frame's planes so far (planes_outgrew_capacity reads them)
   size_t pass_limit_ = 0;
-  int passes_ = 0;
+  int passes_ = 0, redrawn_ = 0;
   uint64_t items_ = 0, keys_total_ = 0;
-  uint32_t last_items_ = 0, last_keys_ = 0;  // make_keys' last
 };
 
 // The runs' camera record (VoxelTileView, gpu/voxels/shaders/voxel_tile_io.h) of `camera`, SH seen from

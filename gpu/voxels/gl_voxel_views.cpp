@@ -78,7 +78,7 @@ void GlVoxelViews::downsample(const Texture& source, glm::ivec2 source_size, int
   glProgramUniform2i(p, program.uniform("tile_size"), tiles.tile_size.x, tiles.tile_size.y);
   glProgramUniform1i(p, program.uniform("add_background"), add_background ? 1 : 0);
   if (add_background) glProgramUniform3fv(p, program.uniform("background"), 1, glm::value_ptr(*add_background));
-  glProgramUniform1f(p, program.uniform("alpha_out"), tiles.keep_transmittance ? -1.0f : 1.0f);
+  glProgramUniform1f(p, program.uniform("alpha_out"), tiles.alpha == TargetAlpha::kTransmittance ? -1.0f : 1.0f);
   program.bind("source", source);
   program.bind("target", *tiles.target);
   program.use();
@@ -141,7 +141,7 @@ void GlVoxelViews::render_views_compute(std::span<const render::Camera> big, glm
   for (size_t first = 0; first < big.size(); first += per_group) {
     const size_t count = std::min(per_group, big.size() - first);
     glClearTexImage(atlas.id(), 0, GL_RGBA, GL_FLOAT, empty);
-    tile_raster_->draw_views(scene_, big.subspan(first, count), atlas, cols);
+    tile_raster_->render_views(scene_, big.subspan(first, count), atlas, cols);
     passes_ += tile_raster_->passes();
     ++atlas_groups_;
     downsample(atlas, cell, cols, view_size, int(first), int(count), tiles, &background);
@@ -157,13 +157,14 @@ void GlVoxelViews::render_quilt(const render::QuiltGeometry& geometry, const ren
   for (int view = 0; view < geometry.views; ++view) cameras.push_back(geometry.view_camera(view));
   render_views(cameras, settings,
                {.target = &quilt, .cols = layout.cols, .tile_size = {layout.tile_width(), layout.tile_height()},
-                .keep_transmittance = false});
+                .alpha = TargetAlpha::kOpaque});
 }
 
 render::RasterImage GlVoxelViews::render_view(const render::Camera& camera, const voxel::VoxelRenderSettings& settings) {
   const Texture image(GL_RGBA32F, camera.width, camera.height);
   render_views({&camera, 1}, settings,
-               {.target = &image, .cols = 1, .tile_size = {camera.width, camera.height}, .keep_transmittance = true});
+               {.target = &image, .cols = 1, .tile_size = {camera.width, camera.height},
+                .alpha = TargetAlpha::kTransmittance});
   const ImageF rgba = read_image_top_down(image, 4);
   render::RasterImage out;
   out.width = rgba.width;

@@ -52,12 +52,12 @@ class GlVoxelViews {
 
  private:
   // Where downsampled views go: view v into tile (v % cols, v / cols) of tile_size (bottom-up),
-  // alpha T or 1.
+  // alpha T (TargetAlpha::kTransmittance) or 1 (kOpaque), as the Gaussians' TileViewsTarget.
   struct ViewTiles {
     const Texture* target = nullptr;
     int cols = 1;
     glm::ivec2 tile_size{0};
-    bool keep_transmittance = false;
+    TargetAlpha alpha = TargetAlpha::kOpaque;
   };
   // Every camera (views 0..) at ss times its size, composited over the background and
   // downsampled into its tile: per view through the raster pipeline, or all at once by the

@@ -566,7 +566,7 @@ TEST(GlG2lfPlanes, ComputePlanesEqualTheCpuPlanes) {
   }
 }
 
-// The memory check of --raster compute counts its key buffers (GlTileSplats::plane_path_bytes,
+// The memory check of --raster compute counts its key buffers (GlSplatTileRaster::plane_path_bytes,
 // keys at kComputePlaneKeysPerGaussian a Gaussian) instead of the raster's accumulation layers: a
 // budget that holds the planes and the binning's buffers (what it counted before) is refused, and the frame's keys
 // stay within the estimate on the test scene.
@@ -580,7 +580,7 @@ TEST(GlG2lfPlanes, TheComputeMemoryCheckCountsTheKeyBuffers) {
   const size_t binning = n * (sizeof(SplatRecord) + 5 * sizeof(uint32_t));
   const size_t tiles = size_t((s.geometry.base.width + 15) / 16) * size_t((s.geometry.base.height + 15) / 16);
   EXPECT_EQ(g2lf_other_bytes(options, s.geometry, n),
-            binning + GlTileSplats::plane_path_bytes(n, 32 * tiles, n * kComputePlaneKeysPerGaussian));
+            binning + GlSplatTileRaster::plane_path_bytes(n, 32 * tiles, n * kComputePlaneKeysPerGaussian));
   EXPECT_GT(g2lf_other_bytes(options, s.geometry, n), binning + n * kComputePlaneKeysPerGaussian * 16);
   // What the check counted before the key buffers: the planes, the binning, the raster's batch lists.
   options.memory_budget_bytes = g2lf_plane_array_bytes(options, s.geometry) + binning + n * 2 * sizeof(uint32_t);

@@ -1,6 +1,6 @@
 #pragma once
 // The GL per-view tests' comparison with the CPU rasterizer, shared by the hardware path's tests
-// (gl_per_view_test.cpp) and the compute path's (gl_tile_splats_test.cpp): the bar (docs/gpu.md "Per-view renderer":
+// (gl_per_view_test.cpp) and the compute path's (gl_splat_tile_raster_test.cpp): the bar (docs/gpu.md "Per-view renderer":
 // >= 40 dB colour and transmittance), the generated scene and camera they use, and one view
 // compared with the PSNR printed (the figures docs/gpu.md quotes), and the quilt both compare
 // with the CPU's.

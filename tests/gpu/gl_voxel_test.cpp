@@ -174,7 +174,7 @@ TEST(GlVoxel, ComputeQuiltViewsGoInOnePassAndPassesDoNotChangeIt) {
   EXPECT_EQ(std::memcmp(one.pixels.data(), split.pixels.data(), one.pixels.size() * sizeof(float)), 0);
 
   // Within one atlas: a limit every view's items fit but not their keys, so the pass is halved
-  // after its scan (GlVoxelTileRaster::draw_views), into the same atlas texels. The supersampled
+  // after the frame's read of its key total (GlVoxelTileRaster::render_views), into the same atlas texels. The supersampled
   // views, as GlVoxelViews draws them (more keys than items).
   std::vector<render::Camera> cameras;
   for (int view = 0; view < f.geometry.views; ++view) {
@@ -189,7 +189,7 @@ TEST(GlVoxel, ComputeQuiltViewsGoInOnePassAndPassesDoNotChangeIt) {
     const Texture target(GL_RGBA32F, cameras[0].width * f.geometry.views, cameras[0].height);
     const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
     glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, empty);
-    raster.draw_views(gl_scene, cameras, target, f.geometry.views);
+    raster.render_views(gl_scene, cameras, target, f.geometry.views);
     tile_passes = raster.passes();
     items = raster.items();
     keys = raster.keys();
@@ -206,6 +206,45 @@ TEST(GlVoxel, ComputeQuiltViewsGoInOnePassAndPassesDoNotChangeIt) {
   EXPECT_GE(halved_passes, 2);
   ASSERT_EQ(whole.pixels.size(), halved.pixels.size());
   EXPECT_EQ(std::memcmp(whole.pixels.data(), halved.pixels.data(), whole.pixels.size() * sizeof(float)), 0);
+}
+
+// The Gaussians' recovery, for voxels (docs/gpu.md "Memory and passes"): keys go into buffers of a
+// capacity kept from frame to frame, nothing is read back inside a frame, and a pass whose keys
+// outgrew the capacity marches nothing and is drawn again after the frame's one read. From a
+// capacity of 64 keys the fixture's one pass of every view overflows and is redrawn, and the
+// atlas is the one drawn with room to spare, bit for bit; the next frame redraws nothing.
+TEST(GlVoxel, ComputePassesWhoseKeysOutgrowTheCapacityAreDrawnAgain) {
+  context().make_current();
+  const Fixture& f = fixture();
+  const GlVoxelScene gl_scene(f.scene, query_gl_info("test"));
+  std::vector<render::Camera> cameras;
+  for (int view = 0; view < f.geometry.views; ++view) cameras.push_back(f.geometry.view_camera(view));
+  const auto draw = [&](GlVoxelTileRaster& raster) {
+    const Texture target(GL_RGBA32F, cameras[0].width * f.geometry.views, cameras[0].height);
+    const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    glClearTexImage(target.id(), 0, GL_RGBA, GL_FLOAT, empty);
+    raster.render_views(gl_scene, cameras, target, f.geometry.views);
+    return read_image_top_down(target, 4);
+  };
+  GlVoxelTileRaster roomy;
+  roomy.set_key_capacity(10'000'000);
+  const ImageF truth = draw(roomy);
+  EXPECT_EQ(roomy.redrawn_passes(), 0);
+  ASSERT_GT(roomy.keys(), 64u);
+  GlVoxelTileRaster tight;
+  tight.set_key_capacity(64);
+  const ImageF redrawn = draw(tight);
+  std::printf("voxel tile raster: %llu keys in %d passes, %d redrawn; capacity grown from 64 to %u\n",
+              (unsigned long long)tight.keys(), tight.passes(), tight.redrawn_passes(), tight.key_capacity());
+  EXPECT_EQ(tight.passes(), 1);
+  EXPECT_EQ(tight.redrawn_passes(), 1);
+  EXPECT_EQ(tight.keys(), roomy.keys());
+  EXPECT_GE(tight.key_capacity(), tight.keys());
+  ASSERT_EQ(redrawn.pixels.size(), truth.pixels.size());
+  EXPECT_EQ(std::memcmp(redrawn.pixels.data(), truth.pixels.data(), truth.pixels.size() * sizeof(float)), 0);
+  const ImageF again = draw(tight);
+  EXPECT_EQ(tight.redrawn_passes(), 0);
+  EXPECT_EQ(std::memcmp(again.pixels.data(), truth.pixels.data(), truth.pixels.size() * sizeof(float)), 0);
 }
 
 TEST(GlVoxel, V2lfMatchesTheCpuWithEveryOption) {

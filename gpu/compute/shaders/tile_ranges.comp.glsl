@@ -6,6 +6,7 @@
 #include "gpu/compute/shaders/tile_io.h"
 
 layout(local_size_x = kTileRangesGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 layout(std430, binding = kTileKeysBinding) readonly buffer Keys { uint keys[]; };
 layout(std430, binding = kTileRangesBinding) writeonly buffer Ranges { uvec2 ranges[]; };
 layout(std430, binding = kTileWorkBinding) writeonly buffer Work { uint work[]; };
@@ -14,7 +15,7 @@ uniform uint key_count;
 uniform bool count_from_state;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint i = flat_invocation_index();
   uint count = count_from_state ? min(state.keys, key_count) : key_count;
   if (i >= count) return;
   uint slot = keys[i];

@@ -3,12 +3,13 @@
 #include "gpu/compute/shaders/tile_scan.glsl"
 
 layout(local_size_x = kTileScanGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 layout(std430, binding = kTileCountsBinding) readonly buffer Counts { uint counts[]; };
 layout(std430, binding = kTileBlockSumsBinding) writeonly buffer BlockSums { uint block_sums[]; };
 uniform uint item_count;
 
 void main() {
-  uint block = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint block = flat_group_index();
   uint first = block * kTileScanBlockItems + gl_LocalInvocationIndex * kTileScanPerInvocation;
   uint sum = 0u;
   for (uint k = 0u; k < kTileScanPerInvocation; ++k)

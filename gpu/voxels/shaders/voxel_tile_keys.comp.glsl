@@ -12,11 +12,13 @@
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/compute/shaders/tile_io.h"
 #include "gpu/voxels/shaders/voxel_tile_io.h"
+#define TILE_KEY_CAPACITY 1  // EMIT 1 writes no key past the capacity (GlTileKeys::scan_to_capacity)
 #include "gpu/compute/shaders/tile_key_writer.glsl"
 #include "gpu/voxels/shaders/voxel_footprint.glsl"
 #include "gpu/voxels/shaders/voxel_tile_view.glsl"
 
 layout(local_size_x = kVoxelTileItemsGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kVoxelBoxesBinding) readonly buffer Boxes { vec4 boxes[]; };
 layout(std430, binding = kVoxelOrderBinding) readonly buffer Order { uint order[]; };
@@ -28,7 +30,7 @@ uniform uint plane_capacity;
 uniform uint item_count;
 
 void main() {
-  uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint j = flat_invocation_index();
   if (j >= item_count) return;
   // The run holding item j: the first whose end lies past it.
   int lo = 0, hi = run_count - 1;

@@ -12,7 +12,9 @@
 // C + T_in C, T_in T. Pixels of another octant belong to another slot's group, so no two groups
 // write the same texel. slot_run 0: the groups take the work list (the non-empty slots);
 // slot_run > 0: group g takes slot slot_base + g, g < slot_run (one V2LF plane's run of slots;
-// empty ones return at once).
+// empty ones return at once). A pass whose keys outgrew the capacity (state.keys over key_capacity:
+// keys were left out) marches nothing; it is drawn again after the frame (GlKeyCapacity), over
+// the target as it was.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/splats/shaders/sh_color.glsl"
 #include "gpu/compute/shaders/tile_io.h"
@@ -22,6 +24,7 @@
 #include "gpu/voxels/shaders/voxel_tile_view.glsl"
 
 layout(local_size_x = kTileSide, local_size_y = kTileSide) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kVoxelBoxesBinding) readonly buffer Boxes { vec4 boxes[]; };
 layout(std430, binding = kVoxelDensitiesBinding) readonly buffer Densities { vec4 densities[]; };
@@ -36,6 +39,7 @@ uniform int target_cols;  // images a row of the target holds
 uniform int samples_per_voxel;
 uniform uint slot_base;
 uniform uint slot_run;
+uniform uint key_capacity;  // the keys the buffers held (GlTileKeys::scan_to_capacity)
 
 shared vec4 batch_box[kTilePixels];
 shared vec4 batch_c0123[kTilePixels];
@@ -43,7 +47,8 @@ shared vec4 batch_c4567[kTilePixels];
 shared vec3 batch_color[kTilePixels];
 
 void main() {
-  uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint group = flat_group_index();
+  if (state.keys > key_capacity) return;  // the same for every group
   uint slot;
   if (slot_run > 0u) {
     if (group >= slot_run) return;

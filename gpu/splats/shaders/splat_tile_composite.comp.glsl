@@ -1,30 +1,31 @@
-// The compute tile rasterizer's compositing (gpu/splats/gl_tile_splats.hpp): the reference's renderCUDA
+// The compute tile rasterizer's compositing (gpu/splats/gl_splat_tile_raster.hpp): the reference's renderCUDA
 // (forward.cu; the CPU's render/blend.cpp), one work group a (image, tile) slot, one invocation a
 // pixel. The slot's splats, front to back, are loaded kTilePixels at a time into shared memory
 // (one each), then every pixel blends the batch with the reference's alpha rules
-// (tile_splat_blend.glsl). A batch starts only while a pixel of the tile still blends (the
+// (splat_tile_blend.glsl). A batch starts only while a pixel of the tile still blends (the
 // reference's __syncthreads_count early stop).
-//   SPLIT_PART 0: whole slots into the target (tile_splat_target.glsl). TARGET_ARRAY 0 (views):
+//   SPLIT_PART 0: whole slots into the target (splat_tile_target.glsl). TARGET_ARRAY 0 (views):
 //                 every slot is dispatched (empty tiles get the background); TARGET_ARRAY 1
 //                 (planes): only the non-empty slots run (the work list), the planes are cleared
-//                 to (0, 0, 0, 1). A split slot's range was emptied (tile_splat_split): it gets
-//                 the background here and its pixels from tile_splat_merge after.
+//                 to (0, 0, 0, 1). A split slot's range was emptied (splat_tile_split): it gets
+//                 the background here and its pixels from splat_tile_merge after.
 //   SPLIT_PART 1: one part of a split slot (docs/gpu.md "Balancing"): split_keys of its keys from
 //                 T = 1, into the part's partial (C, T), T negated where the pixel stopped.
 #include "gpu/splats/shaders/splat_record.glsl"
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 #include "gpu/splats/shaders/frame_io.h"
-#include "gpu/splats/shaders/tile_splat_blend.glsl"
-#include "gpu/splats/shaders/tile_splat_target.glsl"
+#include "gpu/splats/shaders/splat_tile_blend.glsl"
+#include "gpu/splats/shaders/splat_tile_target.glsl"
 
 layout(local_size_x = kTileSide, local_size_y = kTileSide) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileValuesBinding) readonly buffer Values { uint values[]; };
 #if SPLIT_PART
 #define SPLIT_LIST_ACCESS readonly
-#include "gpu/splats/shaders/tile_splat_split_list.glsl"
+#include "gpu/splats/shaders/splat_tile_split_list.glsl"
 layout(std430, binding = kTileSplatPartialsBinding) writeonly buffer Partials { vec4 partials[]; };
 uniform uint split_keys;
 #else
@@ -43,7 +44,7 @@ shared vec3 batch_color[kTilePixels];
 shared uint batch_alive;
 
 void main() {
-  uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint group = flat_group_index();
 #if SPLIT_PART
   if (group >= min(split.parts, kTileSplatMaxParts)) return;
   uvec2 part = split_parts[group];

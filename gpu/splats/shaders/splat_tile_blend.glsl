@@ -1,6 +1,6 @@
 // One splat blended into one pixel by the reference's rules (renderCUDA in forward.cu; the CPU's
-// render/blend.cpp), for the compute tile rasterizer's compositing (tile_splat_composite,
-// tile_splat_merge): skip power > 0 and alpha < 1/255, alpha clamped at 0.99, and stop before T
+// render/blend.cpp), for the compute tile rasterizer's compositing (splat_tile_composite,
+// splat_tile_merge): skip power > 0 and alpha < 1/255, alpha clamped at 0.99, and stop before T
 // would fall under 1e-4. Returns false when the pixel stops there (the splat is not blended).
 bool blend_splat(vec2 mean, vec4 conic_opacity, vec3 color, vec2 pixf, inout vec3 C, inout float T) {
   vec2 d = mean - pixf;

@@ -1,4 +1,4 @@
-#include "gpu/splats/gl_tile_splats.hpp"
+#include "gpu/splats/gl_splat_tile_raster.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,16 +7,17 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/splats/gl_splat_preprocess.hpp"
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/compute/shaders/radix_sort_io.h"
-#include "gpu/splats/shaders/tile_splat_composite.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_huge.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_io.h"
-#include "gpu/splats/shaders/tile_splat_keys.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_merge.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_split.comp.glsl.hpp"
-#include "gpu/splats/shaders/tile_splat_preprocess.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_composite.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_huge.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_io.h"
+#include "gpu/splats/shaders/splat_tile_keys.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_merge.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_split.comp.glsl.hpp"
+#include "gpu/splats/shaders/splat_tile_preprocess.comp.glsl.hpp"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
@@ -34,9 +35,8 @@ constexpr size_t kSplitListBytes = kSplitPartsOffset + size_t(kTileSplatMaxParts
 constexpr size_t kPartialBytes = size_t(kTilePixels) * 16;  // a part's vec4 per pixel
 static_assert(kTileSide == uint32_t(render::kTileSize), "the compute tiles are the reference's");
 
-Program keys_program(const char* label, const char* source, bool emit, bool planes) {
-  return Program(label, {{GL_COMPUTE_SHADER, source}},
-                 {std::string("EMIT ") + (emit ? "1" : "0"), std::string("PLANES ") + (planes ? "1" : "0")});
+Program keys_program(const char* label, const char* source, KeyStep step, TileImages images) {
+  return Program(label, {{GL_COMPUTE_SHADER, source}}, key_pass_defines(step, images));
 }
 
 const char* image_format_name(GLenum format) {
@@ -66,65 +66,61 @@ TileViewCamera view_camera(const render::Camera& camera, const render::RasterSet
   return c;
 }
 
-// One work group a thing, spread over y beyond 65535 groups (the shaders index x + y * width).
-void dispatch_groups(size_t groups) {
-  if (groups == 0) return;
-  const GLuint x = GLuint(std::min<size_t>(groups, 65535));
-  glDispatchCompute(x, GLuint((groups + x - 1) / x), 1);
-}
-
 }  // namespace
 
-GlTileSplats::KeyPrograms::KeyPrograms(bool planes)
-    : count(keys_program("compute splats: count keys", tile_splat_keys_comp_glsl, false, planes)),
-      emit(keys_program("compute splats: write keys", tile_splat_keys_comp_glsl, true, planes)),
-      huge_count(keys_program("compute splats: count huge keys", tile_splat_huge_comp_glsl, false, planes)),
-      huge_emit(keys_program("compute splats: write huge keys", tile_splat_huge_comp_glsl, true, planes)) {}
+GlSplatTileRaster::KeyPrograms::KeyPrograms(TileImages images)
+    : count(keys_program("compute splats: count keys", splat_tile_keys_comp_glsl, KeyStep::kCount, images)),
+      emit(keys_program("compute splats: write keys", splat_tile_keys_comp_glsl, KeyStep::kEmit, images)),
+      huge_count(keys_program("compute splats: count huge keys", splat_tile_huge_comp_glsl, KeyStep::kCount, images)),
+      huge_emit(keys_program("compute splats: write huge keys", splat_tile_huge_comp_glsl, KeyStep::kEmit, images)) {}
 
-GlTileSplats::GlTileSplats()
-    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, tile_splat_preprocess_comp_glsl}}),
-      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, tile_splat_split_comp_glsl}}),
-      view_keys_(false),
-      plane_keys_(true) {}
+GlSplatTileRaster::GlSplatTileRaster()
+    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, splat_tile_preprocess_comp_glsl}}),
+      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, splat_tile_split_comp_glsl}}),
+      view_keys_(TileImages::kViews),
+      plane_keys_(TileImages::kPlanes) {}
 
-// The defines of a program that includes tile_splat_target.glsl.
-std::vector<std::string> target_defines(GLenum format, bool planes) {
+// The defines of a program that includes splat_tile_target.glsl.
+std::vector<std::string> target_defines(GLenum format, TileImages images) {
+  const bool planes = images == TileImages::kPlanes;
   const bool quantize = planes && format == GL_RGBA8;
   return {std::string("TARGET_ARRAY ") + (planes ? "1" : "0"),
           std::string("TARGET_FORMAT ") + image_format_name(format),
           std::string("QUANTIZE_U8 ") + (quantize ? "1" : "0")};
 }
 
-const Program& GlTileSplats::composite_program(GLenum format, bool planes, bool part) {
-  if (part) format = GL_RGBA32F, planes = false;  // parts write partials, not the target
-  auto it = composite_.find({format, planes, part});
+const Program& GlSplatTileRaster::composite_program(GLenum format, TileImages images, SlotShare share) {
+  const bool part = share == SlotShare::kSplitParts;
+  if (part) format = GL_RGBA32F, images = TileImages::kViews;  // parts write partials, not the target
+  const bool planes = images == TileImages::kPlanes;
+  auto it = composite_.find({format, images, share});
   if (it == composite_.end()) {
-    std::vector<std::string> defines = target_defines(format, planes);
+    std::vector<std::string> defines = target_defines(format, images);
     defines.push_back(std::string("SPLIT_PART ") + (part ? "1" : "0"));
     const std::string label = part ? std::string("compute splats: composite split parts")
                                    : std::string("compute splats: composite into ") + (planes ? "planes " : "views ") +
                                          image_format_name(format);
     it = composite_
-             .emplace(std::tuple(format, planes, part),
-                      Program(label, {{GL_COMPUTE_SHADER, tile_splat_composite_comp_glsl}}, defines))
+             .emplace(std::tuple(format, images, share),
+                      Program(label, {{GL_COMPUTE_SHADER, splat_tile_composite_comp_glsl}}, defines))
              .first;
   }
   return it->second;
 }
 
-const Program& GlTileSplats::merge_program(GLenum format, bool planes) {
-  auto it = merge_.find({format, planes});
+const Program& GlSplatTileRaster::merge_program(GLenum format, TileImages images) {
+  auto it = merge_.find({format, images});
   if (it == merge_.end())
     it = merge_
-             .emplace(std::pair(format, planes),
-                      Program(std::string("compute splats: merge split tiles into ") + (planes ? "planes " : "views ") +
-                                  image_format_name(format),
-                              {{GL_COMPUTE_SHADER, tile_splat_merge_comp_glsl}}, target_defines(format, planes)))
+             .emplace(std::pair(format, images),
+                      Program(std::string("compute splats: merge split tiles into ") +
+                                  (images == TileImages::kPlanes ? "planes " : "views ") + image_format_name(format),
+                              {{GL_COMPUTE_SHADER, splat_tile_merge_comp_glsl}}, target_defines(format, images)))
              .first;
   return it->second;
 }
 
-void GlTileSplats::set_target_uniforms(const Program& program, const TargetUniforms& t) {
+void GlSplatTileRaster::set_target_uniforms(const Program& program, const TargetUniforms& t) {
   const GLuint p = program.id();
   glProgramUniform2i(p, program.uniform("image_size"), t.image_size.x, t.image_size.y);
   glProgramUniform2i(p, program.uniform("tile_grid"), t.tile_grid.x, t.tile_grid.y);
@@ -133,10 +129,10 @@ void GlTileSplats::set_target_uniforms(const Program& program, const TargetUnifo
   glProgramUniform1i(p, program.uniform("cols"), t.views->cols);
   glProgramUniform2i(p, program.uniform("cell_size"), t.views->cell_size.x, t.views->cell_size.y);
   glProgramUniform3fv(p, program.uniform("background"), 1, glm::value_ptr(t.views->background));
-  glProgramUniform1i(p, program.uniform("keep_transmittance"), t.views->keep_transmittance ? 1 : 0);
+  glProgramUniform1i(p, program.uniform("keep_transmittance"), t.views->alpha == TargetAlpha::kTransmittance ? 1 : 0);
 }
 
-bool GlTileSplats::split_slots(uint32_t keys, uint32_t slots) {
+bool GlSplatTileRaster::split_slots(uint32_t keys, uint32_t slots) {
   split_ran_ = split_keys_ > 0 && keys > split_keys_;
   if (!split_ran_) return false;
   // Parts handed out: sum over split slots of ceil(L / K) <= keys / K + (split slots <= keys / K).
@@ -161,19 +157,19 @@ bool GlTileSplats::split_slots(uint32_t keys, uint32_t slots) {
   return true;
 }
 
-void GlTileSplats::composite_split(GLenum format, bool planes, const TargetUniforms& target) {
+void GlSplatTileRaster::composite_split(GLenum format, TileImages images, const TargetUniforms& target) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the merge writes after the whole-slot pass
   tiles_.bind();
   split_list_.bind_storage(kTileSplatSplitBinding);
   partials_.bind_storage(kTileSplatPartialsBinding);
-  const Program& parts = composite_program(format, planes, true);
+  const Program& parts = composite_program(format, images, SlotShare::kSplitParts);
   set_target_uniforms(parts, {.image_size = target.image_size, .tile_grid = target.tile_grid});
   glProgramUniform1ui(parts.id(), parts.uniform("split_keys"), split_keys_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, split_list_.id());
   parts.use();
   glDispatchComputeIndirect(GLintptr(offsetof(TileSplitList, part_groups_x)));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  const Program& merge = merge_program(format, planes);
+  const Program& merge = merge_program(format, images);
   set_target_uniforms(merge, target);
   glProgramUniform1ui(merge.id(), merge.uniform("split_keys"), split_keys_);
   merge.use();
@@ -181,7 +177,7 @@ void GlTileSplats::composite_split(GLenum format, bool planes, const TargetUnifo
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
-std::pair<uint32_t, uint32_t> GlTileSplats::read_split_counts() const {
+std::pair<uint32_t, uint32_t> GlSplatTileRaster::read_split_counts() const {
   if (!split_ran_) return {0, 0};
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   TileSplitList list;
@@ -189,8 +185,9 @@ std::pair<uint32_t, uint32_t> GlTileSplats::read_split_counts() const {
   return {list.slots, list.slots == 0 ? 0 : std::min(list.parts, kTileSplatMaxParts)};
 }
 
-void GlTileSplats::run_keys(const KeyPrograms& programs, bool emit, const Items& items, uint32_t gaussians,
-                            glm::ivec2 tile_grid) {
+void GlSplatTileRaster::run_keys(const KeyPrograms& programs, KeyStep step, const Items& items, uint32_t gaussians,
+                                 glm::ivec2 tile_grid) {
+  const bool emit = step == KeyStep::kEmit;
   const Program& small = emit ? programs.emit : programs.count;
   const Program& huge = emit ? programs.huge_emit : programs.huge_count;
   if (emit)  // the counting passes need no slots
@@ -225,44 +222,41 @@ void GlTileSplats::run_keys(const KeyPrograms& programs, bool emit, const Items&
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void GlTileSplats::make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians,
+void GlSplatTileRaster::make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians,
                              glm::ivec2 tile_grid, uint32_t slots, uint32_t pass) {
-  if (key_capacity_ == 0) key_capacity_ = std::max<uint32_t>(items.capacity, 1);
   huge_.ensure((std::max<size_t>(items.capacity, 1) + kTileHugeListWords) * 4);
   const TileHugeList no_huge{};
   huge_.upload(&no_huge, sizeof(no_huge));
-  run_keys(programs, false, items, gaussians, tile_grid);
-  tiles_.scan_to_capacity(items.capacity, key_capacity_);
-  run_keys(programs, true, items, gaussians, tile_grid);
+  run_keys(programs, KeyStep::kCount, items, gaussians, tile_grid);
+  tiles_.scan_to_capacity(items.capacity, capacity_.for_pass(items.capacity));
+  run_keys(programs, KeyStep::kEmit, items, gaussians, tile_grid);
   tiles_.sort_and_find_ranges_to_capacity(slots);
-  tiles_.copy_key_total(key_totals_, pass);  // key_totals_ holds the frame's passes
+  capacity_.record(tiles_, pass);
   // The tile sort rewrote the sorter's kept count: the key passes above read the items' count from
   // it (the depth sort's) before, nothing after.
 }
 
-std::vector<uint32_t> GlTileSplats::overflowed_passes(uint32_t passes) {
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  const std::vector<uint32_t> totals = key_totals_.download_as<uint32_t>(passes);
-  std::vector<uint32_t> over;
-  uint64_t keys = 0, most = 0;
-  for (uint32_t p = 0; p < passes; ++p) {
-    keys += totals[p];
-    most = std::max<uint64_t>(most, totals[p]);
-    if (totals[p] > key_capacity_) over.push_back(p);
-  }
-  counts_.keys = uint32_t(std::min<uint64_t>(keys, UINT32_MAX));
-  if (!over.empty()) key_capacity_ = uint32_t(std::min<uint64_t>(most + most / 4 + 1024, UINT32_MAX));
-  return over;
+std::vector<uint32_t> GlSplatTileRaster::overflowed_passes(uint32_t passes) {
+  GlKeyCapacity::FrameKeys frame = capacity_.read_frame(passes);
+  counts_.keys = uint32_t(std::min<uint64_t>(frame.sum, UINT32_MAX));
+  return std::move(frame.overflowed);
 }
 
-uint32_t GlTileSplats::read_huge_items() const {
+size_t GlSplatTileRaster::pass_limit() const {
+  if (pass_limit_ > 0) return pass_limit_;
+  GLint64 block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+  return size_t(block);
+}
+
+uint32_t GlSplatTileRaster::read_huge_items() const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   TileHugeList list;
   huge_.download(&list, sizeof(list));
   return list.count;
 }
 
-void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Camera> cameras,
+void GlSplatTileRaster::render_views(const GlScene& scene, std::span<const render::Camera> cameras,
                                 const render::RasterSettings& settings, const TileViewsTarget& target,
                                 const std::function<void(int)>& stamp) {
   if (!target.texture) throw std::invalid_argument("compute tile rasterizer: no target");
@@ -272,20 +266,13 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
   for (const render::Camera& c : cameras)
     if (c.width != W || c.height != H) throw std::invalid_argument("compute tile rasterizer: views of different sizes");
   const size_t N = std::max<size_t>(scene.size(), 1);
-  size_t max_entries = max_entries_per_pass_;
-  if (max_entries == 0) {
-    GLint64 block = 0;
-    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
-    max_entries = size_t(block) / sizeof(SplatRecord);
-  }
-  max_entries = std::min<size_t>(max_entries, (size_t(1) << 32) - 1);
+  const size_t max_entries = std::min<size_t>(pass_limit() / sizeof(SplatRecord), (size_t(1) << 32) - 1);
   if (N > max_entries)
     throw_input_error("--raster compute: {} Gaussians need {:.0f} MiB of records a view, over the GPU's largest storage "
                       "buffer; use --raster hardware",
                       scene.size(), double(N * sizeof(SplatRecord)) / 1048576.0);
   const size_t views_per_pass = std::max<size_t>(1, max_entries / N);
   TileSplatCounts total{.entries = 0, .keys = 0, .slots = 0};
-  key_totals_.ensure((cameras.size() + views_per_pass - 1) / views_per_pass * 4);
   const auto pass = [&](uint32_t p, const std::function<void(int)>& pass_stamp) {
     const size_t first = size_t(p) * views_per_pass;
     render_pass(scene, cameras.subspan(first, std::min(views_per_pass, cameras.size() - first)), uint32_t(first), p,
@@ -310,7 +297,7 @@ void GlTileSplats::render_views(const GlScene& scene, std::span<const render::Ca
   if (stamp) stamp(3);
 }
 
-void GlTileSplats::render_pass(const GlScene& scene, std::span<const render::Camera> cameras, uint32_t first_view,
+void GlSplatTileRaster::render_pass(const GlScene& scene, std::span<const render::Camera> cameras, uint32_t first_view,
                                uint32_t pass, const render::RasterSettings& settings, const TileViewsTarget& target,
                                const std::function<void(int)>& stamp) {
   const int W = cameras[0].width, H = cameras[0].height;
@@ -347,9 +334,7 @@ void GlTileSplats::render_pass(const GlScene& scene, std::span<const render::Cam
     entries_.bind_storage(kTileSplatEntriesBinding);
     views_.bind_storage(kTileSplatViewsBinding);
     preprocess_.use();
-    const size_t groups = (size_t(N) + kSplatPreprocessGroupSize - 1) / kSplatPreprocessGroupSize;
-    const GLuint gx = GLuint(std::min<size_t>(groups, 65535));
-    glDispatchCompute(gx, GLuint((groups + gx - 1) / gx), V);
+    dispatch_work_groups((size_t(N) + kSplatPreprocessGroupSize - 1) / kSplatPreprocessGroupSize, V);  // z: the view
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   if (stamp) stamp(1);
@@ -364,9 +349,9 @@ void GlTileSplats::render_pass(const GlScene& scene, std::span<const render::Cam
   if (stamp) stamp(2);
 
   // Every (view, tile): the empty ones write the background; the split ones get theirs after.
-  const bool split = split_slots(key_capacity_, uint32_t(slots));
+  const bool split = split_slots(capacity_.keys(), uint32_t(slots));
   const GLenum format = target.texture->internal_format();
-  const Program& composite = composite_program(format, false);
+  const Program& composite = composite_program(format, TileImages::kViews);
   const TargetUniforms where{.image_size = {W, H}, .tile_grid = tile_grid, .views = &target, .first_view = first_view};
   set_target_uniforms(composite, where);
   glProgramUniform1ui(composite.id(), composite.uniform("slot_count"), uint32_t(slots));
@@ -374,17 +359,16 @@ void GlTileSplats::render_pass(const GlScene& scene, std::span<const render::Cam
   records_.bind_storage(kSplatRecordsBinding);
   glBindImageTexture(kTileSplatTargetImage, target.texture->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
   composite.use();
-  dispatch_groups(slots);
-  if (split) composite_split(format, false, where);
+  dispatch_work_groups(slots);  // one group a slot
+  if (split) composite_split(format, TileImages::kViews, where);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT);
   check_gl("the compute tile rasterizer");
 }
 
-void GlTileSplats::render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
+void GlSplatTileRaster::render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
                                  const Buffer& draw, size_t gaussians, GlPlanes& planes,
                                  const std::function<void(int)>& stamp) {
-  key_totals_.ensure(4);
   draw_planes(records, sorted_ids, layers, draw, gaussians, planes, stamp);
   // The one read (after the planes are composited): the key total; keys that did not fit are
   // drawn again with the capacity grown past them.
@@ -395,7 +379,7 @@ void GlTileSplats::render_planes(const Buffer& records, const Buffer& sorted_ids
   overflowed_passes(1);
 }
 
-void GlTileSplats::draw_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
+void GlSplatTileRaster::draw_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers,
                                const Buffer& draw, size_t gaussians, GlPlanes& planes,
                                const std::function<void(int)>& stamp) {
   const glm::ivec2 tile_grid{(planes.width + render::kTileSize - 1) / render::kTileSize,
@@ -409,11 +393,11 @@ void GlTileSplats::draw_planes(const Buffer& records, const Buffer& sorted_ids, 
   make_keys(plane_keys_, items, uint32_t(gaussians), tile_grid, uint32_t(slots), 0);
   if (stamp) stamp(1);
 
-  const bool split = split_slots(key_capacity_, uint32_t(slots));
+  const bool split = split_slots(capacity_.keys(), uint32_t(slots));
   const float empty[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   glClearTexImage(planes.texels.id(), 0, GL_RGBA, GL_FLOAT, empty);
   const GLenum format = gl_internal_format(planes.format);
-  const Program& composite = composite_program(format, true);
+  const Program& composite = composite_program(format, TileImages::kPlanes);
   const TargetUniforms where{.image_size = {planes.width, planes.height}, .tile_grid = tile_grid};
   set_target_uniforms(composite, where);
   tiles_.bind();
@@ -421,13 +405,13 @@ void GlTileSplats::draw_planes(const Buffer& records, const Buffer& sorted_ids, 
   glBindImageTexture(kTileSplatTargetImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
   composite.use();
   tiles_.dispatch_work();
-  if (split) composite_split(format, true, where);
+  if (split) composite_split(format, TileImages::kPlanes, where);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   if (stamp) stamp(2);
   check_gl("the compute tile rasterizer's planes");
 }
 
-size_t GlTileSplats::plane_path_bytes(size_t items, size_t slots, size_t keys) {
+size_t GlSplatTileRaster::plane_path_bytes(size_t items, size_t slots, size_t keys) {
   const size_t per_item = 4 + 4;                  // counts, huge list
   const size_t per_key = 4 * 4;                   // keys, values, the sort's two copies
   const size_t per_slot = 8 + 4;                  // ranges, work list
@@ -435,7 +419,7 @@ size_t GlTileSplats::plane_path_bytes(size_t items, size_t slots, size_t keys) {
   return items * per_item + keys * per_key + slots * per_slot + split;
 }
 
-size_t GlTileSplats::bytes() const {
+size_t GlSplatTileRaster::bytes() const {
   return tiles_.bytes() + views_.bytes() + records_.bytes() + entry_keys_.bytes() + entries_.bytes() + huge_.bytes() +
          split_list_.bytes() + partials_.bytes();
 }

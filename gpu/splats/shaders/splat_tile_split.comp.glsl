@@ -1,22 +1,23 @@
-// The split of hot tiles (gpu/splats/gl_tile_splats.hpp; docs/gpu.md "Balancing"), one invocation a
+// The split of hot tiles (gpu/splats/gl_splat_tile_raster.hpp; docs/gpu.md "Balancing"), one invocation a
 // non-empty slot of the work list: a slot whose list holds more than split_keys keys gets
 // ceil(keys / split_keys) parts of the split list (while they fit in kTileSplatMaxParts) and its
-// range is emptied, so the whole-slot compositing skips it; tile_splat_composite (SPLIT_PART 1)
-// composites the parts and tile_splat_merge combines them. The list's header and parts are
+// range is emptied, so the whole-slot compositing skips it; splat_tile_composite (SPLIT_PART 1)
+// composites the parts and splat_tile_merge combines them. The list's header and parts are
 // cleared (parts to 0xFFFFFFFF) before the pass.
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 
 layout(local_size_x = kTileSplatSplitGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 layout(std430, binding = kTileRangesBinding) buffer Ranges { uvec2 ranges[]; };
 layout(std430, binding = kTileWorkBinding) readonly buffer Work { uint work[]; };
 layout(std430, binding = kTileStateBinding) readonly buffer State { TileState state; };
 #define SPLIT_LIST_ACCESS
-#include "gpu/splats/shaders/tile_splat_split_list.glsl"
+#include "gpu/splats/shaders/splat_tile_split_list.glsl"
 uniform uint split_keys;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint i = flat_invocation_index();
   if (i >= state.work_count) return;
   uint slot = work[i];
   uvec2 range = ranges[slot];

@@ -1,4 +1,4 @@
-// The split slots' merge (gpu/splats/gl_tile_splats.hpp; docs/gpu.md "Balancing"): one work group a split
+// The split slots' merge (gpu/splats/gl_splat_tile_raster.hpp; docs/gpu.md "Balancing"): one work group a split
 // slot, one invocation a pixel, its parts' partial (C_i, T_i) combined front to back,
 // C = C_0 + T_0 C_1 + T_0 T_1 C_2 ..., T = T_0 T_1 ... . The reference stops a pixel before T
 // would fall under 1e-4; a part composited from T = 1 does not know where that happens, so the
@@ -7,22 +7,23 @@
 // whole slot's, up to the rounding of the products.
 #include "gpu/splats/shaders/splat_record.glsl"
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 #include "gpu/splats/shaders/frame_io.h"
-#include "gpu/splats/shaders/tile_splat_blend.glsl"
-#include "gpu/splats/shaders/tile_splat_target.glsl"
+#include "gpu/splats/shaders/splat_tile_blend.glsl"
+#include "gpu/splats/shaders/splat_tile_target.glsl"
 
 layout(local_size_x = kTileSide, local_size_y = kTileSide) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileValuesBinding) readonly buffer Values { uint values[]; };
 #define SPLIT_LIST_ACCESS readonly
-#include "gpu/splats/shaders/tile_splat_split_list.glsl"
+#include "gpu/splats/shaders/splat_tile_split_list.glsl"
 layout(std430, binding = kTileSplatPartialsBinding) readonly buffer Partials { vec4 partials[]; };
 uniform uint split_keys;
 
 void main() {
-  uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint group = flat_group_index();
   if (group >= split.slots) return;
   uvec4 s = split_slots[group];
   ivec2 pixel = slot_pixel(s.x);

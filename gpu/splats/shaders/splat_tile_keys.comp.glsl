@@ -1,19 +1,20 @@
-// The compute tile rasterizer's keys (gpu/splats/gl_tile_splats.hpp), one invocation an item (a splat in
-// one image, front to back): EMIT 0 counts the tiles it covers (tile_splat_cover.glsl) into
+// The compute tile rasterizer's keys (gpu/splats/gl_splat_tile_raster.hpp), one invocation an item (a splat in
+// one image, front to back): EMIT 0 counts the tiles it covers (splat_tile_cover.glsl) into
 // counts[j], EMIT 1 writes its keys (slot = image * tiles + tile, value = its record) from its
 // first key, counts[j] after the scan. Items with more than kTileSplatHugeTiles tiles in their
-// rectangle are listed for tile_splat_huge.comp.glsl instead. PLANES 0: the image is the view,
+// rectangle are listed for splat_tile_huge.comp.glsl instead. PLANES 0: the image is the view,
 // entry / gaussian_count; PLANES 1: the item's plane, layers[j].
 #include "gpu/splats/shaders/splat_record.glsl"
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
-#include "gpu/splats/shaders/tile_splat_cover.glsl"
-#include "gpu/splats/shaders/tile_splat_item.glsl"
+#include "gpu/splats/shaders/splat_tile_io.h"
+#include "gpu/splats/shaders/splat_tile_cover.glsl"
+#include "gpu/splats/shaders/splat_tile_item.glsl"
 #include "gpu/splats/shaders/frame_io.h"
 #define TILE_KEY_CAPACITY 1
 #include "gpu/compute/shaders/tile_key_writer.glsl"
 
 layout(local_size_x = kTileSplatItemsGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileSplatEntriesBinding) readonly buffer Entries { uint entries[]; };
@@ -27,7 +28,7 @@ uniform uint kept_word;      // the kept count's index in kept_words (the sort's
 uniform ivec2 tile_grid;
 
 void main() {
-  uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint j = flat_invocation_index();
   if (j >= item_capacity) return;
   uint kept_count = kept_words[kept_word];
   if (j >= kept_count) {

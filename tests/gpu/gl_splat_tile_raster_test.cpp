@@ -1,4 +1,4 @@
-// The compute tile rasterizer (--raster compute; gpu/splats/gl_tile_splats.hpp, gpu/compute/gl_tile_keys.hpp)
+// The compute tile rasterizer (--raster compute; gpu/splats/gl_splat_tile_raster.hpp, gpu/compute/gl_tile_keys.hpp)
 // against the CPU reference rasterizer on llvmpipe, with the GL per-view tests' bars
 // (gl_per_view_test.cpp: >= 40 dB colour and transmittance): views, quilts in float and RGBA8,
 // a scene of huge splats (the per-work-group keys), a dense tile (many batches, the early stop),
@@ -15,7 +15,7 @@
 #include "gpu/gl/gl_context.hpp"
 #include "gpu/splats/gl_per_view_renderer.hpp"
 #include "gpu/compute/gl_tile_keys.hpp"
-#include "gpu/splats/gl_tile_splats.hpp"
+#include "gpu/splats/gl_splat_tile_raster.hpp"
 #include "render/default_camera.hpp"
 #include "render/image_metrics.hpp"
 #include "render/per_view_quilt.hpp"
@@ -43,16 +43,7 @@ double compare_view(GlPerViewRenderer& renderer, const scene::GaussianScene& sce
   return testing::compare_view(renderer, scene, camera, settings, "compute " + what);
 }
 
-TEST(GlTileKeys, SlotBitsHoldEverySlot) {
-  EXPECT_EQ(slot_bits(1), 1);
-  EXPECT_EQ(slot_bits(2), 1);
-  EXPECT_EQ(slot_bits(3), 2);
-  EXPECT_EQ(slot_bits(1024), 10);
-  EXPECT_EQ(slot_bits(1025), 11);
-  EXPECT_EQ(slot_bits(45u * 1824u), 17);
-}
-
-TEST(GlTileSplats, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
+TEST(GlSplatTileRaster, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
   HeadlessContext context;
   const auto scene = generated_scene(3, 4000);
   GlScene gl_scene(scene, context.info());
@@ -60,7 +51,7 @@ TEST(GlTileSplats, ViewsOfAGeneratedSceneMatchTheCpuAtShDegrees0And3) {
   testing::compare_generated_views(renderer, scene, "compute ");
 }
 
-TEST(GlTileSplats, TheFixtureAndDemoScenesMatchTheCpu) {
+TEST(GlSplatTileRaster, TheFixtureAndDemoScenesMatchTheCpu) {
   HeadlessContext context;
   for (const auto& path : {test::fixture_scene("three-points.ply"), test::project_data() / "scenes" / "demo.ply"}) {
     const auto scene = scene::load_gaussian_scene(path);
@@ -71,9 +62,9 @@ TEST(GlTileSplats, TheFixtureAndDemoScenesMatchTheCpu) {
   }
 }
 
-// The slots split into parts by a GlTileSplats of `split_keys` on one view (0, 0: none split).
+// The slots split into parts by a GlSplatTileRaster of `split_keys` on one view (0, 0: none split).
 std::pair<uint32_t, uint32_t> split_counts(const GlScene& gl_scene, const render::Camera& camera, uint32_t split_keys) {
-  GlTileSplats tiles;
+  GlSplatTileRaster tiles;
   tiles.set_split_keys(split_keys);
   Texture view(GL_RGBA32F, camera.width, camera.height);
   tiles.render_views(gl_scene, std::span(&camera, 1), {},
@@ -84,7 +75,7 @@ std::pair<uint32_t, uint32_t> split_counts(const GlScene& gl_scene, const render
 // Mostly opaque: pixels stop early and whole tiles stop taking batches. Split into parts of 64
 // keys (hot tiles forced: most slots are split, and most pixels stop inside a part, where the
 // merge replays it from the true T), the view still equals the CPU's and the unsplit one.
-TEST(GlTileSplats, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
+TEST(GlSplatTileRaster, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
   HeadlessContext context;
   const auto scene = generated_scene(1, 60000);
   GlScene gl_scene(scene, context.info());
@@ -107,9 +98,9 @@ TEST(GlTileSplats, ADenseViewWhereTheReferenceStopsEarlyMatchesTheCpu) {
 }
 
 // Splats far larger than the image: their rectangles hold every tile, so their keys are
-// counted and written by a work group each (tile_splat_huge.comp.glsl); faint ones too, whose
+// counted and written by a work group each (splat_tile_huge.comp.glsl); faint ones too, whose
 // opacity-aware ellipse covers fewer tiles than their rectangle.
-TEST(GlTileSplats, HugeSplatsMatchTheCpu) {
+TEST(GlSplatTileRaster, HugeSplatsMatchTheCpu) {
   HeadlessContext context;
   auto scene = generated_scene(0, 2000);
   std::mt19937 rng(7);
@@ -128,7 +119,7 @@ TEST(GlTileSplats, HugeSplatsMatchTheCpu) {
 
   // The huge splats did take the per-work-group path, and the opacity-aware cover left out tiles
   // of their rectangles: fewer keys than the rectangles' tiles.
-  GlTileSplats tiles;
+  GlSplatTileRaster tiles;
   const render::Camera camera = tabletop_camera();
   Texture view(GL_RGBA32F, camera.width, camera.height);
   tiles.render_views(gl_scene, std::span(&camera, 1), {},
@@ -144,7 +135,7 @@ TEST(GlTileSplats, HugeSplatsMatchTheCpu) {
 }
 
 // Thousands of small splats in one 16x16 tile: its list spans many 256-splat batches.
-TEST(GlTileSplats, ADenseTileMatchesTheCpu) {
+TEST(GlSplatTileRaster, ADenseTileMatchesTheCpu) {
   HeadlessContext context;
   scene::GaussianScene scene;
   std::mt19937 rng(11);
@@ -188,7 +179,7 @@ void compare_quilt(GLenum format, const std::string& what) {
   // Views in passes of 2 (as on a GPU whose storage buffers hold 2 views of records): the same
   // quilt, bit for bit.
   GlPerViewOptions split = compute_options();
-  split.compute_entries_per_pass = 2 * c.scene.size() + 1;
+  split.compute_pass_limit = (2 * c.scene.size() + 1) * sizeof(SplatRecord);
   GlPerViewRenderer in_passes(gl_scene, split);
   Texture passes_quilt(format, c.layout.width, c.layout.height);
   in_passes.render_quilt(c.geometry, c.layout, {}, passes_quilt);
@@ -206,24 +197,24 @@ void compare_quilt(GLenum format, const std::string& what) {
 // a capacity kept from frame to frame, and a pass whose keys outgrew it is drawn again. From a
 // capacity of 64 keys every pass of a 9-view quilt (passes of 2 views) overflows and is redrawn,
 // and the quilt is the one drawn with room to spare, bit for bit; the next frame redraws nothing.
-TEST(GlTileSplats, PassesWhoseKeysOutgrowTheCapacityAreDrawnAgain) {
+TEST(GlSplatTileRaster, PassesWhoseKeysOutgrowTheCapacityAreDrawnAgain) {
   HeadlessContext context;
   const testing::QuiltCase c;
   GlScene gl_scene(c.scene, context.info());
   std::vector<render::Camera> cameras;
   for (int v = 0; v < c.geometry.views; ++v) cameras.push_back(c.geometry.view_camera(v));
-  const auto draw = [&](GlTileSplats& tiles) {
+  const auto draw = [&](GlSplatTileRaster& tiles) {
     Texture quilt(GL_RGBA32F, c.layout.width, c.layout.height);
     const glm::ivec2 cell{c.layout.tile_width(), c.layout.tile_height()};
     tiles.render_views(gl_scene, cameras, {}, {.texture = &quilt, .cols = c.layout.cols, .cell_size = cell});
     return read_image_top_down(quilt).pixels;
   };
-  GlTileSplats roomy;
+  GlSplatTileRaster roomy;
   roomy.set_key_capacity(1'000'000);
   const std::vector<float> truth = draw(roomy);
   EXPECT_EQ(roomy.redrawn_passes(), 0);
-  GlTileSplats tight;
-  tight.set_max_entries_per_pass(2 * c.scene.size() + 1);
+  GlSplatTileRaster tight;
+  tight.set_pass_limit((2 * c.scene.size() + 1) * sizeof(SplatRecord));
   tight.set_key_capacity(64);
   EXPECT_EQ(draw(tight), truth);
   EXPECT_EQ(tight.passes(), 5);
@@ -235,10 +226,10 @@ TEST(GlTileSplats, PassesWhoseKeysOutgrowTheCapacityAreDrawnAgain) {
   EXPECT_EQ(tight.redrawn_passes(), 0);
 }
 
-TEST(GlTileSplats, FloatQuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA32F, "RGBA32F"); }
-TEST(GlTileSplats, Rgba8QuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA8, "RGBA8"); }
+TEST(GlSplatTileRaster, FloatQuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA32F, "RGBA32F"); }
+TEST(GlSplatTileRaster, Rgba8QuiltMatchesTheCpuPerViewQuilt) { compare_quilt(GL_RGBA8, "RGBA8"); }
 
-TEST(GlTileSplats, AutoMustBeResolvedFirst) {
+TEST(GlSplatTileRaster, AutoMustBeResolvedFirst) {
   HeadlessContext context;
   const auto scene = generated_scene(0, 10);
   GlScene gl_scene(scene, context.info());

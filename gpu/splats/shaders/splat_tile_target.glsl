@@ -1,12 +1,12 @@
-// Where the compute tile rasterizer's compositing writes a slot's pixels (tile_splat_composite,
-// tile_splat_merge; gpu/splats/gl_tile_splats.hpp):
+// Where the compute tile rasterizer's compositing writes a slot's pixels (splat_tile_composite,
+// splat_tile_merge; gpu/splats/gl_splat_tile_raster.hpp):
 //   TARGET_ARRAY 0: views into a quilt (image = view; its cell at (view % cols, view / cols),
 //                   bottom-up, cropped to the cell), C + T background and alpha T or 1.
 //   TARGET_ARRAY 1: planes (image = plane = layer), (C, T) with a zero background.
 //   TARGET_FORMAT: the target's image format (rgba32f, rgba16f, rgba8); QUANTIZE_U8 rounds as
 //                  the CPU stores 8-bit planes.
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 
 #if TARGET_ARRAY
 layout(TARGET_FORMAT, binding = kTileSplatTargetImage) uniform writeonly image2DArray target;

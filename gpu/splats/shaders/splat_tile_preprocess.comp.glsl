@@ -1,12 +1,13 @@
-// The compute tile rasterizer's preprocess (gpu/splats/gl_tile_splats.hpp): every Gaussian in every view
+// The compute tile rasterizer's preprocess (gpu/splats/gl_splat_tile_raster.hpp): every Gaussian in every view
 // in one dispatch (z = the view), each projected exactly as the per-view preprocess does
 // (splat_project.glsl), into the record of entry view * gaussian_count + i with its depth key
 // (0xFFFFFFFF: culled) for the depth sort of all entries.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/splats/shaders/splat_record.glsl"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 
 layout(local_size_x = kSplatPreprocessGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kScenePositionsBinding) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
 layout(std430, binding = kSceneScalesBinding) readonly buffer Scales { vec4 scales[]; };
@@ -33,7 +34,7 @@ vec3 sh_origin;
 #include "gpu/splats/shaders/splat_project.glsl"
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint i = flat_invocation_index();
   if (i >= gaussian_count) return;
   uint view = gl_WorkGroupID.z;
   TileViewCamera c = views[view];

@@ -1,16 +1,17 @@
-// The huge items' keys (gpu/splats/gl_tile_splats.hpp; docs/gpu.md "Balancing"): one work group an item
-// listed by tile_splat_keys.comp.glsl, one invocation a tile of its rectangle, so a splat that
+// The huge items' keys (gpu/splats/gl_splat_tile_raster.hpp; docs/gpu.md "Balancing"): one work group an item
+// listed by splat_tile_keys.comp.glsl, one invocation a tile of its rectangle, so a splat that
 // covers the whole image costs one group's few steps, not one invocation's loop over every tile.
 // EMIT 0 counts the tiles it covers into counts[j]; EMIT 1 writes its keys from its first key (in
 // no particular order inside the item: they differ in slot, which the sort orders).
 #include "gpu/splats/shaders/splat_record.glsl"
 #include "gpu/compute/shaders/tile_io.h"
-#include "gpu/splats/shaders/tile_splat_io.h"
-#include "gpu/splats/shaders/tile_splat_cover.glsl"
-#include "gpu/splats/shaders/tile_splat_item.glsl"
+#include "gpu/splats/shaders/splat_tile_io.h"
+#include "gpu/splats/shaders/splat_tile_cover.glsl"
+#include "gpu/splats/shaders/splat_tile_item.glsl"
 #include "gpu/splats/shaders/frame_io.h"
 
 layout(local_size_x = kTileSplatHugeGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatRecordsBinding) readonly buffer Records { SplatRecord records[]; };
 layout(std430, binding = kTileSplatEntriesBinding) readonly buffer Entries { uint entries[]; };
@@ -29,7 +30,7 @@ uniform uint key_capacity;  // keys the buffers hold (GlTileKeys::scan_to_capaci
 shared uint covered;
 
 void main() {
-  uint h = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+  uint h = flat_group_index();
   if (h >= huge.count) return;
   uint j = huge_items[h];
   uint entry = entries[j];

@@ -1,7 +1,7 @@
-// Which image an item's keys go to (gpu/splats/gl_tile_splats.hpp), for the key passes
-// (tile_splat_keys.comp.glsl, tile_splat_huge.comp.glsl): PLANES 0, the view of entry
+// Which image an item's keys go to (gpu/splats/gl_splat_tile_raster.hpp), for the key passes
+// (splat_tile_keys.comp.glsl, splat_tile_huge.comp.glsl): PLANES 0, the view of entry
 // view * gaussian_count + i; PLANES 1, the item's plane from the binning's layers.
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 
 #if PLANES
 layout(std430, binding = kTileSplatLayersBinding) readonly buffer Layers { uint layers[]; };

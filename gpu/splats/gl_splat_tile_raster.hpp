@@ -8,9 +8,9 @@
 //               per-view preprocess (gpu/splats/shaders/splat_project.glsl); its depth key
 //   depth sort  GlRadixSort of every entry's depth key, culled ones dropped: the items, front to
 //               back, all views mixed (32-bit float keys: the exact order, ties by entry)
-//   keys        per item the tiles its opacity-aware ellipse covers (tile_splat_cover.glsl),
+//   keys        per item the tiles its opacity-aware ellipse covers (splat_tile_cover.glsl),
 //               counted, scanned and written as slot keys (view * tiles + tile); items with big
-//               rectangles by a whole work group each (tile_splat_huge.comp.glsl)
+//               rectangles by a whole work group each (splat_tile_huge.comp.glsl)
 //   tile sort   GlTileKeys: a stable sort by slot, so each (view, tile) lists its splats front
 //               to back, and the ranges
 //   composite   one work group a (view, tile): batches of 256 splats in shared memory, the
@@ -37,8 +37,9 @@
 #include "gpu/planes/gl_planes.hpp"
 #include "gpu/gl/gl_program.hpp"
 #include "gpu/splats/gl_scene.hpp"
+#include "gpu/compute/gl_key_capacity.hpp"
 #include "gpu/compute/gl_tile_keys.hpp"
-#include "gpu/splats/shaders/tile_splat_io.h"
+#include "gpu/splats/shaders/splat_tile_io.h"
 #include "render/camera.hpp"
 #include "render/preprocess.hpp"
 
@@ -46,13 +47,14 @@ namespace lfd::gpu {
 
 // Where the views go: view v into cell (v % cols, v / cols) of `texture` (cells cell_size,
 // bottom-up: cell row r starts at GL row r * cell height, the view's top row at the cell's top),
-// cropped to the cell; rgb = C + T background, alpha = T (keep_transmittance) or 1.
+// cropped to the cell; rgb = C + T background, alpha = T (TargetAlpha::kTransmittance: one view's
+// image) or 1 (kOpaque: a quilt).
 struct TileViewsTarget {
   Texture* texture = nullptr;  // RGBA32F, RGBA16F or RGBA8
   int cols = 1;
   glm::ivec2 cell_size{0, 0};
   glm::vec3 background{0.0f};
-  bool keep_transmittance = false;
+  TargetAlpha alpha = TargetAlpha::kOpaque;
 };
 
 // What the last frame held (for the benchmarks and the tests).
@@ -62,9 +64,9 @@ struct TileSplatCounts {
   uint32_t slots = 0;  // views x tiles
 };
 
-class GlTileSplats {
+class GlSplatTileRaster {
  public:
-  GlTileSplats();  // needs a current context; compiles the passes
+  GlSplatTileRaster();  // needs a current context; compiles the passes
 
   // Renders every camera (one image size) into its cell of `target`, in one pass when the
   // records fit a storage buffer, else in passes of as many views as fit. `stamp(k)`, when given,
@@ -84,11 +86,12 @@ class GlTileSplats {
   void render_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
                      size_t gaussians, GlPlanes& planes, const std::function<void(int)>& stamp = {});
 
-  // The most (view, Gaussian) entries one pass holds: the views of a frame go in as few passes as
-  // this allows (one when they fit). 0 (the default): as many as the largest storage buffer a
-  // shader may bind holds records (GL_MAX_SHADER_STORAGE_BLOCK_SIZE / 64 bytes; 2 GiB on NVIDIA:
-  // 45 views of 740k Gaussians).
-  void set_max_entries_per_pass(size_t entries) { max_entries_per_pass_ = entries; }
+  // The largest storage buffer one pass may bind, in bytes (its (view, Gaussian) records, a
+  // SplatRecord an entry): the views of a frame go in as few passes as this allows (one when they
+  // fit). 0 (the default): GL_MAX_SHADER_STORAGE_BLOCK_SIZE (2 GiB on NVIDIA: 45 views of 740k
+  // Gaussians). The same unit and default as GlVoxelTileRaster::set_pass_limit.
+  void set_pass_limit(size_t bytes) { pass_limit_ = bytes; }
+  size_t pass_limit() const;
   // Passes the last render_views took.
   int passes() const { return passes_; }
   // A slot (image, tile) with more keys than this is composited in parts of this many keys, a
@@ -99,8 +102,8 @@ class GlTileSplats {
   // Keys the key buffers hold: kept from frame to frame, first a key an item, grown to a quarter
   // over a frame's total when a pass's keys did not fit (that pass is drawn again). Setting it
   // (tests) starts from another capacity.
-  void set_key_capacity(uint32_t keys) { key_capacity_ = keys; }
-  uint32_t key_capacity() const { return key_capacity_; }
+  void set_key_capacity(uint32_t keys) { capacity_.set_keys(keys); }
+  uint32_t key_capacity() const { return capacity_.keys(); }
   // Passes of the last render_views or render_planes drawn again because their keys outgrew the
   // capacity.
   int redrawn_passes() const { return redrawn_; }
@@ -126,8 +129,11 @@ class GlTileSplats {
   // The key passes of views (PLANES 0) or planes (PLANES 1).
   struct KeyPrograms {
     Program count, emit, huge_count, huge_emit;
-    explicit KeyPrograms(bool planes);
+    explicit KeyPrograms(TileImages images);
   };
+  // What a compositing pass takes of a slot: the whole list into the target, or a split slot's
+  // parts into partials (merged after; docs/gpu.md "Balancing").
+  enum class SlotShare { kWhole, kSplitParts };
   // What the key passes read: the records, the items (record indices, front to back), where the
   // item count is (a uint of `kept`) and, for planes, each item's plane.
   struct Items {
@@ -139,22 +145,23 @@ class GlTileSplats {
     uint32_t capacity = 0;  // items dispatched
   };
   // Counts, scans, writes, sorts and ranges the keys of `items` (small items per invocation,
-  // huge ones per work group) into buffers of key_capacity_ keys (a key an item when it is 0),
-  // and copies the key total into word `pass` of key_totals_; nothing is read back.
+  // huge ones per work group) into buffers of the kept capacity's keys, and records the key
+  // total as pass `pass`'s (GlKeyCapacity); nothing is read back.
   void make_keys(const KeyPrograms& programs, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid,
                  uint32_t slots, uint32_t pass);
-  // Reads the `passes` key totals of the frame (the one wait) into counts_.keys; returns the
-  // passes whose keys outgrew the capacity, the capacity grown past them.
+  // GlKeyCapacity::read_frame (the frame's one read), its key sum into counts_.keys; the passes
+  // whose keys outgrew the capacity.
   std::vector<uint32_t> overflowed_passes(uint32_t passes);
   // One pass of render_planes.
   void draw_planes(const Buffer& records, const Buffer& sorted_ids, const Buffer& layers, const Buffer& draw,
                    size_t gaussians, GlPlanes& planes, const std::function<void(int)>& stamp);
   // Counts (EMIT 0) or writes (EMIT 1).
-  void run_keys(const KeyPrograms& programs, bool emit, const Items& items, uint32_t gaussians, glm::ivec2 tile_grid);
-  // The compositing of whole slots (part false: into `format`) or of split slots' parts (part
-  // true), for views or planes; and the split slots' merge into `format`.
-  const Program& composite_program(GLenum format, bool planes, bool part = false);
-  const Program& merge_program(GLenum format, bool planes);
+  void run_keys(const KeyPrograms& programs, KeyStep step, const Items& items, uint32_t gaussians,
+                glm::ivec2 tile_grid);
+  // The compositing of whole slots (into `format`) or of split slots' parts, for views or
+  // planes; and the split slots' merge into `format`.
+  const Program& composite_program(GLenum format, TileImages images, SlotShare share = SlotShare::kWhole);
+  const Program& merge_program(GLenum format, TileImages images);
   // Where the compositing writes: the views of `target` from first_view, or planes (views null).
   struct TargetUniforms {
     glm::ivec2 image_size{0, 0}, tile_grid{0, 0};
@@ -166,20 +173,20 @@ class GlTileSplats {
   // their ranges; returns false (and does nothing) when no slot can be over it (`keys` in all).
   bool split_slots(uint32_t keys, uint32_t slots);
   // The split slots' parts, then their merge into the bound target image (after the compositing).
-  void composite_split(GLenum format, bool planes, const TargetUniforms& target);
+  void composite_split(GLenum format, TileImages images, const TargetUniforms& target);
 
   Program preprocess_, split_;
   KeyPrograms view_keys_, plane_keys_;
-  std::map<std::tuple<GLenum, bool, bool>, Program> composite_;
-  std::map<std::pair<GLenum, bool>, Program> merge_;
+  std::map<std::tuple<GLenum, TileImages, SlotShare>, Program> composite_;
+  std::map<std::pair<GLenum, TileImages>, Program> merge_;
   GlTileKeys tiles_;
-  Buffer views_, records_, entry_keys_, entries_, huge_, split_list_, partials_, key_totals_;
-  uint32_t key_capacity_ = 0;
+  GlKeyCapacity capacity_;
+  Buffer views_, records_, entry_keys_, entries_, huge_, split_list_, partials_;
   int redrawn_ = 0;
   uint32_t split_keys_ = kTileSplatSplitKeys;
   bool split_ran_ = false;  // the last pass split slots (split_list_ holds its counts)
   TileSplatCounts counts_;
-  size_t max_entries_per_pass_ = 0;
+  size_t pass_limit_ = 0;
   int passes_ = 0;
 };
 

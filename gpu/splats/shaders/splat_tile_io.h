@@ -1,9 +1,9 @@
-// The compute tile rasterizer of Gaussians' contract (gpu/splats/gl_tile_splats.hpp;
-// gpu/splats/shaders/tile_splat_*.comp.glsl), on top of the generic tile machinery's
+// The compute tile rasterizer of Gaussians' contract (gpu/splats/gl_splat_tile_raster.hpp;
+// gpu/splats/shaders/splat_tile_*.comp.glsl), on top of the generic tile machinery's
 // (gpu/compute/shaders/tile_io.h; bindings not named here are its and the splat passes',
 // gpu/splats/shaders/frame_io.h). Read by C++ and GLSL (gpu/gl/shaders/shader_io.h).
-#ifndef LFD_GPU_SHADERS_TILE_SPLAT_IO_H
-#define LFD_GPU_SHADERS_TILE_SPLAT_IO_H
+#ifndef LFD_GPU_SHADERS_SPLAT_TILE_IO_H
+#define LFD_GPU_SHADERS_SPLAT_TILE_IO_H
 #include "gpu/gl/shaders/shader_io.h"
 
 LFD_IO_BEGIN(gpu)
@@ -27,7 +27,7 @@ LFD_IO_UINT(kTileSplatHugeTiles, 32u)
 LFD_IO_UINT(kTileSplatHugeGroupSize, 64u)
 LFD_IO_UINT(kTileSplatItemsGroupSize, 128u)  // count and emit: one invocation an item
 
-// A slot whose list holds more than the split threshold (GlTileSplats::set_split_keys; default
+// A slot whose list holds more than the split threshold (GlSplatTileRaster::set_split_keys; default
 // kTileSplatSplitKeys) is composited in parts of that many keys by a work group each, from
 // T = 1, into partial (C, T); a merge pass then combines them front to back (C = C0 + T0 C1 +
 // T0 T1 C2 ...) and replays, pixel by pixel, the one part where the reference's early stop falls.

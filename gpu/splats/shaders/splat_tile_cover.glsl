@@ -1,4 +1,4 @@
-// Which tiles a projected Gaussian's keys go to (gpu/splats/gl_tile_splats.hpp; docs/gpu.md "The compute
+// Which tiles a projected Gaussian's keys go to (gpu/splats/gl_splat_tile_raster.hpp; docs/gpu.md "The compute
 // tile rasterizer"): the tiles of its rectangle (the reference's getRect, 3 sigma) whose pixel
 // centres it may give alpha >= 1/255, the compositing's threshold. alpha = o exp(-q / 2) with
 // q = d^T conic d, so a pixel counts only where q <= 2 ln(255 o): an ellipse that shrinks with
