@@ -10,6 +10,7 @@
 #include "gpu/gl/gl_debug.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/gl_limits.hpp"
+#include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/gl/shader_dump.hpp"
 #include "gpu/gl/shader_source.hpp"
 
@@ -226,10 +227,9 @@ void Program::dispatch(GLuint x, GLuint y, GLuint z) const {
 void Program::dispatch_1d(size_t items, int local_size) const {
   const size_t groups = (items + size_t(local_size) - 1) / size_t(local_size);
   if (groups == 0) return;
-  // Beyond the 65535-group limit of one dimension, spread over y (shaders use gl_NumWorkGroups).
-  const GLuint x = GLuint(std::min<size_t>(groups, 65535));
-  const GLuint y = GLuint((groups + 65534) / 65535);
-  dispatch(x, y, 1);
+  // Beyond the 65535-group limit of one dimension, spread over y (gpu/gl/gl_work_groups.hpp).
+  const WorkGroups spread = spread_work_groups(groups);
+  dispatch(spread.x, spread.y, 1);
 }
 
 void Program::dispatch_indirect(GLintptr offset) const {

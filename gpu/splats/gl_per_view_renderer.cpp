@@ -112,7 +112,7 @@ const Texture& GlPerViewRenderer::render_view(const render::Camera& camera, cons
   target.image_size = {camera.width, camera.height};
   raster_.clear(target);
   raster_.draw(buffers_, target);
-  raster_.composite_background(target, settings.background, /*keep_transmittance=*/true);
+  raster_.composite_background(target, settings.background, TargetAlpha::kTransmittance);
   stamp(3);
   finish_stats(1, 1);
   return view_target_;
@@ -171,7 +171,7 @@ void GlPerViewRenderer::render_quilt(const render::QuiltGeometry& geometry, cons
     if (direct) {
       raster_.clear(tile);
       raster_.draw(buffers_, tile);
-      raster_.composite_background(tile, settings.background, /*keep_transmittance=*/false);
+      raster_.composite_background(tile, settings.background, TargetAlpha::kOpaque);
     } else {
       SplatRasterTarget view_target;
       view_target.framebuffer = view_framebuffer_.id();

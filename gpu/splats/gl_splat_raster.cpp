@@ -107,7 +107,8 @@ void GlSplatRaster::draw(const SplatBuffers& buffers, const SplatRasterTarget& t
 }
 
 void GlSplatRaster::composite_background(const SplatRasterTarget& target, const glm::vec3& background,
-                                         bool keep_transmittance) const {
+                                         TargetAlpha alpha) const {
+  const bool keep_transmittance = alpha == TargetAlpha::kTransmittance;
   begin(target);
   const GLuint p = composite_blend_.id();
   glProgramUniform3fv(p, composite_blend_.uniform("background"), 1, glm::value_ptr(background));

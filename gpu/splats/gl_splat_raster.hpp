@@ -27,6 +27,7 @@
 // planes in one instanced draw; with a zero background the planes hold (C, T).
 #include <glm/glm.hpp>
 
+#include "gpu/compute/gl_tile_keys.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/splats/gl_splat_preprocess.hpp"
 
@@ -65,9 +66,9 @@ class GlSplatRaster {
   // The same with the buffers of GlSplatPreprocess::run after GlRadixSort::sort(keys, values).
   void draw(const SplatBuffers& buffers, const SplatRasterTarget& target, const Buffer* layers = nullptr) const;
 
-  // In place: rgb = C + T bg; alpha stays T (`keep_transmittance`) or becomes 1.
+  // In place: rgb = C + T bg; alpha stays T (TargetAlpha::kTransmittance) or becomes 1.
   void composite_background(const SplatRasterTarget& target, const glm::vec3& background,
-                            bool keep_transmittance) const;
+                            TargetAlpha alpha) const;
   // From an accumulation texture (C, T) of target.image_size into the target region (e.g. an
   // RGBA8 quilt tile): rgb = C + T bg, alpha 1.
   void composite_from(const Texture& accumulation, const SplatRasterTarget& target,

@@ -7,6 +7,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gpu/gl/gl_fault.hpp"
+#include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/splats/gl_splat_preprocess.hpp"
 #include "gpu/splats/shaders/frame_io.h"
@@ -78,7 +80,9 @@ GlSplatTileRaster::GlSplatTileRaster()
     : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, splat_tile_preprocess_comp_glsl}}),
       split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, splat_tile_split_comp_glsl}}),
       view_keys_(TileImages::kViews),
-      plane_keys_(TileImages::kPlanes) {}
+      plane_keys_(TileImages::kPlanes) {
+  fail_if_faulted(GlFault::kComputeRaster, "compute splats");  // a driver that cannot build the path (tests)
+}
 
 // The defines of a program that includes splat_tile_target.glsl.
 std::vector<std::string> target_defines(GLenum format, TileImages images) {
@@ -244,9 +248,7 @@ std::vector<uint32_t> GlSplatTileRaster::overflowed_passes(uint32_t passes) {
 
 size_t GlSplatTileRaster::pass_limit() const {
   if (pass_limit_ > 0) return pass_limit_;
-  GLint64 block = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
-  return size_t(block);
+  return size_t(gl_limits().storage_block_bytes);  // the device's, or LFD_GL_LIMITS' lower one
 }
 
 uint32_t GlSplatTileRaster::read_huge_items() const {

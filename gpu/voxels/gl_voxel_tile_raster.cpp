@@ -7,6 +7,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gpu/gl/gl_fault.hpp"
+#include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/voxels/shaders/voxel_tile_keys.comp.glsl.hpp"
@@ -60,13 +62,13 @@ GlVoxelTileRaster::GlVoxelTileRaster()
       emit_(keys_program(KeyStep::kEmit, TileImages::kViews)),
       count_planes_(keys_program(KeyStep::kCount, TileImages::kPlanes)),
       emit_planes_(keys_program(KeyStep::kEmit, TileImages::kPlanes)),
-      march_("voxel tiles: march", {{GL_COMPUTE_SHADER, voxel_tile_march_comp_glsl}}) {}
+      march_("voxel tiles: march", {{GL_COMPUTE_SHADER, voxel_tile_march_comp_glsl}}) {
+  fail_if_faulted(GlFault::kComputeRaster, "voxel tiles");  // a driver that cannot build the path (tests)
+}
 
 size_t GlVoxelTileRaster::pass_limit() const {
   if (pass_limit_ > 0) return pass_limit_;
-  GLint64 block = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
-  return size_t(block);
+  return size_t(gl_limits().storage_block_bytes);  // the device's, or LFD_GL_LIMITS' lower one
 }
 
 void GlVoxelTileRaster::upload_views(std::span<const render::Camera> cameras, const glm::vec3* sh_origin) {

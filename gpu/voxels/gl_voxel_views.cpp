@@ -114,7 +114,7 @@ void GlVoxelViews::render_views(std::span<const render::Camera> cameras, const v
     hi.image_size = size;
     targets_.clear(hi);
     raster_.draw(scene_, big[view], big[view].position_world, hi);
-    targets_.composite_background(hi, background, /*keep_transmittance=*/true);
+    targets_.composite_background(hi, background, TargetAlpha::kTransmittance);
     downsample(supersampled_, size, 1, {cameras[view].width, cameras[view].height}, int(view), 1, tiles, nullptr);
   }
 }
