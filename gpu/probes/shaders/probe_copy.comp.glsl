@@ -1,6 +1,7 @@
 // The throughput probe's memory bandwidth (gpu/probes/gl_throughput_probe.hpp): one vec4 read and one
 // written per invocation, so a dispatch moves 32 bytes an invocation through DRAM.
 #include "gpu/probes/shaders/probe_io.h"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kProbeGroupSize) in;
 layout(std430, binding = kProbeSourceBinding) readonly buffer In { vec4 source[]; };
@@ -8,6 +9,6 @@ layout(std430, binding = kProbeTargetBinding) writeonly buffer Out { vec4 target
 uniform uint count;
 
 void main() {
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint i = flat_invocation_index();
   if (i < count) target[i] = source[i] * 1.0001;
 }

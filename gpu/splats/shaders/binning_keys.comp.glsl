@@ -4,6 +4,7 @@
 // depth > 0.2 orders as the floats), the others 0xFFFFFFFF so they sort after every binned one;
 // values are the Gaussian indices. Binned Gaussians are counted in the plane table.
 #include "gpu/splats/shaders/frame_io.h"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kBinningKeysGroupSize) in;
 
@@ -25,7 +26,7 @@ shared uint group_binned;
 void main() {
   if (gl_LocalInvocationIndex == 0u) group_binned = 0u;
   barrier();
-  const uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  const uint i = flat_invocation_index();
   if (i < gaussian_count) {
     // Camera::to_camera as glm evaluates it (column by column, no fused multiply-add), so the
     // depths and the frustum test agree with the CPU's bit for bit.

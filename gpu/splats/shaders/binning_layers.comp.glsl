@@ -2,13 +2,14 @@
 // the layered raster's gl_Layer: the last plane whose first splat is not after it.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/planes/shaders/plane_table.glsl"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kBinningLayersGroupSize) in;
 
 layout(std430, binding = kSplatLayersBinding) writeonly buffer Layers { uint layers[]; };
 
 void main() {
-  const uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  const uint i = flat_invocation_index();
   if (i >= table.splats_binned) return;
   uint lo = 0u, hi = table.plane_count;  // planes with begin <= i: [0, lo)
   while (lo < hi) {

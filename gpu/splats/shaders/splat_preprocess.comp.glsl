@@ -30,6 +30,7 @@ uniform float scale_modifier;
 uniform vec3 sh_origin;
 
 #include "gpu/splats/shaders/splat_project.glsl"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 uint cull(uint i) {
   records[i] = SplatRecord(vec4(0.0), vec4(0.0), vec4(0.0), ivec4(0));
@@ -60,7 +61,7 @@ void main() {
     group_max = 0u;
   }
   barrier();
-  uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  uint i = flat_invocation_index();
   if (i < gaussian_count) {
     uint key = preprocess(i);
     if (key != 0xFFFFFFFFu) {

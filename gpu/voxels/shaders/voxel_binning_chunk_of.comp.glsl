@@ -3,6 +3,7 @@
 // the binned count), `unbinned` (the table's plane capacity: after every chunk) for the others.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/planes/shaders/plane_table.glsl"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kVoxelBinningGroupSize) in;
 
@@ -14,7 +15,7 @@ uniform uint voxel_count;
 uniform uint unbinned;
 
 void main() {
-  const uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  const uint i = flat_invocation_index();
   if (i >= voxel_count) return;
   chunk_of[values[i]] = i < table.splats_binned ? layers[i] : unbinned;
 }

@@ -7,6 +7,7 @@
 // (no fused multiply-add), the half extent as (edge / 2) (|f.x| + |f.y| + |f.z|).
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/splats/shaders/depth_key.glsl"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kVoxelBinningGroupSize) in;
 
@@ -28,7 +29,7 @@ shared uint group_binned;
 void main() {
   if (gl_LocalInvocationIndex == 0u) group_binned = 0u;
   barrier();
-  const uint i = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  const uint i = flat_invocation_index();
   if (i < voxel_count) {
     const vec4 box = boxes[i];
     precise const vec3 centre = box.xyz + 0.5 * box.w;

@@ -6,6 +6,7 @@
 // per chunk). One octant at a time: the keys need only the chunk's bits (one radix pass up to
 // 255 planes).
 #include "gpu/splats/shaders/frame_io.h"
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kVoxelBinningGroupSize) in;
 
@@ -18,7 +19,7 @@ uniform uint voxel_count;
 uniform uint octant;
 
 void main() {
-  const uint j = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+  const uint j = flat_invocation_index();
   if (j >= voxel_count) return;
   const uint voxel = order[octant * voxel_count + j];
   keys[j] = chunk_of[voxel];
