@@ -1,4 +1,4 @@
-// The direct panel pass's compute stage over panel tiles (issue 33; docs/gpu.md "The direct panel
+// The direct panel pass's compute stage over panel tiles (docs/gpu.md "The direct panel
 // pass on the GPU"), for the offscreen paths (lfd render --direct, the benchmarks): each work
 // group takes a kDirectPanelTileWidth x kDirectPanelTileHeight tile of the panel, an invocation
 // per pixel (its three subpixel rays, direct_panel_rays.glsl, the fragment stage's arithmetic).

@@ -1,4 +1,4 @@
-// The direct panel pass's fragment stage (issue 24; docs/gpu.md "The direct panel pass on the
+// The direct panel pass's fragment stage (docs/gpu.md "The direct panel pass on the
 // GPU"): one fragment per panel pixel, for a framebuffer (a window's). Its three rays composite
 // the planes front to back until they let no light through; the work is direct_panel_rays.glsl's,
 // which the compute stage over panel tiles (direct_panel.comp.glsl) shares.

@@ -1,4 +1,4 @@
-// The direct panel pass's per-ray work (issue 24; docs/rendering.md "Direct panel rendering"), the GLSL twin of
+// The direct panel pass's per-ray work (docs/rendering.md "Direct panel rendering"), the GLSL twin of
 // interlace::render_direct_panel (interlace/direct_panel.cpp) and render::PlaneRays
 // (render/plane_rays.cpp): one fragment per panel pixel. Each channel's view fraction comes from
 // lens_view.glsl (#included: the one GLSL definition the interlacer uses too); it stands for the
