@@ -31,8 +31,8 @@ class Program {
   // lines) prepended, so one file serves several variants. Compile and link errors throw
   // std::runtime_error naming `label` with the driver's log. `bindings` declares what the program
   // reads and writes at which point; when given it must match the program's active resources
-  // (std::logic_error naming the point). A program that declares nothing is not checked and
-  // binds the old way (Buffer::bind_storage, glBind*): the passes not yet converted.
+  // (std::logic_error naming the point). A program that declares nothing is not checked (a test's
+  // own shader); every pass of lfd declares.
   Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
           const std::vector<std::string>& defines = {}, std::vector<Binding> bindings = {});
   GLuint id() const { return name_.id(); }
