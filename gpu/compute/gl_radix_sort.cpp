@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "gpu/compute/shaders/radix_histogram.comp.glsl.hpp"
 #include "gpu/compute/shaders/radix_scan.comp.glsl.hpp"
@@ -19,7 +21,16 @@ static_assert(kRadixTile == kRadixDigits, "the histogram and the scatter count o
 static_assert(sizeof(RadixSortParams) == 8 * sizeof(uint32_t) && offsetof(RadixSortParams, groups_x) == 16,
               "RadixSortParams is std430: packed uints");
 
-Program pass_program(const char* label, const char* source) { return Program(label, {{GL_COMPUTE_SHADER, source}}); }
+// What each pass reads and writes (docs/gpu.md "Binding points"). Every pass declares the params
+// (its layout on a sort's later passes) and the keys' range (the first pass of normalised keys):
+// radix_common.glsl declares both, and the linker keeps a declared std430 block active even in a
+// pass that does not read it (the scan, the setup).
+Binding params(Access access) { return storage_buffer("params", kRadixParamsBinding, access); }
+Binding key_range() { return storage_buffer("key_range", kRadixKeyRangeBinding, Access::read); }
+
+Program pass_program(const char* label, const char* source, std::vector<Binding> bindings) {
+  return Program(label, {{GL_COMPUTE_SHADER, source}}, {}, std::move(bindings));
+}
 
 struct BlockLayout {
   uint32_t items = 0, blocks = 0;
@@ -77,10 +88,25 @@ void check_keys(const SortKeys& how) {
 }  // namespace
 
 GlRadixSort::GlRadixSort()
-    : histogram_(pass_program("radix sort histogram", radix_histogram_comp_glsl)),
-      scan_(pass_program("radix sort scan", radix_scan_comp_glsl)),
-      scatter_(pass_program("radix sort scatter", radix_scatter_comp_glsl)),
-      setup_(pass_program("radix sort setup", radix_setup_comp_glsl)),
+    : histogram_(pass_program("radix sort histogram", radix_histogram_comp_glsl,
+                              {storage_buffer("keys_in", kRadixKeysInBinding, Access::read),
+                               storage_buffer("block_counts", kRadixBlockCountsBinding, Access::write),
+                               params(Access::read), key_range()})),
+      scan_(pass_program("radix sort scan", radix_scan_comp_glsl,
+                         {storage_buffer("block_counts", kRadixBlockCountsBinding, Access::read_write),
+                          storage_buffer("digit_totals", kRadixDigitTotalsBinding, Access::write),
+                          params(Access::read), key_range()})),
+      scatter_(pass_program("radix sort scatter", radix_scatter_comp_glsl,
+                            {storage_buffer("keys_in", kRadixKeysInBinding, Access::read),
+                             storage_buffer("block_counts", kRadixBlockCountsBinding, Access::read),
+                             storage_buffer("digit_totals", kRadixDigitTotalsBinding, Access::read),
+                             storage_buffer("values_in", kRadixValuesInBinding, Access::read),
+                             storage_buffer("keys_out", kRadixKeysOutBinding, Access::write),
+                             storage_buffer("values_out", kRadixValuesOutBinding, Access::write),
+                             params(Access::read), key_range()})),
+      setup_(pass_program("radix sort setup", radix_setup_comp_glsl,
+                          {storage_buffer("digit_totals", kRadixDigitTotalsBinding, Access::read),
+                           params(Access::read_write), key_range()})),
       digit_totals_(kRadixDigits * sizeof(uint32_t)),
       params_(sizeof(RadixSortParams)) {}
 
@@ -119,8 +145,9 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
   const int passes = GlRadixSort::passes(how);
   const int low_bit = how.normalise_bits ? 0 : how.low_bit;
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  params_.bind_storage(kRadixParamsBinding);
-  if (how.key_range) how.key_range->bind_storage(kRadixKeyRangeBinding);
+  // A sort without normalised keys never reads the range; the point still holds a buffer of the
+  // sort's (the params), so the check before each dispatch sees what the pass bound.
+  const Buffer& range = how.key_range ? *how.key_range : params_;
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, params_.id());
   for (int pass = 0; pass < passes; ++pass) {
     const uint32_t shift = uint32_t(low_bit + 8 * pass);
@@ -132,28 +159,47 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
     set_changed(scan_, PassReads::kBlockCount, last_uniforms_[1], now);
     set_changed(scatter_, PassReads::kKeys, last_uniforms_[2], now);
 
-    key_copies[pass % 2]->bind_storage(kRadixKeysInBinding);
-    block_offsets_.bind_storage(kRadixBlockCountsBinding);
-    digit_totals_.bind_storage(kRadixDigitTotalsBinding);
-    value_copies[pass % 2]->bind_storage(kRadixValuesInBinding);
-    key_copies[(pass + 1) % 2]->bind_storage(kRadixKeysOutBinding);
-    value_copies[(pass + 1) % 2]->bind_storage(kRadixValuesOutBinding);
-
-    const auto dispatch_blocks = [&] {
-      if (later) glDispatchComputeIndirect(GLintptr(offsetof(RadixSortParams, groups_x)));
-      else glDispatchCompute(first.blocks, 1, 1);
+    const Buffer& keys_in = *key_copies[pass % 2];
+    const Buffer& values_in = *value_copies[pass % 2];
+    const Buffer& keys_out = *key_copies[(pass + 1) % 2];
+    const Buffer& values_out = *value_copies[(pass + 1) % 2];
+    const auto dispatch_blocks = [&](const Program& p) {
+      if (later) p.dispatch_indirect(GLintptr(offsetof(RadixSortParams, groups_x)));
+      else p.dispatch(first.blocks, 1, 1);
     };
+    // Each pass binds by name all it declares, though most points already hold the same buffer:
+    // the check before its dispatch compares against what this pass bound (docs/gpu.md "Binding
+    // points"), and a glBindBufferBase costs no round trip.
     histogram_.use();
-    dispatch_blocks();
+    histogram_.bind("keys_in", keys_in);
+    histogram_.bind("block_counts", block_offsets_);
+    histogram_.bind("params", params_);
+    histogram_.bind("key_range", range);
+    dispatch_blocks(histogram_);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scan_.use();
-    glDispatchCompute(kRadixDigits, 1, 1);  // a work group per digit
+    scan_.bind("block_counts", block_offsets_);
+    scan_.bind("digit_totals", digit_totals_);
+    scan_.bind("params", params_);
+    scan_.bind("key_range", range);
+    scan_.dispatch(kRadixDigits, 1, 1);  // a work group per digit
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     scatter_.use();
-    dispatch_blocks();
+    scatter_.bind("keys_in", keys_in);
+    scatter_.bind("block_counts", block_offsets_);
+    scatter_.bind("digit_totals", digit_totals_);
+    scatter_.bind("values_in", values_in);
+    scatter_.bind("keys_out", keys_out);
+    scatter_.bind("values_out", values_out);
+    scatter_.bind("params", params_);
+    scatter_.bind("key_range", range);
+    dispatch_blocks(scatter_);
     if (drop) {  // the kept count and the later passes' layout, from this pass's digit totals
       setup_.use();
-      glDispatchCompute(1, 1, 1);
+      setup_.bind("digit_totals", digit_totals_);
+      setup_.bind("params", params_);
+      setup_.bind("key_range", range);
+      setup_.dispatch(1, 1, 1);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
     } else {
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

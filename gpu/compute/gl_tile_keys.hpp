@@ -35,6 +35,16 @@ enum class TargetAlpha { kOpaque, kTransmittance };
 // The defines of a client's key pass ("EMIT 0|1", "PLANES 0|1").
 std::vector<std::string> key_pass_defines(KeyStep step, TileImages images);
 
+// The names under which a client's program declares the key engine's buffers it reads or writes
+// (docs/gpu.md "Binding points"): GlTileKeys::bind(program) binds those the program declares.
+// At the points of tile_io.h: kTileCountsBinding, kTileKeysBinding ... kTileStateBinding.
+Binding tile_counts(Access access);
+Binding tile_keys(Access access);
+Binding tile_values(Access access);
+Binding tile_ranges(Access access);
+Binding tile_work(Access access);
+Binding tile_state(Access access);
+
 class GlTileKeys {
  public:
   GlTileKeys();  // needs a current context; compiles the passes
@@ -60,11 +70,14 @@ class GlTileKeys {
   // Copies the last scan's key total into word `word` of `buffer`, on the GPU.
   void copy_key_total(const Buffer& buffer, uint32_t word) const;
 
-  // Binds keys, values, ranges, the work list and the state at their bindings (tile_io.h).
-  void bind() const;
+  // Binds, through the client's program, those of the keys, values, ranges, the work list and the
+  // state that it declares (tile_keys() ... above; the counts the client binds itself, sized by
+  // counts()).
+  void bind(const Program& program) const;
   // One work group per non-empty slot (groups x + y * gl_NumWorkGroups.x index the work list;
-  // those past state.work_count do nothing). The consuming program must be in use.
-  void dispatch_work() const;
+  // those past state.work_count do nothing), dispatched through the client's program, which must
+  // be in use: its bindings are checked first.
+  void dispatch_work(const Program& program) const;
   // Writes words[dispatch_word..+2] = a DispatchIndirectCommand of words[count_word] groups in
   // `buffer` (bound at kTileStateBinding): the same spreading for a client's own lists.
   void write_dispatch(const Buffer& buffer, uint32_t count_word, uint32_t dispatch_word) const;

@@ -188,6 +188,12 @@ void Program::bind(const std::string& name, const Texture& texture) const {
   record(b, texture.id());
 }
 
+bool Program::declares(const std::string& name) const {
+  for (const Binding& b : bindings_)
+    if (b.name == name) return true;
+  return false;
+}
+
 void Program::bind_texture_id(const std::string& name, GLuint texture) const {
   const Binding& b = declared(name, false);
   if (b.resource != Resource::texture)
@@ -230,6 +236,12 @@ void Program::dispatch_1d(size_t items, int local_size) const {
   // Beyond the 65535-group limit of one dimension, spread over y (gpu/gl/gl_work_groups.hpp).
   const WorkGroups spread = spread_work_groups(groups);
   dispatch(spread.x, spread.y, 1);
+}
+
+void Program::dispatch_groups(size_t groups, GLuint z) const {
+  const WorkGroups spread = spread_work_groups(groups);
+  if (spread.x == 0 || z == 0) return;
+  dispatch(spread.x, spread.y, z);
 }
 
 void Program::dispatch_indirect(GLintptr offset) const {

@@ -31,8 +31,8 @@ class Program {
   // lines) prepended, so one file serves several variants. Compile and link errors throw
   // std::runtime_error naming `label` with the driver's log. `bindings` declares what the program
   // reads and writes at which point; when given it must match the program's active resources
-  // (std::logic_error naming the point). A program that declares nothing is not checked and
-  // binds the old way (Buffer::bind_storage, glBind*): the passes not yet converted.
+  // (std::logic_error naming the point). A program that declares nothing is not checked (a test's
+  // own shader); every pass of lfd declares.
   Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
           const std::vector<std::string>& defines = {}, std::vector<Binding> bindings = {});
   GLuint id() const { return name_.id(); }
@@ -51,12 +51,18 @@ class Program {
   void bind(const std::string& name, const Buffer& buffer) const;
   void bind(const std::string& name, const Texture& texture) const;
   void bind_texture_id(const std::string& name, GLuint texture) const;  // a texture lfd does not own
+  // Whether the program declares a binding `name`: a helper that binds for its clients (the tile
+  // keys' buffers) binds only the points the client's program reads.
+  bool declares(const std::string& name) const;
 
   // Dispatches and draws of this program, which must be in use. Under strict checks each first
   // checks the declared bindings (check_bindings_before_use).
   void dispatch(GLuint x, GLuint y = 1, GLuint z = 1) const;
   // ceil(n / local_size) groups (1D; past 65535 groups spread over y: shaders use gl_NumWorkGroups).
   void dispatch_1d(size_t items, int local_size) const;
+  // `groups` groups (one a block, a slot...) spread over rows of at most 65535, `z` deep; nothing
+  // for 0 groups (gpu/gl/gl_work_groups.hpp: the shaders use flat_group_index()).
+  void dispatch_groups(size_t groups, GLuint z = 1) const;
   void dispatch_indirect(GLintptr offset) const;  // from the bound GL_DISPATCH_INDIRECT_BUFFER
   void draw_arrays(GLenum mode, GLint first, GLsizei count, GLsizei instances = 1) const;
   void draw_arrays_indirect(GLenum mode, GLintptr offset) const;  // from GL_DRAW_INDIRECT_BUFFER

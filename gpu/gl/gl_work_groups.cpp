@@ -15,10 +15,4 @@ WorkGroups spread_work_groups(size_t groups) {
   return {GLuint(x), GLuint(y)};
 }
 
-void dispatch_work_groups(size_t groups, GLuint z) {
-  const WorkGroups g = spread_work_groups(groups);
-  if (g.x == 0 || z == 0) return;
-  glDispatchCompute(g.x, g.y, z);
-}
-
 }  // namespace lfd::gpu

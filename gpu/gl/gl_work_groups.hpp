@@ -11,10 +11,8 @@ namespace lfd::gpu {
 struct WorkGroups {
   GLuint x = 0, y = 0;
 };
-// `groups` groups spread over rows of at most kMaxWorkGroupsX (0 x 0 for none).
+// `groups` groups spread over rows of at most kMaxWorkGroupsX (0 x 0 for none). A pass dispatches
+// them through its program (Program::dispatch_groups, dispatch_1d), which checks its bindings first.
 WorkGroups spread_work_groups(size_t groups);
-// glDispatchCompute of `groups` groups spread so, `z` deep; nothing for 0 groups. The program
-// must be in use.
-void dispatch_work_groups(size_t groups, GLuint z = 1);
 
 }  // namespace lfd::gpu

@@ -125,11 +125,4 @@ size_t GlScene::bytes() const {
   return positions_.bytes() + scales_.bytes() + rotations_.bytes() + sh_.bytes();
 }
 
-void GlScene::bind() const {
-  positions_.bind_storage(kScenePositionsBinding);
-  scales_.bind_storage(kSceneScalesBinding);
-  rotations_.bind_storage(kSceneRotationsBinding);
-  sh_.bind_storage(kSceneShBinding);
-}
-
 }  // namespace lfd::gpu

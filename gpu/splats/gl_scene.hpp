@@ -63,9 +63,6 @@ class GlScene {
   const Buffer& scales() const { return scales_; }
   const Buffer& rotations() const { return rotations_; }
   const Buffer& sh() const { return sh_; }
-  // Binds the four buffers at kScenePositionsBinding..kSceneShBinding, for a pass that does not
-  // declare its bindings (one that does binds the buffers above by name).
-  void bind() const;
 
  private:
   size_t count_ = 0;

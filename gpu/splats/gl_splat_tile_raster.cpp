@@ -9,7 +9,6 @@
 
 #include "gpu/gl/gl_fault.hpp"
 #include "gpu/gl/gl_limits.hpp"
-#include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/splats/gl_splat_preprocess.hpp"
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/compute/shaders/radix_sort_io.h"
@@ -37,9 +36,33 @@ constexpr size_t kSplitListBytes = kSplitPartsOffset + size_t(kTileSplatMaxParts
 constexpr size_t kPartialBytes = size_t(kTilePixels) * 16;  // a part's vec4 per pixel
 static_assert(kTileSide == uint32_t(render::kTileSize), "the compute tiles are the reference's");
 
-Program keys_program(const char* label, const char* source, KeyStep step, TileImages images) {
-  return Program(label, {{GL_COMPUTE_SHADER, source}}, key_pass_defines(step, images));
+// What a key pass reads and writes (docs/gpu.md "Binding points"): the items and their counts;
+// the small items' pass the item count and (counting) the huge list it fills, the huge items' pass
+// that list; writing, the keys and values; for planes, each item's plane.
+std::vector<Binding> key_bindings(bool huge, KeyStep step, TileImages images) {
+  std::vector<Binding> b = {storage_buffer("records", kSplatRecordsBinding, Access::read),
+                            storage_buffer("entries", kTileSplatEntriesBinding, Access::read),
+                            tile_counts(step == KeyStep::kEmit && !huge ? Access::read : Access::read_write)};
+  if (!huge) b.push_back(storage_buffer("kept", kTileSplatKeptBinding, Access::read));
+  if (huge || step == KeyStep::kCount)
+    b.push_back(storage_buffer("huge", kTileSplatHugeBinding, huge ? Access::read : Access::read_write));
+  if (step == KeyStep::kEmit) b.push_back(tile_keys(Access::write)), b.push_back(tile_values(Access::write));
+  if (images == TileImages::kPlanes) b.push_back(storage_buffer("layers", kTileSplatLayersBinding, Access::read));
+  return b;
 }
+
+enum class KeyItems { kSmall, kHuge };  // splat_tile_keys, splat_tile_huge
+
+Program keys_program(const char* label, KeyItems which, KeyStep step, TileImages images) {
+  const bool huge = which == KeyItems::kHuge;
+  const char* source = huge ? splat_tile_huge_comp_glsl : splat_tile_keys_comp_glsl;
+  return Program(label, {{GL_COMPUTE_SHADER, source}}, key_pass_defines(step, images),
+                 key_bindings(huge, step, images));
+}
+
+Binding split_list(Access access) { return storage_buffer("split", kTileSplatSplitBinding, access); }
+Binding partials(Access access) { return storage_buffer("partials", kTileSplatPartialsBinding, access); }
+Binding target_image() { return image("target", kTileSplatTargetImage, Access::write); }
 
 const char* image_format_name(GLenum format) {
   switch (format) {
@@ -71,14 +94,24 @@ TileViewCamera view_camera(const render::Camera& camera, const render::RasterSet
 }  // namespace
 
 GlSplatTileRaster::KeyPrograms::KeyPrograms(TileImages images)
-    : count(keys_program("compute splats: count keys", splat_tile_keys_comp_glsl, KeyStep::kCount, images)),
-      emit(keys_program("compute splats: write keys", splat_tile_keys_comp_glsl, KeyStep::kEmit, images)),
-      huge_count(keys_program("compute splats: count huge keys", splat_tile_huge_comp_glsl, KeyStep::kCount, images)),
-      huge_emit(keys_program("compute splats: write huge keys", splat_tile_huge_comp_glsl, KeyStep::kEmit, images)) {}
+    : count(keys_program("compute splats: count keys", KeyItems::kSmall, KeyStep::kCount, images)),
+      emit(keys_program("compute splats: write keys", KeyItems::kSmall, KeyStep::kEmit, images)),
+      huge_count(keys_program("compute splats: count huge keys", KeyItems::kHuge, KeyStep::kCount, images)),
+      huge_emit(keys_program("compute splats: write huge keys", KeyItems::kHuge, KeyStep::kEmit, images)) {}
 
 GlSplatTileRaster::GlSplatTileRaster()
-    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, splat_tile_preprocess_comp_glsl}}),
-      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, splat_tile_split_comp_glsl}}),
+    : preprocess_("compute splats: preprocess", {{GL_COMPUTE_SHADER, splat_tile_preprocess_comp_glsl}}, {},
+                  {storage_buffer("positions", kScenePositionsBinding, Access::read),
+                   storage_buffer("scales", kSceneScalesBinding, Access::read),
+                   storage_buffer("rotations", kSceneRotationsBinding, Access::read),
+                   storage_buffer("sh", kSceneShBinding, Access::read),
+                   storage_buffer("records", kSplatRecordsBinding, Access::write),
+                   storage_buffer("entry_keys", kTileSplatEntryKeysBinding, Access::write),
+                   storage_buffer("entries", kTileSplatEntriesBinding, Access::write),
+                   storage_buffer("views", kTileSplatViewsBinding, Access::read)}),
+      split_("compute splats: split hot tiles", {{GL_COMPUTE_SHADER, splat_tile_split_comp_glsl}}, {},
+             {tile_ranges(Access::read_write), tile_work(Access::read), tile_state(Access::read),
+              split_list(Access::read_write)}),
       view_keys_(TileImages::kViews),
       plane_keys_(TileImages::kPlanes) {
   fail_if_faulted(GlFault::kComputeRaster, "compute splats");  // a driver that cannot build the path (tests)
@@ -104,9 +137,22 @@ const Program& GlSplatTileRaster::composite_program(GLenum format, TileImages im
     const std::string label = part ? std::string("compute splats: composite split parts")
                                    : std::string("compute splats: composite into ") + (planes ? "planes " : "views ") +
                                          image_format_name(format);
+    // A split part blends a run of a slot's keys into partials; a whole slot its range into the
+    // target, planes from the work list.
+    std::vector<Binding> bindings = {storage_buffer("records", kSplatRecordsBinding, Access::read),
+                                     tile_values(Access::read)};
+    if (part) {
+      bindings.push_back(split_list(Access::read));
+      bindings.push_back(partials(Access::write));
+    } else {
+      bindings.push_back(tile_ranges(Access::read));
+      if (planes) bindings.push_back(tile_work(Access::read)), bindings.push_back(tile_state(Access::read));
+      bindings.push_back(target_image());
+    }
     it = composite_
              .emplace(std::tuple(format, images, share),
-                      Program(label, {{GL_COMPUTE_SHADER, splat_tile_composite_comp_glsl}}, defines))
+                      Program(label, {{GL_COMPUTE_SHADER, splat_tile_composite_comp_glsl}}, defines,
+                              std::move(bindings)))
              .first;
   }
   return it->second;
@@ -119,7 +165,10 @@ const Program& GlSplatTileRaster::merge_program(GLenum format, TileImages images
              .emplace(std::pair(format, images),
                       Program(std::string("compute splats: merge split tiles into ") +
                                   (images == TileImages::kPlanes ? "planes " : "views ") + image_format_name(format),
-                              {{GL_COMPUTE_SHADER, splat_tile_merge_comp_glsl}}, target_defines(format, images)))
+                              {{GL_COMPUTE_SHADER, splat_tile_merge_comp_glsl}}, target_defines(format, images),
+                              {storage_buffer("records", kSplatRecordsBinding, Access::read),
+                               tile_values(Access::read), split_list(Access::read), partials(Access::read),
+                               target_image()}))
              .first;
   return it->second;
 }
@@ -150,10 +199,10 @@ bool GlSplatTileRaster::split_slots(uint32_t keys, uint32_t slots) {
   glClearNamedBufferSubData(split_list_.id(), GL_R32UI, GLintptr(kSplitPartsOffset),
                             GLsizeiptr(kSplitListBytes - kSplitPartsOffset), GL_RED_INTEGER, GL_UNSIGNED_INT, &no_part);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-  tiles_.bind();
-  split_list_.bind_storage(kTileSplatSplitBinding);
   glProgramUniform1ui(split_.id(), split_.uniform("split_keys"), split_keys_);
   split_.use();
+  tiles_.bind(split_);
+  split_.bind("split", split_list_);
   split_.dispatch_1d(slots, int(kTileSplatSplitGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   tiles_.write_dispatch(split_list_, offsetof(TileSplitList, slots) / 4, offsetof(TileSplitList, merge_groups_x) / 4);
@@ -161,23 +210,30 @@ bool GlSplatTileRaster::split_slots(uint32_t keys, uint32_t slots) {
   return true;
 }
 
-void GlSplatTileRaster::composite_split(GLenum format, TileImages images, const TargetUniforms& target) {
+void GlSplatTileRaster::composite_split(GLenum format, TileImages images, const TargetUniforms& target,
+                                        const Buffer& records, const Texture& target_texture) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // the merge writes after the whole-slot pass
-  tiles_.bind();
-  split_list_.bind_storage(kTileSplatSplitBinding);
-  partials_.bind_storage(kTileSplatPartialsBinding);
   const Program& parts = composite_program(format, images, SlotShare::kSplitParts);
   set_target_uniforms(parts, {.image_size = target.image_size, .tile_grid = target.tile_grid});
   glProgramUniform1ui(parts.id(), parts.uniform("split_keys"), split_keys_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, split_list_.id());
   parts.use();
-  glDispatchComputeIndirect(GLintptr(offsetof(TileSplitList, part_groups_x)));
+  tiles_.bind(parts);
+  parts.bind("records", records);
+  parts.bind("split", split_list_);
+  parts.bind("partials", partials_);
+  parts.dispatch_indirect(GLintptr(offsetof(TileSplitList, part_groups_x)));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   const Program& merge = merge_program(format, images);
   set_target_uniforms(merge, target);
   glProgramUniform1ui(merge.id(), merge.uniform("split_keys"), split_keys_);
   merge.use();
-  glDispatchComputeIndirect(GLintptr(offsetof(TileSplitList, merge_groups_x)));
+  tiles_.bind(merge);
+  merge.bind("records", records);
+  merge.bind("split", split_list_);
+  merge.bind("partials", partials_);
+  merge.bind("target", target_texture);
+  merge.dispatch_indirect(GLintptr(offsetof(TileSplitList, merge_groups_x)));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
@@ -202,26 +258,27 @@ void GlSplatTileRaster::run_keys(const KeyPrograms& programs, KeyStep step, cons
     }
   glProgramUniform1ui(small.id(), small.uniform("item_capacity"), items.capacity);
   glProgramUniform1ui(small.id(), small.uniform("kept_word"), items.kept_word);
-  items.records->bind_storage(kSplatRecordsBinding);
-  items.entries->bind_storage(kTileSplatEntriesBinding);
-  items.kept->bind_storage(kTileSplatKeptBinding);
-  if (items.layers) items.layers->bind_storage(kTileSplatLayersBinding);
-  tiles_.counts(items.capacity).bind_storage(kTileCountsBinding);
-  huge_.bind_storage(kTileSplatHugeBinding);
-  if (emit) {
-    tiles_.keys().bind_storage(kTileKeysBinding);
-    tiles_.values().bind_storage(kTileValuesBinding);
-  }
+  // What both passes declare (key_bindings), by name; the planes' passes declare the layers.
+  Buffer& counts = tiles_.counts(items.capacity);
+  const auto bind_items = [&](const Program& p) {
+    p.bind("records", *items.records);
+    p.bind("entries", *items.entries);
+    p.bind("tile_counts", counts);
+    if (p.declares("kept")) p.bind("kept", *items.kept);
+    if (p.declares("huge")) p.bind("huge", huge_);
+    if (items.layers) p.bind("layers", *items.layers);
+    tiles_.bind(p);  // writing: the keys and values
+  };
   small.use();
+  bind_items(small);
   small.dispatch_1d(items.capacity, int(kTileSplatItemsGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (!emit) {
+  if (!emit)
     tiles_.write_dispatch(huge_, offsetof(TileHugeList, count) / 4, offsetof(TileHugeList, groups_x) / 4);
-    huge_.bind_storage(kTileSplatHugeBinding);
-  }
   huge.use();
+  bind_items(huge);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, huge_.id());
-  glDispatchComputeIndirect(GLintptr(offsetof(TileHugeList, groups_x)));
+  huge.dispatch_indirect(GLintptr(offsetof(TileHugeList, groups_x)));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
@@ -330,13 +387,17 @@ void GlSplatTileRaster::render_pass(const GlScene& scene, std::span<const render
     glProgramUniform1f(p, preprocess_.uniform("scale_modifier"), settings.scale_modifier);
     glProgramUniform1i(p, preprocess_.uniform("sh_degree"), std::min(requested, scene.sh_degree()));
     glProgramUniform1i(p, preprocess_.uniform("sh_stride"), scene.sh_vec4_stride());
-    scene.bind();
-    records_.bind_storage(kSplatRecordsBinding);
-    entry_keys_.bind_storage(kTileSplatEntryKeysBinding);
-    entries_.bind_storage(kTileSplatEntriesBinding);
-    views_.bind_storage(kTileSplatViewsBinding);
     preprocess_.use();
-    dispatch_work_groups((size_t(N) + kSplatPreprocessGroupSize - 1) / kSplatPreprocessGroupSize, V);  // z: the view
+    preprocess_.bind("positions", scene.positions());
+    preprocess_.bind("scales", scene.scales());
+    preprocess_.bind("rotations", scene.rotations());
+    preprocess_.bind("sh", scene.sh());
+    preprocess_.bind("records", records_);
+    preprocess_.bind("entry_keys", entry_keys_);
+    preprocess_.bind("entries", entries_);
+    preprocess_.bind("views", views_);
+    // z: the view
+    preprocess_.dispatch_groups((size_t(N) + kSplatPreprocessGroupSize - 1) / kSplatPreprocessGroupSize, V);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   if (stamp) stamp(1);
@@ -357,12 +418,12 @@ void GlSplatTileRaster::render_pass(const GlScene& scene, std::span<const render
   const TargetUniforms where{.image_size = {W, H}, .tile_grid = tile_grid, .views = &target, .first_view = first_view};
   set_target_uniforms(composite, where);
   glProgramUniform1ui(composite.id(), composite.uniform("slot_count"), uint32_t(slots));
-  tiles_.bind();
-  records_.bind_storage(kSplatRecordsBinding);
-  glBindImageTexture(kTileSplatTargetImage, target.texture->id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
   composite.use();
-  dispatch_work_groups(slots);  // one group a slot
-  if (split) composite_split(format, TileImages::kViews, where);
+  tiles_.bind(composite);
+  composite.bind("records", records_);
+  composite.bind("target", *target.texture);
+  composite.dispatch_groups(slots);  // one group a slot
+  if (split) composite_split(format, TileImages::kViews, where, records_, *target.texture);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                   GL_FRAMEBUFFER_BARRIER_BIT);
   check_gl("the compute tile rasterizer");
@@ -402,12 +463,12 @@ void GlSplatTileRaster::draw_planes(const Buffer& records, const Buffer& sorted_
   const Program& composite = composite_program(format, TileImages::kPlanes);
   const TargetUniforms where{.image_size = {planes.width, planes.height}, .tile_grid = tile_grid};
   set_target_uniforms(composite, where);
-  tiles_.bind();
-  records.bind_storage(kSplatRecordsBinding);
-  glBindImageTexture(kTileSplatTargetImage, planes.texels.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, format);
   composite.use();
-  tiles_.dispatch_work();
-  if (split) composite_split(format, TileImages::kPlanes, where);
+  tiles_.bind(composite);
+  composite.bind("records", records);
+  composite.bind("target", planes.texels);
+  tiles_.dispatch_work(composite);
+  if (split) composite_split(format, TileImages::kPlanes, where, records, planes.texels);
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   if (stamp) stamp(2);
   check_gl("the compute tile rasterizer's planes");

@@ -172,8 +172,9 @@ class GlSplatTileRaster {
   // The split of hot slots (after make_keys): lists the slots over split_keys_ keys and empties
   // their ranges; returns false (and does nothing) when no slot can be over it (`keys` in all).
   bool split_slots(uint32_t keys, uint32_t slots);
-  // The split slots' parts, then their merge into the bound target image (after the compositing).
-  void composite_split(GLenum format, TileImages images, const TargetUniforms& target);
+  // The split slots' parts, then their merge into the target image (after the compositing).
+  void composite_split(GLenum format, TileImages images, const TargetUniforms& target, const Buffer& records,
+                       const Texture& target_texture);
 
   Program preprocess_, split_;
   KeyPrograms view_keys_, plane_keys_;

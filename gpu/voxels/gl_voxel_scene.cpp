@@ -72,12 +72,6 @@ GlVoxelScene::GlVoxelScene(const scene::VoxelScene& scene, const GlInfo& info) :
 
 size_t GlVoxelScene::bytes() const { return boxes_.bytes() + densities_.bytes() + sh_.bytes() + order_.bytes(); }
 
-void GlVoxelScene::bind() const {
-  boxes_.bind_storage(kVoxelBoxesBinding);
-  densities_.bind_storage(kVoxelDensitiesBinding);
-  sh_.bind_storage(kSceneShBinding);
-}
-
 uint32_t octants_in_view(const render::Camera& camera) {
   // Before normalising, the direction is linear in the pixel position; normalising keeps signs.
   glm::vec3 lo(INFINITY), hi(-INFINITY);

@@ -46,8 +46,6 @@ class GlVoxelScene {
   const Buffer& boxes() const { return boxes_; }  // min xyz, edge per voxel
   const Buffer& densities() const { return densities_; }
   const Buffer& sh() const { return sh_; }
-  // Binds boxes, densities and SH at their bindings (for passes that do not declare theirs).
-  void bind() const;
 
  private:
   scene::VoxelScene scene_;

@@ -4,12 +4,13 @@
 #include <bit>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/gtc/type_ptr.hpp>
 
 #include "gpu/gl/gl_fault.hpp"
 #include "gpu/gl/gl_limits.hpp"
-#include "gpu/gl/gl_work_groups.hpp"
 #include "gpu/splats/gl_scene.hpp"
 #include "gpu/voxels/shaders/voxel_tile_keys.comp.glsl.hpp"
 #include "gpu/voxels/shaders/voxel_tile_march.comp.glsl.hpp"
@@ -24,7 +25,19 @@ static_assert(sizeof(VoxelTileRange) == 16, "VoxelTileRange is std430: packed ui
 Program keys_program(KeyStep step, TileImages images) {
   const std::string label = std::string("voxel tiles: ") + (step == KeyStep::kEmit ? "keys" : "counts") +
                             (images == TileImages::kPlanes ? " (planes)" : "");
-  return Program(label, {{GL_COMPUTE_SHADER, voxel_tile_keys_comp_glsl}}, key_pass_defines(step, images));
+  // What the pass reads and writes (docs/gpu.md "Binding points"): the voxels in their octant
+  // orders, the images and runs, the counts; writing, the keys and values; for planes, each
+  // ordered voxel's chunk.
+  const bool emit = step == KeyStep::kEmit;
+  std::vector<Binding> bindings = {storage_buffer("boxes", kVoxelBoxesBinding, Access::read),
+                                   storage_buffer("order", kVoxelOrderBinding, Access::read),
+                                   storage_buffer("views", kVoxelTileViewsBinding, Access::read),
+                                   storage_buffer("runs", kVoxelTileRangesBinding, Access::read),
+                                   tile_counts(emit ? Access::read : Access::write)};
+  if (emit) bindings.push_back(tile_keys(Access::write)), bindings.push_back(tile_values(Access::write));
+  if (images == TileImages::kPlanes) bindings.push_back(storage_buffer("chunk_of", kVoxelChunkOfBinding, Access::read));
+  return Program(label, {{GL_COMPUTE_SHADER, voxel_tile_keys_comp_glsl}}, key_pass_defines(step, images),
+                 std::move(bindings));
 }
 
 // The image's uniforms (gpu/voxels/shaders/voxel_tile_view.glsl); tile_grid where the pass reads it.
@@ -62,7 +75,14 @@ GlVoxelTileRaster::GlVoxelTileRaster()
       emit_(keys_program(KeyStep::kEmit, TileImages::kViews)),
       count_planes_(keys_program(KeyStep::kCount, TileImages::kPlanes)),
       emit_planes_(keys_program(KeyStep::kEmit, TileImages::kPlanes)),
-      march_("voxel tiles: march", {{GL_COMPUTE_SHADER, voxel_tile_march_comp_glsl}}) {
+      march_("voxel tiles: march", {{GL_COMPUTE_SHADER, voxel_tile_march_comp_glsl}}, {},
+             {storage_buffer("boxes", kVoxelBoxesBinding, Access::read),
+              storage_buffer("densities", kVoxelDensitiesBinding, Access::read),
+              storage_buffer("sh", kSceneShBinding, Access::read), tile_values(Access::read),
+              tile_ranges(Access::read), tile_work(Access::read), tile_state(Access::read),
+              storage_buffer("views", kVoxelTileViewsBinding, Access::read),
+              storage_buffer("runs", kVoxelTileRangesBinding, Access::read),
+              image("target", kVoxelTileTargetImage, Access::read_write)}) {
   fail_if_faulted(GlFault::kComputeRaster, "voxel tiles");  // a driver that cannot build the path (tests)
 }
 
@@ -113,24 +133,24 @@ bool GlVoxelTileRaster::make_keys(const GlVoxelScene& scene, glm::ivec2 image_si
     glProgramUniform1ui(p, program->uniform("item_count"), uint32_t(items));
     if (chunk_of) glProgramUniform1ui(p, program->uniform("plane_capacity"), GLuint(plane_capacity));
   }
-  const auto bind_inputs = [&] {
-    scene.bind();
-    order.bind_storage(kVoxelOrderBinding);
-    if (chunk_of) chunk_of->bind_storage(kVoxelChunkOfBinding);
-    views_.bind_storage(kVoxelTileViewsBinding);
-    runs_.bind_storage(kVoxelTileRangesBinding);
-    keys_.counts(items).bind_storage(kTileCountsBinding);
+  Buffer& counts = keys_.counts(items);
+  const auto bind_inputs = [&](const Program& program) {
+    program.bind("boxes", scene.boxes());
+    program.bind("order", order);
+    if (chunk_of) program.bind("chunk_of", *chunk_of);
+    program.bind("views", views_);
+    program.bind("runs", runs_);
+    program.bind("tile_counts", counts);
   };
-  bind_inputs();
   count.use();
+  bind_inputs(count);
   count.dispatch_1d(items, int(kVoxelTileItemsGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   keys_.scan_to_capacity(uint32_t(items), capacity_.for_pass(uint32_t(items)));
   glProgramUniform1ui(emit.id(), emit.uniform("key_capacity"), keys_.capacity());
-  bind_inputs();
-  keys_.keys().bind_storage(kTileKeysBinding);
-  keys_.values().bind_storage(kTileValuesBinding);
   emit.use();
+  bind_inputs(emit);
+  keys_.bind(emit);  // the keys and values it writes
   emit.dispatch_1d(items, int(kVoxelTileItemsGroupSize));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   keys_.sort_and_find_ranges_to_capacity(uint32_t(slots));
@@ -157,17 +177,19 @@ void GlVoxelTileRaster::march(const Texture& target, glm::ivec2 origin, int cols
   glProgramUniform1ui(p, march_.uniform("slot_base"), slot_base);
   glProgramUniform1ui(p, march_.uniform("slot_run"), slot_run);
   glProgramUniform1ui(p, march_.uniform("key_capacity"), keys_.capacity());
-  scene_->bind();
-  keys_.bind();
-  views_.bind_storage(kVoxelTileViewsBinding);
-  runs_.bind_storage(kVoxelTileRangesBinding);
-  glBindImageTexture(kVoxelTileTargetImage, target.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // a clear or an earlier pass wrote the target
   march_.use();
+  march_.bind("boxes", scene_->boxes());
+  march_.bind("densities", scene_->densities());
+  march_.bind("sh", scene_->sh());
+  keys_.bind(march_);
+  march_.bind("views", views_);
+  march_.bind("runs", runs_);
+  march_.bind("target", target);
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);  // a clear or an earlier pass wrote the target
   if (slot_run == 0)
-    keys_.dispatch_work();
+    keys_.dispatch_work(march_);
   else
-    dispatch_work_groups(slot_run);  // one group a slot
+    march_.dispatch_groups(slot_run);  // one group a slot
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   check_gl("the voxel tile raster");
 }

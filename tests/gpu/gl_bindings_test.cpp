@@ -76,6 +76,25 @@ TEST(GlBindings, AWrongBufferAtADeclaredPointThrowsNamingThePassAndThePoint) {
   }
 }
 
+// The spread dispatch (gpu/gl/gl_work_groups.hpp) checks like the others: no pass can skip it.
+TEST(GlBindings, TheSpreadDispatchChecksTheBindingsToo) {
+  GlChecks strict("strict");
+  HeadlessContext context;
+  const Program program = sum_program();
+  const uint32_t values[2] = {3, 4};
+  Buffer in(sizeof values, values), out(sizeof(uint32_t)), other(sizeof(uint32_t));
+  program.use();
+  program.bind("values", in);
+  program.bind("depth_range", out);
+  program.dispatch_groups(1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  EXPECT_EQ(out.download_as<uint32_t>(1)[0], 7u);
+  other.bind_storage(11);
+  EXPECT_THROW(program.dispatch_groups(1), std::logic_error);
+  EXPECT_TRUE(program.declares("depth_range"));
+  EXPECT_FALSE(program.declares("range"));
+}
+
 TEST(GlBindings, ADeclaredPointNeverBoundThrowsNamingThePassAndThePoint) {
   GlChecks strict("strict");
   HeadlessContext context;

@@ -201,7 +201,8 @@ TEST(GlTileKeys, DispatchesOneGroupPerNonEmptySlotPast65535) {
   static_assert(kTileWorkBinding == 13 && kTileStateBinding == 10, "kVisitSource's bindings");
   HeadlessContext context;
   GlTileKeys tiles;
-  Program visit("tile keys test: visit the work list", {{GL_COMPUTE_SHADER, kVisitSource}});
+  Program visit("tile keys test: visit the work list", {{GL_COMPUTE_SHADER, kVisitSource}}, {},
+                {tile_work(Access::read), tile_state(Access::read), storage_buffer("visits", 0, Access::read_write)});
   for (const uint32_t slots : {100000u, 150000u}) {
     const uint32_t step = slots == 100000u ? 2u : 1u;
     std::vector<uint32_t> counts(slots / step, 2u);
@@ -216,10 +217,10 @@ TEST(GlTileKeys, DispatchesOneGroupPerNonEmptySlotPast65535) {
 
     std::vector<uint32_t> none(slots, 0u);
     Buffer visits(size_t(slots) * 4, none.data());
-    tiles.bind();
-    visits.bind_storage(0);
     visit.use();
-    tiles.dispatch_work();
+    tiles.bind(visit);
+    visit.bind("visits", visits);
+    tiles.dispatch_work(visit);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     const auto got = visits.download_as<uint32_t>(slots);
     for (uint32_t s = 0; s < slots; ++s)
