@@ -1,9 +1,9 @@
 // The throughput probe's memory bandwidth (gpu/probes/gl_throughput_probe.hpp): one vec4 read and one
 // written per invocation, so a dispatch moves 32 bytes an invocation through DRAM.
 #include "gpu/probes/shaders/probe_io.h"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kProbeGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 layout(std430, binding = kProbeSourceBinding) readonly buffer In { vec4 source[]; };
 layout(std430, binding = kProbeTargetBinding) writeonly buffer Out { vec4 target[]; };
 uniform uint count;

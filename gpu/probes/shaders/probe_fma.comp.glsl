@@ -2,9 +2,9 @@
 // `iterations` steps of 8 independent fused multiply-adds (2 FLOPs each), chains the compiler
 // cannot fold, summed into one store so none is dropped.
 #include "gpu/probes/shaders/probe_io.h"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kProbeGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 layout(std430, binding = kProbeTargetBinding) writeonly buffer Out { float result[]; };
 uniform uint iterations;
 uniform float seed;

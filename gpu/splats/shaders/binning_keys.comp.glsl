@@ -4,9 +4,9 @@
 // depth > 0.2 orders as the floats), the others 0xFFFFFFFF so they sort after every binned one;
 // values are the Gaussian indices. Binned Gaussians are counted in the plane table.
 #include "gpu/splats/shaders/frame_io.h"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kBinningKeysGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kScenePositionsBinding) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
 layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };

@@ -2,9 +2,9 @@
 // the layered raster's gl_Layer: the last plane whose first splat is not after it.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/planes/shaders/plane_table.glsl"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kBinningLayersGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatLayersBinding) writeonly buffer Layers { uint layers[]; };
 

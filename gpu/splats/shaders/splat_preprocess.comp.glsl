@@ -5,6 +5,7 @@
 #include "gpu/splats/shaders/splat_record.glsl"
 
 layout(local_size_x = kSplatPreprocessGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kScenePositionsBinding) readonly buffer Positions { vec4 positions[]; };  // xyz, opacity
 layout(std430, binding = kSceneScalesBinding) readonly buffer Scales { vec4 scales[]; };
@@ -30,7 +31,6 @@ uniform float scale_modifier;
 uniform vec3 sh_origin;
 
 #include "gpu/splats/shaders/splat_project.glsl"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 uint cull(uint i) {
   records[i] = SplatRecord(vec4(0.0), vec4(0.0), vec4(0.0), ivec4(0));

@@ -3,9 +3,9 @@
 // the binned count), `unbinned` (the table's plane capacity: after every chunk) for the others.
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/planes/shaders/plane_table.glsl"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kVoxelBinningGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kSplatValuesBinding) readonly buffer Values { uint values[]; };  // sorted voxel indices
 layout(std430, binding = kSplatLayersBinding) readonly buffer Layers { uint layers[]; };  // plane per sorted position

@@ -7,9 +7,9 @@
 // (no fused multiply-add), the half extent as (edge / 2) (|f.x| + |f.y| + |f.z|).
 #include "gpu/splats/shaders/frame_io.h"
 #include "gpu/splats/shaders/depth_key.glsl"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kVoxelBinningGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kVoxelBoxesBinding) readonly buffer Boxes { vec4 boxes[]; };  // min xyz, edge
 layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };

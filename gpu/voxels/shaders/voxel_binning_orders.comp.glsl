@@ -6,9 +6,9 @@
 // per chunk). One octant at a time: the keys need only the chunk's bits (one radix pass up to
 // 255 planes).
 #include "gpu/splats/shaders/frame_io.h"
-#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(local_size_x = kVoxelBinningGroupSize) in;
+#include "gpu/gl/shaders/flat_group.glsl"
 
 layout(std430, binding = kVoxelOrderBinding) readonly buffer Order { uint order[]; };  // eight orders of n
 layout(std430, binding = kSplatKeysBinding) writeonly buffer Keys { uint keys[]; };
