@@ -108,6 +108,8 @@ void Buffer::upload(const void* data, size_t bytes, size_t offset) {
 void Buffer::download(void* data, size_t bytes, size_t offset) const {
   if (!bytes) return;
   if (offset + bytes > bytes_) throw std::logic_error("Buffer::download past the end");
+  // What shaders wrote is read back only after this barrier; a download waits anyway.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(id(), GLintptr(offset), GLsizeiptr(bytes), data);
 }
 
@@ -187,6 +189,7 @@ void Texture::set_filter(GLenum min_mag) const {
 std::vector<float> read_texture_rgba(const Texture& texture, int layer) {
   const size_t count = size_t(texture.width()) * texture.height() * 4;
   std::vector<float> out(count);
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // image stores before the read-back
   glGetTextureSubImage(texture.id(), 0, 0, 0, texture.layers() ? layer : 0, texture.width(),
                        texture.height(), 1, GL_RGBA, GL_FLOAT, GLsizei(count * sizeof(float)),
                        out.data());
