@@ -115,6 +115,7 @@ GlSplatTileRaster::GlSplatTileRaster()
       view_keys_(TileImages::kViews),
       plane_keys_(TileImages::kPlanes) {
   fail_if_faulted(GlFault::kComputeRaster, "compute splats");  // a driver that cannot build the path (tests)
+  device_pass_limit_ = size_t(gl_limits().storage_block_bytes);
 }
 
 // The defines of a program that includes splat_tile_target.glsl.
@@ -305,7 +306,7 @@ std::vector<uint32_t> GlSplatTileRaster::overflowed_passes(uint32_t passes) {
 
 size_t GlSplatTileRaster::pass_limit() const {
   if (pass_limit_ > 0) return pass_limit_;
-  return size_t(gl_limits().storage_block_bytes);  // the device's, or LFD_GL_LIMITS' lower one
+  return device_pass_limit_;
 }
 
 uint32_t GlSplatTileRaster::read_huge_items() const {

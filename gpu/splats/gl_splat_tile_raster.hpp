@@ -188,6 +188,9 @@ class GlSplatTileRaster {
   bool split_ran_ = false;  // the last pass split slots (split_list_ holds its counts)
   TileSplatCounts counts_;
   size_t pass_limit_ = 0;
+  // The device's largest storage block (or LFD_GL_LIMITS' lower one), read once at construction:
+  // a GL query a frame would be a round trip on some drivers.
+  size_t device_pass_limit_ = 0;
   int passes_ = 0;
 };
 

@@ -84,11 +84,12 @@ GlVoxelTileRaster::GlVoxelTileRaster()
               storage_buffer("runs", kVoxelTileRangesBinding, Access::read),
               image("target", kVoxelTileTargetImage, Access::read_write)}) {
   fail_if_faulted(GlFault::kComputeRaster, "voxel tiles");  // a driver that cannot build the path (tests)
+  device_pass_limit_ = size_t(gl_limits().storage_block_bytes);
 }
 
 size_t GlVoxelTileRaster::pass_limit() const {
   if (pass_limit_ > 0) return pass_limit_;
-  return size_t(gl_limits().storage_block_bytes);  // the device's, or LFD_GL_LIMITS' lower one
+  return device_pass_limit_;
 }
 
 void GlVoxelTileRaster::upload_views(std::span<const render::Camera> cameras, const glm::vec3* sh_origin) {

@@ -120,6 +120,9 @@ class GlVoxelTileRaster {
   bool planes_ready_ = false;
   uint32_t plane_passes_ = 0;  // passes of the frame's planes so far (planes_outgrew_capacity reads them)
   size_t pass_limit_ = 0;
+  // The device's largest storage block (or LFD_GL_LIMITS' lower one), read once at construction:
+  // a GL query a frame would be a round trip on some drivers.
+  size_t device_pass_limit_ = 0;
   int passes_ = 0, redrawn_ = 0;
   uint64_t items_ = 0, keys_total_ = 0;
 };
