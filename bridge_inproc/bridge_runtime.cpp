@@ -13,13 +13,10 @@ constexpr unsigned long kFirstDisplay = 0xFFFFFFFFul;
 }
 
 Runtime& Runtime::instance() {
-  static Runtime runtime;
-  return runtime;
-}
-
-bool Runtime::initialized() const {
-  std::lock_guard lock(mutex_);
-  return initialized_;
+  // Never destroyed: at process exit a client may already have ended GLFW or its contexts, so the
+  // windows and the drawing thread are left to the exit rather than torn down then.
+  static Runtime* runtime = new Runtime;
+  return *runtime;
 }
 
 void Runtime::require_initialized() const {

@@ -45,7 +45,6 @@ class Runtime {
 
   void initialize(const std::string& app_name);
   void uninitialize();
-  bool initialized() const;
 
   std::vector<unsigned long> display_indices() const;
   // 0xFFFFFFFF (in the low 32 bits) is the first display.

@@ -203,14 +203,10 @@ class EglContext:
         egl.eglInitialize.argtypes = [c_void_p, c_void_p, c_void_p]
         assert egl.eglInitialize(self.display, None, None)
         assert egl.eglBindAPI(0x30A2)  # EGL_OPENGL_API
-        config = c_void_p()
-        n = ctypes.c_int()
-        attribs = (ctypes.c_int * 3)(0x3040, 0x0008, 0x3038)  # EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT
-        egl.eglChooseConfig.argtypes = [c_void_p, c_void_p, POINTER(c_void_p), ctypes.c_int, POINTER(ctypes.c_int)]
-        assert egl.eglChooseConfig(self.display, attribs, ctypes.byref(config), 1, ctypes.byref(n)) and n.value
+        # Mesa's surfaceless platform has EGL_KHR_no_config_context: no config is needed.
         egl.eglCreateContext.restype = c_void_p
         egl.eglCreateContext.argtypes = [c_void_p, c_void_p, c_void_p, c_void_p]
-        self.context = egl.eglCreateContext(self.display, config, None, None)
+        self.context = egl.eglCreateContext(self.display, None, None, None)
         assert self.context
         egl.eglMakeCurrent.argtypes = [c_void_p, c_void_p, c_void_p, c_void_p]
         self.make_current()
