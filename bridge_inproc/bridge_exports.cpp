@@ -273,7 +273,7 @@ bool draw_interop_quilt_texture_gl(WINDOW_HANDLE wnd, unsigned long long texture
     if (texture == 0 || texture > std::numeric_limits<unsigned>::max()) refuse(fmt::format("texture {}", texture));
     const render::QuiltLayout layout = quilt_layout(width, height, vx, vy, aspect, "draw_interop_quilt_texture_gl");
     const double z = positive_arg(zoom, "zoom");
-    RgbaPixels pixels = read_caller_texture(unsigned(texture), layout.width, layout.height);
+    RgbaPixels pixels = read_caller_texture(unsigned(texture), layout.width, layout.height, runtime().take_buffer());
     runtime().draw_quilt(wnd, std::move(pixels), layout, z);
   });
 }
@@ -295,8 +295,8 @@ bool draw_interop_rgbd_texture_gl(WINDOW_HANDLE wnd, unsigned long long texture,
     options.depthiness = depthiness;
     options.zoom = zoom;
     options.check("draw_interop_rgbd_texture_gl");
-    RgbaPixels pixels =
-        read_caller_texture(unsigned(texture), size_arg(width, "width"), size_arg(height, "height"));
+    RgbaPixels pixels = read_caller_texture(unsigned(texture), size_arg(width, "width"), size_arg(height, "height"),
+                                            runtime().take_buffer());
     runtime().draw_rgbd(wnd, std::move(pixels), options, layout);
   });
 }

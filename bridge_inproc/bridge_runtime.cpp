@@ -177,7 +177,10 @@ void Runtime::draw_quilt(unsigned long handle, RgbaPixels pixels, const render::
   std::lock_guard lock(mutex_);
   require_initialized();
   gl_thread_->post(handle & 0xFFFFFFFFul, "draw_interop_quilt_texture_gl",
-                   [gl, layout, zoom, p = std::move(pixels)]() mutable { gl->draw_quilt(std::move(p), layout, zoom); });
+                   [this, gl, layout, zoom, p = std::move(pixels)]() mutable {
+                     gl->draw_quilt(p, layout, zoom);
+                     give_back_buffer(std::move(p.bytes));
+                   });
 }
 
 void Runtime::draw_rgbd(unsigned long handle, RgbaPixels pixels, const rgbd::RgbdOptions& options,
@@ -186,7 +189,10 @@ void Runtime::draw_rgbd(unsigned long handle, RgbaPixels pixels, const rgbd::Rgb
   std::lock_guard lock(mutex_);
   require_initialized();
   gl_thread_->post(handle & 0xFFFFFFFFul, "draw_interop_rgbd_texture_gl",
-                   [gl, options, layout, p = std::move(pixels)] { gl->draw_rgbd(p, options, layout); });
+                   [this, gl, options, layout, p = std::move(pixels)]() mutable {
+                     gl->draw_rgbd(p, options, layout);
+                     give_back_buffer(std::move(p.bytes));
+                   });
 }
 
 void Runtime::show(unsigned long handle, bool visible) {
@@ -212,6 +218,19 @@ void Runtime::set_caller_panel_texture(unsigned long handle, unsigned texture) {
   window(handle);
   std::lock_guard lock(mutex_);
   windows_[handle & 0xFFFFFFFFul].caller_panel_texture = texture;
+}
+
+std::vector<uint8_t> Runtime::take_buffer() {
+  std::lock_guard lock(buffers_mutex_);
+  if (buffers_.empty()) return {};
+  std::vector<uint8_t> b = std::move(buffers_.back());
+  buffers_.pop_back();
+  return b;
+}
+
+void Runtime::give_back_buffer(std::vector<uint8_t> buffer) {
+  std::lock_guard lock(buffers_mutex_);
+  if (buffers_.size() < 4) buffers_.push_back(std::move(buffer));  // a frame in each hand, and spares
 }
 
 }  // namespace lfd::bridge

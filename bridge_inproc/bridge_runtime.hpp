@@ -65,6 +65,9 @@ class Runtime {
   // Waits for the frames posted so far, then reads the panel.
   RgbaPixels read_panel(unsigned long handle);
   void set_caller_panel_texture(unsigned long handle, unsigned texture);
+  // Frame buffers go round: the caller's copy takes one, the drawing thread gives it back.
+  std::vector<uint8_t> take_buffer();
+  void give_back_buffer(std::vector<uint8_t> buffer);
 
  private:
   Runtime() = default;
@@ -80,6 +83,8 @@ class Runtime {
   unsigned long next_handle_ = 1;
   std::unique_ptr<GlThread> gl_thread_;
   std::unique_ptr<gpu::GlfwSession> glfw_;  // made and ended on the drawing thread
+  std::mutex buffers_mutex_;
+  std::vector<std::vector<uint8_t>> buffers_;
 };
 
 }  // namespace lfd::bridge

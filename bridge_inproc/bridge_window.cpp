@@ -94,7 +94,7 @@ void BridgeWindow::interlace_and_show(const render::QuiltLayout& layout) {
   }
 }
 
-void BridgeWindow::draw_quilt(RgbaPixels quilt, const render::QuiltLayout& layout, double zoom) {
+void BridgeWindow::draw_quilt(RgbaPixels& quilt, const render::QuiltLayout& layout, double zoom) {
   if (zoom != 1.0) zoom_views(quilt, layout, zoom);
   Current current(*this);
   upload(quilt_, quilt);

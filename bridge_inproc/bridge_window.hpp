@@ -39,7 +39,7 @@ class BridgeWindow {
 
   // `quilt`: RGBA8, rows bottom-up, of layout.width x layout.height. `zoom` != 1 magnifies (or
   // shrinks) each view about its centre first.
-  void draw_quilt(RgbaPixels quilt, const render::QuiltLayout& layout, double zoom);
+  void draw_quilt(RgbaPixels& quilt, const render::QuiltLayout& layout, double zoom);
   // `frame`: the side-by-side RGB-D picture, RGBA8 rows bottom-up; the views go into a quilt of
   // `layout`, then as draw_quilt.
   void draw_rgbd(const RgbaPixels& frame, const rgbd::RgbdOptions& options, const render::QuiltLayout& layout);

@@ -83,7 +83,7 @@ void check_readable_format(unsigned format) {
   }
 }
 
-RgbaPixels read_caller_texture(unsigned name, int width, int height) {
+RgbaPixels read_caller_texture(unsigned name, int width, int height, std::vector<uint8_t> storage) {
   if (name == 0) refuse("texture 0");
   if (width <= 0 || height <= 0) refuse(fmt::format("texture size {}x{}", width, height));
   require_context("the texture belongs to the caller's context");
@@ -92,6 +92,7 @@ RgbaPixels read_caller_texture(unsigned name, int width, int height) {
   RgbaPixels out;
   out.width = width;
   out.height = height;
+  out.bytes = std::move(storage);
   out.bytes.resize(size_t(width) * height * 4);
   if (epoxy_is_desktop_gl()) {
     TextureBinding bind(name);

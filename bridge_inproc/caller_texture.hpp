@@ -22,9 +22,11 @@ struct RgbaPixels {
 // NoFormat) naming the number.
 void check_readable_format(unsigned format);
 
-// Reads texture `name` of the context current on this thread. BadCall when no GL context is
-// current, `name` is 0 or not a texture of that context, or its level 0 is not width x height.
-RgbaPixels read_caller_texture(unsigned name, int width, int height);
+// Reads texture `name` of the context current on this thread into `storage` (a recycled buffer:
+// one over glibc's 32 MiB mmap threshold would be mapped and faulted in anew for every frame).
+// BadCall when no GL context is current, `name` is 0 or not a texture of that context, or its
+// level 0 is not width x height.
+RgbaPixels read_caller_texture(unsigned name, int width, int height, std::vector<uint8_t> storage = {});
 
 // Puts `pixels` into texture `name` of the caller's current context, making a new RGBA8 texture
 // when `name` is 0 or no longer a texture there; returns the texture. BadCall without a context.
