@@ -302,7 +302,10 @@ def test_quiltify_rgbd_writes_the_quilt_file(bridge, window, tmp_path):
     out = tmp_path / "quilt.png"
     assert bridge.f.quiltify_rgbd(window, 8, 6, 48, 0.75, 1.0, 1.0, 14.0, 0.0, 0.0, 0, 0, 2, 1.5, 0.0, 0.0,
                                   str(path).encode(), str(out).encode())
-    assert out.stat().st_size > 0
+    # The same views `lfd rgbd-quilt` makes for this display (the CPU reference both call).
+    lfd("rgbd-quilt", path, tmp_path / "cli.png", "--calibration", CALIBRATION, "--views", 48, "--depthiness", 1.5)
+    [cli] = list(tmp_path.glob("cli_qs8x6a*.png"))
+    assert psnr(out, cli) >= 60
     saved = tmp_path / "image.png"
     pixels = np.zeros((4, 6, 3), np.uint8)
     assert bridge.f.save_image_to_file(window, str(saved).encode(), pixels.ctypes.data_as(c_void_p), 0x1907, 6, 4)
