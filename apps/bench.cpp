@@ -30,6 +30,7 @@ const std::vector<Bench>& benches() {
       {"record", RunBenchRecord, "lfd record: frames/s of render + encode against render alone, CPU and GL"},
       {"serve", RunBenchServe, "load test of a running lfd serve: many clients at once (docs/serve.md)"},
 #endif
+      {"bridge", RunBenchBridge, "libbridge_inproc: how long a quilt draw holds its caller (llvmpipe or GPU)"},
       {"direct", RunBenchDirect, "the direct panel pass against swizzle + interlace (times, memory, PSNR)"},
 #ifndef LFD_RENDER_ONLY  // the renderer-only build has no OpenCV or Ceres
       {"simulate", RunBenchSimulate, "1920x1080 synthetic capture of a 3840x2160 panel"},

@@ -18,5 +18,6 @@ int RunBenchCameraPoses(int argc, char** argv);  // apps/bench_camera_poses.cpp
 int RunBenchDirectPhotos(int argc, char** argv);  // apps/bench_direct_photos.cpp
 int RunBenchPlay(int argc, char** argv);  // apps/bench_play.cpp (also renderer-only)
 int RunBenchRecord(int argc, char** argv);  // apps/bench_record.cpp (also renderer-only)
+int RunBenchBridge(int argc, char** argv);  // apps/bench_bridge.cpp (also renderer-only)
 
 }  // namespace lfd::apps

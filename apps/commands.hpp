@@ -17,6 +17,7 @@ int RunBench(int argc, char** argv);
 int RunPatterns(int argc, char** argv);
 int RunCalibrate(int argc, char** argv);
 int RunDevice(int argc, char** argv);
+int RunBridge(int argc, char** argv);
 int RunCamera(int argc, char** argv);
 int RunPlay(int argc, char** argv);
 int RunRgbdQuilt(int argc, char** argv);

@@ -49,6 +49,7 @@ const std::vector<Command>& commands() {
 #endif
       {"compare", RunCompare, "PSNR and SSIM between two images"},
       {"device", RunDevice, "list attached Looking Glass units and read their calibration"},
+      {"bridge", RunBridge, "let the Bridge SDK's clients load lfd's libbridge_inproc (register, status)"},
       {"bench", RunBench, "speed benchmarks: tables and JSON (lfd bench --help)"},
       {"rgbd-quilt", RunRgbdQuilt, "turn an RGB-D image (colour + depth side by side) into a quilt"},
 #ifndef LFD_NO_PLAYBACK

@@ -167,6 +167,15 @@ if(TARGET lfd_python)
   add_dependencies(lfd_packaged lfd_python)
 endif()
 
+# lfd's libbridge_inproc (docs/bridge-inproc.md), in the runtime package, in a folder named with the
+# Bridge version it answers to (the vendor clients' legacy list reads the version from the folder's
+# name); `lfd bridge register` finds it relative to the program. The package does not register it.
+if(TARGET bridge_inproc)
+  install(TARGETS bridge_inproc LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}/lfd/${LFD_BRIDGE_VERSION_DIR}
+    COMPONENT runtime NAMELINK_SKIP)
+  add_dependencies(lfd_packaged bridge_inproc)
+endif()
+
 # ---------------------------------------------------------------------------------------------
 # What the exported libraries link from outside the project: how lfdConfig.cmake finds it and
 # which Debian package a consumer needs for it. One entry a line:

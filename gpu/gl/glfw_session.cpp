@@ -21,15 +21,26 @@ void remember_error(int, const char* description) {
 
 }  // namespace
 
+// Whether GLFW is up already: another part of the process (a Bridge client that loaded
+// libbridge_inproc, docs/bridge-inproc.md "Threads") started it, and it is theirs to end.
+static bool glfw_already_initialized() {
+  glfwGetError(nullptr);
+  glfwGetPrimaryMonitor();
+  return glfwGetError(nullptr) != GLFW_NOT_INITIALIZED;
+}
+
 GlfwSession::GlfwSession(const std::string& hint) {
   glfwSetErrorCallback(remember_error);
+  owns_glfw_ = !glfw_already_initialized();
   last_glfw_error().clear();
   if (!glfwInit())
     throw_input_error("no display: {}; {}",
                       last_error().empty() ? "GLFW could not start" : last_error(), hint);
 }
 
-GlfwSession::~GlfwSession() { glfwTerminate(); }
+GlfwSession::~GlfwSession() {
+  if (owns_glfw_) glfwTerminate();
+}
 
 std::string GlfwSession::last_error() { return last_glfw_error(); }
 

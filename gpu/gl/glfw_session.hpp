@@ -1,6 +1,7 @@
 #pragma once
 // GLFW, the window kind of GL context (the live calibration's pattern window, the viewer):
-// initialised while a session lives, with GLFW's own error text kept for messages. Without an X
+// initialised while a session lives (ended with it unless something else in the process had
+// started GLFW before), with GLFW's own error text kept for messages. Without an X
 // server there is nothing to show a window on, which is bad input (InputError), not a crash.
 // One monitor rule for every window on the display: display::choose_monitor.
 #include <string>
@@ -33,6 +34,9 @@ class GlfwSession {
   GLFWmonitor* display_monitor_or_none(const std::string& name_prefix, int width_px, int height_px) const;
   // GLFW's description of its most recent error ("" if none).
   static std::string last_error();
+
+ private:
+  bool owns_glfw_ = true;  // this session started GLFW, so it ends it (glfwTerminate)
 };
 
 }  // namespace lfd::gpu

@@ -1,0 +1,29 @@
+#pragma once
+// lfd's own settings for the library (docs/bridge-inproc.md "Which displays"): which calibration
+// files and which attached unit it drives, and the monitor it looks for. `lfd bridge register`
+// writes them; initialize_bridge reads them. The file is $LFD_BRIDGE_CONFIG, else
+// ~/.config/lfd/bridge.json:
+//   {"calibrations": ["/abs/C.json", ...], "device": "auto" | "SERIAL" | "", "monitor": "LKG"}
+// Absent, the library drives what device discovery finds ("device": "auto").
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace lfd::bridge {
+
+struct LfdBridgeSettings {
+  std::vector<std::string> calibrations;  // calibration.json or visual.json files
+  std::string device = "auto";            // device discovery: "auto", a serial, "" for none
+  std::string monitor = "LKG";            // the monitor name prefix a display's window looks for
+};
+
+// $LFD_BRIDGE_CONFIG, else $HOME/.config/lfd/bridge.json.
+std::filesystem::path lfd_settings_path();
+// The settings in `path` (the defaults when it does not exist). InputError naming the file and
+// field for bad JSON or a field of the wrong type.
+LfdBridgeSettings read_lfd_settings(const std::filesystem::path& path);
+LfdBridgeSettings parse_lfd_settings(const std::string& text, const std::string& name);
+// Atomic write.
+void write_lfd_settings(const std::filesystem::path& path, const LfdBridgeSettings& settings);
+
+}  // namespace lfd::bridge
