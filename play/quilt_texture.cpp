@@ -19,7 +19,7 @@ void upload_plane(gpu::Texture& texture, GLenum format, GLenum data_format, int 
   ensure_texture(texture, format, width, height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length_texels);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, data_format, GL_UNSIGNED_BYTE, data);
+  gpu::upload_texture_2d(texture, 0, 0, width, height, data_format, GL_UNSIGNED_BYTE, data);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
 }
 
