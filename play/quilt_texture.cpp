@@ -40,7 +40,8 @@ void QuiltTexture::ensure_quilt(int width, int height) {
 }
 
 void QuiltTexture::upload(const Image8& rgb) {
-  upload_plane(planes_[0], GL_RGBA8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
+  // RGB8: the format OpenGL ES takes GL_RGB bytes into (an RGBA8 texture wants GL_RGBA there).
+  upload_plane(planes_[0], GL_RGB8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
   ensure_quilt(rgb.width, rgb.height);
   convert(false, {});
 }

@@ -210,6 +210,7 @@ size_t bytes_per_texel(GLenum f) {
     case GL_RGBA32F: return 16;
     case GL_R8: return 1;
     case GL_R16F: case GL_RG8: return 2;
+    case GL_RGB8: return 3;
     default: return 16;
   }
 }

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include "gpu/gl/shader_source.hpp"
-#include "gpu/panel/shaders/interlace.comp.glsl.hpp"
 
 namespace lfd::gpu {
 namespace {
@@ -45,13 +44,27 @@ TEST(GlslEsSource, LocalConstGoesGlobalConstStays) {
   EXPECT_EQ(lines(out), lines(in));
 }
 
-TEST(GlslEsSource, TheInterlacerKeepsItsLinesAndFiles) {
-  const std::string in = interlace_comp_glsl;
+// An embedded pass as cmake/embed_shader.py writes it: the files list, #line per file, the
+// contract pasted in.
+TEST(GlslEsSource, AnEmbeddedPassKeepsItsLinesAndFiles) {
+  const std::string in =
+      "//! files: gpu/panel/shaders/interlace.comp.glsl gpu/panel/shaders/lens_view_io.h\n"
+      "#line 1 0\n"
+      "#line 1 1\n"
+      "#ifndef LFD_GPU_SHADERS_LENS_VIEW_IO_H\n"
+      "LFD_IO_UINT(kInterlaceGroupWidth, 16u)\n"
+      "#endif\n"
+      "#line 3 0\n"
+      "layout(local_size_x = kInterlaceGroupWidth) in;\n"
+      "void main() {\n"
+      "  const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);\n"
+      "}\n";
   const std::string out = glsl_es_source(in);
   EXPECT_EQ(lines(out), lines(in));
   EXPECT_EQ(shader_files(out), shader_files(in));
   EXPECT_EQ(out.find("LFD_IO_INT("), std::string::npos);
   EXPECT_NE(out.find("#define kInterlaceGroupWidth 16u"), std::string::npos);
+  EXPECT_NE(out.find("  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);"), std::string::npos) << out;
 }
 
 TEST(GlslEsSource, VersionHeaders) {

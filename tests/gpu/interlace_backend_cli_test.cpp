@@ -155,7 +155,7 @@ TEST_F(InterlaceBackendCli, CappedDesktopGlAskedForIsOneLineAndExit2) {
 // saying so, exit 2.
 TEST_F(InterlaceBackendCli, RenderingOnACappedContextIsOneLineAndExit2) {
   const std::string render = " render --scene " + q(test::project_data() / "scenes" / "demo.ply") +
-                             " --views 4 --size 32 --backend gl --out " + q(dir_ / "quilt.png");
+                             " --views 4 --size 32x32 --backend gl --out " + q(dir_ / "quilt.png");
   for (const std::string env : {std::string(kCappedGl), std::string("LFD_GL=es ")}) {
     SCOPED_TRACE(env);
     const auto r = test::run_command(env + std::string(LFD_EXE) + render);
