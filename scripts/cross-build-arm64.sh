@@ -11,12 +11,19 @@
 #   bash scripts/cross-build-arm64.sh             # packages, build, .deb, test suites
 #   LFD_ARM64_STEPS="deps build" bash scripts/cross-build-arm64.sh
 # Options: BUILD_DIR (default build-arm64), JOBS (default: all cores), LFD_ARM64_STEPS (any of
-# deps build deb test; default all). Each step prints its time.
+# plan deps build deb test; default all). Each step prints its time.
+#
+# `plan` adds the arm64 architecture and simulates the install: how many packages, and which of
+# the host's would be upgraded (Debian keeps a Multi-Arch: same library at one version for both
+# architectures, so the :arm64 packages pull the host's to the newest point release: on a
+# machine behind on updates, perl, systemd, libssl, libpng, zlib...). `deps` refuses to upgrade
+# the host's packages unless LFD_ARM64_UPGRADE_HOST=1 (a shared build machine whose other builds
+# track system headers would all rebuild).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build-arm64}
 JOBS=${JOBS:-$(nproc)}
-STEPS=${LFD_ARM64_STEPS:-deps build deb test}
+STEPS=${LFD_ARM64_STEPS:-plan deps build deb test}
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
@@ -44,10 +51,35 @@ timed() {  # timed LABEL COMMAND...: runs it and prints how long it took
   echo "cross-build-arm64: $label took $((SECONDS - start)) s"
 }
 
+arm64_names() { for p in "${ARM64_PACKAGES[@]}"; do printf '%s:arm64 ' "$p"; done; }
+
+# The host packages the install would upgrade (not the :arm64 ones, not the new tools).
+host_upgrades() {
+  # shellcheck disable=SC2046
+  apt-get -s install --no-install-recommends "${HOST_PACKAGES[@]}" $(arm64_names) 2>/dev/null |
+    awk '/^Inst / && $3 ~ /^\[/ && $2 !~ /:arm64$/ {print $2}'
+}
+
+plan() {
+  dpkg --print-foreign-architectures | grep -qx arm64 || $SUDO dpkg --add-architecture arm64
+  $SUDO apt-get update -qq
+  local sim
+  # shellcheck disable=SC2046
+  sim=$(apt-get -s install --no-install-recommends "${HOST_PACKAGES[@]}" $(arm64_names))
+  echo "cross-build-arm64: plan: $(grep -c '^Inst' <<<"$sim") packages to install," \
+    "$(grep -c '^Remv' <<<"$sim") to remove, $(host_upgrades | wc -l) of the host's upgraded:" \
+    "$(host_upgrades | tr '\n' ' ')"
+}
+
 install_deps() {
   bash scripts/install-deps.sh
   dpkg --print-foreign-architectures | grep -qx arm64 || $SUDO dpkg --add-architecture arm64
   $SUDO apt-get update -qq
+  if [ -n "$(host_upgrades)" ] && [ "${LFD_ARM64_UPGRADE_HOST:-0}" != 1 ]; then
+    echo "cross-build-arm64: the :arm64 packages would upgrade $(host_upgrades | wc -l) of this machine's" \
+      "packages (plan lists them); run again with LFD_ARM64_UPGRADE_HOST=1 to allow it" >&2
+    exit 1
+  fi
   local arm64=()
   for p in "${ARM64_PACKAGES[@]}"; do arm64+=("$p:arm64"); done
   # --no-remove: a package that would replace the host's version (not co-installable) stops
@@ -88,6 +120,7 @@ run_suites() {
     --gtest_brief=1 --gtest_filter='*Interlace*:GlslEsSource.*'
 }
 
+step plan && timed "plan" plan
 step deps && timed "deps" install_deps
 step build && timed "build" configure_and_build
 step deb && timed "deb" make_deb
