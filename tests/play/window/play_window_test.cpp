@@ -157,8 +157,9 @@ class PlayWindowOnOpenGlEs : public testing::TestWithParam<GlFlavour> {
     const bool capped = std::string(GetParam().env).find("MESA_GL_VERSION_OVERRIDE") != std::string::npos;
     const size_t first = output.find("notice: no desktop OpenGL 4.5 (");
     EXPECT_EQ(first != std::string::npos, capped) << output;
-    if (first != std::string::npos)
+    if (first != std::string::npos) {
       EXPECT_EQ(output.find("notice: no desktop OpenGL 4.5 (", first + 1), std::string::npos) << output;
+    }
   }
 };
 
@@ -178,6 +179,22 @@ TEST_P(PlayWindowOnOpenGlEs, VideoFrameOnScreenEqualsInterlaceOfDecodedFrame) {
   expect_video_frame_equals_interlace(extra(), tag("video"), GetParam().env, &output);
   expect_es(output);
   EXPECT_NE(output.find("decoder: software"), std::string::npos) << output;
+}
+
+// An RGB-D picture: the views the ES context makes (RGBA32F passes: EXT_color_buffer_float) show
+// what desktop GL shows.
+TEST_P(PlayWindowOnOpenGlEs, RgbdImageEqualsTheDesktopOne) {
+  fs::create_directories(kDir);
+  const fs::path frame = kDir / "layers_es_rgbd.png";
+  write_png(frame, to_uint8(rgbd::test::layered_rgbd_frame(160, 120, rgbd::DepthLocation::right)));
+  const ImageF desktop = play_screenshot(frame.string(), "--rgbd --depthiness 2 --gl desktop", "rgbd-desktop");
+  std::string output;
+  const ImageF shown = play_screenshot(frame.string(), "--rgbd --depthiness 2 " + extra(), tag("rgbd"), &output,
+                                       GetParam().env);
+  expect_es(output);
+  ASSERT_FALSE(shown.empty());
+  ASSERT_FALSE(desktop.empty());
+  EXPECT_GE(render::psnr(shown, desktop), 40.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Flavours, PlayWindowOnOpenGlEs,
