@@ -1,6 +1,7 @@
 // Bridge's event WebSocket on NNG streams (docs/serve.md, "Events").
 #include "serve/event_server.hpp"
 
+#include <chrono>
 #include <condition_variable>
 #include <deque>
 #include <stdexcept>
@@ -25,6 +26,7 @@ struct EventServer::Connection {
   std::condition_variable wake;
   std::deque<std::pair<std::string, MemoryBudget::Reservation>> queue;
   MemoryBudget* budget = nullptr;
+  std::condition_variable* reap_wake = nullptr;  // the server's reaper, told when this closes
   bool closed = false;
   std::thread writer;
   int timeout_ms = 10000;
@@ -36,6 +38,7 @@ struct EventServer::Connection {
     }
     wake.notify_all();
     nng_stream_close(stream);
+    if (reap_wake) reap_wake->notify_one();
   }
   void push(const std::string& text) {
     {
@@ -117,7 +120,19 @@ void EventServer::start(const ListenAddress& address) {
     std::lock_guard lock(mutex_);
     for (auto& c : connections_) c->push(text);
   });
+  reaper_ = std::thread([this] { reap_loop(); });
   accept_next();
+}
+
+void EventServer::reap_loop() {
+  for (;;) {
+    {
+      std::unique_lock lock(mutex_);
+      reap_wake_.wait_for(lock, std::chrono::milliseconds(500));
+      if (stopping_) return;
+    }
+    reap_closed();
+  }
 }
 
 void EventServer::accept_next() {
@@ -147,7 +162,6 @@ void EventServer::on_accept(void* arg) {
     return;
   }
   auto* stream = static_cast<nng_stream*>(nng_aio_get_output(self->accept_aio_, 0));
-  self->reap_closed();
   char* origin_raw = nullptr;
   std::string origin;
   if (nng_stream_get_string(stream, (std::string(NNG_OPT_WS_REQUEST_HEADER) + "Origin").c_str(), &origin_raw) == 0 &&
@@ -168,6 +182,7 @@ void EventServer::on_accept(void* arg) {
   c->stream = stream;
   c->timeout_ms = self->limits_.io_timeout_s * 1000;
   c->budget = &self->budget_;
+  c->reap_wake = &self->reap_wake_;
   if (nng_aio_alloc(&c->recv_aio, &Connection::on_recv, c.get()) != 0) return self->accept_next();
   c->writer = std::thread([raw = c.get()] { raw->write_loop(); });
   c->arm_recv();
@@ -180,12 +195,22 @@ void EventServer::on_accept(void* arg) {
 
 int EventServer::connections() const {
   std::lock_guard lock(mutex_);
-  return static_cast<int>(connections_.size());
+  int open = 0;
+  for (const auto& c : connections_) {
+    std::lock_guard c_lock(c->mutex);
+    open += c->closed ? 0 : 1;
+  }
+  return open;
 }
 
 void EventServer::stop() {
   if (!listener_) return;
-  stopping_ = true;
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  reap_wake_.notify_all();
+  if (reaper_.joinable()) reaper_.join();
   hub_.unsubscribe(hub_id_);
   nng_stream_listener_close(listener_);
   nng_aio_stop(accept_aio_);

@@ -8,6 +8,7 @@
 // that does not fit is dropped for that connection), and one that does not take its messages
 // within the timeout is dropped.
 #include <atomic>
+#include <condition_variable>
 #include <list>
 #include <memory>
 #include <mutex>
@@ -29,7 +30,7 @@ class EventServer {
   ~EventServer();
   void start(const ListenAddress& address);  // throws std::runtime_error naming the URL
   void stop();
-  int connections() const;
+  int connections() const;  // open ones (a closed one waits for the reaper a moment)
   std::size_t refused_connections() const { return refused_; }
 
   struct Connection;
@@ -37,6 +38,9 @@ class EventServer {
  private:
   static void on_accept(void* self);
   void accept_next();
+  // Closed connections are freed on the reaper's thread, never on NNG's: freeing one waits for
+  // its writer (up to the write timeout), which on NNG's callback thread held up every accept.
+  void reap_loop();
   void reap_closed();
 
   EventHub& hub_;
@@ -49,6 +53,8 @@ class EventServer {
   mutable std::mutex mutex_;
   std::list<std::shared_ptr<Connection>> connections_;
   std::atomic<bool> stopping_{false};
+  std::condition_variable reap_wake_;
+  std::thread reaper_;
   std::atomic<std::size_t> refused_{0};
 };
 

@@ -48,12 +48,37 @@ HoloPlayProtocol::HoloPlayProtocol(DisplayService& displays, QuiltCache& cache, 
                                    MemoryBudget& budget, const ServeLimits& limits)
     : displays_(displays), cache_(cache), decoded_(decoded), budget_(budget), limits_(limits) {}
 
+// The message, the parsed CBOR's copy of `bin` and the request's: three times its size while it
+// is handled (docs/serve.md, "Memory").
+constexpr std::size_t kCopiesOfAMessage = 3;
+
+MemoryBudget::Reservation HoloPlayProtocol::admit(std::size_t bytes) {
+  return budget_.try_reserve(kCopiesOfAMessage * bytes);
+}
+
+bool HoloPlayProtocol::carries_content(std::span<const std::uint8_t> payload, std::size_t small_bytes) const {
+  if (payload.size() > small_bytes) return true;
+  try {
+    return !parse_holoplay_request(payload, {limits_.max_cbor_depth, limits_.max_cbor_items}).bin.empty();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+std::vector<std::uint8_t> HoloPlayProtocol::busy_reply(const std::string& message) {
+  return encode_cbor(holoplay_error(HoloPlayError::kBusy, message));
+}
+
 std::vector<std::uint8_t> HoloPlayProtocol::handle(std::span<const std::uint8_t> payload) {
+  return handle(payload, MemoryBudget::Reservation());
+}
+
+std::vector<std::uint8_t> HoloPlayProtocol::handle(std::span<const std::uint8_t> payload,
+                                                   MemoryBudget::Reservation held) {
   json reply;
   try {
-    // The message, the parsed CBOR's copy of `bin` and the request's: three times its size
-    // while it is handled (docs/serve.md, "Memory").
-    const MemoryBudget::Reservation message = budget_.reserve_or_busy(3 * payload.size(), "a HoloPlay message");
+    const MemoryBudget::Reservation message =
+        held ? std::move(held) : budget_.reserve_or_busy(kCopiesOfAMessage * payload.size(), "a HoloPlay message");
     const HoloPlayRequest request =
         parse_holoplay_request(payload, {limits_.max_cbor_depth, limits_.max_cbor_items});
     reply = handle_request(request);

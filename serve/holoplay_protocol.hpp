@@ -37,6 +37,16 @@ class HoloPlayProtocol {
                    const ServeLimits& limits);
   // A reply for any payload; bad input gets an error reply and a log line, never an exception.
   std::vector<std::uint8_t> handle(std::span<const std::uint8_t> payload);
+  // The same for a message whose bytes were admitted already (`held`, from admit).
+  std::vector<std::uint8_t> handle(std::span<const std::uint8_t> payload, MemoryBudget::Reservation held);
+  // Whether the message carries an image to decode (show or cache with `bin`): the content
+  // lane's work. A large message always does; a small one is parsed to see (a small PNG still
+  // decodes into a large picture). Unparsable messages do not: their error reply is cheap.
+  bool carries_content(std::span<const std::uint8_t> payload, std::size_t small_bytes) const;
+  // What a message of `bytes` holds while it is handled, if the budget has it now; empty if not.
+  MemoryBudget::Reservation admit(std::size_t bytes);
+  // Error 6 with `message`: the reply to a request refused before it was read.
+  static std::vector<std::uint8_t> busy_reply(const std::string& message);
   nlohmann::json handle_request(const HoloPlayRequest& request);
 
  private:

@@ -55,9 +55,19 @@ void HoloPlayServer::on_pipe(nng_pipe pipe, nng_pipe_ev event, void* arg) {
   }
 }
 
+// One REP context: receives a request, has it answered (now or by a lane), sends the reply,
+// and receives again, until the socket closes.
+struct HoloPlayServer::Context {
+  HoloPlayServer* server = nullptr;
+  nng_ctx ctx = NNG_CTX_INITIALIZER;
+  nng_aio* aio = nullptr;
+  bool sending = false;
+};
+
 void HoloPlayServer::start(const ListenAddress& address) {
   check(nng_rep0_open(&socket_), "holoplay: REP socket");
   open_ = true;
+  stopping_ = false;
   check(nng_socket_set_size(socket_, NNG_OPT_RECVMAXSZ, limits_.max_message_bytes), "holoplay: REP socket");
   check(nng_socket_set_ms(socket_, NNG_OPT_SENDTIMEO, limits_.io_timeout_s * 1000), "holoplay: REP socket");
   nng_pipe_notify(socket_, NNG_PIPE_EV_ADD_PRE, &HoloPlayServer::on_pipe, this);
@@ -68,47 +78,100 @@ void HoloPlayServer::start(const ListenAddress& address) {
   check(nng_listener_set_size(listener, NNG_OPT_RECVMAXSZ, limits_.max_message_bytes), url);
   // Browsers and `ws` send a message as one frame: NNG's 1 MiB frame default would drop quilts.
   check(nng_listener_set_size(listener, NNG_OPT_WS_RECVMAXFRAME, limits_.max_message_bytes), url);
+  // Each lane holds at most one job per context, so its queue never makes a context wait.
+  small_lane_ = std::make_unique<BoundedTaskQueue>(2, limits_.max_connections);
+  content_lane_ = std::make_unique<BoundedTaskQueue>(limits_.worker_threads, limits_.max_connections);
+  for (int i = 0; i < limits_.max_connections; ++i) {
+    auto c = std::make_unique<Context>();
+    c->server = this;
+    check(nng_ctx_open(&c->ctx, socket_), "holoplay: REP context");
+    check(nng_aio_alloc(&c->aio, &HoloPlayServer::on_context_event, c.get()), "holoplay: REP context");
+    contexts_.push_back(std::move(c));
+  }
   check(nng_listener_start(listener, 0), url);
-  for (int i = 0; i < limits_.worker_threads; ++i) workers_.emplace_back([this] { work(); });
+  for (auto& c : contexts_) nng_ctx_recv(c->ctx, c->aio);
 }
 
-// One REP context per worker: receive, answer, repeat until the socket closes.
-void HoloPlayServer::work() {
-  nng_ctx ctx;
-  if (nng_ctx_open(&ctx, socket_) != 0) return;
-  nng_aio* aio = nullptr;
-  if (nng_aio_alloc(&aio, nullptr, nullptr) != 0) return;
-  for (;;) {
-    nng_ctx_recv(ctx, aio);
-    nng_aio_wait(aio);
-    if (nng_aio_result(aio) == NNG_ECLOSED) break;
-    if (nng_aio_result(aio) != 0) continue;
-    nng_msg* request = nng_aio_get_msg(aio);
+void HoloPlayServer::on_context_event(void* arg) {
+  Context& c = *static_cast<Context*>(arg);
+  HoloPlayServer& self = *c.server;
+  const int result = nng_aio_result(c.aio);
+  if (c.sending) {
+    c.sending = false;
+    if (result != 0) nng_msg_free(nng_aio_get_msg(c.aio));  // the reply was not taken
+    else ++self.answered_;
+  } else if (result == 0) {
+    self.received(c);
+    return;
+  }
+  if (result == NNG_ECLOSED || result == NNG_ECANCELED || self.stopping_) return;
+  nng_ctx_recv(c.ctx, c.aio);
+}
+
+// On NNG's thread: decides at once, never decodes here.
+void HoloPlayServer::received(Context& c) {
+  nng_msg* request = nng_aio_get_msg(c.aio);
+  const std::size_t bytes = nng_msg_len(request);
+  const std::span<const std::uint8_t> payload(static_cast<const std::uint8_t*>(nng_msg_body(request)), bytes);
+  if (!protocol_.carries_content(payload, kSmallRequestBytes)) {
+    small_lane_->enqueue([this, &c, request] { handle_in_lane(c, request, {}, false); });
+    return;
+  }
+  // Content: a free content worker and the budget for the message's copies now, or busy now.
+  MemoryBudget::Reservation held;
+  if (++content_in_flight_ <= limits_.worker_threads) held = protocol_.admit(bytes);
+  if (!held) {
+    --content_in_flight_;
+    ++busy_on_arrival_;
+    answer(c, request, protocol_.busy_reply("busy: the service is handling as much content as it holds; try again"));
+    return;
+  }
+  // std::function copies its target: the reservation travels in a shared holder.
+  auto admitted = std::make_shared<MemoryBudget::Reservation>(std::move(held));
+  content_lane_->enqueue([this, &c, request, admitted] { handle_in_lane(c, request, std::move(*admitted), true); });
+}
+
+void HoloPlayServer::handle_in_lane(Context& c, nng_msg* request, MemoryBudget::Reservation held, bool content) {
+  std::vector<std::uint8_t> reply;
+  if (stopping_) {
+    reply = protocol_.busy_reply("busy: the service is stopping");
+  } else {
     const std::span<const std::uint8_t> payload(static_cast<const std::uint8_t*>(nng_msg_body(request)),
                                                 nng_msg_len(request));
-    const std::vector<std::uint8_t> reply = protocol_.handle(payload);
-    nng_msg_clear(request);
-    if (nng_msg_append(request, reply.data(), reply.size()) != 0) {
-      nng_msg_free(request);
-      continue;
-    }
-    nng_aio_set_msg(aio, request);
-    nng_ctx_send(ctx, aio);
-    nng_aio_wait(aio);
-    if (nng_aio_result(aio) != 0) nng_msg_free(nng_aio_get_msg(aio));
-    else ++answered_;
-    if (nng_aio_result(aio) == NNG_ECLOSED) break;
+    reply = protocol_.handle(payload, std::move(held));
   }
-  nng_aio_free(aio);
-  nng_ctx_close(ctx);
+  if (content) --content_in_flight_;
+  answer(c, request, std::move(reply));
+}
+
+// Frees the request before the reply goes out: a quilt's bytes are not held while it is sent.
+void HoloPlayServer::answer(Context& c, nng_msg* request, std::vector<std::uint8_t> reply) {
+  nng_msg* out = nullptr;
+  if (nng_msg_alloc(&out, 0) != 0 || nng_msg_append(out, reply.data(), reply.size()) != 0 ||
+      nng_msg_header_append(out, nng_msg_header(request), nng_msg_header_len(request)) != 0) {
+    if (out) nng_msg_free(out);
+    nng_msg_free(request);
+    if (!stopping_) nng_ctx_recv(c.ctx, c.aio);  // this request goes unanswered; the next is taken
+    return;
+  }
+  nng_msg_free(request);
+  c.sending = true;
+  nng_aio_set_msg(c.aio, out);
+  nng_ctx_send(c.ctx, c.aio);
 }
 
 void HoloPlayServer::stop() {
   if (!open_) return;
   open_ = false;
-  nng_close(socket_);
-  for (auto& t : workers_) t.join();
-  workers_.clear();
+  stopping_ = true;
+  nng_close(socket_);  // every context's receive or send ends with NNG_ECLOSED
+  small_lane_->shutdown();
+  content_lane_->shutdown();
+  for (auto& c : contexts_) {
+    nng_aio_stop(c->aio);
+    nng_aio_free(c->aio);
+  }
+  contexts_.clear();
 }
 
 }  // namespace lfd::serve

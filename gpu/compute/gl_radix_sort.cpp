@@ -206,6 +206,9 @@ void GlRadixSort::sort(Buffer& keys, Buffer& values, uint32_t count, const SortK
     }
   }
   if (passes % 2 == 1) {  // the result is in the scratch copies
+    // The copy reads what the scatter wrote only after this barrier (GL 4.5 7.12.2: buffer
+    // updates are not ordered after shader writes without it; docs/gpu.md "Drivers and limits").
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glCopyNamedBufferSubData(keys_tmp_.id(), keys.id(), 0, 0, GLsizeiptr(count) * 4);
     glCopyNamedBufferSubData(values_tmp_.id(), values.id(), 0, 0, GLsizeiptr(count) * 4);
   }

@@ -14,6 +14,8 @@ bool AsyncTextureReadback::start(const Texture& texture) {
   height_ = texture.height();
   const size_t bytes = size_t(width_) * size_t(height_) * 4;
   if (pixels_.bytes() < bytes) pixels_ = MappedReadBuffer(bytes);
+  // Image stores into the texture reach the copy only after this barrier.
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindBuffer(GL_PIXEL_PACK_BUFFER, pixels_.id());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   // With a pack buffer bound the pointer is an offset into it: a GPU copy, no wait.

@@ -176,6 +176,8 @@ void Buffer::upload(const void* data, size_t bytes, size_t offset) {
 void Buffer::download(void* data, size_t bytes, size_t offset) const {
   if (!bytes) return;
   if (offset + bytes > bytes_) throw std::logic_error("Buffer::download past the end");
+  // What shaders wrote is read back only after this barrier; a download waits anyway.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // also ES: it covers mapping
   if (current_gl_is_es()) {  // ES reads a buffer by mapping it
     glBindBuffer(GL_COPY_READ_BUFFER, id());
     const void* mapped = glMapBufferRange(GL_COPY_READ_BUFFER, GLintptr(offset), GLsizeiptr(bytes), GL_MAP_READ_BIT);
@@ -283,7 +285,9 @@ void Texture::set_filter(GLenum min_mag) const {
 std::vector<float> read_texture_rgba(const Texture& texture, int layer) {
   const size_t count = size_t(texture.width()) * texture.height() * 4;
   std::vector<float> out(count);
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);  // image stores before the read-back
   if (current_gl_is_es()) {  // no glGetTexImage: the texture read as a framebuffer
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT);     // ... which glReadPixels reads as a framebuffer
     GLuint framebuffer = 0;
     glGenFramebuffers(1, &framebuffer);
     const GlName<delete_framebuffer> owned(framebuffer);
