@@ -56,15 +56,30 @@ gpu::RasterPath resolve_raster(gpu::RasterPath path, gpu::RasterSubject subject)
   return chosen;
 }
 
-std::unique_ptr<gpu::HeadlessContext> open_backend(lightfield::BackendChoice backend, bool verbose) {
-  auto context = lightfield::open_backend_context(backend, lightfield::cpu_fallback_notice_on_stderr("--backend"));
+std::unique_ptr<gpu::HeadlessContext> open_backend(lightfield::BackendChoice backend, bool verbose,
+                                                   gpu::GlRequest gl) {
+  auto context = lightfield::open_backend_context(backend, lightfield::cpu_fallback_notice_on_stderr("--backend"), gl);
+  if (context && !context->info().desktop_unavailable.empty())
+    std::cerr << gpu::es_fallback_notice(context->info().desktop_unavailable) << "\n";
   if (context && verbose) std::cout << fmt::format("backend: gl on {}\n", context->info().summary());
   return context;
 }
 
-std::unique_ptr<gpu::HeadlessContext> open_backend(const std::string& name, bool verbose) {
-  return open_backend(lightfield::parse_backend_choice(name, "--backend"), verbose);
+std::unique_ptr<gpu::HeadlessContext> open_backend(const std::string& name, bool verbose, gpu::GlRequest gl) {
+  return open_backend(lightfield::parse_backend_choice(name, "--backend"), verbose, gl);
 }
+
+CLI::Option* add_gl_option(CLI::App& app, std::string& name) {
+  name = std::string(gpu::gl_request_name(gpu::gl_request_from_env()));
+  return app
+      .add_option("--gl", name,
+                  "which OpenGL: desktop (4.5 core), es (OpenGL ES 3.1: a Raspberry Pi 5) or auto (desktop, else ES "
+                  "with a notice); default LFD_GL, else auto")
+      ->check(CLI::IsMember({"auto", "desktop", "es"}))
+      ->capture_default_str();
+}
+
+gpu::GlRequest gl_request(const std::string& name) { return gpu::parse_gl_request(name, "--gl"); }
 
 bool backend_is_cpu(const std::string& name) {
   return lightfield::parse_backend_choice(name, "--backend") == lightfield::BackendChoice::kCpu;

@@ -44,9 +44,19 @@ gpu::RasterPath resolve_raster(gpu::RasterPath path, gpu::RasterSubject subject)
 // notice "notice: --backend auto: running on the CPU (reason)" on stderr; null for cpu. With a
 // context and `verbose`, prints "backend: gl on <GlInfo::summary()>" to stdout (a command that
 // reports the renderer itself, such as a benchmark table, passes false).
-std::unique_ptr<gpu::HeadlessContext> open_backend(lightfield::BackendChoice backend, bool verbose = true);
+// `gl`: the OpenGL asked for (lightfield::open_backend_context); when auto took OpenGL ES, the
+// one notice line on stderr (gpu::es_fallback_notice).
+std::unique_ptr<gpu::HeadlessContext> open_backend(lightfield::BackendChoice backend, bool verbose = true,
+                                                   gpu::GlRequest gl = gpu::GlRequest::kDesktop);
 // The same for the flag's text (InputError for a name that is not cpu, gl or auto).
-std::unique_ptr<gpu::HeadlessContext> open_backend(const std::string& name, bool verbose = true);
+std::unique_ptr<gpu::HeadlessContext> open_backend(const std::string& name, bool verbose = true,
+                                                   gpu::GlRequest gl = gpu::GlRequest::kDesktop);
+
+// Adds `--gl` (choices auto, desktop, es; the default from LFD_GL, else auto) to a command of the
+// display side (play, serve, interlace), bound to `name` (docs/arm.md).
+CLI::Option* add_gl_option(CLI::App& app, std::string& name);
+// The request of `--gl`'s text.
+gpu::GlRequest gl_request(const std::string& name);
 // Whether the flag's text is cpu (InputError for a name that is not cpu, gl or auto).
 bool backend_is_cpu(const std::string& name);
 

@@ -39,9 +39,11 @@ int RunInterlace(int argc, char** argv) {
   app.add_flag("--overscan", overscan, "fill the panel and crop instead of black bars");
   app.add_flag("--invert", invert, "read the views in reverse order");
   add_backend_option(app, backend_name,
-                     "cpu (the reference), gl (the GLSL interlacing shader on a headless OpenGL 4.5 "
-                     "context: the same panel to within 1/255, exit 2 without GL) or auto (gl when a "
+                     "cpu (the reference), gl (the GLSL interlacing shader on a headless OpenGL 4.5 or "
+                     "ES 3.1 context, --gl: the same panel to within 1/255, exit 2 without GL) or auto (gl when a "
                      "context can be made, else the CPU with a notice)");
+  std::string gl = "auto";
+  add_gl_option(app, gl);
   app.add_option("--out", out_path, "panel image to write (PNG)")->required();
   if (auto code = parse(app, argc, argv)) return *code;
 
@@ -55,7 +57,7 @@ int RunInterlace(int argc, char** argv) {
   options.blend = interlace::parse_view_blend(blend);
   options.overscan = overscan;
   options.invert_views = invert;
-  const auto gl_context = open_backend(backend_name);
+  const auto gl_context = open_backend(backend_name, true, gl_request(gl));
   const ImageF panel =
       lightfield::interlace_panel(to_float(quilt8), layout, lens, options, lightfield::backend_of(gl_context.get()));
   write_png(out_path, to_uint8(panel));

@@ -2,10 +2,12 @@
 //   lfd play scene_qs5x9a1.6.png clip_qs8x6a0.75.mp4 --device auto --duration 8
 //   lfd play playlist.json --calibration visual.json --monitor LKG
 //   lfd play clip_qs5x9a1.6.mp4 --calibration visual.json --pause-at 2 --frames 5 --screenshot panel.png
+#include <chrono>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "apps/rgbd_cli.hpp"
@@ -41,6 +43,20 @@ std::vector<play::PlaylistEntry> collect_entries(const std::vector<std::string>&
     entries.push_back(std::move(e));
   }
   return entries;
+}
+
+// `--info`: what ran and what it held (docs/arm.md): the GL, the decoder, the frame rates.
+void print_play_info(const play::PlayerState& s, double seconds) {
+  std::cout << fmt::format("gl: {}{}\n", s.gl, s.gl_es ? " [OpenGL ES path]" : "");
+  const double shown_rate = seconds > 0 ? double(s.frames_shown) / seconds : 0.0;
+  const double video_rate = seconds > 0 ? double(s.frames_decoded - s.frames_dropped) / seconds : 0.0;
+  if (s.frames_decoded > 0)
+    std::cout << fmt::format("decoder: {}; video {:.3g} fps, held {:.1f} fps ({} decoded, {} dropped)\n",
+                             s.decode_path.empty() ? "none" : s.decode_path, s.frame_rate, video_rate,
+                             s.frames_decoded, s.frames_dropped);
+  else
+    std::cout << "decoder: none (no video shown)\n";
+  std::cout << fmt::format("frames: {} shown in {:.2f} s ({:.1f} per second)\n", s.frames_shown, seconds, shown_rate);
 }
 
 }  // namespace
@@ -86,7 +102,7 @@ int RunPlay(int argc, char** argv) {
   app.add_option("--blend", blend, "view selection: nearest or linear")->check(CLI::IsMember({"nearest", "linear"}));
   app.add_flag("--overscan", overscan, "fill the panel and crop instead of black bars");
   app.add_flag("--invert", invert, "read the views in reverse order");
-  app.add_flag("--software-decode", software, "do not try VA-API hardware decoding");
+  app.add_flag("--software-decode", software, "do not try the hardware decoders (VA-API, V4L2 M2M)");
   app.add_option("--threads", options.decoder_threads, "video decoder threads (0: one per core)")->check(CLI::NonNegativeNumber);
   std::optional<double> pause_at;
   app.add_option("--pause-at", pause_at, "start paused at this time of the first entry (seconds)")->check(CLI::NonNegativeNumber);
@@ -94,7 +110,12 @@ int RunPlay(int argc, char** argv) {
   app.add_option("--frames", frames, "show this many frames, then quit (0: until closed)")->check(CLI::NonNegativeNumber);
   std::string screenshot;
   app.add_option("--screenshot", screenshot, "with --frames: the last frame as shown (PNG)");
+  std::string gl = "auto";
+  add_gl_option(app, gl);
+  bool info = false;
+  app.add_flag("--info", info, "at the end: the GL, the video decoder that ran and the frame rate held");
   if (auto code = parse(app, argc, argv)) return *code;
+  options.gl = gl_request(gl);
 
   options.calibration = source.load();
   options.display_name = source.name();
@@ -129,7 +150,9 @@ int RunPlay(int argc, char** argv) {
   std::cout << fmt::format("playing on {} ({}); press H for the keys\n", options.display_name,
                            player.state().on_display ? "its monitor" : "a simulated display window");
   Image8 last;
+  const auto started_at = std::chrono::steady_clock::now();
   const int64_t ran = player.run(frames, screenshot.empty() ? nullptr : &last);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_at).count();
   const play::PlayerState s = player.state();
   if (started == 0 && ended) throw_input_error("no playable entry among {} file(s)", files.size());
   if (!screenshot.empty() && ran == frames && frames > 0) {
@@ -141,6 +164,7 @@ int RunPlay(int argc, char** argv) {
                            s.video_frame_index >= 0 ? fmt::format("; on screen: {} frame {} ({:.3f} s)", s.entry_name,
                                                                   s.video_frame_index, s.video_frame_pts_s)
                                                     : std::string());
+  if (info) print_play_info(s, seconds);
   return 0;
 }
 

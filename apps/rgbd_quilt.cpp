@@ -47,6 +47,8 @@ int RunRgbdQuilt(int argc, char** argv) {
   app.add_option("--view-cone", view_cone_deg, "view cone in degrees without a display (default 40)");
   app.add_option("--tile-height", tile_height, "view height in pixels (default: the colour half's)");
   add_backend_option(app, backend_name, "cpu (the reference) or gl (the GL twin, same quilt), auto");
+  std::string gl = "auto";
+  add_gl_option(app, gl);
   if (auto code = parse(app, argc, argv)) return *code;
 
   const rgbd::RgbdOptions options = rgbd_flags.options();
@@ -65,7 +67,7 @@ int RunRgbdQuilt(int argc, char** argv) {
   // Tiles within a pixel of the display's aspect are named with it (no pillarbox column).
   if (display_aspect) layout.aspect = render::snap_to_display_aspect(layout.aspect, layout.tile_height(), *display_aspect);
   const std::string written = interlace::quilt_file_name(out_path, layout, "out");
-  const auto gl_context = open_backend(backend_name);
+  const auto gl_context = open_backend(backend_name, true, gl_request(gl));  // the display side: ES will do
   const ImageF quilt = gl_context ? rgbd::render_rgbd_quilt_on_gpu(frame, options, layout, view_cone_deg)
                                   : rgbd::render_rgbd_quilt(frame, options, layout, view_cone_deg);
   write_png(written, to_uint8(quilt));

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "device/device_discovery.hpp"
@@ -87,7 +88,10 @@ int RunServe(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(64, 1 << 20));
   app.add_flag("--status", status, "ask the running service what it shows, then exit");
+  std::string gl = "auto";
+  add_gl_option(app, gl);
   if (auto code = parse(app, argc, argv)) return *code;
+  player_options.gl = gl_request(gl);
   if (status) return print_status(options.listen);
 
   // From the first signal on, at most a second until the process ends (stop_on_signal.hpp).

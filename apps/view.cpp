@@ -5,9 +5,13 @@
 #include <filesystem>
 #include <iostream>
 
+#include <fmt/format.h>
+
 #include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
+#include "gpu/gl/gl_context.hpp"
+#include "gpu/gl/gl_flavour.hpp"
 #include "interlace/quilt_file_name.hpp"
 #include "util/error.hpp"
 #include "viewer/viewer.hpp"
@@ -116,7 +120,14 @@ int RunView(int argc, char** argv) {
   options.screenshot_path = screenshot;
   options.quilt_path = quilt;
   options.camera_out_path = camera_out;
-  return viewer::run_viewer(options);
+  // The viewer renders Gaussians and voxels: desktop OpenGL 4.5 only (docs/arm.md), said on one line.
+  gpu::require_desktop_gl("lfd view");
+  try {
+    return viewer::run_viewer(options);
+  } catch (const gpu::GlUnavailable& e) {
+    throw gpu::GlUnavailable(fmt::format("lfd view needs desktop OpenGL 4.5 (OpenGL ES shows quilts only: lfd play; "
+                                         "docs/arm.md): {}", e.what()));
+  }
 }
 
 }  // namespace lfd::apps

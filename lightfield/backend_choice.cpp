@@ -23,10 +23,12 @@ CpuFallbackNotice cpu_fallback_notice_on_stderr(std::string field) {
 }
 
 std::unique_ptr<gpu::HeadlessContext> open_backend_context(BackendChoice choice,
-                                                          const CpuFallbackNotice& on_cpu_fallback) {
+                                                          const CpuFallbackNotice& on_cpu_fallback,
+                                                          gpu::GlRequest gl) {
   if (choice == BackendChoice::kCpu) return nullptr;
   try {
-    return std::make_unique<gpu::HeadlessContext>();
+    if (gl == gpu::GlRequest::kDesktop) gpu::require_desktop_gl("rendering on the GPU");
+    return std::make_unique<gpu::HeadlessContext>(gl);
   } catch (const gpu::GlUnavailable& e) {
     if (choice == BackendChoice::kGl) throw;
     on_cpu_fallback(e.what());

@@ -26,9 +26,12 @@ CpuFallbackNotice cpu_fallback_notice_on_stderr(std::string field);
 
 // The context `choice` runs on: null for cpu; a headless context for gl (gpu::GlUnavailable
 // propagates); for auto a headless context, or null after `on_cpu_fallback(reason)` when none
-// can be made.
+// can be made. `gl`: the OpenGL asked for; desktop (OpenGL 4.5 core) for everything that renders
+// (LFD_GL=es is then refused: gpu::require_desktop_gl), auto or es for interlacing alone
+// (gpu/gl/gl_flavour.hpp; the caller prints the notice when auto took ES).
 std::unique_ptr<gpu::HeadlessContext> open_backend_context(BackendChoice choice,
-                                                          const CpuFallbackNotice& on_cpu_fallback);
+                                                          const CpuFallbackNotice& on_cpu_fallback,
+                                                          gpu::GlRequest gl = gpu::GlRequest::kDesktop);
 // The backend that runs with what open_backend_context gave: GL with a context, the CPU without.
 Backend backend_of(const gpu::HeadlessContext* context);
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <thread>
 
@@ -72,11 +73,42 @@ YuvMatrix matrix_of(AVColorSpace space, int height) {
   }
 }
 
-AVPixelFormat g_hw_format = AV_PIX_FMT_VAAPI;  // the only hardware format this file asks for
-AVPixelFormat pick_hw_format(AVCodecContext*, const AVPixelFormat* formats) {
+// The hardware decoders tried, in order, before the software one (docs/arm.md "Video"): FFmpeg's
+// hwaccels on a device — VA-API (x86 GPUs), DRM (Raspberry Pi OS's FFmpeg: the V4L2 request
+// decoders of a Pi 4/5's HEVC block) — then a V4L2 memory-to-memory decoder (`h264_v4l2m2m`, ...:
+// the stateful decoders of ARM boards, Pi 4's H.264 among them).
+struct HwAccel {
+  AVHWDeviceType type;
+  AVPixelFormat format;  // what its frames are (downloaded before use)
+  const char* name;
+};
+constexpr HwAccel kHwAccels[] = {{AV_HWDEVICE_TYPE_VAAPI, AV_PIX_FMT_VAAPI, "VA-API"},
+                                 {AV_HWDEVICE_TYPE_DRM, AV_PIX_FMT_DRM_PRIME, "DRM (V4L2 request)"}};
+
+// The hardware format of the context's accel (codec->opaque points to it), else the software one.
+AVPixelFormat pick_hw_format(AVCodecContext* codec, const AVPixelFormat* formats) {
+  const auto wanted = *static_cast<const AVPixelFormat*>(codec->opaque);
   for (const AVPixelFormat* f = formats; *f != AV_PIX_FMT_NONE; ++f)
-    if (*f == g_hw_format) return *f;
+    if (*f == wanted) return *f;
   return formats[0];  // the decoder's software format
+}
+
+// The first DRM render node ("" when there is none): VA-API and DRM devices need no display server.
+std::string render_node() {
+  std::string node;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", ec))
+    if (entry.path().filename().string().rfind("renderD", 0) == 0 && (node.empty() || entry.path().string() < node))
+      node = entry.path().string();
+  return node;
+}
+
+// Whether a V4L2 video node exists (a memory-to-memory decoder is one).
+bool has_video_node() {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator("/dev", ec))
+    if (entry.path().filename().string().rfind("video", 0) == 0) return true;
+  return false;
 }
 
 }  // namespace
@@ -91,6 +123,7 @@ struct VideoDecoder::Impl {
   AVFormatContext* format = nullptr;
   AVCodecContext* codec = nullptr;
   AVBufferRef* hw_device = nullptr;
+  AVPixelFormat hw_format = AV_PIX_FMT_NONE;  // pick_hw_format's (codec->opaque)
   SwsContext* sws = nullptr;
   std::unique_ptr<AVPacket, PacketFree> packet{av_packet_alloc()};
   int stream = -1;
@@ -114,7 +147,9 @@ struct VideoDecoder::Impl {
 
   void open(const char* url);
   void open_codec();
-  bool try_hardware(const AVCodec* decoder);
+  void new_context(const AVCodec* decoder, int threads);
+  bool open_hwaccel(const AVCodec* decoder, int threads, std::string& why);
+  bool open_v4l2m2m(const AVCodec* decoder, std::string& why);
   FramePtr receive();
   YuvFrame to_yuv(FramePtr frame);
   std::optional<YuvFrame> next();
@@ -156,69 +191,93 @@ void VideoDecoder::Impl::open(const char* url) {
   open_codec();
 }
 
-bool VideoDecoder::Impl::try_hardware(const AVCodec* decoder) {
-  bool supported = false;
-  for (int i = 0;; ++i) {
-    const AVCodecHWConfig* config = avcodec_get_hw_config(decoder, i);
-    if (!config) break;
-    if ((config->methods & AV_CODEC_HW_CONFIG_METHOD_HW_DEVICE_CTX) && config->device_type == AV_HWDEVICE_TYPE_VAAPI)
-      supported = true;
-  }
-  if (!supported) {
-    decode_path = fmt::format("; VA-API: no VA-API decoder for {}", info.codec);
-    return false;
-  }
-  // The DRM render node (decoding needs no display server, and without a render node there is
-  // no VA-API device to try). A failure is remembered, so a playlist does not retry it for
-  // every video.
+void VideoDecoder::Impl::new_context(const AVCodec* decoder, int threads) {
+  avcodec_free_context(&codec);
+  codec = avcodec_alloc_context3(decoder);
+  if (avcodec_parameters_to_context(codec, format->streams[stream]->codecpar) < 0)
+    throw_input_error("{}: bad codec parameters", name);
+  codec->pkt_timebase = time_base;
+  codec->thread_count = threads;
+  codec->thread_type = FF_THREAD_FRAME | FF_THREAD_SLICE;
+}
+
+bool VideoDecoder::Impl::open_hwaccel(const AVCodec* decoder, int threads, std::string& why) {
+  // A device that failed once is not tried again for every video of a playlist.
   static std::mutex mutex;
-  static std::optional<std::string> failed;
-  std::lock_guard lock(mutex);
-  if (!failed) {
-    std::string node;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", ec))
-      if (entry.path().filename().string().rfind("renderD", 0) == 0 && (node.empty() || entry.path().string() < node))
-        node = entry.path().string();
-    if (node.empty()) {
-      failed = "no device (no /dev/dri render node)";
-    } else if (const int e = av_hwdevice_ctx_create(&hw_device, AV_HWDEVICE_TYPE_VAAPI, node.c_str(), nullptr, 0); e < 0) {
-      failed = fmt::format("no device on {} ({})", node, av_error_text(e));
+  static std::map<AVHWDeviceType, std::string> failed;
+  for (const HwAccel& accel : kHwAccels) {
+    bool offered = false;
+    for (int i = 0; const AVCodecHWConfig* config = avcodec_get_hw_config(decoder, i); ++i)
+      offered |= (config->methods & AV_CODEC_HW_CONFIG_METHOD_HW_DEVICE_CTX) && config->device_type == accel.type;
+    if (!offered) {
+      why += fmt::format("; {}: none for {}", accel.name, info.codec);
+      continue;
     }
+    {
+      std::lock_guard lock(mutex);
+      if (!failed.count(accel.type)) {
+        const std::string node = render_node();
+        if (node.empty()) {
+          failed[accel.type] = "no device (no /dev/dri render node)";
+        } else if (const int e = av_hwdevice_ctx_create(&hw_device, accel.type, node.c_str(), nullptr, 0); e < 0) {
+          failed[accel.type] = fmt::format("no device on {} ({})", node, av_error_text(e));
+        }
+      }
+      if (failed.count(accel.type)) {
+        why += fmt::format("; {}: {}", accel.name, failed[accel.type]);
+        continue;
+      }
+    }
+    new_context(decoder, threads);
+    hw_format = accel.format;
+    codec->opaque = &hw_format;
+    codec->hw_device_ctx = av_buffer_ref(hw_device);
+    codec->get_format = pick_hw_format;
+    if (const int e = avcodec_open2(codec, decoder, nullptr); e < 0) {  // the decoder refused the device
+      why += fmt::format("; {}: the decoder refused the device ({})", accel.name, av_error_text(e));
+      avcodec_free_context(&codec);
+      av_buffer_unref(&hw_device);
+      continue;
+    }
+    decode_path = accel.name;
+    return true;
   }
-  if (failed) {
-    decode_path = "; VA-API: " + *failed;
+  return false;
+}
+
+bool VideoDecoder::Impl::open_v4l2m2m(const AVCodec* decoder, std::string& why) {
+  const std::string m2m_name = std::string(decoder->name) + "_v4l2m2m";
+  const AVCodec* m2m = avcodec_find_decoder_by_name(m2m_name.c_str());
+  if (!m2m) {
+    why += fmt::format("; V4L2 M2M: no {} in this FFmpeg", m2m_name);
     return false;
   }
-  codec->hw_device_ctx = av_buffer_ref(hw_device);
-  codec->get_format = pick_hw_format;
+  if (!has_video_node()) {
+    why += "; V4L2 M2M: no /dev/video device";
+    return false;
+  }
+  new_context(m2m, 1);
+  if (const int e = avcodec_open2(codec, m2m, nullptr); e < 0) {
+    why += fmt::format("; V4L2 M2M: {} did not open ({})", m2m_name, av_error_text(e));
+    avcodec_free_context(&codec);
+    return false;
+  }
+  decode_path = fmt::format("V4L2 M2M ({})", m2m_name);
   return true;
 }
 
 void VideoDecoder::Impl::open_codec() {
-  const AVCodecParameters* par = format->streams[stream]->codecpar;
-  const AVCodec* decoder = avcodec_find_decoder(par->codec_id);
+  const AVCodec* decoder = avcodec_find_decoder(format->streams[stream]->codecpar->codec_id);
   if (!decoder) throw_input_error("{}: no decoder for its codec '{}' in this FFmpeg", name, info.codec);
-  codec = avcodec_alloc_context3(decoder);
-  if (avcodec_parameters_to_context(codec, par) < 0) throw_input_error("{}: bad codec parameters", name);
-  codec->pkt_timebase = time_base;
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  codec->thread_count = threads;
-  codec->thread_type = FF_THREAD_FRAME | FF_THREAD_SLICE;
+  // Hardware first when asked; each path that is not there says why, and software plays it.
   std::string why_software;
-  const bool hardware = options.try_hardware && try_hardware(decoder);
-  why_software = decode_path;
-  int e = avcodec_open2(codec, decoder, nullptr);
-  if (e < 0 && hardware) {  // the device opened but the decoder refused it: software
-    avcodec_free_context(&codec);
-    av_buffer_unref(&hw_device);
-    options.try_hardware = false;
-    decode_path = fmt::format("; VA-API: the decoder refused the device ({})", av_error_text(e));
-    return open_codec();
-  }
-  if (e < 0) throw_input_error("{}: cannot open the {} decoder ({})", name, info.codec, av_error_text(e));
-  decode_path = hardware ? std::string("VA-API")
-                         : fmt::format("software ({}, {} threads{})", decoder->name, threads, why_software);
+  if (options.try_hardware && (open_hwaccel(decoder, threads, why_software) || open_v4l2m2m(decoder, why_software)))
+    return;
+  new_context(decoder, threads);
+  if (const int e = avcodec_open2(codec, decoder, nullptr); e < 0)
+    throw_input_error("{}: cannot open the {} decoder ({})", name, info.codec, av_error_text(e));
+  decode_path = fmt::format("software ({}, {} threads{})", decoder->name, threads, why_software);
 }
 
 FramePtr VideoDecoder::Impl::receive() {
@@ -246,10 +305,10 @@ FramePtr VideoDecoder::Impl::receive() {
 }
 
 YuvFrame VideoDecoder::Impl::to_yuv(FramePtr frame) {
-  if (frame->format == g_hw_format) {  // VA-API surface: download (NV12), then as any frame
+  if (hw_format != AV_PIX_FMT_NONE && frame->format == hw_format) {  // a hardware surface: download (NV12), then as any frame
     FramePtr cpu(av_frame_alloc());
     if (const int e = av_hwframe_transfer_data(cpu.get(), frame.get(), 0); e < 0)
-      throw_input_error("{}: VA-API download failed ({})", name, av_error_text(e));
+      throw_input_error("{}: {} download failed ({})", name, decode_path, av_error_text(e));
     av_frame_copy_props(cpu.get(), frame.get());
     frame = std::move(cpu);
   }

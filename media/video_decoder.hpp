@@ -21,7 +21,7 @@ namespace lfd::media {
 inline constexpr int kMaxVideoSide = 8192;
 
 struct DecoderOptions {
-  bool try_hardware = true;  // VA-API first; the software decoder when it is absent or fails
+  bool try_hardware = true;  // VA-API, DRM, V4L2 M2M first (docs/arm.md); software when they are absent or fail
   int threads = 0;           // decoder threads; 0: one per core
 };
 

@@ -72,6 +72,7 @@ PlayerOptions player_options(const PlayBenchOptions& o) {
   po.hardware_decode = o.hardware_decode;
   po.decoder_threads = o.decoder_threads;
   po.print_notices = false;
+  po.gl = gpu::gl_request_from_env();  // LFD_GL=es: the figures on OpenGL ES (docs/arm.md)
   return po;
 }
 

@@ -11,6 +11,7 @@
 
 #include "display/lens_model.hpp"
 #include "gpu/gl/display_window.hpp"
+#include "gpu/gl/gl_context.hpp"
 #include "gpu/panel/gl_interlacer.hpp"
 #include "gpu/gl/glfw_session.hpp"
 #include "play/command_queue.hpp"
@@ -55,6 +56,7 @@ struct Player::Impl final : TransportOutput {
   std::unique_ptr<rgbd::GlRgbdViews> rgbd_views;  // an RGB-D entry's frame -> its views
   std::unique_ptr<gpu::Texture> rgbd_quilt;
   std::unique_ptr<PlayerKeys> keys;
+  std::string gl_summary;
 
   CommandQueue<Impl> commands;
   mutable std::mutex state_mutex;
@@ -79,9 +81,13 @@ struct Player::Impl final : TransportOutput {
         transport({options.loop, options.image_duration_s, options.print_notices}, *this,
                   [this](const PlaybackEvent& event) { send(event); }) {
     const auto& d = options.calibration.display;
-    window = std::make_unique<gpu::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h);
+    window = std::make_unique<gpu::DisplayWindow>(session, find_monitor(session, options), d.screen_w, d.screen_h,
+                                                  1024, options.gl);
+    if (!window->desktop_unavailable().empty() && options.print_notices)
+      std::cerr << gpu::es_fallback_notice(window->desktop_unavailable()) << "\n";
     glfwSetWindowTitle(window->handle(), window->on_display() ? "lfd play" : "lfd play (simulated display)");
     window->make_current();
+    gl_summary = gpu::query_gl_info("GLFW window").summary();
     quilt = std::make_unique<QuiltTexture>();
     panel = std::make_unique<gpu::Texture>(GL_RGBA8, d.screen_w, d.screen_h);
   }
@@ -215,7 +221,7 @@ struct Player::Impl final : TransportOutput {
         interlacer->interlace(shown_quilt(), *panel);
       } else {
         const float black[4] = {0, 0, 0, 1};
-        glClearTexImage(panel->id(), 0, GL_RGBA, GL_FLOAT, black);
+        gpu::clear_texture(*panel, black);
       }
       panel_dirty = false;
     }
@@ -266,6 +272,8 @@ struct Player::Impl final : TransportOutput {
     s.video_frame_index = video_index;
     s.video_frame_pts_s = video_pts;
     s.on_display = window->on_display();
+    s.gl = gl_summary;
+    s.gl_es = window->es();
     s.quilt_aspect = content ? content->layout.aspect : 0.0;
     if (content) s.rgbd = content->rgbd;
     s.window_visible = window->visible();

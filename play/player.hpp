@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "display/calibration_file.hpp"
+#include "gpu/gl/gl_flavour.hpp"
 #include "interlace/interlacer.hpp"
 #include "play/transport.hpp"
 #include "render/quilt_layout.hpp"
@@ -57,6 +58,8 @@ struct PlayerState {
   double video_frame_pts_s = 0;      // its presentation time
   std::string decode_path;    // the current video's decoder: "software (N threads)", "VA-API"
   bool on_display = false;    // full screen on the display's monitor (else a simulated window)
+  std::string gl;             // the window's GL: "llvmpipe (LLVM 15.0.6, 256 bits) (OpenGL ES 3.2 Mesa 22.3.6, GLFW window)"
+  bool gl_es = false;         // OpenGL ES (gpu/gl/gl_flavour.hpp)
   bool window_visible = true;  // false once hidden (set_window_visible; Bridge's show_window)
   double quilt_aspect = 0;     // the shown quilt's view aspect (0: nothing shown)
   std::optional<rgbd::RgbdOptions> rgbd;  // the RGB-D settings of the picture shown, if RGB-D
@@ -71,15 +74,17 @@ struct PlayerOptions {
   interlace::InterlaceOptions interlace;
   bool loop = true;                 // the playlist starts again after its last entry
   double image_duration_s = 10;     // an image entry's default duration
-  bool hardware_decode = true;      // try VA-API first (software when it is absent or fails)
+  bool hardware_decode = true;      // try the hardware decoders first (VA-API, V4L2; software when absent or failing)
   int decoder_threads = 0;          // 0: FFmpeg's choice (one per core)
   bool print_notices = true;        // skipped entries etc. on stderr
+  // Desktop OpenGL 4.5, OpenGL ES 3.1, or auto: desktop, else ES with a notice (docs/arm.md).
+  gpu::GlRequest gl = gpu::GlRequest::kAuto;
 };
 
 class Player {
  public:
   // Opens GLFW and the display window on the calling thread (which must stay the GL thread).
-  // Throws InputError without a desktop session or a usable GL 4.5 context, or for a
+  // Throws InputError without a desktop session or a usable GL context (options.gl), or for a
   // calibration that cannot be interlaced.
   explicit Player(PlayerOptions options);
   ~Player();

@@ -19,7 +19,7 @@ void upload_plane(gpu::Texture& texture, GLenum format, GLenum data_format, int 
   ensure_texture(texture, format, width, height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, row_length_texels);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, width, height, data_format, GL_UNSIGNED_BYTE, data);
+  gpu::upload_texture_2d(texture, 0, 0, width, height, data_format, GL_UNSIGNED_BYTE, data);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
 }
 
@@ -40,7 +40,8 @@ void QuiltTexture::ensure_quilt(int width, int height) {
 }
 
 void QuiltTexture::upload(const Image8& rgb) {
-  upload_plane(planes_[0], GL_RGBA8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
+  // RGB8: the format OpenGL ES takes GL_RGB bytes into (an RGBA8 texture wants GL_RGBA there).
+  upload_plane(planes_[0], GL_RGB8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
   ensure_quilt(rgb.width, rgb.height);
   convert(false, {});
 }

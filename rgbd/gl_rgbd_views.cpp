@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "gpu/gl/gl_flavour.hpp"
 #include "gpu/panel/gl_interlacer.hpp"
 #include "gpu/gl/gl_quilt_target.hpp"
 #include "rgbd/rgbd_frame.hpp"
@@ -54,7 +55,8 @@ GlRgbdViews::GlRgbdViews()
       warp_(make_pass("rgbd warp", rgbd_warp_frag_glsl,
                       {gpu::texture("source", kRgbdSourceUnit), gpu::texture("shift_per_z", kRgbdShiftPerZUnit)})),
       fill_(make_pass("rgbd fill", rgbd_fill_frag_glsl, {gpu::texture("warped", kRgbdWarpedUnit)})) {
-  glCreateSamplers(1, &sampler_);
+  if (gpu::current_gl_is_es()) glGenSamplers(1, &sampler_);  // ES has no glCreate*
+  else glCreateSamplers(1, &sampler_);
   glSamplerParameteri(sampler_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glSamplerParameteri(sampler_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   glSamplerParameteri(sampler_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -108,7 +110,7 @@ void GlRgbdViews::render(const RgbdFrameTexture& frame, const RgbdOptions& optio
     shifts[size_t(j)] = view_shift_px_per_z_ratio(geometry, j, tw);
     largest = std::max(largest, std::abs(shifts[size_t(j)]));
   }
-  glTextureSubImage2D(shifts_.id(), 0, 0, 0, layout.views, 1, GL_RED, GL_FLOAT, shifts.data());
+  gpu::upload_texture_2d(shifts_, 0, 0, layout.views, 1, GL_RED, GL_FLOAT, shifts.data());
   const float largest_z = std::max(std::abs(relief_z_ratio(0.0f, options)),
                                    std::abs(relief_z_ratio(1.0f, options)));
   const int radius = int(std::ceil(largest * largest_z)) + 1;

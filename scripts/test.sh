@@ -3,8 +3,9 @@
 # suite with CTest (GoogleTest; GL tests through EGL on Mesa llvmpipe, the viewer under Xvfb).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh       # the program (docs/install.md)
+bash scripts/install-test-deps.sh  # what only the tests need
 bash scripts/install-npm-clients.sh  # lfd serve's client tests (docs/serve.md)
-bash scripts/build.sh
+LFD_BUILD_TESTS=ON bash scripts/build.sh
 cd "${LFD_BUILD_DIR:-build}"
 ctest --output-on-failure --timeout 900 -j "$(nproc)"

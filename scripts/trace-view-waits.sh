@@ -7,7 +7,7 @@
 # scene data/scenes/demo.ply (27k Gaussians), 9 views of 128 px height, no control window.
 # v2lf: the voxel path, `lfd view`'s g2lf method on a sparse-voxel scene (V2LF), the scene
 # generated first (`lfd scene generate --kind voxels --level 6`: the tabletop, 3,486 voxels).
-# Needs apitrace and xvfb-run (scripts/install-deps.sh); `xvfb-run -a -n N` takes the first
+# Needs apitrace and xvfb-run (scripts/install-test-deps.sh); `xvfb-run -a -n N` takes the first
 # free display from :N (LFD_TRACE_DISPLAY; default 93, v2lf 94, so the tests can run together).
 set -euo pipefail
 lfd=$1 mode=$2 work=$3 frames=${4:-8} warmup=${5:-3}

@@ -14,14 +14,31 @@
 
 namespace lfd::gpu {
 
+namespace {
+
+// The window hints of one context flavour: desktop OpenGL 4.5 core, or OpenGL ES 3.1.
+void context_hints(bool es) {
+  if (es) {
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 1);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_ANY_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_FALSE);
+  } else {
+    glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  }
+}
+
+}  // namespace
+
 DisplayWindow::DisplayWindow(const GlfwSession&, GLFWmonitor* monitor, int panel_w,
-                             int panel_h, int max_window_px)
+                             int panel_h, int max_window_px, GlRequest gl)
     : monitor_(monitor), on_display_(monitor != nullptr), panel_w_(panel_w), panel_h_(panel_h) {
   glfwDefaultWindowHints();
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SRGB_CAPABLE, GLFW_FALSE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_FALSE);
   // A debug context under strict checks (the tests), so the driver reports misuse (gl_debug.hpp).
@@ -41,11 +58,27 @@ DisplayWindow::DisplayWindow(const GlfwSession&, GLFWmonitor* monitor, int panel
     width = std::max(1, int(std::lround(panel_w * scale)));
     height = std::max(1, int(std::lround(panel_h * scale)));
   }
-  window_ = glfwCreateWindow(width, height,
-                             monitor ? "lfd view" : "lfd view (simulated display)", monitor, nullptr);
-  if (!window_)
-    throw GlUnavailable(fmt::format("no GL: no OpenGL 4.5 core window ({})",
-                                         GlfwSession::last_error()));
+  const char* title = monitor ? "lfd view" : "lfd view (simulated display)";
+  std::string desktop_why;
+  if (gl != GlRequest::kEs) {
+    context_hints(false);
+    window_ = glfwCreateWindow(width, height, title, monitor, nullptr);
+    if (!window_) desktop_why = GlfwSession::last_error();
+  }
+  if (!window_ && gl != GlRequest::kDesktop) {
+    context_hints(true);
+    window_ = glfwCreateWindow(width, height, title, monitor, nullptr);
+    es_ = window_ != nullptr;
+    if (es_ && gl == GlRequest::kAuto) desktop_unavailable_ = desktop_why;
+  }
+  if (!window_) {
+    if (gl == GlRequest::kAuto)
+      throw GlUnavailable(fmt::format("no GL: neither an OpenGL 4.5 core window ({}) nor an OpenGL ES 3.1 one ({})",
+                                      desktop_why, GlfwSession::last_error()));
+    throw GlUnavailable(fmt::format("no GL: no {} window ({})",
+                                    gl == GlRequest::kEs ? "OpenGL ES 3.1" : "OpenGL 4.5 core",
+                                    GlfwSession::last_error()));
+  }
   if (monitor) {
     int fb_w = 0, fb_h = 0;
     glfwGetFramebufferSize(window_, &fb_w, &fb_h);
@@ -102,8 +135,11 @@ void DisplayWindow::draw(const Texture& panel) {
   const double scale = std::min(double(fb_w) / panel.width(), double(fb_h) / panel.height());
   const int w = int(std::lround(panel.width() * scale)), h = int(std::lround(panel.height() * scale));
   const int x0 = (fb_w - w) / 2, y0 = (fb_h - h) / 2;
-  glBlitNamedFramebuffer(read_fbo_->id(), 0, 0, 0, panel.width(), panel.height(), x0, y0, x0 + w,
-                         y0 + h, GL_COLOR_BUFFER_BIT, scale == 1.0 ? GL_NEAREST : GL_LINEAR);
+  // Bound rather than named (glBlitNamedFramebuffer): the one form OpenGL ES 3.1 has too.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, read_fbo_->id());
+  glBlitFramebuffer(0, 0, panel.width(), panel.height(), x0, y0, x0 + w, y0 + h, GL_COLOR_BUFFER_BIT,
+                    scale == 1.0 ? GL_NEAREST : GL_LINEAR);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   check_gl("presenting the panel");
 }
 
@@ -112,16 +148,19 @@ Image8 DisplayWindow::read_back_buffer() const {
   int fb_w = 0, fb_h = 0;
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
   Image8 out(fb_w, fb_h, 3);
-  std::vector<uint8_t> rows(size_t(fb_w) * fb_h * 3);
+  // RGBA: the one layout OpenGL ES guarantees for reading a window.
+  std::vector<uint8_t> rows(size_t(fb_w) * fb_h * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   glReadBuffer(GL_BACK);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, fb_w, fb_h, GL_RGB, GL_UNSIGNED_BYTE, rows.data());
+  glReadPixels(0, 0, fb_w, fb_h, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
   check_gl("reading the window back");
   // GL rows are bottom-up.
-  for (int y = 0; y < fb_h; ++y)
-    std::copy_n(rows.data() + size_t(fb_h - 1 - y) * fb_w * 3, size_t(fb_w) * 3,
-                out.pixels.data() + size_t(y) * fb_w * 3);
+  for (int y = 0; y < fb_h; ++y) {
+    const uint8_t* src = rows.data() + size_t(fb_h - 1 - y) * fb_w * 4;
+    uint8_t* dst = out.pixels.data() + size_t(y) * fb_w * 3;
+    for (int x = 0; x < fb_w; ++x, src += 4, dst += 3) std::copy_n(src, 3, dst);
+  }
   return out;
 }
 

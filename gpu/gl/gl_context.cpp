@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include <epoxy/egl.h>
@@ -55,36 +56,49 @@ bool initialise(EGLDisplay display, std::string& why, const std::string& platfor
   return false;
 }
 
-// GL 4.5 core on `display`, current without a surface; EGL_NO_CONTEXT with `why` extended.
-EGLContext create_core_context(EGLDisplay display, std::string& why, const std::string& platform) {
-  if (!eglBindAPI(EGL_OPENGL_API)) {
-    why += fmt::format("{}{}: no desktop OpenGL", why.empty() ? "" : "; ", platform);
+// What a context of one flavour is asked for: the API, the config's renderable bit and the
+// version (docs/arm.md: a Raspberry Pi 5 offers ES 3.1).
+struct Flavour {
+  EGLenum api;
+  EGLint renderable;
+  int major, minor;
+  const char* name;
+};
+constexpr Flavour kDesktop{EGL_OPENGL_API, EGL_OPENGL_BIT, 4, 5, "OpenGL 4.5 core"};
+constexpr Flavour kEs{EGL_OPENGL_ES_API, 0x40 /* EGL_OPENGL_ES3_BIT */, 3, 1, "OpenGL ES 3.1"};
+
+// A context of `flavour` on `display`, current without a surface; EGL_NO_CONTEXT with `why`
+// extended.
+EGLContext create_context(EGLDisplay display, const Flavour& flavour, std::string& why, const std::string& platform) {
+  const char* sep = why.empty() ? "" : "; ";
+  if (!eglBindAPI(flavour.api)) {
+    why += fmt::format("{}{}: no {}", sep, platform, flavour.api == EGL_OPENGL_API ? "desktop OpenGL" : "OpenGL ES");
     return EGL_NO_CONTEXT;
   }
-  const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, flavour.renderable, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
   const bool no_config = epoxy_has_egl_extension(display, "EGL_KHR_no_config_context");
   if (!no_config && (!eglChooseConfig(display, config_attributes, &config, 1, &configs) || configs < 1)) {
-    why += fmt::format("{}{}: no OpenGL config", why.empty() ? "" : "; ", platform);
+    why += fmt::format("{}{}: no {} config", sep, platform, flavour.name);
     return EGL_NO_CONTEXT;
   }
   // A debug context under strict checks (the tests), so the driver reports misuse (gl_debug.hpp).
-  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                                       EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                       EGL_CONTEXT_OPENGL_DEBUG, strict_gl_checks() ? EGL_TRUE : EGL_FALSE,
+  const EGLint debug = strict_gl_checks() ? EGL_TRUE : EGL_FALSE;
+  const EGLint desktop_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, flavour.major, EGL_CONTEXT_MINOR_VERSION,
+                                       flavour.minor, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_CONTEXT_OPENGL_DEBUG, debug,
                                        EGL_NONE};
-  EGLContext context = eglCreateContext(display, no_config ? EGL_NO_CONFIG_KHR : config,
-                                        EGL_NO_CONTEXT, context_attributes);
+  const EGLint es_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, flavour.major, EGL_CONTEXT_MINOR_VERSION,
+                                  flavour.minor, EGL_CONTEXT_OPENGL_DEBUG, debug, EGL_NONE};
+  EGLContext context = eglCreateContext(display, no_config ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT,
+                                        flavour.api == EGL_OPENGL_API ? desktop_attributes : es_attributes);
   if (context == EGL_NO_CONTEXT) {
-    why += fmt::format("{}{}: no OpenGL 4.5 core context ({})", why.empty() ? "" : "; ", platform,
-                       egl_error_name(eglGetError()));
+    why += fmt::format("{}{}: no {} context ({})", sep, platform, flavour.name, egl_error_name(eglGetError()));
     return EGL_NO_CONTEXT;
   }
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context)) {
-    why += fmt::format("{}{}: cannot make the context current ({})", why.empty() ? "" : "; ",
-                       platform, egl_error_name(eglGetError()));
+    why += fmt::format("{}{}: cannot make the context current ({})", sep, platform, egl_error_name(eglGetError()));
     eglDestroyContext(display, context);
     return EGL_NO_CONTEXT;
   }
@@ -95,7 +109,8 @@ EGLContext create_core_context(EGLDisplay display, std::string& why, const std::
 }  // namespace
 
 std::string GlInfo::summary() const {
-  return fmt::format("{} (OpenGL {}, {})", renderer, version, platform);
+  // GL_VERSION of OpenGL ES names the API itself ("OpenGL ES 3.2 Mesa 22.3.6").
+  return fmt::format("{} ({}{}, {})", renderer, version.rfind("OpenGL ES", 0) == 0 ? "" : "OpenGL ", version, platform);
 }
 
 GlInfo query_gl_info(const std::string& platform) {
@@ -129,8 +144,7 @@ GlInfo query_gl_info(const std::string& platform) {
   return info;
 }
 
-HeadlessContext::HeadlessContext() {
-  std::string why;
+HeadlessContext::HeadlessContext(GlRequest request) {
   if (!epoxy_has_egl()) throw GlUnavailable("no GL: libEGL could not be loaded");
   const char* env = std::getenv("EGL_PLATFORM");
   const bool surfaceless_first = env && std::string(env) == "surfaceless";
@@ -163,17 +177,30 @@ HeadlessContext::HeadlessContext() {
     throw GlUnavailable(
         "no GL: this EGL has neither the device nor the surfaceless platform (install "
         "libegl-mesa0, or an NVIDIA driver with libEGL_nvidia)");
-  for (const OpenedDisplay& c : candidates) {
-    if (!initialise(c.display, why, c.platform)) continue;
-    EGLContext context = create_core_context(c.display, why, c.platform);
-    if (context == EGL_NO_CONTEXT) continue;  // displays are refcounted per process: leave it
-    display_ = c.display;
-    context_ = context;
-    const std::string platform = c.platform.rfind("EGL device", 0) == 0 ? "EGL device" : c.platform;
-    info_ = query_gl_info(platform);
-    return;
+  // Each flavour asked for, in order, on every display (auto: desktop first, then ES).
+  std::vector<const Flavour*> flavours;
+  if (request != GlRequest::kEs) flavours.push_back(&kDesktop);
+  if (request != GlRequest::kDesktop) flavours.push_back(&kEs);
+  std::string why, desktop_why;
+  for (const Flavour* flavour : flavours) {
+    for (const OpenedDisplay& c : candidates) {
+      if (!initialise(c.display, why, c.platform)) continue;
+      EGLContext context = create_context(c.display, *flavour, why, c.platform);
+      if (context == EGL_NO_CONTEXT) continue;  // displays are refcounted per process: leave it
+      display_ = c.display;
+      context_ = context;
+      const std::string platform = c.platform.rfind("EGL device", 0) == 0 ? "EGL device" : c.platform;
+      info_ = query_gl_info(platform);
+      info_.es = flavour == &kEs;
+      if (info_.es && request == GlRequest::kAuto) info_.desktop_unavailable = desktop_why;
+      return;
+    }
+    if (flavour == &kDesktop) desktop_why = std::exchange(why, std::string());
   }
-  throw GlUnavailable(fmt::format("no GL: no OpenGL 4.5 core context ({})", why));
+  if (request == GlRequest::kAuto)
+    throw GlUnavailable(fmt::format("no GL: neither OpenGL 4.5 core ({}) nor OpenGL ES 3.1 ({})", desktop_why, why));
+  throw GlUnavailable(fmt::format("no GL: no {} context ({})", request == GlRequest::kEs ? kEs.name : kDesktop.name,
+                                  request == GlRequest::kEs ? why : desktop_why.empty() ? why : desktop_why));
 }
 
 HeadlessContext::~HeadlessContext() {

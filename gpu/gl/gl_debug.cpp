@@ -26,6 +26,8 @@ void GLAPIENTRY on_debug_message(GLenum source, GLenum type, GLuint id, GLenum s
 
 void enable_gl_debug_output() {
   if (!strict_gl_checks()) return;
+  // OpenGL ES 3.1 has the debug output through KHR_debug only (core in ES 3.2).
+  if (!epoxy_is_desktop_gl() && epoxy_gl_version() < 32 && !epoxy_has_gl_extension("GL_KHR_debug")) return;
   glEnable(GL_DEBUG_OUTPUT);
   // Synchronous: the message arrives inside the call that caused it (and before its check_gl).
   glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);

@@ -1,7 +1,9 @@
 #pragma once
 // Owning wrappers of OpenGL objects (direct state access, GL 4.5) and shader programs. Every
 // renderer in gpu/ builds on these so object lifetimes, compile errors and GL errors are handled
-// in one place. All need a current context.
+// in one place. All need a current context. On an OpenGL ES 3.1 context (gl_flavour.hpp), which
+// has no direct state access, each takes ES's form: the object bound to edit it, the binding it
+// displaced put back (docs/gpu.md "OpenGL ES 3.1").
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -112,7 +114,20 @@ class VertexArray {
   GlName<delete_vertex_array> name_;
 };
 
-// The 2D image of a texture (level 0; one layer of an array), RGBA float, rows bottom-up.
+// The 2D image of a texture (level 0; one layer of an array), RGBA float, rows bottom-up
+// (glGetTextureSubImage; ES: glReadPixels through a framebuffer, float formats need
+// EXT_color_buffer_float there).
 std::vector<float> read_texture_rgba(const Texture& texture, int layer = 0);
+
+// Binds texture `texture` of `target` to texture unit `unit` (glBindTextureUnit; ES: the unit
+// made active and the texture bound there).
+void bind_texture_unit(GLuint unit, GLenum target, GLuint texture);
+// Writes a rectangle of level 0 of a 2D texture with the current unpack state
+// (glTextureSubImage2D; ES: glTexSubImage2D with the texture bound for the call).
+void upload_texture_2d(const Texture& texture, int x, int y, int width, int height, GLenum format, GLenum type,
+                       const void* pixels);
+// Sets every texel of level 0 of a 2D colour-renderable texture to `rgba` (glClearTexImage; ES:
+// cleared as a framebuffer's attachment, the scissor test off).
+void clear_texture(const Texture& texture, const float rgba[4]);
 
 }  // namespace lfd::gpu

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "gpu/gl/gl_debug.hpp"
+#include "gpu/gl/gl_flavour.hpp"
 #include "gpu/gl/gl_objects.hpp"
 #include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/gl_work_groups.hpp"
@@ -49,18 +50,23 @@ bool strict_gl_checks() {
 Program::Program(const std::string& label, const std::vector<std::pair<GLenum, const char*>>& stages,
                  const std::vector<std::string>& defines, std::vector<Binding> bindings)
     : label_(label), bindings_(std::move(bindings)) {
-  std::string header = "#version 450 core\n";
+  // One source per pass: on OpenGL ES the assembly takes what differs (shader_source.hpp).
+  const bool es = current_gl_is_es();
+  std::string header = glsl_version_header(es);
   for (const std::string& d : defines) header += "#define " + d + "\n";
   const GLuint program = glCreateProgram();
   name_ = GlName<delete_program>(program);
   std::vector<GLuint> shaders;
-  for (const auto& [type, source] : stages) {
+  std::vector<std::string> texts;  // what the driver compiles after the header
+  for (const auto& stage : stages) texts.push_back(es ? glsl_es_source(stage.second) : std::string(stage.second));
+  for (size_t s = 0; s < stages.size(); ++s) {
+    const auto& [type, source] = stages[s];
     const std::vector<std::string> files = shader_files(source);
     for (std::string& u : declared_uniforms(source)) declared_.push_back(std::move(u));
     // An embedded shader numbers its files in #line directives; other text starts at line 1.
     const std::string stage_header = files.empty() ? header + "#line 1\n" : header;
     const GLuint shader = glCreateShader(type);
-    const char* parts[] = {stage_header.c_str(), source};
+    const char* parts[] = {stage_header.c_str(), texts[s].c_str()};
     glShaderSource(shader, 2, parts, nullptr);
     glCompileShader(shader);
     GLint ok = 0;
@@ -89,7 +95,7 @@ Program::Program(const std::string& label, const std::vector<std::pair<GLenum, c
   check_bindings();
   if (std::any_of(stages.begin(), stages.end(), [](const auto& s) { return s.first == GL_COMPUTE_SHADER; }))
     check_work_group_fits();
-  for (const auto& [type, source] : stages) dump_shader_variant(label, type, header, source);
+  for (size_t s = 0; s < stages.size(); ++s) dump_shader_variant(label, stages[s].first, header, texts[s].c_str());
   if (bindings_.empty()) return;
   const std::vector<ActiveResource> active = active_resources(program);
   verify_declaration(label_, bindings_, active);
@@ -109,7 +115,9 @@ void Program::list_uniforms() {
   std::string name(size_t(std::max(longest, 1)), '\0');
   for (GLint i = 0; i < count; ++i) {
     GLsizei length = 0;
-    glGetActiveUniformName(id(), GLuint(i), GLsizei(name.size()), &length, name.data());
+    GLint size = 0;
+    GLenum type = 0;
+    glGetActiveUniform(id(), GLuint(i), GLsizei(name.size()), &length, &size, &type, name.data());  // also ES
     std::string n(name.data(), size_t(length));
     const GLint location = glGetUniformLocation(id(), n.c_str());
     if (location < 0) continue;  // in a uniform block: no location
@@ -177,7 +185,7 @@ void Program::bind(const std::string& name, const Buffer& buffer) const {
 void Program::bind(const std::string& name, const Texture& texture) const {
   const Binding& b = declared(name, false);
   if (b.resource == Resource::texture) {
-    glBindTextureUnit(GLuint(b.point), texture.id());
+    bind_texture_unit(GLuint(b.point), texture.target(), texture.id());
   } else {
     const GLenum access = b.access == Access::read    ? GL_READ_ONLY
                           : b.access == Access::write ? GL_WRITE_ONLY
@@ -198,7 +206,7 @@ void Program::bind_texture_id(const std::string& name, GLuint texture) const {
   const Binding& b = declared(name, false);
   if (b.resource != Resource::texture)
     throw std::logic_error(fmt::format("pass '{}': '{}' is an image; bind it as a Texture", label_, name));
-  glBindTextureUnit(GLuint(b.point), texture);
+  bind_texture_unit(GLuint(b.point), GL_TEXTURE_2D, texture);  // lfd binds no foreign arrays
   record(b, texture);
 }
 

@@ -124,7 +124,7 @@ Texture texture_from_image(const ImageF& image) {
     }
   }
   Texture texture(GL_RGBA32F, image.width, image.height);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT,
+  upload_texture_2d(texture, 0, 0, image.width, image.height, GL_RGBA, GL_FLOAT,
                       rgba.data());
   check_gl("uploading an image");
   return texture;

@@ -75,7 +75,7 @@ Texture correction_grid_texture(const display::LensModel& lens) {
   if (w.empty()) {
     const float zeros[4] = {0, 0, 0, 0};
     Texture grid(GL_R32F, 2, 2);
-    glTextureSubImage2D(grid.id(), 0, 0, 0, 2, 2, GL_RED, GL_FLOAT, zeros);
+    upload_texture_2d(grid, 0, 0, 2, 2, GL_RED, GL_FLOAT, zeros);
     return grid;
   }
   // Half the tolerance per axis.
@@ -88,7 +88,7 @@ Texture correction_grid_texture(const display::LensModel& lens) {
     for (int i = 0; i < gw; ++i)
       values[size_t(j) * gw + i] = float(w(double(i) / (gw - 1), double(j) / (gh - 1)));
   Texture grid(GL_R32F, gw, gh);
-  glTextureSubImage2D(grid.id(), 0, 0, 0, gw, gh, GL_RED, GL_FLOAT, values.data());
+  upload_texture_2d(grid, 0, 0, gw, gh, GL_RED, GL_FLOAT, values.data());
   return grid;
 }
 

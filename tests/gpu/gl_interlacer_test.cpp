@@ -171,6 +171,18 @@ TEST_P(GlInterlacerOnFixture, MatchesTheCpuInterlacer) {
                             quilt_layout(5, 9, 0.8 * display_aspect));
 }
 
+// OpenGL ES 3.1 (docs/arm.md): the same passes assembled for GLSL ES 3.10 (gpu::glsl_es_source)
+// on an ES context, both stages, every fixture, held to the same tolerance.
+TEST_P(GlInterlacerOnFixture, MatchesTheCpuInterlacerOnOpenGlEs) {
+  HeadlessContext context(GlRequest::kEs);
+  ASSERT_TRUE(context.info().es) << context.info().summary();
+  const DisplayCalibration full = display::read_visual_json(GetParam());
+  const DisplayCalibration small = shrunk(full, full.screen_w > 2000 ? 8 : 4);
+  const double display_aspect = double(small.screen_w) / small.screen_h;
+  expect_shader_matches_cpu(GetParam().stem().stem().string() + " (ES)", small,
+                            quilt_layout(5, 9, 0.8 * display_aspect));
+}
+
 // The calibration fixtures (Gen1, Gen2, the Portrait, the 16" Gen3 template with cells) and the
 // bundled templates of the Go and the 8K panels (32" Gen2, 32" portrait Gen3 with cells).
 std::vector<std::filesystem::path> calibrations() {

@@ -104,5 +104,79 @@ TEST_F(InterlaceBackendCli, AutoWithoutGlFallsBackToTheCpuWithANotice) {
   EXPECT_EQ(fraction_within_one("auto.png", "cpu.png"), 1.0);
 }
 
+// OpenGL ES 3.1 (docs/arm.md): asked for (--gl es, LFD_GL=es), and chosen by itself when desktop
+// GL is capped below 4.5 as on a Raspberry Pi 5 (Mesa's MESA_GL_VERSION_OVERRIDE=3.1 caps the
+// desktop contexts only): the CPU's panel, every subpixel within 1/255.
+const char* kCappedGl = "MESA_GL_VERSION_OVERRIDE=3.1 ";
+
+size_t count_lines(const std::string& text, const std::string& needle) {
+  size_t n = 0;
+  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+TEST_F(InterlaceBackendCli, OpenGlEsWritesTheCpuPanel) {
+  for (const std::string options : {"", "--blend linear --overscan --invert"}) {
+    SCOPED_TRACE(options);
+    ASSERT_EQ(test::run_lfd(interlace_args("cpu.png", options + " --backend cpu")).exit_code, 0);
+    const auto es = test::run_lfd(interlace_args("es.png", options + " --backend gl --gl es"));
+    ASSERT_EQ(es.exit_code, 0) << es.output;
+    EXPECT_NE(es.output.find("OpenGL ES"), std::string::npos) << es.output;
+    EXPECT_EQ(fraction_within_one("es.png", "cpu.png"), 1.0);
+    const auto env = test::run_command("LFD_GL=es " + std::string(LFD_EXE) + " " +
+                                       interlace_args("env.png", options + " --backend gl"));
+    ASSERT_EQ(env.exit_code, 0) << env.output;
+    EXPECT_NE(env.output.find("OpenGL ES"), std::string::npos) << env.output;
+    EXPECT_EQ(fraction_within_one("env.png", "cpu.png"), 1.0);
+  }
+}
+
+TEST_F(InterlaceBackendCli, CappedDesktopGlFallsToOpenGlEsByItself) {
+  ASSERT_EQ(test::run_lfd(interlace_args("cpu.png", "--backend cpu")).exit_code, 0);
+  const auto r = test::run_command(kCappedGl + std::string(LFD_EXE) + " " + interlace_args("capped.png", "--backend gl"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  if (r.output.find("notice:") == std::string::npos && r.output.find("OpenGL ES") == std::string::npos)
+    GTEST_SKIP() << "a driver that ignores MESA_GL_VERSION_OVERRIDE (not Mesa) made desktop GL: " << r.output;
+  EXPECT_EQ(count_lines(r.output, "notice: no desktop OpenGL 4.5 ("), 1u) << r.output;
+  EXPECT_EQ(count_lines(r.output, "notice:"), 1u) << r.output;
+  EXPECT_NE(r.output.find("running on OpenGL ES 3.1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("backend: gl on "), std::string::npos) << r.output;
+  EXPECT_EQ(fraction_within_one("capped.png", "cpu.png"), 1.0);
+}
+
+TEST_F(InterlaceBackendCli, CappedDesktopGlAskedForIsOneLineAndExit2) {
+  const auto r = test::run_command(kCappedGl + std::string(LFD_EXE) + " " +
+                                   interlace_args("desktop.png", "--backend gl --gl desktop"));
+  if (r.exit_code == 0) GTEST_SKIP() << "a driver that ignores MESA_GL_VERSION_OVERRIDE (not Mesa): " << r.output;
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_EQ(count_lines(r.output, "\n"), 1u) << r.output;
+  EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
+  EXPECT_FALSE(fs::exists(dir_ / "desktop.png"));
+}
+
+// What needs desktop GL 4.5 (Gaussian rendering) on a capped context, or with LFD_GL=es: one line
+// saying so, exit 2.
+TEST_F(InterlaceBackendCli, RenderingOnACappedContextIsOneLineAndExit2) {
+  const std::string render = " render --scene " + q(test::project_data() / "scenes" / "demo.ply") +
+                             " --views 4 --size 32x32 --backend gl --out " + q(dir_ / "quilt.png");
+  for (const std::string env : {std::string(kCappedGl), std::string("LFD_GL=es ")}) {
+    SCOPED_TRACE(env);
+    const auto r = test::run_command(env + std::string(LFD_EXE) + render);
+    if (r.exit_code == 0 && env == kCappedGl) continue;  // a driver that ignores the Mesa cap (NVIDIA's EGL device)
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(count_lines(r.output, "\n"), 1u) << r.output;
+    EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
+  }
+}
+
+TEST_F(InterlaceBackendCli, ABadGlChoiceIsOneLineAndExit2) {
+  const auto flag = test::run_lfd(interlace_args("x.png", "--backend gl --gl vulkan"));
+  EXPECT_EQ(flag.exit_code, 2) << flag.output;
+  const auto env = test::run_command("LFD_GL=vulkan " + std::string(LFD_EXE) + " " +
+                                     interlace_args("x.png", "--backend gl"));
+  EXPECT_EQ(env.exit_code, 2) << env.output;
+  EXPECT_NE(env.output.find("LFD_GL"), std::string::npos) << env.output;
+}
+
 }  // namespace
 }  // namespace lfd

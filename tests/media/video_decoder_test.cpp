@@ -70,6 +70,22 @@ TEST(VideoDecoder, Vp9WebmRoundTrip) {
   expect_round_trip(encoded("libvpx-vp9", ".webm"), "vp9");
 }
 
+// The hardware decoders are tried in order (docs/arm.md "Video on small boards"); where one runs
+// its name is the path, and where the software decoder runs its name says why each was passed
+// over. Without hardware decoding asked for, software with no reasons.
+TEST(VideoDecoder, TheDecodePathSaysWhichDecoderRunsAndWhyNotTheHardware) {
+  const fs::path video = encoded("libx264", ".mp4");
+  const std::string path = VideoDecoder(video, {true, 1}).decode_path();
+  if (path.rfind("software (h264, 1 threads", 0) == 0) {
+    for (const char* tried : {"; VA-API: ", "; DRM (V4L2 request): ", "; V4L2 M2M: "})
+      EXPECT_NE(path.find(tried), std::string::npos) << tried << " in " << path;
+  } else {
+    EXPECT_TRUE(path == "VA-API" || path == "DRM (V4L2 request)" || path.rfind("V4L2 M2M (h264_v4l2m2m)", 0) == 0)
+        << path;
+  }
+  EXPECT_EQ(VideoDecoder(video, {false, 1}).decode_path(), "software (h264, 1 threads)");
+}
+
 TEST(VideoDecoder, SeekGivesTheFrameShownAtThatTime) {
   VideoDecoder decoder(encoded("libx264", ".mp4"), {false, 1});
   for (const auto& [t, index] : std::vector<std::pair<double, int>>{{0.2, 6}, {0.0, 0}, {0.35, 10}, {0.1, 3}, {99, 11}}) {

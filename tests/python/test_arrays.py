@@ -78,7 +78,7 @@ def test_bad_files_raise_lfd_s_one_line_message(tmp_path):
 
 
 def test_torch_tensor_renders_as_its_numpy_twin(arrays):
-    torch = pytest.importorskip("torch", reason="python3-torch (scripts/install-deps.sh)")
+    torch = pytest.importorskip("torch", reason="python3-torch (scripts/install-test-deps.sh)")
     tensors = {k: torch.from_numpy(v.copy()).requires_grad_(k != "sh") for k, v in arrays.items()}
     settings = dict(views=4, cols=2, rows=2, size=(32, 32), chunks=8)
     from_torch = lfd.render_quilt(lfd.Gaussians(**tensors), **settings)

@@ -17,6 +17,9 @@
 //   module that owns the shaders), where `uint` is std::uint32_t and `vec4`, `ivec4`, `uvec4` are
 //   glm's (16 bytes, 4-byte aligned: a struct of them has its std430 layout), so struct members
 //   read the same as in GLSL; GLSL has no namespaces.
+// On OpenGL ES (docs/gpu.md "OpenGL ES 3.1") the shader assembly turns each LFD_IO_INT and
+// LFD_IO_UINT line into `#define name value` (GLSL ES 3.10 takes only literals in layout
+// qualifiers): write one per line, at the start of the line (gpu::glsl_es_source).
 // Include guards, not #pragma once: GLSL would warn about an unknown pragma (the embedder
 // pastes each file once anyway).
 #ifndef LFD_GPU_SHADERS_SHADER_IO_H

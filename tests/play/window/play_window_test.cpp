@@ -57,13 +57,14 @@ ImageF interlace_reference(const fs::path& quilt) {
   return to_float(read_image(out));
 }
 
-// `lfd play FILE... --frames N --screenshot`: what the window showed.
+// `lfd play FILE... --frames N --screenshot`: what the window showed. `env`: variables before
+// the program ("MESA_GL_VERSION_OVERRIDE=3.1 ").
 ImageF play_screenshot(const std::string& files, const std::string& extra, const std::string& tag,
-                       std::string* output = nullptr) {
+                       std::string* output = nullptr, const std::string& env = "") {
   const fs::path shot = kDir / (tag + ".screenshot.png");
   fs::remove(shot);
-  const auto r = run_lfd("play " + files + " --calibration " + kCalibration + " --frames 4 --screenshot " +
-                         shot.string() + " " + extra);
+  const auto r = test::run_command(env + LFD_EXE + " play " + files + " --calibration " + kCalibration +
+                                   " --frames 4 --screenshot " + shot.string() + " " + extra);
   EXPECT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("its monitor"), std::string::npos) << "not full screen on the display: " << r.output;
   if (output) *output = r.output;
@@ -93,10 +94,13 @@ TEST(PlayWindow, OtherGridAndAspectEqualsInterlace) {
   EXPECT_LT(top / shown.width, 0.01);
 }
 
-TEST(PlayWindow, VideoFrameOnScreenEqualsInterlaceOfDecodedFrame) {
+// The video frame on screen (paused at 0.2 s) against `lfd interlace` of that frame decoded here.
+void expect_video_frame_equals_interlace(const std::string& extra, const std::string& tag,
+                                         const std::string& env = "", std::string* played = nullptr) {
   const fs::path video = write_quilt_video("video", layout(8, 6, 48, 64, 0.75), 12);
   std::string output;
-  const ImageF shown = play_screenshot(video.string(), "--pause-at 0.2", "video", &output);
+  const ImageF shown = play_screenshot(video.string(), "--pause-at 0.2 " + extra, tag, &output, env);
+  if (played) *played = output;
   ASSERT_FALSE(shown.empty());
   // The frame on screen, as the player reports it, and the same frame decoded here.
   std::smatch m;
@@ -112,6 +116,8 @@ TEST(PlayWindow, VideoFrameOnScreenEqualsInterlaceOfDecodedFrame) {
   write_png(decoded, media::yuv_to_rgb(*frame));
   EXPECT_GE(render::psnr(shown, interlace_reference(decoded)), 35.0);
 }
+
+TEST(PlayWindow, VideoFrameOnScreenEqualsInterlaceOfDecodedFrame) { expect_video_frame_equals_interlace("", "video"); }
 
 // An RGB-D image (colour and depth side by side, the rgbd tests' layered fixture): the panel
 // on screen equals `lfd interlace` of `lfd rgbd-quilt`'s CPU quilt of it (the GL views match the
@@ -130,6 +136,83 @@ TEST(PlayWindow, RgbdImageEqualsInterlaceOfRgbdQuilt) {
   EXPECT_GE(render::psnr(shown, interlace_reference(m[1].str())), 35.0);
   // Not the flat picture: the same frame shown without depth differs.
   EXPECT_LT(render::psnr(shown, play_screenshot(frame.string(), "--rgbd --depthiness 0.1", "rgbd-flat")), 35.0);
+}
+
+// OpenGL ES 3.1 (docs/arm.md): asked for (--gl es, LFD_GL=es), or taken by itself when desktop GL
+// is capped below 4.5 as on a Raspberry Pi 5 (Mesa's MESA_GL_VERSION_OVERRIDE=3.1 caps desktop
+// contexts only): the same panel on screen as `lfd interlace` gives, the image and the video.
+struct GlFlavour {
+  const char* name;
+  const char* env;   // before the program
+  const char* flag;  // on its command line
+};
+
+class PlayWindowOnOpenGlEs : public testing::TestWithParam<GlFlavour> {
+ protected:
+  std::string extra() const { return std::string(GetParam().flag) + " --info"; }
+  std::string tag(const std::string& what) const { return what + "-" + GetParam().name; }
+  // The player said it ran on ES, and a fallback said why once.
+  void expect_es(const std::string& output) const {
+    EXPECT_NE(output.find("[OpenGL ES path]"), std::string::npos) << output;
+    const bool capped = std::string(GetParam().env).find("MESA_GL_VERSION_OVERRIDE") != std::string::npos;
+    const size_t first = output.find("notice: no desktop OpenGL 4.5 (");
+    EXPECT_EQ(first != std::string::npos, capped) << output;
+    if (first != std::string::npos) {
+      EXPECT_EQ(output.find("notice: no desktop OpenGL 4.5 (", first + 1), std::string::npos) << output;
+    }
+  }
+};
+
+TEST_P(PlayWindowOnOpenGlEs, QuiltImageEqualsInterlace) {
+  const fs::path quilt = write_quilt_png("image", layout(8, 6, 96, 128, 0.75));
+  const ImageF reference = interlace_reference(quilt);
+  std::string output;
+  const ImageF shown = play_screenshot(quilt.string(), extra(), tag("image"), &output, GetParam().env);
+  expect_es(output);
+  ASSERT_EQ(shown.width, 1536);
+  ASSERT_EQ(shown.height, 2048);
+  EXPECT_GE(render::psnr(shown, reference), 40.0);
+}
+
+TEST_P(PlayWindowOnOpenGlEs, VideoFrameOnScreenEqualsInterlaceOfDecodedFrame) {
+  std::string output;
+  expect_video_frame_equals_interlace(extra(), tag("video"), GetParam().env, &output);
+  expect_es(output);
+  EXPECT_NE(output.find("decoder: software"), std::string::npos) << output;
+}
+
+// An RGB-D picture: the views the ES context makes (RGBA32F passes: EXT_color_buffer_float) show
+// what desktop GL shows.
+TEST_P(PlayWindowOnOpenGlEs, RgbdImageEqualsTheDesktopOne) {
+  fs::create_directories(kDir);
+  const fs::path frame = kDir / "layers_es_rgbd.png";
+  write_png(frame, to_uint8(rgbd::test::layered_rgbd_frame(160, 120, rgbd::DepthLocation::right)));
+  const ImageF desktop = play_screenshot(frame.string(), "--rgbd --depthiness 2 --gl desktop", "rgbd-desktop");
+  std::string output;
+  const ImageF shown = play_screenshot(frame.string(), "--rgbd --depthiness 2 " + extra(), tag("rgbd"), &output,
+                                       GetParam().env);
+  expect_es(output);
+  ASSERT_FALSE(shown.empty());
+  ASSERT_FALSE(desktop.empty());
+  EXPECT_GE(render::psnr(shown, desktop), 40.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Flavours, PlayWindowOnOpenGlEs,
+                         testing::Values(GlFlavour{"es", "", "--gl es"}, GlFlavour{"env", "LFD_GL=es ", ""},
+                                         GlFlavour{"capped", "MESA_GL_VERSION_OVERRIDE=3.1 ", ""}),
+                         [](const testing::TestParamInfo<GlFlavour>& info) { return std::string(info.param.name); });
+
+// What needs desktop GL 4.5: `lfd view` (Gaussian rendering) on a capped context is one line, exit 2.
+TEST(PlayWindow, ViewOnACappedContextIsOneLineExit2) {
+  const std::string scene = std::string(LFD_SOURCE_DIR) + "/data/scenes/demo.ply";
+  for (const std::string env : {"MESA_GL_VERSION_OVERRIDE=3.1 ", "LFD_GL=es "}) {
+    SCOPED_TRACE(env);
+    const auto r = test::run_command(env + LFD_EXE + " view " + scene + " --calibration " + kCalibration +
+                                     " --simulated --frames 2");
+    EXPECT_EQ(r.exit_code, 2) << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    EXPECT_NE(r.output.find("needs desktop OpenGL 4.5"), std::string::npos) << r.output;
+  }
 }
 
 // The one-line errors: exit 2 naming the file.
