@@ -37,7 +37,8 @@ void BridgeServer::add_routes() {
       }
       // Beyond loopback: the token, or only the login form (docs/console.md, "Security").
       if (!origins_.token_ok(OriginPolicy::from_this_machine(req.remote_addr, req.get_header_value("Host")),
-                             req.get_header_value("Cookie"), req.get_header_value("Authorization"))) {
+                             req.get_header_value("Cookie"), req.get_header_value("Authorization")) &&
+          !(console_ && ConsoleRoutes::is_login(req))) {  // the login form's post checks the token itself
         if (console_ && console_->answer_without_token(req, res)) return httplib::Server::HandlerResponse::Handled;
         ++refused_;
         res.status = 401;

@@ -79,17 +79,23 @@ bool ConsoleRoutes::answer_without_token(const httplib::Request& req, httplib::R
     send_asset(res, *login, 401);
     return true;
   }
-  if (req.method == "POST" && req.path == "/login") {
+  if (req.method == "GET" && req.path == "/console/console.css") return send_asset(res, *console_asset("console.css")), true;
+  return false;
+}
+
+bool ConsoleRoutes::is_login(const httplib::Request& req) { return req.method == "POST" && req.path == "/login"; }
+
+void ConsoleRoutes::add_routes(httplib::Server& s) {
+  s.Post("/login", [this](const httplib::Request& req, httplib::Response& res) {
+    const ConsoleAsset* login = console_asset("login.html");
+    if (!origins_.token()) return res.set_redirect("/", 303);  // loopback: nothing to sign in to
     // A form post (application/x-www-form-urlencoded): token=<64 hex digits>.
-    httplib::Params form;
-    httplib::detail::parse_query_text(req.body, form);
-    const auto it = form.find("token");
-    if (it != form.end() && origins_.token() && origins_.token()->matches(it->second)) {
+    const std::string given = req.get_param_value("token");
+    if (origins_.token()->matches(given)) {
       // The cookie goes with every request to this host, the event socket's port too.
       res.set_header("Set-Cookie", std::string(kTokenCookie) + "=" + origins_.token()->text() +
                                        "; Path=/; HttpOnly; SameSite=Strict; Max-Age=31536000");
-      res.set_redirect("/", 303);
-      return true;
+      return res.set_redirect("/", 303);
     }
     spdlog::warn("console: a login with a wrong token");
     std::string page(login->bytes);
@@ -98,13 +104,7 @@ bool ConsoleRoutes::answer_without_token(const httplib::Request& req, httplib::R
       page.replace(at, mark.size(), "<p role=\"alert\" class=\"error\">That is not the token of this service.</p>");
     res.status = 401;
     res.set_content(page, std::string(login->content_type));
-    return true;
-  }
-  if (req.method == "GET" && req.path == "/console/console.css") return send_asset(res, *console_asset("console.css")), true;
-  return false;
-}
-
-void ConsoleRoutes::add_routes(httplib::Server& s) {
+  });
   s.Get("/", [](const httplib::Request& req, httplib::Response& res) {
     if (wants_html(req)) return send_asset(res, *console_asset("index.html"));
     res.set_content(R"({"service":"lfd serve"})", "application/json");

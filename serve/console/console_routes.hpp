@@ -31,9 +31,11 @@ class ConsoleRoutes {
   // Registered before Bridge's routes: GET / answers the page to a browser (Accept: text/html)
   // and Bridge's JSON to a script.
   void add_routes(httplib::Server& server);
-  // Without the token (beyond loopback): GET / is the login form, POST /login checks it; true
-  // when the request was one of those and `res` is its answer.
+  // Without the token (beyond loopback): GET / is the login form (and its style); true when
+  // the request was one of those and `res` is its answer.
   bool answer_without_token(const httplib::Request& req, httplib::Response& res) const;
+  // POST /login: the form's token, checked by its route once the body is read.
+  static bool is_login(const httplib::Request& req);
 
  private:
   DisplayService& displays_;

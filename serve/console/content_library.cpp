@@ -184,7 +184,11 @@ LibraryItem ContentLibrary::upload(const std::string& client_name,
   if (total == 0) return refuse(fmt::format("{}: empty", base));
   std::string why;
   auto probed = probe(tmp, base, &why);
-  if (!probed) return refuse(fmt::format("{}: not a quilt image, quilt video or RGB-D photo ({})", base, why));
+  if (!probed) {
+    // The reason names the file by the client's name, not the hidden temporary path.
+    for (std::size_t at; (at = why.find(tmp.string())) != std::string::npos;) why.replace(at, tmp.string().size(), base);
+    return refuse(fmt::format("{}: not a quilt image, quilt video or RGB-D photo ({})", base, why));
+  }
   // The extension of what the bytes are, not of what the name said.
   const auto head = file_head(tmp);
   const auto format = media::sniff_image_format(head);

@@ -244,6 +244,7 @@ function dragToReorder(list, p) {
     const handle = ev.target.closest('.handle');
     if (!handle) return;
     dragged = handle.closest('li');
+    state.dragging = true;  // an event's re-render waits for the drop
     dragged.classList.add('dragging');
     handle.setPointerCapture(ev.pointerId);
     ev.preventDefault();
@@ -262,7 +263,9 @@ function dragToReorder(list, p) {
     const to = [...list.children].indexOf(dragged);
     dragged.classList.remove('dragging');
     dragged = null;
+    state.dragging = false;
     if (from !== to) act('Reorder', () => moveEntry(p, from, to));
+    else renderPlaylists();
   };
   list.addEventListener('pointerup', drop);
   list.addEventListener('pointercancel', drop);
@@ -339,7 +342,7 @@ async function loadPlaylists() {
   const reply = await getJson('/playlists');
   state.playlists = reply.playlists;
   state.autostart = reply.autostart;
-  renderPlaylists();
+  if (!state.dragging) renderPlaylists();
 }
 
 // --- live state ---------------------------------------------------------------------------

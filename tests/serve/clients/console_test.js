@@ -192,9 +192,11 @@ cases['upload-play'] = async () => {
 };
 
 async function dragBefore(page, list, from, to) {
+  await sleep(1000);  // the events of the inserts have re-drawn the list
   const handles = await page.$$(`${list} li .handle`);
   const target = await (await page.$$(`${list} li`))[to].boundingBox();
   const box = await handles[from].boundingBox();
+  check(box !== null && target !== null, 'the entries are on screen to be dragged');
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
   await page.mouse.down();
   await page.mouse.move(target.x + 20, target.y + 3, {steps: 8});
@@ -359,6 +361,8 @@ cases.listen = async () => {
   await Promise.all([tab.waitForNavigation(), tab.click('aria/Sign in')]);
   check(/not the token/.test(await tab.$eval('main', (m) => m.textContent)), 'a wrong token: the login form says so');
   check(!tab.url().includes(token), 'the token is in no URL');
+  await tab.waitForSelector('aria/Access token');
+  await tab.$eval('#token', (e) => { e.value = ''; });
   await tab.type('aria/Access token', token);
   await Promise.all([tab.waitForNavigation(), tab.click('aria/Sign in')]);
   await tab.waitForSelector('body[data-ready]', {timeout: 20000});
