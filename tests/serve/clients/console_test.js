@@ -350,6 +350,16 @@ cases.listen = async () => {
   check(wrong.status === 401, 'a wrong token is refused');
   const right = await fetch(base + '/lfd_status', {method: 'PUT', body: '{}', headers: {Authorization: 'Bearer ' + token}});
   check(right.status === 200, 'a script with the token (Authorization: Bearer) is answered');
+  // The event socket from off the machine: closed without the token, kept with it.
+  const WebSocket = require('ws');
+  const socketStays = (headers) => new Promise((resolve) => {
+    const ws = new WebSocket(`ws://${address.address}:9724/event_source`, {headers});
+    const timer = setTimeout(() => { ws.close(); resolve(true); }, 1500);
+    ws.on('close', () => { clearTimeout(timer); resolve(false); });
+    ws.on('error', () => { clearTimeout(timer); resolve(false); });
+  });
+  check(!(await socketStays({})), 'without the token the event socket is closed');
+  check(await socketStays({Cookie: 'lfd_token=' + token}), 'with the token\'s cookie the event socket stays open');
   // The browser: the login form, a wrong token, the right one, then the console.
   const tab = await browser.newPage();
   await tab.setBypassCSP(true);
