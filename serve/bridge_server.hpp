@@ -10,7 +10,7 @@
 #include <thread>
 
 #include "serve/bridge_api.hpp"
-#include "serve/console/console_routes.hpp"
+#include "serve/console_routes.hpp"
 #include "serve/listen_address.hpp"
 #include "serve/memory_budget.hpp"
 #include "serve/origin_policy.hpp"

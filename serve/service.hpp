@@ -9,8 +9,8 @@
 
 #include "serve/bridge_api.hpp"
 #include "serve/bridge_server.hpp"
-#include "serve/console/console_routes.hpp"
-#include "serve/console/content_library.hpp"
+#include "serve/console_routes.hpp"
+#include "serve/content_library.hpp"
 #include "serve/event_hub.hpp"
 #include "serve/event_server.hpp"
 #include "serve/decoded_quilts.hpp"

@@ -1,5 +1,5 @@
 // The console's content library (docs/console.md, "Content").
-#include "serve/console/content_library.hpp"
+#include "serve/content_library.hpp"
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -15,6 +15,7 @@
 #include "media/quilt_image.hpp"
 #include "media/quilt_name.hpp"
 #include "media/video_decoder.hpp"
+#include "serve/library_file_name.hpp"
 #include "util/error.hpp"
 
 namespace lfd::serve {
@@ -23,7 +24,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kMaxNameChars = 200;
 constexpr std::size_t kHeaderBytes = 1u << 20;  // what an image's size is read from
 
 std::vector<uint8_t> file_head(const fs::path& path) {
@@ -68,24 +68,6 @@ bool rename_no_replace(const fs::path& from, const fs::path& to) {
 }
 
 }  // namespace
-
-std::string library_file_name(std::string_view client_name) {
-  if (client_name.empty()) throw_input_error("name: empty");
-  if (client_name.size() > kMaxNameChars) throw_input_error("name: longer than {} characters", kMaxNameChars);
-  if (client_name.find("..") != std::string_view::npos || client_name.find('/') != std::string_view::npos ||
-      client_name.find('\\') != std::string_view::npos)
-    throw_input_error("name {}: not a plain file name ('/', '\\' and '..' are refused)", client_name);
-  std::string out;
-  for (const char c : client_name) {
-    const auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u == 0x7f) throw_input_error("name: a control character");
-    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '.' ||
-                       c == '_' || c == '-';
-    out += plain ? c : '_';
-  }
-  if (out.front() == '.') out.front() = '_';  // no hidden files: the folder's own are
-  return out;
-}
 
 nlohmann::json library_item_json(const LibraryItem& i) {
   return {{"name", i.name}, {"uri", i.path.string()}, {"kind", i.kind}, {"bytes", i.bytes},
@@ -160,17 +142,29 @@ LibraryItem ContentLibrary::item(const std::string& name) const {
 
 LibraryItem ContentLibrary::upload(const std::string& client_name,
                                    const std::function<bool(const std::function<bool(const char*, std::size_t)>&)>& read) {
-  const std::string base = library_file_name(client_name);
+  // A refusal still reads the body (discarding it): bytes left unread on a kept-alive connection
+  // would be taken for the next request. cpp-httplib bounds what it reads (its payload limit).
+  const auto refuse_unread = [&](const std::string& why) -> LibraryItem {
+    read([](const char*, std::size_t) { return true; });
+    throw InputError(why);
+  };
+  std::string base;
+  try {
+    base = library_file_name(client_name);
+  } catch (const InputError& e) {
+    return refuse_unread(e.what());
+  }
   static thread_local std::mt19937_64 random{std::random_device{}()};
   const fs::path tmp = folder_ / fmt::format(".upload-{:016x}", random());
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) throw_input_error("upload: cannot write in the content folder {}", folder_.string());
+  if (fd < 0) return refuse_unread(fmt::format("upload: cannot write in the content folder {}", folder_.string()));
   std::size_t total = 0;
   bool too_large = false, write_failed = false;
   const bool complete = read([&](const char* data, std::size_t n) {
     total += n;
-    if (total > max_upload_bytes_) return !(too_large = true);
-    if (::write(fd, data, n) != static_cast<ssize_t>(n)) return !(write_failed = true);
+    too_large = too_large || total > max_upload_bytes_;
+    if (too_large || write_failed) return true;  // read on, written no more
+    write_failed = ::write(fd, data, n) != static_cast<ssize_t>(n);
     return true;
   });
   const bool synced = ::fsync(fd) == 0;

@@ -15,6 +15,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "serve/library_file_name.hpp"
+
 namespace lfd::serve {
 
 struct LibraryItem {
@@ -59,9 +61,5 @@ class ContentLibrary {
   mutable std::mutex mutex_;
 };
 
-// A client's file name made into a name for the folder: InputError for '/', '\\', "..",
-// control characters or an empty or over-long name; other characters outside [A-Za-z0-9._-]
-// become '_'.
-std::string library_file_name(std::string_view client_name);
 
 }  // namespace lfd::serve

@@ -1,12 +1,12 @@
 // The console's routes (docs/console.md).
-#include "serve/console/console_routes.hpp"
+#include "serve/console_routes.hpp"
 
 #include <fstream>
 
 #include <httplib.h>
 #include <spdlog/spdlog.h>
 
-#include "serve/console/console_assets.hpp"
+#include "serve/console_assets.hpp"
 #include "serve/bridge_request.hpp"
 #include "serve/request_file.hpp"
 #include "util/error.hpp"

@@ -7,7 +7,7 @@
 // (BridgeServer's pre-routing handler).
 #include <string>
 
-#include "serve/console/content_library.hpp"
+#include "serve/content_library.hpp"
 #include "serve/display_service.hpp"
 #include "serve/listen_address.hpp"
 #include "serve/origin_policy.hpp"
