@@ -9,6 +9,7 @@
 #include <httplib.h>
 #include <spdlog/spdlog.h>
 
+#include "serve/bounded_body.hpp"
 #include "serve/bounded_task_queue.hpp"
 #include "serve/bridge_reply.hpp"
 
@@ -46,11 +47,15 @@ void BridgeServer::add_routes() {
                         "application/json");
         return httplib::Server::HandlerResponse::Handled;
       }
-      // Only an upload's body may be larger than a Bridge body (the server's limit is the larger).
+      // Only an upload's body may be larger than a Bridge body (the server's limit is the
+      // larger): the PUT/POST routes read theirs with their own bound (bounded_body.hpp) and
+      // answer 413; a large body anywhere else is refused unread (no client sends one).
       const bool upload = console_ && req.path == kUploadPath;
-      if (!upload && (req.get_header_value_count("Transfer-Encoding") > 0 ||
-                      req.get_header_value<std::uint64_t>("Content-Length") > limits_.max_body_bytes)) {
-        res.status = req.get_header_value_count("Transfer-Encoding") > 0 ? 411 : 413;
+      const bool bounded_route = (req.method == "PUT" || req.method == "POST") && ConsoleRoutes::reads_bounded_body(req.path);
+      const bool chunked = req.get_header_value_count("Transfer-Encoding") > 0;
+      if (!upload && (chunked || (!bounded_route && req.get_header_value<std::uint64_t>("Content-Length") > limits_.max_body_bytes))) {
+        res.status = chunked ? 411 : 413;
+        res.set_header("Connection", "close");
         return httplib::Server::HandlerResponse::Handled;
       }
       // An upload goes to a file as it arrives: what it holds in memory is a read buffer.
@@ -94,8 +99,13 @@ void BridgeServer::add_routes() {
     res.status = 204;
   });
   // bridge.js and the vendor's ComfyUI node send PUT, other scripts POST: the same call either way.
-  const auto call = [this](const httplib::Request& req, httplib::Response& res) {
-    const BridgeResponse reply = api_.handle(req.matches[1].str(), req.body);
+  const auto call = [this](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& read) {
+    const auto body = read_bounded_body(read, limits_.max_body_bytes);
+    if (!body) {
+      res.status = 413;
+      return;
+    }
+    const BridgeResponse reply = api_.handle(req.matches[1].str(), *body);
     res.status = reply.http_status;
     if (reply.http_status == 503) res.set_header("Retry-After", "1");  // busy: the budget is in use
     res.set_content(reply.body, "application/json");

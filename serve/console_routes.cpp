@@ -1,11 +1,17 @@
 // The console's routes (docs/console.md).
 #include "serve/console_routes.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <memory>
+#include <vector>
 
 #include <httplib.h>
 #include <spdlog/spdlog.h>
 
+#include "serve/bounded_body.hpp"
 #include "serve/console_assets.hpp"
 #include "serve/bridge_request.hpp"
 #include "serve/request_file.hpp"
@@ -53,6 +59,8 @@ void answering(const char* what, httplib::Response& res, F&& answer) {
   }
 }
 
+constexpr std::size_t kSmallBodyBytes = 1u << 16;  // a rename, a delete, the login form
+
 std::string percent_decoded(const std::string& s) { return httplib::detail::decode_url(s, false); }
 
 json playlist_json(const Playlist& p, const std::filesystem::path& folder) {
@@ -85,12 +93,22 @@ bool ConsoleRoutes::answer_without_token(const httplib::Request& req, httplib::R
 
 bool ConsoleRoutes::is_login(const httplib::Request& req) { return req.method == "POST" && req.path == "/login"; }
 
+bool ConsoleRoutes::reads_bounded_body(const std::string& path) {
+  if (path == "/library/rename" || path == "/library/delete") return true;
+  // Bridge's /<endpoint> (and /login among them).
+  return path.size() >= 2 && path.size() <= 65 && path[0] == '/' &&
+         std::all_of(path.begin() + 1, path.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 void ConsoleRoutes::add_routes(httplib::Server& s) {
-  s.Post("/login", [this](const httplib::Request& req, httplib::Response& res) {
+  s.Post("/login", [this](const httplib::Request&, httplib::Response& res, const httplib::ContentReader& read) {
     const ConsoleAsset* login = console_asset("login.html");
+    const auto body = read_bounded_body(read, kSmallBodyBytes);
     if (!origins_.token()) return res.set_redirect("/", 303);  // loopback: nothing to sign in to
     // A form post (application/x-www-form-urlencoded): token=<64 hex digits>.
-    const std::string given = req.get_param_value("token");
+    httplib::Params form;
+    if (body) httplib::detail::parse_query_text(*body, form);
+    const std::string given = form.count("token") ? form.find("token")->second : "";
     if (origins_.token()->matches(given)) {
       // The cookie goes with every request to this host, the event socket's port too.
       res.set_header("Set-Cookie", std::string(kTokenCookie) + "=" + origins_.token()->text() +
@@ -132,15 +150,25 @@ void ConsoleRoutes::add_routes(httplib::Server& s) {
     try {
       const LibraryItem item = library_.item(req.get_param_value("name"));
       const std::string type = item.kind == "quilt video" ? "video/mp4" : "application/octet-stream";
-      // The service's own file: read bounded, as any request's file.
+      // The service's own file, checked as any request's file and streamed in 64 KiB pieces
+      // (a thumbnail is the whole quilt: never held in memory).
       const auto path = checked_request_file(item.path.string(), library_.max_upload_bytes());
-      std::ifstream in(path, std::ios::binary);
-      std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      auto in = std::make_shared<std::ifstream>(path, std::ios::binary);
+      const std::size_t size = std::filesystem::file_size(path);
       res.set_header("X-Content-Type-Options", "nosniff");
-      res.set_content(std::move(bytes), item.name.ends_with(".png")    ? "image/png"
-                                        : item.name.ends_with(".jpg")  ? "image/jpeg"
-                                        : item.name.ends_with(".webp") ? "image/webp"
-                                                                       : type);
+      res.set_content_provider(size,
+                               item.name.ends_with(".png")    ? "image/png"
+                               : item.name.ends_with(".jpg")  ? "image/jpeg"
+                               : item.name.ends_with(".webp") ? "image/webp"
+                                                              : type,
+                               [in](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                                 std::vector<char> piece(std::min<std::size_t>(length, 64u << 10));
+                                 in->seekg(static_cast<std::streamoff>(offset));
+                                 in->read(piece.data(), static_cast<std::streamsize>(piece.size()));
+                                 if (in->gcount() <= 0) return false;
+                                 sink.write(piece.data(), static_cast<std::size_t>(in->gcount()));
+                                 return true;
+                               });
     } catch (const InputError& e) {
       send_error(res, 404, e.what());
     }
@@ -156,16 +184,20 @@ void ConsoleRoutes::add_routes(httplib::Server& s) {
     });
     if (res.status == 400 && res.body.find("upload limit") != std::string::npos) res.status = 413;
   });
-  s.Post("/library/rename", [this](const httplib::Request& req, httplib::Response& res) {
+  s.Post("/library/rename", [this](const httplib::Request&, httplib::Response& res, const httplib::ContentReader& read) {
+    const auto body = read_bounded_body(read, kSmallBodyBytes);
     answering("rename", res, [&] {
-      const json r = parse_bridge_request(req.body, 1u << 16);
+      if (!body) throw_input_error("body: larger than {} bytes", kSmallBodyBytes);
+      const json r = parse_bridge_request(*body, kSmallBodyBytes);
       const LibraryItem item = library_.rename(field_text(r, "name", 256, ""), field_text(r, "new_name", 256, ""));
       return library_item_json(item);
     });
   });
-  s.Post("/library/delete", [this](const httplib::Request& req, httplib::Response& res) {
+  s.Post("/library/delete", [this](const httplib::Request&, httplib::Response& res, const httplib::ContentReader& read) {
+    const auto body = read_bounded_body(read, kSmallBodyBytes);
     answering("delete", res, [&] {
-      const json r = parse_bridge_request(req.body, 1u << 16);
+      if (!body) throw_input_error("body: larger than {} bytes", kSmallBodyBytes);
+      const json r = parse_bridge_request(*body, kSmallBodyBytes);
       const std::string name = field_text(r, "name", 256, "");
       library_.remove(name);
       return json{{"deleted", name}};

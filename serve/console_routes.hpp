@@ -36,6 +36,9 @@ class ConsoleRoutes {
   bool answer_without_token(const httplib::Request& req, httplib::Response& res) const;
   // POST /login: the form's token, checked by its route once the body is read.
   static bool is_login(const httplib::Request& req);
+  // Whether a PUT/POST to `path` reaches a route that reads its body with its own bound
+  // (bounded_body.hpp): Bridge's endpoints, the login form, rename and delete.
+  static bool reads_bounded_body(const std::string& path);
 
  private:
   DisplayService& displays_;

@@ -20,6 +20,7 @@ namespace lfd::serve {
 namespace {
 
 namespace fs = std::filesystem;
+using test::TempDir;
 
 TEST(LibraryFileName, KeepsPlainNamesAndRefusesPaths) {
   EXPECT_EQ(library_file_name("a_qs4x3a0.75.png"), "a_qs4x3a0.75.png");
