@@ -170,7 +170,11 @@ function renderLibrary() {
 }
 
 async function loadLibrary() {
-  state.library = (await getJson('/library')).items;
+  const items = (await getJson('/library')).items;
+  const text = JSON.stringify(items);
+  if (text === state.libraryText) return;
+  state.libraryText = text;
+  state.library = items;
   renderLibrary();
 }
 
@@ -340,6 +344,10 @@ function renderPlaylists() {
 
 async function loadPlaylists() {
   const reply = await getJson('/playlists');
+  // Drawn again only when something changed: an event for another's change keeps focus here.
+  const text = JSON.stringify(reply);
+  if (text === state.playlistsText) return;
+  state.playlistsText = text;
   state.playlists = reply.playlists;
   state.autostart = reply.autostart;
   if (!state.dragging) renderPlaylists();

@@ -102,6 +102,19 @@ async function axe(page, view) {
   check(result.violations.length === 0, `axe-core finds no WCAG A/AA violation on ${view}${lines.length ? ': ' + lines.join('; ') : ''}`);
 }
 
+// A click on what `selector` names, again when an event re-drew the list under it.
+async function click(page, selector) {
+  for (let attempt = 0; ; ++attempt) {
+    try {
+      const element = await page.waitForSelector(selector, {timeout: 10000});
+      return await element.click();
+    } catch (e) {
+      if (attempt >= 5 || !/detached|not clickable|no node/i.test(e.message)) throw e;
+      await sleep(200);
+    }
+  }
+}
+
 async function uploadThroughPicker(page, files) {
   await show(page, '#content');
   const [chooser] = await Promise.all([page.waitForFileChooser(), page.click('aria/Upload[role="button"]')]);
@@ -208,12 +221,12 @@ cases.playlist = async () => {
   await uploadThroughPicker(page, [A, B]);
   await show(page, '#playlists');
   await page.type('aria/New playlist', 'Tour');
-  await page.click('aria/Create');
+  await click(page, 'aria/Create');
   await waitFor('the playlist Tour is made', async () => (await playlists()).playlists.some((p) => p.name === 'Tour'));
   await show(page, '#content');
   await page.waitForFunction(() => document.getElementById('add-target').value === 'Tour');
   for (const name of ['a_qs4x3a0.75.png', 'b_qs4x3a0.75.png']) {
-    await page.click(`aria/Add ${name} to the playlist`);
+    await click(page, `aria/Add ${name} to the playlist`);
     await waitFor(`${name} added`, async () => (await playlists()).playlists.find((p) => p.name === 'Tour').entries.some((e) => e.name === name));
   }
   await show(page, '#playlists');
@@ -227,7 +240,7 @@ cases.playlist = async () => {
   });
   check(true, 'dragging b above a reorders the playlist (the service keeps b, a)');
   await page.waitForFunction(() => /b_qs/.test(document.querySelector('#playlist-list .entries li').textContent));
-  await page.click('aria/Play Tour');
+  await click(page, 'aria/Play Tour');
   await waitFor('Tour plays b first', async () => {
     const s = await status();
     return s.playlist === 'Tour' && s.index === 0 && /b_qs4x3a0\.75/.test(s.showing);
@@ -238,7 +251,7 @@ cases.playlist = async () => {
     return s.playlist === 'Tour' && s.index === 1 && /a_qs4x3a0\.75/.test(s.showing);
   }, 20000);
   check(true, 'the reordered playlist plays in the new order (b, then a)');
-  await page.click('aria/Play Tour when the service starts');
+  await click(page, 'aria/Play Tour when the service starts');
   await waitFor('Tour is the autostart playlist', async () => ((await playlists()).autostart || {}).name === 'Tour');
   await page.waitForSelector('.autostart');
   await shot(page, 'console-playlists');
