@@ -76,9 +76,9 @@ json playlist_json(const Playlist& p, const std::filesystem::path& folder) {
 
 }  // namespace
 
-ConsoleRoutes::ConsoleRoutes(DisplayService& displays, PlaylistStore& playlists, ContentLibrary& library,
-                             const OriginPolicy& origins, const ListenAddress& listen)
-    : displays_(displays), playlists_(playlists), library_(library), origins_(origins), listen_(listen) {}
+ConsoleRoutes::ConsoleRoutes(PlaylistStore& playlists, ContentLibrary& library, const OriginPolicy& origins,
+                             const ListenAddress& listen)
+    : playlists_(playlists), library_(library), origins_(origins), listen_(listen) {}
 
 bool ConsoleRoutes::answer_without_token(const httplib::Request& req, httplib::Response& res) const {
   const ConsoleAsset* login = console_asset("login.html");

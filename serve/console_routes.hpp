@@ -8,7 +8,6 @@
 #include <string>
 
 #include "serve/content_library.hpp"
-#include "serve/display_service.hpp"
 #include "serve/listen_address.hpp"
 #include "serve/origin_policy.hpp"
 #include "serve/playlist_store.hpp"
@@ -26,8 +25,8 @@ inline constexpr const char* kUploadPath = "/library/upload";
 
 class ConsoleRoutes {
  public:
-  ConsoleRoutes(DisplayService& displays, PlaylistStore& playlists, ContentLibrary& library,
-                const OriginPolicy& origins, const ListenAddress& listen);
+  ConsoleRoutes(PlaylistStore& playlists, ContentLibrary& library, const OriginPolicy& origins,
+                const ListenAddress& listen);
   // Registered before Bridge's routes: GET / answers the page to a browser (Accept: text/html)
   // and Bridge's JSON to a script.
   void add_routes(httplib::Server& server);
@@ -41,7 +40,6 @@ class ConsoleRoutes {
   static bool reads_bounded_body(const std::string& path);
 
  private:
-  DisplayService& displays_;
   PlaylistStore& playlists_;
   ContentLibrary& library_;
   const OriginPolicy& origins_;

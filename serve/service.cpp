@@ -46,7 +46,7 @@ Service::Service(DisplayService& displays, ServeOptions options, MemoryBudget* b
     const auto shown = displays_.displays();
     const double aspect = shown.empty() ? 0.75 : shown.front().default_quilt.aspect;
     library_ = std::make_unique<ContentLibrary>(options_.content_folder, options_.limits.max_upload_bytes, aspect);
-    console_ = std::make_unique<ConsoleRoutes>(displays_, playlists_, *library_, origins_, options_.listen);
+    console_ = std::make_unique<ConsoleRoutes>(playlists_, *library_, origins_, options_.listen);
     bridge_server_.set_console(console_.get(), options_.limits.max_upload_bytes);
     origins_.set_console_port(options_.listen.bridge_port);
   }
