@@ -65,7 +65,8 @@ int RunServe(int argc, char** argv) {
                "Examples:\n"
                "  lfd serve --device auto\n"
                "  lfd serve --calibration calibration.json --device auto   (the file wins for its unit)\n"
-               "  lfd serve --status",
+               "  lfd serve --status\n"
+               "  lfd serve --listen 0.0.0.0      (other machines: the console asks for lfd serve --print-token)",
                "serve"};
   std::vector<std::string> calibrations, origins;
   std::string device;
@@ -87,12 +88,30 @@ int RunServe(int argc, char** argv) {
                  "MiB the service may keep resident in all: requests whose content would exceed it are answered busy")
       ->capture_default_str()
       ->check(CLI::Range(64, 1 << 20));
+  std::string content = serve::default_content_folder().string();
+  app.add_option("--content", content, "the console's content folder (uploads land here)")->capture_default_str();
+  std::size_t upload_mib = options.limits.max_upload_bytes >> 20;
+  app.add_option("--max-upload", upload_mib, "MiB a file uploaded to the console may have")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 4096));
+  bool print_token = false;
+  app.add_flag("--print-token", print_token,
+               "print the access token a service listening beyond loopback (--listen) needs, then exit");
   app.add_flag("--status", status, "ask the running service what it shows, then exit");
   std::string gl = "auto";
   add_gl_option(app, gl);
   if (auto code = parse(app, argc, argv)) return *code;
   player_options.gl = gl_request(gl);
   if (status) return print_status(options.listen);
+  // The token lives beside the state file, 0600 (serve/access_token.hpp, docs/console.md).
+  const auto token_file = serve::token_file_beside(state_file);
+  if (print_token) {
+    fmt::print("{}\n", serve::AccessToken::load_or_create(token_file).text());
+    return 0;
+  }
+  if (!options.listen.is_loopback()) options.access_token = serve::AccessToken::load_or_create(token_file);
+  options.content_folder = content;
+  options.limits.max_upload_bytes = upload_mib << 20;
 
   // From the first signal on, at most a second until the process ends (stop_on_signal.hpp).
   serve::StopOnSignal stop(std::chrono::milliseconds(1000));

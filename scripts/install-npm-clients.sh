@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Looking Glass clients lfd serve is tested with (docs/serve.md) at the versions
 # pinned in tests/serve/clients/package-lock.json: holoplay-core, @lookingglass/bridge,
-# @lookingglass/webxr. Idempotent (nothing to do when node_modules matches the lock) and
+# @lookingglass/webxr; and what the console's browser tests drive Debian's Chromium with
+# (docs/console.md): puppeteer-core and axe-core. Idempotent (nothing to do when node_modules matches the lock) and
 # offline-tolerant: without node/npm or the registry it says so and exits 0, and the client
 # tests skip.
 set -uo pipefail

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "serve/bridge_api.hpp"
+#include "serve/console_routes.hpp"
 #include "serve/listen_address.hpp"
 #include "serve/memory_budget.hpp"
 #include "serve/origin_policy.hpp"
@@ -27,6 +28,12 @@ class BridgeServer {
   void start(const ListenAddress& address);  // throws std::runtime_error naming the address
   void stop();
   std::size_t refused_requests() const { return refused_; }
+  // The console's page and routes (docs/console.md), before start(); its uploads may be larger
+  // than a Bridge body, up to `max_upload_bytes`.
+  void set_console(ConsoleRoutes* console, std::size_t max_upload_bytes) {
+    console_ = console;
+    max_upload_bytes_ = max_upload_bytes;
+  }
 
  private:
   void add_routes();
@@ -39,6 +46,8 @@ class BridgeServer {
   std::unique_ptr<httplib::Server> server_;
   std::thread thread_;
   std::atomic<std::size_t> refused_{0};
+  ConsoleRoutes* console_ = nullptr;
+  std::size_t max_upload_bytes_ = 0;
 };
 
 }  // namespace lfd::serve

@@ -1,6 +1,8 @@
 // Bridge's event WebSocket on NNG streams (docs/serve.md, "Events").
 #include "serve/event_server.hpp"
 
+#include "serve/peer_address.hpp"
+
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -162,15 +164,23 @@ void EventServer::on_accept(void* arg) {
     return;
   }
   auto* stream = static_cast<nng_stream*>(nng_aio_get_output(self->accept_aio_, 0));
-  char* origin_raw = nullptr;
-  std::string origin;
-  if (nng_stream_get_string(stream, (std::string(NNG_OPT_WS_REQUEST_HEADER) + "Origin").c_str(), &origin_raw) == 0 &&
-      origin_raw) {
-    origin = origin_raw;
-    nng_strfree(origin_raw);
-  }
+  const auto header = [stream](const char* name) {
+    char* raw = nullptr;
+    std::string value;
+    if (nng_stream_get_string(stream, (std::string(NNG_OPT_WS_REQUEST_HEADER) + name).c_str(), &raw) == 0 && raw) {
+      value = raw;
+      nng_strfree(raw);
+    }
+    return value;
+  };
+  const std::string origin = header("Origin");
+  nng_sockaddr peer{};
+  const bool from_this_machine = nng_stream_get_addr(stream, NNG_OPT_REMADDR, &peer) == 0 &&
+                                 OriginPolicy::from_this_machine(peer_address_text(peer), header("Host"));
   const bool over = self->connections() >= self->limits_.max_connections;
-  if (!self->origins_.allows(origin) || over) {
+  // The console page (another port of the same host) is let in; beyond loopback with its token.
+  if (!self->origins_.allows(origin, header("Host")) || !self->origins_.token_ok(from_this_machine, header("Cookie"), header("Authorization")) ||
+      over) {
     ++self->refused_;
     spdlog::warn("events: refused a connection ({})",
                  over ? "over the connection limit" : "origin " + origin.substr(0, 200));

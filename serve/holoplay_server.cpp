@@ -1,6 +1,8 @@
 // The HoloPlay Service endpoint on NNG (docs/serve.md, "HoloPlay Service protocol").
 #include "serve/holoplay_server.hpp"
 
+#include "serve/peer_address.hpp"
+
 #include <nng/protocol/reqrep0/rep.h>
 #include <nng/supplemental/util/platform.h>
 
@@ -23,6 +25,12 @@ std::string pipe_header(nng_pipe pipe, const char* header) {
   return out;
 }
 
+bool from_this_machine(nng_pipe pipe) {
+  nng_sockaddr peer{};
+  if (nng_pipe_get_addr(pipe, NNG_OPT_REMADDR, &peer) != 0) return false;
+  return OriginPolicy::from_this_machine(peer_address_text(peer), pipe_header(pipe, "Host"));
+}
+
 void check(int rv, const std::string& what) {
   if (rv != 0) throw std::runtime_error(fmt::format("{}: {}", what, nng_strerror(rv)));
 }
@@ -42,7 +50,8 @@ void HoloPlayServer::on_pipe(nng_pipe pipe, nng_pipe_ev event, void* arg) {
   }
   if (event != NNG_PIPE_EV_ADD_PRE) return;
   const std::string origin = pipe_header(pipe, "Origin");
-  if (!self->origins_.allows(origin)) {
+  if (!self->origins_.allows(origin) ||
+      !self->origins_.token_ok(from_this_machine(pipe), pipe_header(pipe, "Cookie"), pipe_header(pipe, "Authorization"))) {
     ++self->refused_;
     spdlog::warn("holoplay: refused a connection from origin {}", origin.substr(0, 200));
     nng_pipe_close(pipe);

@@ -47,6 +47,22 @@ bool OriginPolicy::allows(std::string_view origin_header) const {
   return false;
 }
 
+bool OriginPolicy::allows(std::string_view origin_header, std::string_view host_header) const {
+  if (allows(origin_header)) return true;
+  if (console_port_ <= 0 || host_header.empty() || host_header.size() > 300) return false;
+  // The host part of Host ("name:port", "[v6]:port", "name"), then the console's port.
+  std::string host = lower(host_header);
+  const std::size_t bracket = host.rfind(']');
+  const std::size_t colon = host.rfind(':');
+  if (colon != std::string::npos && (bracket == std::string::npos || colon > bracket)) host.resize(colon);
+  return lower(origin_header) == "http://" + host + ":" + std::to_string(console_port_);
+}
+
+bool OriginPolicy::from_this_machine(std::string_view peer, std::string_view host_header) {
+  const bool loopback_peer = peer.rfind("127.", 0) == 0 || peer == "::1" || peer.rfind("::ffff:127.", 0) == 0;
+  return loopback_peer && is_loopback_host(host_header);
+}
+
 bool OriginPolicy::is_loopback_host(std::string_view host_header) {
   return is_loopback_authority(lower(host_header));
 }

@@ -118,6 +118,13 @@ bool PlaylistStore::erase(const std::string& name) {
   return true;
 }
 
+std::vector<Playlist> PlaylistStore::all() const {
+  std::lock_guard lock(mutex_);
+  std::vector<Playlist> out;
+  for (const auto& [name, playlist] : playlists_) out.push_back(playlist);
+  return out;
+}
+
 std::optional<Playlist> PlaylistStore::get(const std::string& name) const {
   std::lock_guard lock(mutex_);
   const auto it = playlists_.find(name);

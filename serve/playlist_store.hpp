@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 #include <map>
+#include <vector>
 
 #include "serve/display_service.hpp"
 #include "serve/serve_limits.hpp"
@@ -28,6 +29,7 @@ class PlaylistStore {
   void update(const std::string& name, int index, const std::function<PlaylistEntry(PlaylistEntry)>& change);
   bool erase(const std::string& name);  // the autostart choice stays (a playlist of that name may come again)
   std::optional<Playlist> get(const std::string& name) const;
+  std::vector<Playlist> all() const;  // by name
   std::size_t size() const;
 
   // The playlist to play at start and its first entry (-1: the first), if one was chosen.

@@ -15,6 +15,7 @@ struct ServeLimits {
   std::size_t max_body_bytes = 1u << 20;      // one Bridge JSON body
   std::size_t max_event_message_bytes = 4096; // what a client may send on the event socket
   std::size_t max_file_bytes = 256u << 20;    // a `uri` read from disk
+  std::size_t max_upload_bytes = 256u << 20;  // a file uploaded to the console's content folder
   int max_cached_quilts = 64;
   int max_playlists = 64;
   int max_playlist_entries = 1024;

@@ -2,6 +2,7 @@
 #include "serve/service.hpp"
 
 #include <cstdlib>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <spdlog/spdlog.h>
@@ -15,6 +16,14 @@ std::filesystem::path default_state_file() {
     return std::filesystem::path(state) / "lfd" / "serve-playlists.json";
   if (const char* home = std::getenv("HOME"); home && *home)
     return std::filesystem::path(home) / ".local" / "state" / "lfd" / "serve-playlists.json";
+  return {};
+}
+
+std::filesystem::path default_content_folder() {
+  if (const char* data = std::getenv("XDG_DATA_HOME"); data && *data)
+    return std::filesystem::path(data) / "lfd" / "content";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return std::filesystem::path(home) / ".local" / "share" / "lfd" / "content";
   return {};
 }
 
@@ -32,7 +41,17 @@ Service::Service(DisplayService& displays, ServeOptions options, MemoryBudget* b
       bridge_(displays_, playlists_, hub_, options_.limits),
       holoplay_server_(holoplay_, origins_, options_.limits),
       bridge_server_(bridge_, origins_, budget_, options_.limits),
-      event_server_(hub_, origins_, budget_, options_.limits) {}
+      event_server_(hub_, origins_, budget_, options_.limits) {
+  if (!options_.content_folder.empty()) {
+    const auto shown = displays_.displays();
+    const double aspect = shown.empty() ? 0.75 : shown.front().default_quilt.aspect;
+    library_ = std::make_unique<ContentLibrary>(options_.content_folder, options_.limits.max_upload_bytes, aspect);
+    console_ = std::make_unique<ConsoleRoutes>(playlists_, *library_, origins_, options_.listen);
+    bridge_server_.set_console(console_.get(), options_.limits.max_upload_bytes);
+    origins_.set_console_port(options_.listen.bridge_port);
+  }
+  if (options_.access_token) origins_.require_token(*options_.access_token);
+}
 
 Service::~Service() { stop(); }
 
@@ -45,6 +64,8 @@ void Service::start() {
                              {"playlist_name", wstring("playlist_name", e.playlist)}};
     hub_.publish(bridge_event(e.name, "", std::move(fields)).dump());
   });
+  if (!options_.listen.is_loopback() && !options_.access_token)
+    throw std::runtime_error("--listen " + options_.listen.host + ": beyond loopback the service needs its access token");
   holoplay_server_.start(options_.listen);
   bridge_server_.start(options_.listen);
   event_server_.start(options_.listen);
@@ -81,6 +102,10 @@ std::vector<std::string> Service::describe() const {
   std::string origins = "web pages allowed: loopback (localhost, 127.0.0.1, [::1]) and file://";
   for (const auto& o : origins_.extra_origins()) origins += ", " + o;
   lines.push_back(origins + "; every other Origin is refused");
+  if (options_.access_token) lines.push_back("every request needs the access token (lfd serve --print-token)");
+  if (library_)
+    lines.push_back(fmt::format("console                    http://{}:{}/ (content in {})", a.url_host(), a.bridge_port,
+                                library_->folder().string()));
   lines.push_back(options_.state_file.empty() ? std::string("playlists kept in memory only")
                                               : "playlists kept in " + options_.state_file.string());
   return lines;

@@ -3,11 +3,14 @@
 // socket over one DisplayService, with one Origin policy and one set of limits.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "serve/bridge_api.hpp"
 #include "serve/bridge_server.hpp"
+#include "serve/console_routes.hpp"
+#include "serve/content_library.hpp"
 #include "serve/event_hub.hpp"
 #include "serve/event_server.hpp"
 #include "serve/decoded_quilts.hpp"
@@ -26,7 +29,15 @@ struct ServeOptions {
   std::vector<std::string> allowed_origins;  // --allow-origin
   std::filesystem::path state_file;          // playlists; empty: in memory only
   ServeLimits limits;
+  // The console's content folder (docs/console.md); empty: no console, GET / as Bridge's.
+  std::filesystem::path content_folder;
+  // Needed by every request when listening beyond loopback (access_token.hpp): start() refuses
+  // a non-loopback address without one.
+  std::optional<AccessToken> access_token;
 };
+
+// $XDG_DATA_HOME/lfd/content (or ~/.local/share/lfd/content); empty when neither is set.
+std::filesystem::path default_content_folder();
 
 // $XDG_STATE_HOME/lfd/serve-playlists.json (or ~/.local/state/...); empty when neither is set.
 std::filesystem::path default_state_file();
@@ -61,6 +72,8 @@ class Service {
   EventHub hub_;
   HoloPlayProtocol holoplay_;
   BridgeApi bridge_;
+  std::unique_ptr<ContentLibrary> library_;
+  std::unique_ptr<ConsoleRoutes> console_;
   HoloPlayServer holoplay_server_;
   BridgeServer bridge_server_;
   EventServer event_server_;

@@ -34,7 +34,7 @@ cleanup() {
 trap cleanup EXIT
 for _ in $(seq 100); do [ -s "$LFD_SERVE_TMP/display" ] && break; sleep 0.1; done
 export DISPLAY=":$(head -n1 "$LFD_SERVE_TMP/display")" LFD_EXE LFD_SERVE_TMP CALIBRATION
-"$LFD_EXE" serve --calibration "$CALIBRATION" --state-file "$LFD_SERVE_TMP/state/playlists.json" \
+"$LFD_EXE" serve --calibration "$CALIBRATION" --state-file "$LFD_SERVE_TMP/state/playlists.json" --content "$LFD_SERVE_TMP/content" \
   >"$LFD_SERVE_TMP/serve.log" 2>&1 &
 serve=$!
 for _ in $(seq 150); do
