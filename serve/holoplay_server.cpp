@@ -131,7 +131,6 @@ void HoloPlayServer::received(Context& c) {
   if (++content_in_flight_ <= limits_.worker_threads) held = protocol_.admit(bytes);
   if (!held) {
     --content_in_flight_;
-    ++busy_on_arrival_;
     answer(c, request, protocol_.busy_reply("busy: the service is handling as much content as it holds; try again"));
     return;
   }

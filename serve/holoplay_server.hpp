@@ -32,7 +32,6 @@ class HoloPlayServer {
   void stop();
   std::size_t refused_connections() const { return refused_; }
   std::size_t answered() const { return answered_; }
-  std::size_t answered_busy_on_arrival() const { return busy_on_arrival_; }
 
   // Requests up to this size are parsed on arrival to see whether they carry content; larger
   // ones always do.
@@ -55,7 +54,6 @@ class HoloPlayServer {
   std::unique_ptr<BoundedTaskQueue> small_lane_, content_lane_;
   std::atomic<int> content_in_flight_{0};
   std::atomic<bool> stopping_{false};
-  std::atomic<std::size_t> busy_on_arrival_{0};
   std::atomic<int> connections_{0};
   std::atomic<std::size_t> refused_{0};
   std::atomic<std::size_t> answered_{0};
