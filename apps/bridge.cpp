@@ -118,20 +118,8 @@ int RunBridge(int argc, char** argv) {
       "  lfd bridge register [--calibration C.json | --device auto] [--monitor NAME] [--library DIR]\n"
       "  lfd bridge unregister\n"
       "  lfd bridge status [--json]\n";
-  const std::string sub = argc > 1 ? argv[1] : "";
-  if (sub == "register") return RunBridgeRegister(argc - 1, argv + 1);
-  if (sub == "unregister") return RunBridgeUnregister(argc - 1, argv + 1);
-  if (sub == "status") return RunBridgeStatus(argc - 1, argv + 1);
-  if (sub == "--help" || sub == "-h") {
-    std::cout << usage;
-    return 0;
-  }
-  if (sub.empty()) {
-    std::cerr << usage;
-    return 2;
-  }
-  std::cerr << "lfd bridge: unknown subcommand '" << sub << "' (register, unregister or status; see lfd bridge --help)\n";
-  return 2;
+  static constexpr Subcommand kSubcommands[] = {{"register", RunBridgeRegister}, {"unregister", RunBridgeUnregister}, {"status", RunBridgeStatus}};
+  return run_subcommand("lfd bridge", usage, kSubcommands, argc, argv);
 }
 
 }  // namespace lfd::apps

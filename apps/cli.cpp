@@ -94,4 +94,23 @@ display::Calibration DisplaySource::load() {
   return device::calibration_of(unit);
 }
 
+int run_subcommand(const std::string& command, const std::string& usage, std::span<const Subcommand> table,
+                   int argc, char** argv) {
+  const std::string sub = argc > 1 ? argv[1] : "";
+  for (const Subcommand& s : table)
+    if (sub == s.name) return s.run(argc - 1, argv + 1);
+  if (sub == "--help" || sub == "-h") {
+    std::cout << usage;
+    return 0;
+  }
+  if (sub.empty()) {
+    std::cerr << usage;
+    return 2;
+  }
+  std::string names;
+  for (const Subcommand& s : table) names += (names.empty() ? "" : ", ") + std::string(s.name);
+  std::cerr << command << ": unknown subcommand '" << sub << "' (" << names << "; see " << command << " --help)\n";
+  return 2;
+}
+
 }  // namespace lfd::apps

@@ -2,6 +2,7 @@
 // Shared command-line plumbing: parsing with CLI11 and the exit-code convention
 // (0 success or --help, 2 bad usage/input, 1 other failures).
 #include <optional>
+#include <span>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -14,6 +15,16 @@ namespace lfd::apps {
 // Parses argv into `app`. Returns an exit code to return immediately (help printed: 0,
 // bad usage: 2 after a one-line message), or nullopt to continue.
 std::optional<int> parse(CLI::App& app, int argc, char** argv);
+
+// A command with subcommands (lfd device list|read, lfd bridge register|...): argv[1] names one
+// of `table`, which runs with argv shifted by one. --help/-h prints `usage` (0); no subcommand
+// prints it to stderr (2); an unknown one is one line naming `command` and the choices (2).
+struct Subcommand {
+  const char* name;
+  int (*run)(int argc, char** argv);
+};
+int run_subcommand(const std::string& command, const std::string& usage, std::span<const Subcommand> table,
+                   int argc, char** argv);
 
 // Parses "X,Y,Z" (or "WxH" with sep 'x') into numbers; throws InputError naming `option`.
 std::vector<double> parse_numbers(const std::string& text, char sep, size_t count,

@@ -120,19 +120,8 @@ int RunDevice(int argc, char** argv) {
       "  lfd device list [--json] [--root DIR]\n"
       "  lfd device read [--serial S] --out calibration.json [--visual-json visual.json]\n"
       "\nOther commands take --device auto|SERIAL in place of --calibration FILE.\n";
-  const std::string sub = argc > 1 ? argv[1] : "";
-  if (sub == "list") return RunDeviceList(argc - 1, argv + 1);
-  if (sub == "read") return RunDeviceRead(argc - 1, argv + 1);
-  if (sub == "--help" || sub == "-h") {
-    std::cout << usage;
-    return 0;
-  }
-  if (sub.empty()) {
-    std::cerr << usage;
-    return 2;
-  }
-  std::cerr << "lfd device: unknown subcommand '" << sub << "' (list or read; see lfd device --help)\n";
-  return 2;
+  static constexpr Subcommand kSubcommands[] = {{"list", RunDeviceList}, {"read", RunDeviceRead}};
+  return run_subcommand("lfd device", usage, kSubcommands, argc, argv);
 }
 
 }  // namespace lfd::apps

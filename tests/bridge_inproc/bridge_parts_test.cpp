@@ -36,7 +36,7 @@ fs::path fresh_dir(const std::string& name) {
 
 }  // namespace
 
-// /work/shared/reference/looking-glass.md, "Test vector": LKG-APW92011's shader values as
+// docs/display-model.md, "The test vector": LKG-APW92011's shader values as
 // sgumhold/cgv publishes them.
 TEST(HoloPlayValues, MatchThePublishedShaderValuesOfLkgApw92011) {
   const display::Calibration c =
