@@ -137,6 +137,7 @@ int RunServe(int argc, char** argv) {
   serve::MemoryBudget budget(options.limits.memory_budget_bytes);
   const std::size_t baseline = serve::resident_bytes() + (32u << 20);
   budget.set_aside(baseline, "lfd serve itself");
+  budget.limit_resident(options.limits.memory_budget_bytes);
   serve::PlayerDisplayService display_service(raw, displays, budget);
   serve::Service service(display_service, options, &budget);
   service.start();

@@ -196,6 +196,7 @@ set(_lfd_dependency_table
   "^opencv_|find_dependency(OpenCV 4 COMPONENTS @OPENCV_COMPONENTS@)|libopencv-dev, libopencv-contrib-dev"
   "^TinyGLTF::|find_dependency(TinyGLTF)|libtinygltf-dev"
   "^nng::|find_dependency(nng)|libnng-dev"
+  "^Boost::|find_dependency(Boost 1.74)|libboost-dev"
 )
 set(_lfd_pkgconfig_packages  # pkg-config module -> Debian package
   "stb|libstb-dev" "libzstd|libzstd-dev" "glfw3|libglfw3-dev" "epoxy|libepoxy-dev" "imgui|libimgui-dev"

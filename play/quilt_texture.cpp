@@ -44,6 +44,10 @@ void QuiltTexture::upload(const Image8& rgb) {
   upload_plane(planes_[0], GL_RGB8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
   ensure_quilt(rgb.width, rgb.height);
   convert(false, {});
+  // A still is converted once: its RGB plane would only double what the quilt holds (on
+  // llvmpipe and on boards sharing memory with the GPU, as much again as the RGBA quilt;
+  // docs/serve.md, "Memory"). A video keeps its planes for the next frame.
+  planes_[0] = gpu::Texture();
 }
 
 void QuiltTexture::upload(const media::YuvFrame& frame) {

@@ -31,8 +31,9 @@ PACKAGES=(
   libzip-dev libwebp-dev libtinygltf-dev
   # lfd play (docs/play.md): FFmpeg's libraries for quilt videos, libwebp for WebP quilts
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
-  # lfd serve (docs/serve.md): NNG (HoloPlay WebSocket, events), libcbor, cpp-httplib (Bridge HTTP API)
-  libnng-dev libcbor-dev libcpp-httplib-dev
+  # lfd serve (docs/serve.md): Boost.Beast (HoloPlay WebSocket), NNG (events), libcbor,
+  # cpp-httplib (Bridge HTTP API)
+  libboost-dev libnng-dev libcbor-dev libcpp-httplib-dev
 )
 
 LFD_APT_LABEL=install-deps bash "$(dirname "$0")/apt-install.sh" "${PACKAGES[@]}"

@@ -49,7 +49,23 @@ MemoryBudget::MemoryBudget(std::size_t limit_bytes) : counter_(std::make_shared<
   counter_->limit = limit_bytes;
 }
 
+namespace {
+
+// Whether `bytes` more would take the process past `resident_limit` (0: no limit). Reading
+// /proc costs microseconds: asked only for reservations of a megabyte or more (content).
+bool passes_resident_limit(std::size_t bytes, std::size_t resident_limit) {
+  if (resident_limit == 0 || bytes < MemoryBudget::kResidentCheckFrom) return false;
+  const std::size_t resident = resident_bytes();
+  return bytes > resident_limit || resident > resident_limit - bytes;
+}
+
+}  // namespace
+
 MemoryBudget::Reservation MemoryBudget::try_reserve(std::size_t bytes) {
+  if (passes_resident_limit(bytes, counter_->resident_limit)) {
+    ++counter_->refused;
+    return {};
+  }
   std::size_t used = counter_->used.load();
   do {
     if (bytes > counter_->limit || used > counter_->limit - bytes) {
@@ -70,6 +86,10 @@ MemoryBudget::Reservation MemoryBudget::reserve_or_busy(std::size_t bytes, const
                       "--memory-budget)",
                       what, bytes / kMiB, counter_->limit / kMiB);
   Reservation r = try_reserve(bytes);
+  if (!r && passes_resident_limit(bytes, counter_->resident_limit))
+    throw BusyError(fmt::format("busy: {} needs {:.0f} MiB and the service holds {:.0f} of its {:.0f} MiB memory budget "
+                                "(requests being read and handled); try again",
+                                what, bytes / kMiB, resident_bytes() / kMiB, counter_->resident_limit / kMiB));
   if (!r)
     throw BusyError(fmt::format("busy: {} needs {:.0f} MiB and {:.0f} of the {:.0f} MiB memory budget are in use; try again",
                                 what, bytes / kMiB, used() / kMiB, counter_->limit / kMiB));

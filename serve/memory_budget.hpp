@@ -23,6 +23,7 @@ class MemoryBudget {
     std::atomic<std::size_t> used{0};
     std::atomic<std::size_t> refused{0};
     std::atomic<std::size_t> limit{0};
+    std::atomic<std::size_t> resident_limit{0};  // 0: resident memory not consulted
   };
 
  public:
@@ -59,6 +60,13 @@ class MemoryBudget {
   // Takes `bytes` off the limit for good: what the process holds before any request (its
   // windows, GL, libraries). InputError naming `what` when that is more than the limit.
   void set_aside(std::size_t bytes, const std::string& what);
+  // What the whole process may hold (the --memory-budget before set_aside): from now on a
+  // reservation of kResidentCheckFrom bytes or more is also refused while the process's resident
+  // memory and it would pass this. What the count cannot see (NNG reading a message off a
+  // connection before the service is handed it, heap slack) then stops new work instead of
+  // adding to it (docs/serve.md, "Memory").
+  void limit_resident(std::size_t total_bytes) { counter_->resident_limit = total_bytes; }
+  static constexpr std::size_t kResidentCheckFrom = 1u << 20;
   std::size_t used() const { return counter_->used; }
   std::size_t limit() const { return counter_->limit; }
   std::size_t refused() const { return counter_->refused; }

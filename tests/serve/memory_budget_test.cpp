@@ -2,6 +2,8 @@
 // serve/decoded_quilts.hpp).
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "serve/decoded_quilts.hpp"
 #include "serve/memory_budget.hpp"
 #include "tests/serve/serve_test_support.hpp"
@@ -69,6 +71,23 @@ TEST(MemoryBudget, APartSplitOffCountsUntilItGoes) {
   EXPECT_EQ(budget.used(), 30u);
   result.release();
   EXPECT_EQ(budget.used(), 0u);
+}
+
+TEST(MemoryBudget, ContentIsRefusedWhileTheProcessHoldsTheWholeBudget) {
+  constexpr std::size_t kMiB = 1u << 20;
+  MemoryBudget budget(std::size_t{1} << 40);  // the count alone would take anything
+  budget.limit_resident(resident_bytes() + 64 * kMiB);
+  EXPECT_FALSE(budget.try_reserve(128 * kMiB));  // more than the process may still add
+  EXPECT_THROW(budget.reserve_or_busy(128 * kMiB, "a quilt"), BusyError);
+  EXPECT_TRUE(budget.try_reserve(4 * kMiB));
+  // What the count cannot see (here a buffer of the test's own, as NNG's reception would be)
+  // fills the process: content is refused, small messages still pass.
+  std::vector<char> unseen(96 * kMiB, 1);
+  EXPECT_FALSE(budget.try_reserve(4 * kMiB));
+  EXPECT_TRUE(budget.try_reserve(MemoryBudget::kResidentCheckFrom - 1));
+  unseen = {};
+  unseen.shrink_to_fit();
+  EXPECT_TRUE(budget.try_reserve(4 * kMiB));  // freed: admitted again
 }
 
 }  // namespace
