@@ -1,5 +1,7 @@
 #include "play/quilt_texture.hpp"
 
+#include <algorithm>
+
 #include "play/shaders/quilt_convert.frag.glsl.hpp"
 #include "play/shaders/quilt_convert.vert.glsl.hpp"
 #include "play/shaders/quilt_convert_io.h"
@@ -39,15 +41,36 @@ void QuiltTexture::ensure_quilt(int width, int height) {
   target_.finish(1);
 }
 
+// A still goes up in strips of this many rows: the whole picture as one RGB texture would hold,
+// while it is converted, as much again as the quilt (an RGB8 texture takes 4 bytes a texel on
+// llvmpipe; on a board sharing its memory with the GPU, 256 MiB for an 8K quilt; docs/serve.md,
+// "Memory").
+constexpr int kStillStripRows = 256;
+
 void QuiltTexture::upload(const Image8& rgb) {
-  // RGB8: the format OpenGL ES takes GL_RGB bytes into (an RGBA8 texture wants GL_RGBA there).
-  upload_plane(planes_[0], GL_RGB8, GL_RGB, rgb.width, rgb.height, rgb.pixels.data(), rgb.width);
   ensure_quilt(rgb.width, rgb.height);
-  convert(false, {});
-  // A still is converted once: its RGB plane would only double what the quilt holds (on
-  // llvmpipe and on boards sharing memory with the GPU, as much again as the RGBA quilt;
-  // docs/serve.md, "Memory"). A video keeps its planes for the next frame.
-  planes_[0] = gpu::Texture();
+  const int strip_rows = std::min(rgb.height, kStillStripRows);
+  const gpu::Texture strip(GL_RGB8, rgb.width, strip_rows);
+  const gpu::Framebuffer source;
+  source.attach(0, strip);
+  source.finish(1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, source.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target_.id());
+  glDisable(GL_SCISSOR_TEST);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  for (int top = 0; top < rgb.height; top += strip_rows) {
+    const int rows = std::min(strip_rows, rgb.height - top);
+    gpu::upload_texture_2d(strip, 0, 0, rgb.width, rows, GL_RGB, GL_UNSIGNED_BYTE,
+                           rgb.pixels.data() + std::size_t(top) * std::size_t(rgb.width) * 3);
+    // Picture row top + j (rows top-down) is quilt row height - 1 - top - j (GL's rows, view
+    // 0's tile at the bottom): the blit flips as it turns RGB8 into RGBA8, texel for texel.
+    glBlitFramebuffer(0, 0, rgb.width, rows, 0, rgb.height - top, rgb.width, rgb.height - top - rows,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  gpu::check_gl("uploading the quilt");
 }
 
 void QuiltTexture::upload(const media::YuvFrame& frame) {
@@ -56,26 +79,21 @@ void QuiltTexture::upload(const media::YuvFrame& frame) {
     upload_plane(planes_[p], GL_R8, GL_RED, plane.width, plane.height, plane.data, plane.stride);
   }
   ensure_quilt(frame.width, frame.height);
-  convert(true, media::yuv_to_rgb_coefficients(frame.matrix, frame.range));
+  convert(media::yuv_to_rgb_coefficients(frame.matrix, frame.range));
 }
 
-void QuiltTexture::convert(bool yuv, const media::YuvToRgb& t) {
+void QuiltTexture::convert(const media::YuvToRgb& t) {
   glBindFramebuffer(GL_FRAMEBUFFER, target_.id());
   glViewport(0, 0, quilt_.width(), quilt_.height());
   glDisable(GL_BLEND);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_SCISSOR_TEST);
   program_.use();
-  glUniform1i(program_.uniform("u_is_yuv"), yuv ? 1 : 0);
-  if (yuv) {
-    glUniformMatrix3fv(program_.uniform("u_yuv_matrix"), 1, GL_FALSE, t.matrix.data());
-    glUniform3fv(program_.uniform("u_yuv_offset"), 1, t.offset.data());
-  }
-  // An RGB picture is plane 0 alone; the shader reads U and V only for YUV, so the picture
-  // stands at their points too (every declared point holds a texture of ours).
+  glUniformMatrix3fv(program_.uniform("u_yuv_matrix"), 1, GL_FALSE, t.matrix.data());
+  glUniform3fv(program_.uniform("u_yuv_offset"), 1, t.offset.data());
   program_.bind("plane0", planes_[0]);
-  program_.bind("plane1", planes_[yuv ? 1 : 0]);
-  program_.bind("plane2", planes_[yuv ? 2 : 0]);
+  program_.bind("plane1", planes_[1]);
+  program_.bind("plane2", planes_[2]);
   glBindVertexArray(triangle_.id());
   program_.draw_arrays(GL_TRIANGLES, 0, 3);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -1,9 +1,9 @@
 #pragma once
-// The quilt on the GPU (docs/play.md "How a frame is shown"): a decoded picture, an RGB image or
-// a video frame's YUV 4:2:0 planes, uploaded as-is (three R8 textures for YUV: the CPU does no
-// colour conversion) and drawn by one shader (play/shaders/quilt_convert.frag.glsl) into an
-// RGBA8 quilt texture with GL's rows (view 0's tile at the bottom-left), the texture
-// gpu::GlInterlacer reads. Needs a current GL 4.5 context (the player's window).
+// The quilt on the GPU (docs/play.md "How a frame is shown"): an RGBA8 quilt texture with GL's
+// rows (view 0's tile at the bottom-left), the texture gpu::GlInterlacer reads, from a decoded
+// picture: an RGB image goes up in strips blitted into it (flipped, RGB8 to RGBA8); a video
+// frame's YUV 4:2:0 planes are uploaded as-is (three R8 textures: the CPU does no colour
+// conversion) and drawn by one shader (play/shaders/quilt_convert.frag.glsl). Needs a current GL 4.5 context (the player's window).
 #include "gpu/gl/gl_objects.hpp"
 #include "media/yuv_frame.hpp"
 #include "util/image.hpp"
@@ -23,13 +23,13 @@ class QuiltTexture {
 
  private:
   void ensure_quilt(int width, int height);
-  void convert(bool yuv, const media::YuvToRgb& coefficients);
+  void convert(const media::YuvToRgb& coefficients);
 
   gpu::Program program_;
   gpu::VertexArray triangle_;
   gpu::Framebuffer target_;
   gpu::Texture quilt_;
-  gpu::Texture planes_[3];  // RGBA8 picture (plane 0), or Y, U, V (R8)
+  gpu::Texture planes_[3];  // a video frame's Y, U, V (R8)
 };
 
 }  // namespace lfd::play

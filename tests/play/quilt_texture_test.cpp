@@ -1,6 +1,7 @@
 // The GPU's YUV -> RGB conversion (play/shaders/quilt_convert.frag.glsl) against the CPU
-// reference media::yuv_to_rgb on a decoded frame, and an RGB picture through the same pass:
-// the quilt texture holds the picture exactly (rows flipped to GL's order and back).
+// reference media::yuv_to_rgb on a decoded frame, and an RGB picture blitted in strips (426 rows:
+// a strip of 256 and one of 170): the quilt texture holds the picture exactly (rows flipped to
+// GL's order and back).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
