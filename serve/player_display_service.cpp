@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <future>
 #include <set>
 
 #include <fmt/format.h>
@@ -189,6 +190,15 @@ void PlayerDisplayService::transport(Transport command, int index) {
   }
 }
 
+void PlayerDisplayService::seek(double seconds) {
+  int display;
+  {
+    std::lock_guard lock(mutex_);
+    display = playlist_display_;
+  }
+  player(display).seek(seconds);
+}
+
 void PlayerDisplayService::update_current_entry(const std::string& parameter, double value) {
   // The RGB-D settings of the entry shown change its views on the next frame, the aspect a
   // quilt's tiles (docs/serve.md).
@@ -225,6 +235,9 @@ PlaybackState PlayerDisplayService::state() const {
   s.window_visible = p.window_visible;
   s.quilt_aspect = p.quilt_aspect;
   s.rgbd = p.rgbd;
+  s.position_s = p.position_s;
+  s.duration_s = p.duration_s;
+  s.is_video = p.is_video;
   if (!p.entry_name.empty() && !s.playlist.empty()) s.showing += ": " + p.entry_name;
   return s;
 }
@@ -253,6 +266,20 @@ void PlayerDisplayService::on_player_event(int display, const play::PlaybackEven
     if (display == playlist_display_) out.playlist = playlist_;
   }
   if (listener) listener(out);
+}
+
+std::optional<Image8> PlayerDisplayService::panel_picture(int display, std::chrono::milliseconds wait) {
+  // Handed over from the GL thread; a promise the player drops unfulfilled (it quit) is a
+  // broken promise here, and one that comes late goes to no one.
+  auto promise = std::make_shared<std::promise<Image8>>();
+  std::future<Image8> picture = promise->get_future();
+  player(display).read_panel([promise](Image8 panel) { promise->set_value(std::move(panel)); });
+  if (picture.wait_for(wait) != std::future_status::ready) return std::nullopt;
+  try {
+    return picture.get();
+  } catch (const std::future_error&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace lfd::serve
