@@ -261,6 +261,7 @@ void ConsoleRoutes::add_routes(httplib::Server& s) {
       const SeenFromRange r = seen_from_.range(int_param(req, "display", 0));
       return json{{"cone_deg", r.cone_deg}, {"views", r.views}, {"first_view_deg", r.first_view_deg},
                   {"last_view_deg", r.last_view_deg}, {"distance_m", r.distance_m},
+                  {"panel_width_m", r.panel_width_m}, {"panel_height_m", r.panel_height_m},
                   {"max_height_px", kSeenFromMaxHeightPx}};
     });
   });

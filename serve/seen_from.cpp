@@ -56,7 +56,8 @@ SeenFromRange SeenFromRenderer::range(int display) const {
   const display::LensModel lens(d.calibration.display, d.calibration.correction);
   const int views = std::max(1, d.default_quilt.views);
   return {d.calibration.display.view_cone_deg, views, display::seen_from_view_angle_deg(lens, 0, views),
-          display::seen_from_view_angle_deg(lens, views - 1, views), display::kDefaultSeenFromDistanceM};
+          display::seen_from_view_angle_deg(lens, views - 1, views), display::kDefaultSeenFromDistanceM,
+          d.calibration.display.width_m(), d.calibration.display.height_m()};
 }
 
 double SeenFromRenderer::angle_of_view(int display, double view) const {
@@ -86,6 +87,9 @@ std::string SeenFromRenderer::png(int display, double angle_deg, int height_px) 
   const display::LensModel lens(c, d.calibration.correction);
   display::SeenFromOptions options;
   options.height_px = height_px;
+  // Denser than the viewer's live preview (2 across): a picture asked now and then, whose mean
+  // over a patch must not alias with the lenses (a lens shows a channel fully or not at all).
+  options.pixels_across = kSeenFromPixelsAcross;
   options.psf_sigma_phase = d.calibration.phase_blur_sigma.value_or(display::kDefaultPhaseBlurSigma);
   display::SeenFromEye eye;
   eye.angle_deg = angle_deg;

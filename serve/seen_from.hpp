@@ -19,6 +19,7 @@ inline constexpr int kSeenFromMaxHeightPx = 512;
 inline constexpr int kSeenFromDefaultHeightPx = 256;
 inline constexpr double kSeenFromMaxAngleDeg = 80;  // the eye stays in front of the panel
 inline constexpr std::chrono::milliseconds kSeenFromPanelWait{3000};
+inline constexpr int kSeenFromPixelsAcross = 8;  // panel columns sampled per picture pixel
 
 // The slider's span for a display: from the middle of its first view to the middle of its last
 // (views: its default quilt's), an eye level with the panel centre at `distance_m`.
@@ -28,6 +29,7 @@ struct SeenFromRange {
   double first_view_deg = 0;
   double last_view_deg = 0;
   double distance_m = 0;
+  double panel_width_m = 0, panel_height_m = 0;
 };
 
 class SeenFromRenderer {

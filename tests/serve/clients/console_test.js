@@ -50,6 +50,8 @@ async function startServe(args = [], base = 'http://127.0.0.1:33334') {
     if (serve.exitCode !== null) check(false, 'lfd serve exited at start: ' + fs.readFileSync(path.join(tmp, 'serve.log'), 'utf8'));
     return fetch(base + '/').then(() => true, () => false);
   }, 30000);
+  // The service answering is the one just started, not another on the fixed ports.
+  if (base === 'http://127.0.0.1:33334') check((await status()).pid === serve.pid, 'the lfd serve answering is the one this test started');
 }
 
 async function stopServe() {
@@ -345,10 +347,9 @@ cases['foreign-origin'] = async () => {
   check(/refused .*origin http:\/\/evil\.example/.test(log), 'the service logs the refusals (403)');
 };
 
-// The mean colour of the central tenth (each way) of a PNG, read in the page's canvas: the
-// patch an eye at 0.6 m sees one view over (its view fraction moves a third of a view across it).
-async function centralMean(page, pngBytes) {
-  return page.evaluate(async (b64) => {
+// The mean colour of the central 1/part (each way) of a PNG, read in the page's canvas.
+async function centralMean(page, pngBytes, part = 10) {
+  return page.evaluate(async (b64, part) => {
     const img = new Image();
     img.src = 'data:image/png;base64,' + b64;
     await img.decode();
@@ -357,16 +358,18 @@ async function centralMean(page, pngBytes) {
     c.height = img.naturalHeight;
     const g = c.getContext('2d');
     g.drawImage(img, 0, 0);
-    const w = Math.max(1, Math.round(c.width / 10)), h = Math.max(1, Math.round(c.height / 10));
+    const w = Math.max(1, Math.round(c.width / part)), h = Math.max(1, Math.round(c.height / part));
     const d = g.getImageData(Math.round((c.width - w) / 2), Math.round((c.height - h) / 2), w, h).data;
     const sum = [0, 0, 0];
     for (let i = 0; i < d.length; i += 4) for (let ch = 0; ch < 3; ++ch) sum[ch] += d[i + ch];
     return sum.map((v) => v / (d.length / 4));
-  }, Buffer.from(pngBytes).toString('base64'));
+  }, Buffer.from(pngBytes).toString('base64'), part);
 }
 
-// Which view a colour of viewColourQuiltPng is: 0 for red, views - 1 for blue.
-const seenView = (rgb, views) => (views - 1) * rgb[2] / Math.max(1, rgb[0] + rgb[2]);
+// A colour of viewColourQuiltPng's views: the blue share of red and blue (0: view 0's side, 1:
+// the last view's), and the green share of all (the middle views').
+const blueShare = (rgb) => rgb[2] / Math.max(1, rgb[0] + rgb[2]);
+const greenShare = (rgb) => rgb[1] / Math.max(1, rgb[0] + rgb[1] + rgb[2]);
 
 cases['seen-from'] = async () => {
   const o = (await bridge('enter_orchestration')).payload.value;
@@ -404,20 +407,29 @@ cases['seen-from'] = async () => {
       return new Promise((r) => c.toBlob((b) => b.arrayBuffer().then((a) => r(Array.from(new Uint8Array(a)))), 'image/png'));
     });
     const seen = await centralMean(page, Buffer.from(shown));
-    const seenAs = seenView(seen, views);
-    check(Math.abs(seenAs - view) <= 0.5,
-          `seen from the cone's ${view ? 'right' : 'left'} edge (${angle.toFixed(2)} degrees) the page shows view ${view}'s colour (reads as view ${seenAs.toFixed(2)})`);
-    // lfd simulate of the same panel picture, a camera at the same eye looking at the panel centre.
+    const side = view ? 'right' : 'left';
+    console.log(`seen from the ${side} end (${angle.toFixed(2)} degrees): mean colour [${seen.map(Math.round)}]`);
+    // At the cone's edge a lens sends its edge view and, through the width of a subpixel, the
+    // other edge's across the wrap (docs/display-model.md): the edge view dominates, the middle
+    // views are absent.
+    check((view ? blueShare(seen) > 0.6 : blueShare(seen) < 0.4) && greenShare(seen) < 0.15,
+          `seen from the cone's ${side} edge the page shows the ${side} edge view's content (blue share ${blueShare(seen).toFixed(2)}, green share ${greenShare(seen).toFixed(2)})`);
+    // lfd simulate of the same panel picture: a camera at the same eye looking at the panel centre
+    // whose picture spans the same central tenth of the panel (across its width, foreshortened).
     const rad = angle * Math.PI / 180;
     const capture = path.join(tmp, `simulate-${view}.png`);
+    const fov = 2 * Math.atan(range.panel_width_m / 20 * Math.cos(rad) / range.distance_m) * 180 / Math.PI;
+    const across = 48, down = Math.round(48 * range.panel_height_m / range.panel_width_m);
     execFileSync(LFD, ['simulate', '--calibration', CALIBRATION, '--panel', panel, '--out', capture, '--camera-pos',
                        `${(range.distance_m * Math.sin(rad)).toFixed(6)},0,${(range.distance_m * Math.cos(rad)).toFixed(6)}`,
-                       '--fov', '1', '--size', '48x48'], {stdio: 'ignore'});
-    const simulated = await centralMean(page, fs.readFileSync(capture));
-    const simulatedAs = seenView(simulated, views);
+                       '--fov', fov.toFixed(4), '--size', `${across}x${down}`, '--exposure', String(1 / 3)], {stdio: 'ignore'});
+    // Its camera pixels cover two panel pixels: a lens shows a channel fully (up to 3 times the
+    // panel's mean light) or not at all, which a camera pixel of 8 bits would clip; a third of
+    // the exposure keeps it all, and the mean is scaled back.
+    const simulated = (await centralMean(page, fs.readFileSync(capture), 1)).map((v) => 3 * v);
     const colourGap = Math.max(...seen.map((v, ch) => Math.abs(v - simulated[ch])));
-    check(Math.abs(seenAs - simulatedAs) <= 0.25 && colourGap <= 24,
-          `and lfd simulate of the same panel sees the same there (view ${simulatedAs.toFixed(2)}; colours [${seen.map(Math.round)}] and [${simulated.map(Math.round)}])`);
+    check(Math.abs(blueShare(seen) - blueShare(simulated)) <= 0.05 && colourGap <= 20,
+          `and lfd simulate of the same panel sees the same there (colours [${seen.map(Math.round)}] and [${simulated.map(Math.round)}], blue shares ${blueShare(seen).toFixed(2)} and ${blueShare(simulated).toFixed(2)})`);
     await shot(page, view ? 'console-seen-from-right' : 'console-seen-from-left');
   }
   // Bounded: a bad angle is refused in one line, and the route says busy (503) rather than queueing.

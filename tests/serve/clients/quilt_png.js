@@ -53,10 +53,12 @@ function quiltPng(cols, rows, tileW, tileH) {
   });
 }
 
-// Each view one flat colour, from red (view 0) to blue (the last): the blue share of what an eye
-// sees, B / (R + B), tells which view it sees (docs/console.md, "Seen from").
+// Each view one flat colour: red fading from view 0, blue rising to the last, green peaking at
+// the middle views. What an eye sees near an edge of the cone is the edge views' red and blue
+// (which of them dominates says which edge) with little green (docs/console.md, "Seen from").
 function viewColour(view, views) {
-  return [Math.round(255 * (views - 1 - view) / (views - 1)), 0, Math.round(255 * view / (views - 1))];
+  const t = view / (views - 1);
+  return [Math.round(255 * (1 - t)), Math.round(255 * (1 - Math.abs(2 * t - 1))), Math.round(255 * t)];
 }
 function viewColourQuiltPng(cols, rows, tileW, tileH) {
   return rgbPng(cols * tileW, rows * tileH, (x, y) => viewColour(viewAt(x, y, cols, rows, tileW, tileH), cols * rows));
