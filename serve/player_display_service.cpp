@@ -5,6 +5,7 @@
 #include <fstream>
 #include <future>
 #include <set>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -46,6 +47,14 @@ std::string still_playlist_key(const Playlist& playlist, int head_index) {
                        e.duration_ms);
   }
   return key;
+}
+
+// lfd_status reads the Player's state as of its last frame: a transport command waits (a second
+// at most) for a whole frame after it was queued, so the event the API sends next and the state
+// a page then reads agree (the console's live state, docs/console.md).
+void wait_for_a_frame_after(const play::Player& p, std::int64_t frames_before) {
+  for (int i = 0; i < 500 && p.state().frames_shown < frames_before + 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
 }  // namespace
@@ -181,13 +190,15 @@ void PlayerDisplayService::transport(Transport command, int index) {
     display = playlist_display_;
   }
   play::Player& p = player(display);
+  const std::int64_t before = p.state().frames_shown;
   switch (command) {
-    case Transport::kPlay: return p.play();
-    case Transport::kPause: return p.pause();
-    case Transport::kNext: return p.next();
-    case Transport::kPrevious: return p.previous();
-    case Transport::kSeekToIndex: return p.go_to(index);
+    case Transport::kPlay: p.play(); break;
+    case Transport::kPause: p.pause(); break;
+    case Transport::kNext: p.next(); break;
+    case Transport::kPrevious: p.previous(); break;
+    case Transport::kSeekToIndex: p.go_to(index); break;
   }
+  wait_for_a_frame_after(p, before);
 }
 
 void PlayerDisplayService::seek(double seconds) {
@@ -196,7 +207,10 @@ void PlayerDisplayService::seek(double seconds) {
     std::lock_guard lock(mutex_);
     display = playlist_display_;
   }
-  player(display).seek(seconds);
+  play::Player& p = player(display);
+  const std::int64_t before = p.state().frames_shown;
+  p.seek(seconds);
+  wait_for_a_frame_after(p, before);
 }
 
 void PlayerDisplayService::update_current_entry(const std::string& parameter, double value) {

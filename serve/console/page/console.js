@@ -125,7 +125,7 @@ async function loadDisplays() {
 // The position within the entry: lfd_status's, moved on by the page's own clock while playing
 // (the service pushes an event at each change; between events the page counts, it does not poll).
 function secondsText(t) {
-  return `${Math.floor(t / 60)}:${String(Math.floor(t % 60)).padStart(2, '0')}`;
+  return `${Math.floor(t / 60)}:${(t % 60).toFixed(1).padStart(4, '0')}`;
 }
 
 function showPosition() {
