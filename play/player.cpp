@@ -74,6 +74,7 @@ struct Player::Impl final : TransportOutput {
   int64_t shown = 0, dropped = 0, decoded_closed = 0;
   int64_t video_index = -1;
   double video_pts = 0;
+  std::vector<std::function<void(Image8)>> panel_readers;  // read_panel() callers waiting for a frame
 
   explicit Impl(PlayerOptions o)
       : options(std::move(o)),
@@ -252,6 +253,14 @@ struct Player::Impl final : TransportOutput {
     return to_uint8(gpu::image_from_texture(*panel));
   }
 
+  // The panel just drawn, once for all who asked since the last frame.
+  void hand_out_panel() {
+    if (panel_readers.empty()) return;
+    const Image8 picture = to_uint8(gpu::image_from_texture(*panel));
+    for (auto& done : panel_readers) done(picture);
+    panel_readers.clear();
+  }
+
   void publish() {
     PlayerState s;
     s.entry_index = transport.index();
@@ -293,6 +302,7 @@ struct Player::Impl final : TransportOutput {
     transport.tick();
     update_picture();
     draw();
+    hand_out_panel();
     if (capture) *capture = read_back();
     window->swap();
     ++shown;
@@ -359,6 +369,10 @@ void Player::set_window_visible(bool visible) {
 }
 void Player::quit() {
   impl_->enqueue([](Impl& p) { p.transport.quit(); });
+}
+
+void Player::read_panel(std::function<void(Image8)> done) {
+  impl_->enqueue([done = std::move(done)](Impl& p) mutable { p.panel_readers.push_back(std::move(done)); });
 }
 
 PlayerState Player::state() const {

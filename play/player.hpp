@@ -7,7 +7,7 @@
 // (play/transport.hpp, no GL); the Player is its output and drives it once per frame.
 //
 // Threads. GLFW and GL live on the thread that built the Player (the program's main thread):
-// construct it there and call run() / run_frame() / read_back_panel() there only. Every other
+// construct it there and call run() / run_frame() there only. Every other
 // public member function is THREAD-SAFE: the transport and content commands (show_quilt,
 // set_playlist, play, pause, next, seek, ...) only append to a command queue under a mutex; the
 // GL thread drains that queue at the start of each frame, in the order the commands came, so a
@@ -126,6 +126,11 @@ class Player {
   // Hides the window (frames go on, unseen: playback keeps its clock) or shows it again.
   void set_window_visible(bool visible);
   void quit();
+  // The interlaced panel of the next frame (screenW x screenH RGB, rows top-down: what the
+  // display shows, whether full screen or in the simulated window), read back after that
+  // frame is drawn and handed to `done` on the GL thread (so `done` must not block). Nothing
+  // is read back while no one asks: a read-back of an 8K panel is tens of MB.
+  void read_panel(std::function<void(Image8)> done);
 
   // A copy of the state as of the last frame.
   PlayerState state() const;

@@ -141,7 +141,8 @@ void BridgeApi::add_handlers() {
                  wrapped("value", "VARIANT_MAP",
                          {{"version", lfd::version_info().version}, {"pid", static_cast<int>(::getpid())}, {"showing", s.showing}, {"playlist", s.playlist},
                           {"index", s.index}, {"entries", s.entries}, {"playing", s.playing}, {"window_visible", s.window_visible},
-                          {"quilt_aspect", s.quilt_aspect},
+                          {"quilt_aspect", s.quilt_aspect}, {"position_s", s.position_s},
+                          {"duration_s", s.duration_s}, {"is_video", s.is_video},
                           {"rgbd", s.rgbd ? rgbd::rgbd_options_to_json(*s.rgbd) : json(nullptr)},
                           {"displays", displays}}));
   };
@@ -285,6 +286,16 @@ void BridgeApi::add_transport_handlers() {
       return reply(endpoint, r, nullptr);
     };
   }
+  // lfd's own: a position within the entry shown (a video's frame at that time; Bridge seeks
+  // only between entries). The event tells the pages to read the state again.
+  handlers_["lfd_seek"] = [this](const json& r) {
+    const std::string token = orchestration_of(r);
+    const double seconds = field_number(r, "seconds", 0, 7 * 24 * 3600.0, -1);
+    if (seconds < 0) throw_input_error("seconds: missing");
+    displays_.seek(seconds);
+    publish("lfd Transport Seek", token);
+    return reply("lfd_seek", r, nullptr);
+  };
   handlers_["transport_control_seek_to_index"] = [this](const json& r) {
     orchestration_of(r);
     displays_.transport(Transport::kSeekToIndex, field_int(r, "index", 0, limits_.max_playlist_entries, 0));

@@ -2,18 +2,22 @@
 #include "serve/console_routes.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <vector>
 
+#include <fmt/format.h>
 #include <httplib.h>
 #include <spdlog/spdlog.h>
 
 #include "serve/bounded_body.hpp"
 #include "serve/console_assets.hpp"
 #include "serve/bridge_request.hpp"
+#include "serve/calibration_report_summary.hpp"
 #include "serve/request_file.hpp"
 #include "util/error.hpp"
 
@@ -63,6 +67,26 @@ constexpr std::size_t kSmallBodyBytes = 1u << 16;  // a rename, a delete, the lo
 
 std::string percent_decoded(const std::string& s) { return httplib::detail::decode_url(s, false); }
 
+// A query parameter that must be a whole number / a finite number: `fallback` when absent.
+int int_param(const httplib::Request& req, const char* name, int fallback) {
+  if (!req.has_param(name)) return fallback;
+  const std::string text = req.get_param_value(name);
+  int value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size()) throw_input_error("{}: not a whole number", name);
+  return value;
+}
+
+double number_param(const httplib::Request& req, const char* name) {
+  const std::string text = req.get_param_value(name);
+  if (text.empty()) throw_input_error("{}: missing", name);
+  double value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(value))
+    throw_input_error("{}: not a number", name);
+  return value;
+}
+
 json playlist_json(const Playlist& p, const std::filesystem::path& folder) {
   json entries = json::array();
   for (const PlaylistEntry& e : p.entries) {
@@ -76,9 +100,13 @@ json playlist_json(const Playlist& p, const std::filesystem::path& folder) {
 
 }  // namespace
 
-ConsoleRoutes::ConsoleRoutes(PlaylistStore& playlists, ContentLibrary& library, const OriginPolicy& origins,
+ConsoleRoutes::ConsoleRoutes(const DisplayService& displays, PlaylistStore& playlists, ContentLibrary& library,
+                             LibraryThumbnails& thumbnails, SeenFromRenderer& seen_from, const OriginPolicy& origins,
                              const ListenAddress& listen)
-    : playlists_(playlists), library_(library), origins_(origins), listen_(listen) {}
+    : displays_(displays),
+      playlists_(playlists),
+      library_(library),
+      thumbnails_(thumbnails), seen_from_(seen_from), origins_(origins), listen_(listen) {}
 
 bool ConsoleRoutes::answer_without_token(const httplib::Request& req, httplib::Response& res) const {
   const ConsoleAsset* login = console_asset("login.html");
@@ -173,6 +201,19 @@ void ConsoleRoutes::add_routes(httplib::Server& s) {
       send_error(res, 404, e.what());
     }
   });
+  s.Get("/library/thumbnail", [this](const httplib::Request& req, httplib::Response& res) {
+    try {
+      const std::string picture = thumbnails_.png(req.get_param_value("name"));
+      res.set_header("X-Content-Type-Options", "nosniff");
+      res.set_header("Cache-Control", "no-cache");  // the same name may hold other content later
+      res.set_content(picture, "image/png");
+    } catch (const InputError& e) {
+      send_error(res, 404, e.what());
+    } catch (const BusyError& e) {
+      send_error(res, 503, e.what());
+      res.set_header("Retry-After", "1");
+    }
+  });
   s.Post(kUploadPath, [this](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
     answering("upload", res, [&] {
       const std::string name = percent_decoded(req.get_header_value("X-File-Name"));
@@ -202,6 +243,47 @@ void ConsoleRoutes::add_routes(httplib::Server& s) {
       library_.remove(name);
       return json{{"deleted", name}};
     });
+  });
+  s.Get("/calibration_report", [this](const httplib::Request& req, httplib::Response& res) {
+    answering("calibration report", res, [&] {
+      const int index = int_param(req, "display", 0);
+      const auto all = displays_.displays();
+      if (index < 0 || index >= static_cast<int>(all.size()))
+        throw_input_error("display: {} is not served (0..{})", index, static_cast<int>(all.size()) - 1);
+      const auto file = find_calibration_report(all[static_cast<std::size_t>(index)]);
+      // No report is an answer, not an error: a factory calibration has none.
+      return file ? json{{"display", index}, {"report", calibration_report_summary(*file)}}
+                  : json{{"display", index}, {"report", nullptr}};
+    });
+  });
+  s.Get("/seen_from/range", [this](const httplib::Request& req, httplib::Response& res) {
+    answering("seen from", res, [&] {
+      const SeenFromRange r = seen_from_.range(int_param(req, "display", 0));
+      return json{{"cone_deg", r.cone_deg}, {"views", r.views}, {"first_view_deg", r.first_view_deg},
+                  {"last_view_deg", r.last_view_deg}, {"distance_m", r.distance_m},
+                  {"panel_width_m", r.panel_width_m}, {"panel_height_m", r.panel_height_m},
+                  {"max_height_px", kSeenFromMaxHeightPx}};
+    });
+  });
+  s.Get("/seen_from", [this](const httplib::Request& req, httplib::Response& res) {
+    try {
+      // The eye's angle in degrees, or the view whose middle it sees (the page's slider).
+      const int display = int_param(req, "display", 0);
+      if (req.has_param("angle") == req.has_param("view")) throw_input_error("give angle (degrees) or view, one of them");
+      const double angle = req.has_param("angle") ? number_param(req, "angle")
+                                                  : seen_from_.angle_of_view(display, number_param(req, "view"));
+      const std::string picture = seen_from_.png(display, angle, int_param(req, "height", kSeenFromDefaultHeightPx));
+      res.set_header("X-Seen-From-Angle", fmt::format("{:.2f}", angle));
+      res.set_header("Cache-Control", "no-store");
+      res.set_header("X-Content-Type-Options", "nosniff");
+      res.set_content(picture, "image/png");
+    } catch (const InputError& e) {
+      spdlog::warn("console seen from: {}", e.what());
+      send_error(res, 400, e.what());
+    } catch (const BusyError& e) {
+      send_error(res, 503, e.what());
+      res.set_header("Retry-After", "1");
+    }
   });
   s.Get("/playlists", [this](const httplib::Request&, httplib::Response& res) {
     answering("playlists", res, [&] {

@@ -1,16 +1,19 @@
 #pragma once
 // `lfd serve`'s console (docs/console.md): the page (embedded at build time, console_assets.hpp)
 // on the Bridge API's port, and the routes the page needs beyond Bridge's own endpoints: the
-// content library (list, upload, file, rename, delete), the playlists kept, its settings, and
+// content library (list, upload, file, thumbnail, rename, delete), the playlists kept, "Seen from", the
+// calibration's report, its settings, and
 // the login form of a service listening beyond loopback. Everything else the page does is a
 // Bridge call (docs/serve.md). The Origin, Host and token checks run before any of these
 // (BridgeServer's pre-routing handler).
 #include <string>
 
 #include "serve/content_library.hpp"
+#include "serve/library_thumbnails.hpp"
 #include "serve/listen_address.hpp"
 #include "serve/origin_policy.hpp"
 #include "serve/playlist_store.hpp"
+#include "serve/seen_from.hpp"
 
 namespace httplib {
 class Server;
@@ -25,7 +28,8 @@ inline constexpr const char* kUploadPath = "/library/upload";
 
 class ConsoleRoutes {
  public:
-  ConsoleRoutes(PlaylistStore& playlists, ContentLibrary& library, const OriginPolicy& origins,
+  ConsoleRoutes(const DisplayService& displays, PlaylistStore& playlists, ContentLibrary& library,
+                LibraryThumbnails& thumbnails, SeenFromRenderer& seen_from, const OriginPolicy& origins,
                 const ListenAddress& listen);
   // Registered before Bridge's routes: GET / answers the page to a browser (Accept: text/html)
   // and Bridge's JSON to a script.
@@ -40,8 +44,11 @@ class ConsoleRoutes {
   static bool reads_bounded_body(const std::string& path);
 
  private:
+  const DisplayService& displays_;
   PlaylistStore& playlists_;
   ContentLibrary& library_;
+  LibraryThumbnails& thumbnails_;
+  SeenFromRenderer& seen_from_;
   const OriginPolicy& origins_;
   ListenAddress listen_;
 };

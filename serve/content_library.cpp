@@ -14,8 +14,11 @@
 
 #include "media/quilt_image.hpp"
 #include "media/quilt_name.hpp"
+#include "interlace/quilt_file.hpp"
 #include "media/video_decoder.hpp"
 #include "serve/library_file_name.hpp"
+#include "serve/studio_playlist.hpp"
+#include "util/atomic_file.hpp"
 #include "util/error.hpp"
 
 namespace lfd::serve {
@@ -67,6 +70,41 @@ bool rename_no_replace(const fs::path& from, const fs::path& to) {
   return true;
 }
 
+fs::path sidecar_path(const fs::path& file) {
+  fs::path sidecar = file;
+  sidecar += ".json";
+  return sidecar;
+}
+
+// A Looking Glass Studio sidecar beside the file, `<name>.json` (docs/serve.md "Studio
+// playlists"): the layout of a file whose name has no `_qs` tiling, or that it is an RGB-D photo.
+// None when there is none; InputError naming the sidecar for one that is not a sidecar.
+std::optional<PlaylistEntry> sidecar_of(const fs::path& file) {
+  const fs::path sidecar = sidecar_path(file);
+  std::error_code ec;
+  if (!fs::is_regular_file(fs::symlink_status(sidecar, ec))) return std::nullopt;  // no link out of the folder
+  const auto bytes = fs::file_size(sidecar, ec);
+  if (ec || bytes > kMaxStudioSidecarBytes)
+    throw_input_error("{}: not a sidecar (more than {} bytes)", sidecar.filename().string(), kMaxStudioSidecarBytes);
+  try {
+    return parse_studio_sidecar(read_text_file(sidecar));
+  } catch (const InputError& e) {
+    throw_input_error("{}: {}", sidecar.filename().string(), e.what());
+  }
+}
+
+// The tiling a sidecar gives a quilt (none for an RGB-D photo's).
+interlace::QuiltOverrides overrides_of(const PlaylistEntry& sidecar) {
+  interlace::QuiltOverrides o;
+  o.cols = sidecar.quilt.cols;
+  o.rows = sidecar.quilt.rows;
+  o.views = sidecar.quilt.views;
+  o.aspect = sidecar.quilt.aspect;
+  return o;
+}
+
+bool is_sidecar_name(const std::string& name) { return name.size() > 5 && name.ends_with(".json"); }
+
 }  // namespace
 
 nlohmann::json library_item_json(const LibraryItem& i) {
@@ -93,19 +131,28 @@ std::optional<LibraryItem> ContentLibrary::probe(const fs::path& path, const std
       const auto size = media::image_size(head, name);
       item.width = size.width;
       item.height = size.height;
-      if (media::parse_quilt_name(name)) {
-        const auto q = media::quilt_layout_for(name, size.width, size.height, {}, display_aspect_);
+      // The `_qs` name's tiling, else the Studio sidecar's; a picture with neither (or a sidecar
+      // saying rgbd) is an RGB-D photo: colour and depth side by side.
+      const auto sidecar = media::parse_quilt_name(name) ? std::nullopt : sidecar_of(path);
+      if (media::parse_quilt_name(name) || (sidecar && !sidecar->rgbd)) {
+        const auto q = media::quilt_layout_for(name, size.width, size.height,
+                                               sidecar ? overrides_of(*sidecar) : interlace::QuiltOverrides{},
+                                               display_aspect_);
         item.kind = "quilt";
         item.cols = q.cols, item.rows = q.rows, item.views = q.views, item.aspect = q.aspect;
       } else {
-        item.kind = "rgbd photo";  // a picture without a tiling: colour and depth side by side
+        item.kind = "rgbd photo";
       }
       return item;
     }
     media::VideoDecoder video(path, {.try_hardware = false, .threads = 1});
     item.width = video.info().width;
     item.height = video.info().height;
-    const auto q = media::quilt_layout_for(name, item.width, item.height, {}, display_aspect_);
+    const auto sidecar = media::parse_quilt_name(name) ? std::nullopt : sidecar_of(path);
+    if (sidecar && sidecar->rgbd) throw_input_error("{}: an RGB-D video is not supported", name);
+    const auto q = media::quilt_layout_for(name, item.width, item.height,
+                                           sidecar ? overrides_of(*sidecar) : interlace::QuiltOverrides{},
+                                           display_aspect_);
     item.kind = "quilt video";
     item.cols = q.cols, item.rows = q.rows, item.views = q.views, item.aspect = q.aspect;
     return item;
@@ -122,6 +169,7 @@ std::vector<LibraryItem> ContentLibrary::items() const {
   for (const auto& entry : fs::directory_iterator(folder_, ec)) {
     const std::string name = entry.path().filename().string();
     if (name.empty() || name.front() == '.' || !entry.is_regular_file(ec)) continue;  // uploads in flight
+    if (is_sidecar_name(name)) continue;  // a Studio sidecar: its file's settings, not an item
     if (auto item = probe(entry.path(), name, nullptr)) out.push_back(std::move(*item));
   }
   std::sort(out.begin(), out.end(), [](const LibraryItem& a, const LibraryItem& b) { return a.name < b.name; });
@@ -206,8 +254,14 @@ LibraryItem ContentLibrary::rename(const std::string& name, const std::string& n
   if (target == name) return old;
   {
     std::lock_guard lock(mutex_);
+    // The sidecar goes with its file (its settings are found by the file's name).
+    std::error_code ec;
+    const bool has_sidecar = fs::is_regular_file(sidecar_path(old.path), ec);
+    if (has_sidecar && fs::exists(sidecar_path(folder_ / target), ec))
+      throw_input_error("{}: cannot rename to {} (its sidecar's name is taken)", name, target);
     if (!rename_no_replace(old.path, folder_ / target))
       throw_input_error("{}: cannot rename to {} ({})", name, target, errno == EEXIST ? "that name is taken" : "the folder refused");
+    if (has_sidecar) rename_no_replace(sidecar_path(old.path), sidecar_path(folder_ / target));
   }
   return item(target);
 }
@@ -216,6 +270,7 @@ void ContentLibrary::remove(const std::string& name) {
   const LibraryItem old = item(name);
   std::lock_guard lock(mutex_);
   if (::unlink(old.path.c_str()) != 0) throw_input_error("{}: cannot delete it", name);
+  ::unlink(sidecar_path(old.path).c_str());  // its Studio sidecar, if it has one
 }
 
 }  // namespace lfd::serve

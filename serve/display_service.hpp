@@ -4,6 +4,7 @@
 // current entry's parameters, the state and playback events. `lfd serve` implements it on
 // `lfd play`'s Player (player_display_service.hpp); the unit tests on a test double. Every call
 // may come from any protocol thread at once: an implementation is thread-safe.
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -65,6 +66,9 @@ struct PlaybackState {
   bool window_visible = true;  // false after show_window(false)
   double quilt_aspect = 0;     // the view aspect of the quilt shown (update_current_entry's aspect)
   std::optional<rgbd::RgbdOptions> rgbd;  // the RGB-D settings of the picture shown (update_current_entry)
+  double position_s = 0;   // within the entry shown
+  double duration_s = 0;   // of the entry shown (0: unknown or nothing)
+  bool is_video = false;   // the entry shown is a video (seek() moves within it)
 };
 
 // Events the event WebSocket forwards (bridge.js names: "New Item Playing", "Transport Control
@@ -87,10 +91,16 @@ class DisplayService {
   virtual void play_playlist(int display, const Playlist& playlist, int head_index) = 0;
   virtual void stop_playlist(const std::string& name) = 0;
   virtual void transport(Transport command, int index) = 0;
+  // Within the entry shown (clamped to [0, its duration]); a video shows the frame at that time.
+  virtual void seek(double seconds) = 0;
   // focus, depthiness, zoom, crop_pos_x, crop_pos_y, aspect, ... of the showing entry.
   virtual void update_current_entry(const std::string& parameter, double value) = 0;
   virtual void show_window(bool show) = 0;
   virtual PlaybackState state() const = 0;
+  // The panel picture display `display` shows now (screenW x screenH RGB, row 0 at the top),
+  // read back from its next frame; none when it did not come within `wait`. For the console's
+  // "Seen from" (serve/seen_from.hpp). InputError for a display not served.
+  virtual std::optional<Image8> panel_picture(int display, std::chrono::milliseconds wait) = 0;
   // Called from the display's thread for each playback event; one listener.
   virtual void set_event_listener(std::function<void(const PlaybackEvent&)> listener) = 0;
 };

@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <fstream>
+#include <future>
 #include <set>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -45,6 +47,14 @@ std::string still_playlist_key(const Playlist& playlist, int head_index) {
                        e.duration_ms);
   }
   return key;
+}
+
+// lfd_status reads the Player's state as of its last frame: a transport command waits (a second
+// at most) for a whole frame after it was queued, so the event the API sends next and the state
+// a page then reads agree (the console's live state, docs/console.md).
+void wait_for_a_frame_after(const play::Player& p, std::int64_t frames_before) {
+  for (int i = 0; i < 500 && p.state().frames_shown < frames_before + 2; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
 }
 
 }  // namespace
@@ -180,13 +190,27 @@ void PlayerDisplayService::transport(Transport command, int index) {
     display = playlist_display_;
   }
   play::Player& p = player(display);
+  const std::int64_t before = p.state().frames_shown;
   switch (command) {
-    case Transport::kPlay: return p.play();
-    case Transport::kPause: return p.pause();
-    case Transport::kNext: return p.next();
-    case Transport::kPrevious: return p.previous();
-    case Transport::kSeekToIndex: return p.go_to(index);
+    case Transport::kPlay: p.play(); break;
+    case Transport::kPause: p.pause(); break;
+    case Transport::kNext: p.next(); break;
+    case Transport::kPrevious: p.previous(); break;
+    case Transport::kSeekToIndex: p.go_to(index); break;
   }
+  wait_for_a_frame_after(p, before);
+}
+
+void PlayerDisplayService::seek(double seconds) {
+  int display;
+  {
+    std::lock_guard lock(mutex_);
+    display = playlist_display_;
+  }
+  play::Player& p = player(display);
+  const std::int64_t before = p.state().frames_shown;
+  p.seek(seconds);
+  wait_for_a_frame_after(p, before);
 }
 
 void PlayerDisplayService::update_current_entry(const std::string& parameter, double value) {
@@ -225,6 +249,9 @@ PlaybackState PlayerDisplayService::state() const {
   s.window_visible = p.window_visible;
   s.quilt_aspect = p.quilt_aspect;
   s.rgbd = p.rgbd;
+  s.position_s = p.position_s;
+  s.duration_s = p.duration_s;
+  s.is_video = p.is_video;
   if (!p.entry_name.empty() && !s.playlist.empty()) s.showing += ": " + p.entry_name;
   return s;
 }
@@ -253,6 +280,20 @@ void PlayerDisplayService::on_player_event(int display, const play::PlaybackEven
     if (display == playlist_display_) out.playlist = playlist_;
   }
   if (listener) listener(out);
+}
+
+std::optional<Image8> PlayerDisplayService::panel_picture(int display, std::chrono::milliseconds wait) {
+  // Handed over from the GL thread; a promise the player drops unfulfilled (it quit) is a
+  // broken promise here, and one that comes late goes to no one.
+  auto promise = std::make_shared<std::promise<Image8>>();
+  std::future<Image8> picture = promise->get_future();
+  player(display).read_panel([promise](Image8 panel) { promise->set_value(std::move(panel)); });
+  if (picture.wait_for(wait) != std::future_status::ready) return std::nullopt;
+  try {
+    return picture.get();
+  } catch (const std::future_error&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace lfd::serve

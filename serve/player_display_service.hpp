@@ -30,9 +30,11 @@ class PlayerDisplayService : public DisplayService {
   void play_playlist(int display, const Playlist& playlist, int head_index) override;
   void stop_playlist(const std::string& name) override;
   void transport(Transport command, int index) override;
+  void seek(double seconds) override;
   void update_current_entry(const std::string& parameter, double value) override;
   void show_window(bool show) override;
   PlaybackState state() const override;
+  std::optional<Image8> panel_picture(int display, std::chrono::milliseconds wait) override;
   void set_event_listener(std::function<void(const PlaybackEvent&)> listener) override;
 
  private:

@@ -39,6 +39,7 @@ Service::Service(DisplayService& displays, ServeOptions options, MemoryBudget* b
       playlists_(options_.state_file, options_.limits),
       holoplay_(displays_, cache_, decoded_, budget_, options_.limits),
       bridge_(displays_, playlists_, hub_, options_.limits),
+      seen_from_(displays_, budget_),
       holoplay_server_(holoplay_, origins_, options_.limits),
       bridge_server_(bridge_, origins_, budget_, options_.limits),
       event_server_(hub_, origins_, budget_, options_.limits) {
@@ -46,7 +47,9 @@ Service::Service(DisplayService& displays, ServeOptions options, MemoryBudget* b
     const auto shown = displays_.displays();
     const double aspect = shown.empty() ? 0.75 : shown.front().default_quilt.aspect;
     library_ = std::make_unique<ContentLibrary>(options_.content_folder, options_.limits.max_upload_bytes, aspect);
-    console_ = std::make_unique<ConsoleRoutes>(playlists_, *library_, origins_, options_.listen);
+    thumbnails_ = std::make_unique<LibraryThumbnails>(*library_, budget_);
+    console_ = std::make_unique<ConsoleRoutes>(displays_, playlists_, *library_, *thumbnails_, seen_from_, origins_,
+                                               options_.listen);
     bridge_server_.set_console(console_.get(), options_.limits.max_upload_bytes);
     origins_.set_console_port(options_.listen.bridge_port);
   }

@@ -21,6 +21,7 @@
 #include "serve/origin_policy.hpp"
 #include "serve/playlist_store.hpp"
 #include "serve/quilt_cache.hpp"
+#include "serve/seen_from.hpp"
 
 namespace lfd::serve {
 
@@ -73,6 +74,8 @@ class Service {
   HoloPlayProtocol holoplay_;
   BridgeApi bridge_;
   std::unique_ptr<ContentLibrary> library_;
+  std::unique_ptr<LibraryThumbnails> thumbnails_;
+  SeenFromRenderer seen_from_;
   std::unique_ptr<ConsoleRoutes> console_;
   HoloPlayServer holoplay_server_;
   BridgeServer bridge_server_;

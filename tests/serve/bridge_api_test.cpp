@@ -202,6 +202,23 @@ TEST_F(BridgeApiTest, TransportAndCurrentEntryReachTheDisplay) {
   EXPECT_EQ(events[0]["payload"]["value"]["event"]["value"], "Transport Control Pause");
 }
 
+TEST_F(BridgeApiTest, SeekWithinTheEntryReachesTheDisplayAndBadSecondsChangeNothing) {
+  call("lfd_seek", {{"orchestration", token}, {"seconds", 12.5}});
+  call("lfd_seek", {{"orchestration", token}, {"seconds", "3"}});  // numeric text, as bridge.js sends numbers
+  call("lfd_seek", {{"orchestration", token}}, 400);
+  call("lfd_seek", {{"orchestration", token}, {"seconds", -1}}, 400);
+  call("lfd_seek", {{"orchestration", token}, {"seconds", "soon"}}, 400);
+  EXPECT_EQ(json::parse(api.handle("lfd_seek", R"({"seconds": 1})").body)["status"]["value"], "UnknownOrchestration");
+  const auto calls = fake.recorded();
+  ASSERT_EQ(calls.size(), 2u);
+  EXPECT_EQ(calls[0], "seek 12.500000");
+  EXPECT_EQ(calls[1], "seek 3.000000");
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0]["payload"]["value"]["event"]["value"], "lfd Transport Seek");
+  const json status = call("lfd_status", json::object())["payload"]["value"];
+  EXPECT_TRUE(status.contains("position_s") && status.contains("duration_s") && status.contains("is_video"));
+}
+
 TEST_F(BridgeApiTest, GarbageGetsAnErrorReply) {
   EXPECT_EQ(api.handle("instance_playlist", "{not json").http_status, 400);
   EXPECT_EQ(api.handle("instance_playlist", "[1,2]").http_status, 400);

@@ -1,9 +1,10 @@
 // The console's pieces without a browser (docs/console.md): upload names, the access token, the
 // console's origin and "from this machine", and the content library's uploads, renames and
-// deletes against a real folder. The page itself is tested in Chromium (tests/serve/clients/
+// deletes, Studio sidecars and thumbnails against a real folder. The page itself is tested in Chromium (tests/serve/clients/
 // console_test.js).
 #include <sys/stat.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -11,10 +12,13 @@
 
 #include "serve/access_token.hpp"
 #include "serve/content_library.hpp"
+#include "serve/library_thumbnails.hpp"
+#include "serve/memory_budget.hpp"
 #include "serve/origin_policy.hpp"
 #include "tests/serve/serve_test_support.hpp"
 #include "util/error.hpp"
 #include "util/image.hpp"
+#include "util/png_codec.hpp"
 
 namespace lfd::serve {
 namespace {
@@ -158,6 +162,94 @@ TEST(ContentLibrary, RenameKeepsTheTypeDeleteRemovesOnlyItsItems) {
   library.remove("b_qs4x3a0.75.png");
   EXPECT_EQ(names_in(library.folder()), std::vector<std::string>{"tour_one_qs4x3a0.75.png"});
   EXPECT_TRUE(fs::exists(dir.path / "outside.png"));
+}
+
+// A Looking Glass Studio sidecar (`<name>.json`, docs/serve.md "Studio playlists") gives the
+// layout of a file whose name has no `_qs` tiling, goes with it when renamed or deleted, and is
+// no item itself; a sidecar that is not one is refused naming it.
+TEST(ContentLibrary, AStudioSidecarGivesTheLayoutOfAFileWithoutQsInItsName) {
+  TempDir dir;
+  ContentLibrary library(dir.path / "content", 1u << 20, 0.75);
+  const std::string picture = png_file_bytes(dir, 400, 300);
+  library.upload("hologram.png", chunks(picture));
+  library.upload("photo.png", chunks(picture));
+  const auto content = library.folder();
+  std::ofstream(content / "hologram.png.json")
+      << R"({"mediaType": "quilt", "quilt_settings": {"viewX": 5, "viewY": 3, "viewTotal": 15, "aspect": 0.5}})";
+  std::ofstream(content / "photo.png.json") << R"({"mediaType": "rgbd", "depthiness": 1.5})";
+  const LibraryItem quilt = library.item("hologram.png");
+  EXPECT_EQ(quilt.kind, "quilt");
+  EXPECT_EQ(quilt.cols, 5);
+  EXPECT_EQ(quilt.rows, 3);
+  EXPECT_EQ(quilt.views, 15);
+  EXPECT_DOUBLE_EQ(quilt.aspect, 0.5);
+  EXPECT_EQ(library.item("photo.png").kind, "rgbd photo");
+  EXPECT_EQ(library.items().size(), 2u) << "the sidecars are not items";
+  EXPECT_EQ(library.rename("hologram.png", "tour").name, "tour.png");
+  EXPECT_EQ(library.item("tour.png").cols, 5) << "the sidecar went with its file";
+  EXPECT_TRUE(fs::exists(content / "tour.png.json"));
+  library.remove("tour.png");
+  EXPECT_EQ(names_in(content), (std::vector<std::string>{"photo.png", "photo.png.json"}));
+  std::ofstream(content / "photo.png.json") << R"({"mediaType": "movie"})";
+  try {
+    library.item("photo.png");
+    ADD_FAILURE() << "a broken sidecar was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("photo.png.json: mediaType"), std::string::npos) << e.what();
+  }
+}
+
+// Thumbnails: the centre view made small, kept per content, made again when the content changes.
+TEST(LibraryThumbnails, TheCentreViewMadeSmallKeptPerContent) {
+  TempDir dir;
+  ContentLibrary library(dir.path / "content", 4u << 20, 0.75);
+  MemoryBudget budget(64u << 20);
+  LibraryThumbnails thumbnails(library, budget);
+  // 4x3 views of 400x400 px; view v is grey level 10 v; the centre view (6) is 60.
+  Image8 quilt(1600, 1200, 3);
+  for (int v = 0; v < 12; ++v)
+    for (int y = 0; y < 400; ++y)
+      for (int x = 0; x < 400; ++x)
+        for (int c = 0; c < 3; ++c) quilt.at((v % 4) * 400 + x, 1200 - (v / 4 + 1) * 400 + y, c) = std::uint8_t(10 * v);
+  write_png(dir.path / "q.png", quilt);
+  std::ifstream in(dir.path / "q.png", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  library.upload("views_qs4x3a1.png", chunks(bytes));
+  const auto decode = [](const std::string& png) {
+    std::FILE* f = fmemopen(const_cast<char*>(png.data()), png.size(), "rb");
+    EXPECT_TRUE(png::has_png_signature(f));
+    Image8 image = png::decode(f, "thumbnail", 3);
+    std::fclose(f);
+    return image;
+  };
+  const Image8 small = decode(thumbnails.png("views_qs4x3a1.png"));
+  EXPECT_EQ(small.width, kThumbnailPx);
+  EXPECT_EQ(small.height, kThumbnailPx);
+  for (std::uint8_t v : small.pixels) ASSERT_EQ(v, 60) << "the centre view's grey, nothing of its neighbours";
+  thumbnails.png("views_qs4x3a1.png");
+  EXPECT_EQ(thumbnails.made(), 1u) << "the second ask is the kept one";
+  EXPECT_EQ(budget.used(), 0u) << "the decoded picture's reservation went with it";
+  // An RGB-D photo is made small whole; an item that is not one is refused.
+  library.upload("photo", chunks(png_file_bytes(dir, 640, 320)));
+  const Image8 photo = decode(thumbnails.png("photo.png"));
+  EXPECT_EQ(photo.width, kThumbnailPx);
+  EXPECT_EQ(photo.height, kThumbnailPx / 2);
+  EXPECT_THROW(thumbnails.png("../q.png"), InputError);
+  EXPECT_THROW(thumbnails.png("missing.png"), InputError);
+  // Other content under the same name: made again.
+  library.remove("views_qs4x3a1.png");
+  library.upload("views_qs4x3a1.png", chunks(png_file_bytes(dir, 800, 600)));
+  EXPECT_EQ(decode(thumbnails.png("views_qs4x3a1.png")).pixels[0], 90);
+  EXPECT_EQ(thumbnails.made(), 3u);
+}
+
+TEST(LibraryThumbnails, ShrinkingKeepsTheAspectAndNeverEnlarges) {
+  EXPECT_EQ(shrink_to_thumbnail(Image8(100, 50, 3)).width, 100);
+  const Image8 wide = shrink_to_thumbnail(Image8(1000, 10, 3, 7));
+  EXPECT_EQ(wide.width, kThumbnailPx);
+  EXPECT_EQ(wide.height, 1);
+  EXPECT_EQ(wide.pixels[0], 7);
+  EXPECT_THROW(shrink_to_thumbnail(Image8()), InputError);
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // serves the displays it is given and records every call, so a test can check what a request
 // changed, and that a refused one changed nothing.
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,13 +32,22 @@ class FakeDisplayService : public DisplayService {
   void transport(Transport command, int index) override {
     record("transport " + std::to_string(static_cast<int>(command)) + " " + std::to_string(index));
   }
+  void seek(double seconds) override { record("seek " + std::to_string(seconds)); }
   void update_current_entry(const std::string& parameter, double value) override {
     record("update " + parameter + " " + std::to_string(value));
   }
   void show_window(bool show) override { record(std::string("show_window ") + (show ? "1" : "0")); }
   PlaybackState state() const override {
     std::lock_guard lock(mutex);
-    return {"a fake", state_playlist, -1, 0, false};
+    PlaybackState s;
+    s.showing = "a fake";
+    s.playlist = state_playlist;
+    return s;
+  }
+  std::optional<Image8> panel_picture(int display, std::chrono::milliseconds) override {
+    record("panel_picture " + std::to_string(display));
+    std::lock_guard lock(mutex);
+    return panel;
   }
   void set_event_listener(std::function<void(const PlaybackEvent&)> listener) override {
     std::lock_guard lock(mutex);
@@ -56,6 +66,7 @@ class FakeDisplayService : public DisplayService {
   Playlist last_playlist;
   std::string state_playlist;  // the playlist state() says is playing
   std::function<void(const PlaybackEvent&)> listener;
+  std::optional<Image8> panel;  // what panel_picture() answers (none: the display gave nothing)
 
  private:
   void record(std::string call) {

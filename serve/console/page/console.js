@@ -1,6 +1,6 @@
 // lfd console (docs/console.md). Every action is a documented route of the service: Bridge's
 // endpoints (docs/serve.md) where one exists, the console's own (/library, /playlists,
-// /console/config) for the rest, so nothing the page does is closed to scripts. Live state comes
+// /console/config, /seen_from) for the rest, so nothing the page does is closed to scripts. Live state comes
 // over Bridge's event WebSocket; the page asks lfd_status again when an event arrives.
 'use strict';
 
@@ -116,18 +116,125 @@ async function loadDisplays() {
     fact(dl, 'Quilt', `${quilt.tileX} x ${quilt.tileY} tiles, ${quilt.quiltX} x ${quilt.quiltY} px, aspect ${quilt.quiltAspect}`);
     fact(dl, 'View cone', `${cal.viewCone.value} degrees`);
     fact(dl, 'Calibration', `${v.calibrationSource.value}${status.calibration ? ': ' + status.calibration : ''}`);
+    await reportFacts(dl, v.index.value);
     item.append(dl);
     list.append(item);
   }
 }
 
+// The position within the entry: lfd_status's, moved on by the page's own clock while playing
+// (the service pushes an event at each change; between events the page counts, it does not poll).
+function secondsText(t) {
+  return `${Math.floor(t / 60)}:${(t % 60).toFixed(1).padStart(4, '0')}`;
+}
+
+function showPosition() {
+  const s = state.status;
+  if (!s || !(s.duration_s > 0)) {
+    $('now-position').textContent = 'none';
+    $('seek-box').hidden = true;
+    return;
+  }
+  const elapsed = s.playing ? (performance.now() - state.statusAt) / 1000 : 0;
+  const at = Math.min(s.position_s + elapsed, s.duration_s);
+  $('now-position').textContent = `${secondsText(at)} of ${secondsText(s.duration_s)}${s.is_video ? ' (video)' : ''}`;
+  const seek = $('seek');
+  $('seek-box').hidden = !s.is_video;
+  seek.max = String(s.duration_s);
+  if (!state.seeking) {
+    seek.value = String(at);
+    seek.setAttribute('aria-valuetext', `${secondsText(at)} of ${secondsText(s.duration_s)}`);
+  }
+}
+
+async function seekTo(seconds) {
+  await bridge('lfd_seek', {seconds});
+  await loadStatus();
+  return `Moved to ${secondsText(seconds)}`;
+}
+
+// What lfd calibrate's report says of the calibration (GET /calibration_report): the gates'
+// verdict, the fit, the warnings; nothing for a factory calibration.
+async function reportFacts(dl, index) {
+  let report = null;
+  try {
+    report = (await getJson(`/calibration_report?display=${index}`)).report;
+  } catch (e) {
+    return fact(dl, 'Calibration report', `unreadable: ${e.message}`);
+  }
+  if (!report) return;
+  const fit = [`${report.positions} camera positions`];
+  if (report.residual_rms_periods !== null) fit.push(`residual ${report.residual_rms_periods.toFixed(4)} lens periods RMS`);
+  if (report.view_cone_deg !== null) fit.push(`view cone ${report.view_cone_deg.toFixed(2)} degrees`);
+  fact(dl, 'Calibration report', `${report.accepted ? 'accepted' : 'refused'}: ${fit.join(', ')}`);
+  if (report.gate_failures.length) fact(dl, 'Gates failed', report.gate_failures.join('; '));
+  fact(dl, 'Warnings', report.warnings.length ? report.warnings.join('; ') : 'none');
+  fact(dl, 'Report file', report.page || report.file);
+}
+
 async function loadStatus() {
   const s = await bridge('lfd_status');
   state.status = s;
+  state.statusAt = performance.now();
+  showPosition();
   $('now-showing').textContent = s.showing || 'nothing yet';
   $('now-playlist').textContent = s.playlist || 'none';
   $('now-entry').textContent = s.index >= 0 && s.entries ? `${s.index + 1} of ${s.entries}` : 'none';
   $('now-state').textContent = s.playing ? 'playing' : 'paused';
+}
+
+// --- seen from ----------------------------------------------------------------------------
+
+// The slider runs over display 0's views, from the middle of the first (the cone's left edge) to
+// the middle of the last, in half views; the service turns a view into the eye's angle and
+// renders the picture (GET /seen_from, one at a time: busy means try again shortly).
+const seen = {range: null, busy: false, again: false, url: ''};
+
+function seenText(view, angle) {
+  const side = Math.abs(angle) < 0.05 ? 'straight on' : `${Math.abs(angle).toFixed(1)} degrees ${angle < 0 ? 'left' : 'right'}`;
+  return `${side}, view ${Number(view) + 1} of ${seen.range.views}`;
+}
+
+async function loadSeenFromRange() {
+  seen.range = await getJson('/seen_from/range?display=0');
+  const slider = $('seen-view');
+  slider.max = String(seen.range.views - 1);
+  slider.value = String((seen.range.views - 1) / 2);
+}
+
+async function renderSeenFrom() {
+  if (!seen.range) return;
+  if (seen.busy) { seen.again = true; return; }
+  seen.busy = true;
+  try {
+    let busyTries = 0;
+    do {
+      seen.again = false;
+      const view = $('seen-view').value;
+      const r = await fetch(`/seen_from?display=0&view=${encodeURIComponent(view)}`, {credentials: 'same-origin'});
+      if (r.status === 503 && ++busyTries < 5) {
+        await new Promise((done) => setTimeout(done, 1000));
+        seen.again = true;
+        continue;
+      }
+      if (!r.ok) {
+        const body = await r.json().catch(() => ({}));
+        throw new Error(body.error || `HTTP ${r.status}`);
+      }
+      const angle = Number(r.headers.get('X-Seen-From-Angle'));
+      const picture = $('seen-picture');
+      if (seen.url) URL.revokeObjectURL(seen.url);
+      seen.url = URL.createObjectURL(await r.blob());
+      picture.src = seen.url;
+      picture.alt = `Display 0 seen from ${seenText(view, angle)}`;
+      picture.hidden = false;
+      picture.dataset.view = view;
+      $('seen-angle').textContent = seenText(view, angle);
+      $('seen-view').setAttribute('aria-valuetext', seenText(view, angle));
+    } while (seen.again);
+  } finally {
+    seen.busy = false;
+  }
 }
 
 // --- content ------------------------------------------------------------------------------
@@ -150,9 +257,7 @@ function renderLibrary() {
   list.replaceChildren();
   if (!state.library.length) list.append(el('li', {text: 'The content folder is empty: upload a quilt.'}));
   for (const item of state.library) {
-    const image = item.kind !== 'quilt video';
-    const thumb = image ? el('img', {src: '/library/file?name=' + encodeURIComponent(item.name), alt: '', loading: 'lazy'})
-                        : el('span', {class: 'thumb', text: 'video', 'aria-hidden': 'true'});
+    const thumb = el('img', {alt: '', 'data-name': item.name, class: 'pending'});
     const layout = item.cols ? `${item.cols} x ${item.rows} views, aspect ${item.aspect}` : 'colour and depth';
     list.append(el('li', {'aria-label': item.name},
       thumb,
@@ -169,6 +274,29 @@ function renderLibrary() {
   }
 }
 
+// The thumbnails the service makes (GET /library/thumbnail: a quilt's centre view made small),
+// asked one after another: the service makes one at a time and answers busy meanwhile.
+async function loadThumbnails() {
+  if (state.thumbnailing) { state.thumbnailsAgain = true; return; }
+  state.thumbnailing = true;
+  try {
+    do {
+      state.thumbnailsAgain = false;
+      for (const img of document.querySelectorAll('#library img.pending')) {
+        for (let tries = 0; tries < 5; ++tries) {
+          const r = await fetch('/library/thumbnail?name=' + encodeURIComponent(img.dataset.name), {credentials: 'same-origin'});
+          if (r.status === 503) { await new Promise((done) => setTimeout(done, 500)); continue; }
+          if (r.ok) img.src = URL.createObjectURL(await r.blob());
+          break;
+        }
+        img.classList.remove('pending');
+      }
+    } while (state.thumbnailsAgain);
+  } finally {
+    state.thumbnailing = false;
+  }
+}
+
 async function loadLibrary() {
   const items = (await getJson('/library')).items;
   const text = JSON.stringify(items);
@@ -176,6 +304,7 @@ async function loadLibrary() {
   state.libraryText = text;
   state.library = items;
   renderLibrary();
+  act('Thumbnails', loadThumbnails);
 }
 
 async function upload(files) {
@@ -367,6 +496,7 @@ function listen() {
     try { event = JSON.parse(m.data).payload.value.event.value; } catch (e) { return; }
     act('Status', loadStatus);
     if (/^Playlist/.test(event)) act('Playlists', loadPlaylists);
+    if (/(New Item Playing|Transport)/.test(event) && !$('display').hidden) act('Seen from', renderSeenFrom);
   });
   socket.addEventListener('close', () => {
     $('connection').textContent = 'reconnecting';
@@ -400,6 +530,11 @@ function wire() {
       return `Made the playlist ${name}`;
     });
   });
+  $('seen-view').addEventListener('change', () => act('Seen from', renderSeenFrom));
+  const seek = $('seek');
+  seek.addEventListener('input', () => { state.seeking = true; });
+  seek.addEventListener('change', () => act('Seek', () => seekTo(Number(seek.value)).finally(() => { state.seeking = false; })));
+  setInterval(showPosition, 250);
   for (const verb of ['play', 'pause', 'next', 'previous'])
     $(verb).addEventListener('click', () => act(verb, () => bridge('transport_control_' + verb).then(loadStatus)));
 }
@@ -410,8 +545,9 @@ async function start() {
     state.config = await getJson('/console/config');
     await enterOrchestration();
     await loadStatus();
-    await Promise.all([loadDisplays(), loadLibrary(), loadPlaylists()]);
+    await Promise.all([loadDisplays(), loadLibrary(), loadPlaylists(), loadSeenFromRange()]);
     listen();
+    act('Seen from', renderSeenFrom);
     document.body.dataset.ready = 'true';
   });
 }

@@ -2,7 +2,7 @@
 // puppeteer-core, against a real `lfd serve` on Xvfb with the test display's calibration. The
 // harness starts (and restarts) the service itself: the autostart case needs a restart, the
 // --listen case another address.
-//   LFD_EXE=... CALIBRATION=... node console_test.js display|upload-play|playlist|refusals|foreign-origin|listen
+//   LFD_EXE=... CALIBRATION=... node console_test.js display|upload-play|playlist|refusals|foreign-origin|listen|seen-from|seek
 // LFD_CONSOLE_SHOTS=DIR keeps the screenshots (docs/console.md's come from here).
 'use strict';
 const fs = require('fs');
@@ -12,7 +12,7 @@ const http = require('http');
 const {spawn, execFileSync} = require('child_process');
 const puppeteer = require('puppeteer-core');
 const {check, waitFor, expectedCalibration} = require('./common.js');
-const {quiltPng} = require('./quilt_png.js');
+const {quiltPng, viewColourQuiltPng} = require('./quilt_png.js');
 
 const LFD = process.env.LFD_EXE;
 const CALIBRATION = process.env.CALIBRATION;
@@ -50,6 +50,8 @@ async function startServe(args = [], base = 'http://127.0.0.1:33334') {
     if (serve.exitCode !== null) check(false, 'lfd serve exited at start: ' + fs.readFileSync(path.join(tmp, 'serve.log'), 'utf8'));
     return fetch(base + '/').then(() => true, () => false);
   }, 30000);
+  // The service answering is the one just started, not another on the fixed ports.
+  if (base === 'http://127.0.0.1:33334') check((await status()).pid === serve.pid, 'the lfd serve answering is the one this test started');
 }
 
 async function stopServe() {
@@ -80,10 +82,16 @@ async function show(page, view) {
   await page.waitForFunction((v) => !document.getElementById(v.slice(1)).hidden, {}, view);
 }
 
-async function shot(page, name) {
+// `selector`: only that element (scrolled into view), else the viewport.
+async function shot(page, name, selector = '') {
   if (!SHOTS) return;
   fs.mkdirSync(SHOTS, {recursive: true});
-  await page.screenshot({path: path.join(SHOTS, name + '.png')});
+  const target = selector ? await page.$(selector) : page;
+  // The fixed transport bar would cover part of an element shown alone.
+  const hideFooter = selector && selector !== 'footer';
+  if (hideFooter) await page.$eval('footer', (f) => { f.style.visibility = 'hidden'; });
+  await target.screenshot({path: path.join(SHOTS, name + '.png')});
+  if (hideFooter) await page.$eval('footer', (f) => { f.style.visibility = ''; });
 }
 
 async function bridge(endpoint, body = {}) {
@@ -185,6 +193,13 @@ cases['upload-play'] = async () => {
   await uploadThroughPicker(page, [A]);
   check(JSON.stringify(folder()) === JSON.stringify(['a_qs4x3a0.75.png']), 'the upload is stored in the content folder');
   const item = await libraryItem(page, 'a_qs4x3a0.75.png');
+  // Its thumbnail is the service's: the centre view (view 6 of 4x3 tiles of 192x256) made small.
+  await page.waitForFunction(() => {
+    const img = document.querySelector('#library img');
+    return img && !img.classList.contains('pending') && img.complete && img.naturalWidth > 0;
+  }, {timeout: 20000});
+  const size = await page.$eval('#library img', (img) => [img.naturalWidth, img.naturalHeight]);
+  check(size[0] === 120 && size[1] === 160, `the library shows the service's thumbnail, the centre view made small (${size.join('x')})`);
   const play = await item.$('aria/Play[role="button"]');
   check(play !== null, 'the library item holds a "Play" button');
   await play.click();
@@ -338,6 +353,149 @@ cases['foreign-origin'] = async () => {
   check(/refused .*origin http:\/\/evil\.example/.test(log), 'the service logs the refusals (403)');
 };
 
+// The mean colour of the central 1/part (each way) of a PNG, read in the page's canvas.
+async function centralMean(page, pngBytes, part = 10) {
+  return page.evaluate(async (b64, part) => {
+    const img = new Image();
+    img.src = 'data:image/png;base64,' + b64;
+    await img.decode();
+    const c = document.createElement('canvas');
+    c.width = img.naturalWidth;
+    c.height = img.naturalHeight;
+    const g = c.getContext('2d');
+    g.drawImage(img, 0, 0);
+    const w = Math.max(1, Math.round(c.width / part)), h = Math.max(1, Math.round(c.height / part));
+    const d = g.getImageData(Math.round((c.width - w) / 2), Math.round((c.height - h) / 2), w, h).data;
+    const sum = [0, 0, 0];
+    for (let i = 0; i < d.length; i += 4) for (let ch = 0; ch < 3; ++ch) sum[ch] += d[i + ch];
+    return sum.map((v) => v / (d.length / 4));
+  }, Buffer.from(pngBytes).toString('base64'), part);
+}
+
+// A colour of viewColourQuiltPng's views: the blue share of red and blue (0: view 0's side, 1:
+// the last view's), and the green share of all (the middle views').
+const blueShare = (rgb) => rgb[2] / Math.max(1, rgb[0] + rgb[2]);
+const greenShare = (rgb) => rgb[1] / Math.max(1, rgb[0] + rgb[1] + rgb[2]);
+
+cases['seen-from'] = async () => {
+  const o = (await bridge('enter_orchestration')).payload.value;
+  const quilt = JSON.parse((await bridge('available_output_devices', {orchestration: o})).payload.value['0'].value.defaultQuilt.value);
+  const views = quilt.tileX * quilt.tileY;
+  // A quilt of the display's views, each one flat colour, played from the library.
+  const name = `views_qs${quilt.tileX}x${quilt.tileY}a0.75.png`;
+  const file = path.join(tmp, name);
+  fs.writeFileSync(file, viewColourQuiltPng(quilt.tileX, quilt.tileY, 48, 64));
+  const page = await openConsole();
+  await uploadThroughPicker(page, [file]);
+  await (await (await libraryItem(page, name)).$('aria/Play[role="button"]')).click();
+  await waitFor('the view-colour quilt plays', async () => new RegExp(name.replace('.', '\\.')).test((await status()).showing), 20000);
+  await sleep(1000);
+  const panel = path.join(tmp, 'views-panel.png');
+  execFileSync(LFD, ['interlace', '--calibration', CALIBRATION, '--quilt', file, '--out', panel], {stdio: 'ignore'});
+  await show(page, '#display');
+  const range = await (await fetch('http://127.0.0.1:33334/seen_from/range?display=0')).json();
+  check(range.views === views && range.first_view_deg < 0 && range.last_view_deg > 0,
+        `the slider spans the ${views} views, ${range.first_view_deg.toFixed(2)} to ${range.last_view_deg.toFixed(2)} degrees`);
+  const slider = await page.$('aria/Seen from[role="slider"]');
+  check(slider !== null, 'the "Seen from" slider has its accessible name');
+  for (const [key, view, angle] of [['Home', 0, range.first_view_deg], ['End', views - 1, range.last_view_deg]]) {
+    await slider.focus();
+    await page.keyboard.press(key);
+    await page.waitForFunction((v) => {
+      const img = document.getElementById('seen-picture');
+      return img.dataset.view === String(v) && img.complete && img.naturalWidth > 0;
+    }, {timeout: 30000}, view);
+    const shown = await page.$eval('#seen-picture', async (img) => {
+      const c = document.createElement('canvas');
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      c.getContext('2d').drawImage(img, 0, 0);
+      return new Promise((r) => c.toBlob((b) => b.arrayBuffer().then((a) => r(Array.from(new Uint8Array(a)))), 'image/png'));
+    });
+    const seen = await centralMean(page, Buffer.from(shown));
+    const side = view ? 'right' : 'left';
+    console.log(`seen from the ${side} end (${angle.toFixed(2)} degrees): mean colour [${seen.map(Math.round)}]`);
+    // At the cone's edge a lens sends its edge view and, through the width of a subpixel, the
+    // other edge's across the wrap (docs/display-model.md): the edge view dominates, the middle
+    // views are absent.
+    check((view ? blueShare(seen) > 0.6 : blueShare(seen) < 0.4) && greenShare(seen) < 0.15,
+          `seen from the cone's ${side} edge the page shows the ${side} edge view's content (blue share ${blueShare(seen).toFixed(2)}, green share ${greenShare(seen).toFixed(2)})`);
+    // lfd simulate of the same panel picture: a camera at the same eye looking at the panel centre
+    // whose picture spans the same central tenth of the panel (across its width, foreshortened).
+    const rad = angle * Math.PI / 180;
+    const capture = path.join(tmp, `simulate-${view}.png`);
+    const fov = 2 * Math.atan(range.panel_width_m / 20 * Math.cos(rad) / range.distance_m) * 180 / Math.PI;
+    const across = 48, down = Math.round(48 * range.panel_height_m / range.panel_width_m);
+    execFileSync(LFD, ['simulate', '--calibration', CALIBRATION, '--panel', panel, '--out', capture, '--camera-pos',
+                       `${(range.distance_m * Math.sin(rad)).toFixed(6)},0,${(range.distance_m * Math.cos(rad)).toFixed(6)}`,
+                       '--fov', fov.toFixed(4), '--size', `${across}x${down}`, '--exposure', String(1 / 3)], {stdio: 'ignore'});
+    // Its camera pixels cover two panel pixels: a lens shows a channel fully (up to 3 times the
+    // panel's mean light) or not at all, which a camera pixel of 8 bits would clip; a third of
+    // the exposure keeps it all, and the mean is scaled back.
+    const simulated = (await centralMean(page, fs.readFileSync(capture), 1)).map((v) => 3 * v);
+    const colourGap = Math.max(...seen.map((v, ch) => Math.abs(v - simulated[ch])));
+    check(Math.abs(blueShare(seen) - blueShare(simulated)) <= 0.05 && colourGap <= 20,
+          `and lfd simulate of the same panel sees the same there (colours [${seen.map(Math.round)}] and [${simulated.map(Math.round)}], blue shares ${blueShare(seen).toFixed(2)} and ${blueShare(simulated).toFixed(2)})`);
+    await shot(page, view ? 'console-seen-from-right' : 'console-seen-from-left', '#display .seen');
+  }
+  // Bounded: a bad angle is refused in one line, and the route says busy (503) rather than queueing.
+  const bad = await fetch('http://127.0.0.1:33334/seen_from?display=0&angle=95');
+  check(bad.status === 400 && /angle/.test((await bad.json()).error), 'an angle outside the limits is refused (400)');
+  await axe(page, '#display with "Seen from"');
+  await page.close();  // its own pictures (asked at each new entry) would make the burst's busy
+  await waitFor('a picture the page asked is done', async () =>
+    (await fetch('http://127.0.0.1:33334/seen_from?display=0&angle=0&height=16')).status === 200);
+  const burst = await Promise.all(Array.from({length: 4}, () => fetch('http://127.0.0.1:33334/seen_from?display=0&angle=0&height=512')));
+  const codes = burst.map((r) => r.status);
+  check(codes.every((c) => c === 200 || c === 503) && codes.includes(200),
+        `four at once: each rendered or answered busy, none queued past its turn (${codes.join(',')})`);
+};
+
+cases.seek = async () => {
+  // A quilt video of 6 s (60 frames of 2x2 views) made by lfd record of the repository's demo scene.
+  execFileSync(LFD, ['record', '--scene', path.join(__dirname, '../../../data/scenes/demo.ply'), '--views', '4', '--cols', '2',
+                     '--rows', '2', '--size', '48x32', '--chunks', '8', '--path', 'turntable', '--seconds', '6', '--fps', '10',
+                     '--out', path.join(tmp, 'clip.mp4')], {env: {...process.env, DISPLAY: display}, stdio: 'ignore'});
+  const made = fs.readdirSync(tmp).find((f) => /^clip_qs.*\.mp4$/.test(f));
+  check(made !== undefined, `lfd record made a quilt video (${made})`);
+  const page = await openConsole();
+  await uploadThroughPicker(page, [path.join(tmp, made)]);
+  await (await (await libraryItem(page, made)).$('aria/Play[role="button"]')).click();
+  await waitFor('the video plays', async () => {
+    const s = await status();
+    return s.is_video && s.duration_s > 5 && s.playing;
+  }, 20000);
+  await transport(page, 'Pause');
+  await waitFor('paused', async () => !(await status()).playing);
+  const seek = await page.waitForSelector('aria/Seek[role="slider"]', {visible: true, timeout: 10000});
+  check(seek !== null, 'a video shows the transport\'s slider named "Seek"');
+  // The slider moved to 4 s (what a drag ends with: input events, then change).
+  await page.$eval('#seek', (e) => {
+    e.value = '4';
+    e.dispatchEvent(new Event('input'));
+    e.dispatchEvent(new Event('change'));
+  });
+  await waitFor('the service is at 4 s', async () => Math.abs((await status()).position_s - 4) < 0.15, 10000);
+  check(true, 'the page\'s "Seek" moves the video to 4 s (lfd_status position_s)');
+  await show(page, '#display');
+  // The page's position as seconds ("0:04.0 of 0:06.0 (video)").
+  const shownAt = () => page.$eval('#now-position', (e) => {
+    const m = /^(\d+):(\d+\.\d)/.exec(e.textContent);
+    return m ? 60 * Number(m[1]) + Number(m[2]) : NaN;
+  });
+  await waitFor('the page shows 4 s', async () => Math.abs(await shownAt() - 4) <= 0.2, 10000);
+  check(true, `the page's live state shows the position while paused (${await page.$eval('#now-position', (e) => e.textContent)})`);
+  await transport(page, 'Play');
+  await waitFor('playing again from 4 s', async () => {
+    const s = await status();
+    return s.playing && s.position_s > 4.3;
+  }, 10000);
+  await waitFor('the page counts on', async () => (await shownAt()) > 4.3, 10000);
+  check(true, 'played on from there: the service and the page count on from 4 s');
+  await shot(page, 'console-seek', 'footer');
+  await axe(page, '#display with the "Seek" slider');
+};
+
 cases.listen = async () => {
   const address = Object.values(os.networkInterfaces()).flat().find((a) => a && a.family === 'IPv4' && !a.internal);
   if (!address) {
@@ -373,6 +531,21 @@ cases.listen = async () => {
   });
   check(!(await socketStays({})), 'without the token the event socket is closed');
   check(await socketStays({Cookie: 'lfd_token=' + token}), 'with the token\'s cookie the event socket stays open');
+  // The HoloPlay listener from off the machine: holoplay-core's info request over its WebSocket.
+  const {holoplayRaw} = require('./raw_clients.js');
+  const CBOR = require('cbor-js');
+  const info = Buffer.from(CBOR.encode({cmd: {info: {}}, bin: null}));
+  const infoReply = (r) => r.reply ? CBOR.decode(new Uint8Array(r.reply).buffer) : null;
+  for (const [what, headers] of [['no token', {}], ['a wrong token', {Authorization: 'Bearer ' + '0'.repeat(64)}],
+                                 ['a wrong cookie', {Cookie: 'lfd_token=' + 'f'.repeat(64)}]]) {
+    const r = await holoplayRaw(info, {host: address.address, headers});
+    check(!r.reply, `HoloPlay beyond loopback with ${what}: no answer, the connection ${r.closed ? 'closed' : 'timed out'}`);
+  }
+  for (const [what, headers] of [['Bearer', {Authorization: 'Bearer ' + token}], ['cookie', {Cookie: 'lfd_token=' + token}]]) {
+    const reply = infoReply(await holoplayRaw(info, {host: address.address, headers}));
+    check(reply && reply.error === 0 && reply.devices && reply.devices.length === 1,
+          `HoloPlay beyond loopback with the token (${what}): info answers the display`);
+  }
   // The browser: the login form, a wrong token, the right one, then the console.
   const tab = await browser.newPage();
   await tab.setBypassCSP(true);

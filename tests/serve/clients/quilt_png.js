@@ -22,22 +22,12 @@ function chunk(type, data) {
   return out;
 }
 
-// cols x rows tiles of tileW x tileH; view 0 is the bottom-left tile.
-function quiltPng(cols, rows, tileW, tileH) {
-  const w = cols * tileW, h = rows * tileH;
+// An RGB PNG of w x h whose pixel (x, y) (row 0 at the top) is colour(x, y) = [r, g, b].
+function rgbPng(w, h, colour) {
   const raw = Buffer.alloc((w * 3 + 1) * h);
   for (let y = 0; y < h; y++) {
     raw[y * (w * 3 + 1)] = 0;
-    for (let x = 0; x < w; x++) {
-      const col = Math.floor(x / tileW), rowFromBottom = rows - 1 - Math.floor(y / tileH);
-      const view = rowFromBottom * cols + col, views = cols * rows;
-      const u = (x % tileW) / tileW, v = (y % tileH) / tileH;
-      const bar = Math.abs(u - view / views) < 0.06;
-      const o = y * (w * 3 + 1) + 1 + x * 3;
-      raw[o] = bar ? 255 : Math.round(255 * u);
-      raw[o + 1] = bar ? 255 : Math.round(255 * v);
-      raw[o + 2] = bar ? 255 : Math.round(255 * view / views);
-    }
+    for (let x = 0; x < w; x++) raw.set(colour(x, y), y * (w * 3 + 1) + 1 + x * 3);
   }
   const ihdr = Buffer.alloc(13);
   ihdr.writeUInt32BE(w, 0);
@@ -47,4 +37,31 @@ function quiltPng(cols, rows, tileW, tileH) {
                         chunk('IDAT', zlib.deflateSync(raw)), chunk('IEND', Buffer.alloc(0))]);
 }
 
-module.exports = {quiltPng};
+// The view of quilt pixel (x, y) for cols x rows tiles of tileW x tileH; view 0 is the
+// bottom-left tile.
+function viewAt(x, y, cols, rows, tileW, tileH) {
+  return (rows - 1 - Math.floor(y / tileH)) * cols + Math.floor(x / tileW);
+}
+
+function quiltPng(cols, rows, tileW, tileH) {
+  const views = cols * rows;
+  return rgbPng(cols * tileW, rows * tileH, (x, y) => {
+    const view = viewAt(x, y, cols, rows, tileW, tileH);
+    const u = (x % tileW) / tileW, v = (y % tileH) / tileH;
+    if (Math.abs(u - view / views) < 0.06) return [255, 255, 255];  // the bar
+    return [Math.round(255 * u), Math.round(255 * v), Math.round(255 * view / views)];
+  });
+}
+
+// Each view one flat colour: red fading from view 0, blue rising to the last, green peaking at
+// the middle views. What an eye sees near an edge of the cone is the edge views' red and blue
+// (which of them dominates says which edge) with little green (docs/console.md, "Seen from").
+function viewColour(view, views) {
+  const t = view / (views - 1);
+  return [Math.round(255 * (1 - t)), Math.round(255 * (1 - Math.abs(2 * t - 1))), Math.round(255 * t)];
+}
+function viewColourQuiltPng(cols, rows, tileW, tileH) {
+  return rgbPng(cols * tileW, rows * tileH, (x, y) => viewColour(viewAt(x, y, cols, rows, tileW, tileH), cols * rows));
+}
+
+module.exports = {quiltPng, viewColourQuiltPng};

@@ -6,9 +6,10 @@ const http = require('http');
 const WebSocket = require(require.resolve('ws', {paths: [require.resolve('holoplay-core')]}));
 
 // Resolves {reply: Buffer} or {closed: true} or {timeout: true}.
-function holoplayRaw(payload, {origin, timeoutMs = 3000, rawFrame = false} = {}) {
+// `host`: another address than loopback (the --listen test); `headers`: e.g. the token's.
+function holoplayRaw(payload, {origin, timeoutMs = 3000, rawFrame = false, host = 'localhost', headers = {}} = {}) {
   return new Promise((resolve) => {
-    const ws = new WebSocket('ws://localhost:11222/driver', ['rep.sp.nanomsg.org'], origin ? {origin} : {});
+    const ws = new WebSocket(`ws://${host}:11222/driver`, ['rep.sp.nanomsg.org'], origin ? {origin, headers} : {headers});
     const timer = setTimeout(() => { ws.terminate(); resolve({timeout: true}); }, timeoutMs);
     ws.on('open', () => {
       if (rawFrame) return ws.send(payload);

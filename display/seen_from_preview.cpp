@@ -1,27 +1,30 @@
-#include "viewer/seen_from_preview.hpp"
+#include "display/seen_from_preview.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
 
-#include <glm/glm.hpp>
-
 #include "display/lens_optics.hpp"
+#include "display/lens_relations.hpp"
 #include "util/error.hpp"
 
-namespace lfd::viewer {
+namespace lfd::display {
 namespace {
+
+// A point or an eye in the display frame (metres).
+struct Point3 {
+  double x = 0, y = 0, z = 0;
+};
 
 // The one call into the optics: the light leaving panel point `on_panel` toward `eye`. The
 // lens has power across its lines only, so the direction across the slanted lines (horizontal
 // plus line_tilt times vertical) decides which view is seen.
-std::array<float, 3> light_toward_eye(const display::LensOptics& optics, double u, double v, const glm::dvec3& on_panel,
-                                      const glm::dvec3& eye) {
+std::array<float, 3> light_toward_eye(const LensOptics& optics, double u, double v, const Point3& on_panel,
+                                      const Point3& eye) {
   // Both directions: a slanted lens shows an eye above or below the point another view; and
   // through the display's cover layer the refracted one.
-  const glm::dvec3 d = eye - on_panel;
-  return optics.seen_toward(u, v, d.x, d.y, d.z);
+  return optics.seen_toward(u, v, eye.x - on_panel.x, eye.y - on_panel.y, eye.z - on_panel.z);
 }
 
 // For each of `cells` preview cells over `pixels` panel pixels: at most `most` panel pixels of
@@ -44,12 +47,6 @@ std::vector<std::vector<int>> footprint_cells(int cells, int pixels, int most) {
 
 }  // namespace
 
-bool seen_from_refresh_due(bool visible, bool changed, double seconds_since_last) {
-  if (!visible) return false;
-  if (seconds_since_last < 0) return true;
-  return changed && seconds_since_last >= kSeenFromMinIntervalS;
-}
-
 void SeenFromOptions::check() const {
   if (height_px < 2 || height_px > 4096) throw_input_error("seen-from preview: height: {} px (expected 2 to 4096)", height_px);
   if (pixels_across < 1 || pixels_across > 64)
@@ -59,19 +56,19 @@ void SeenFromOptions::check() const {
     throw_input_error("seen-from preview: psf: {} lens periods (expected 0 <= psf < 1)", psf_sigma_phase);
 }
 
-ImageF seen_from_preview(const display::LensModel& lens, const ImageF& panel, const SeenFromEye& eye,
+ImageF seen_from_preview(const LensModel& lens, const ImageF& panel, const SeenFromEye& eye,
                          const SeenFromOptions& options) {
   options.check();
-  display::check_panel_size(lens, panel);
+  check_panel_size(lens, panel);
   if (!(eye.distance_m > 0)) throw_input_error("seen-from preview: distance: {} m (expected > 0)", eye.distance_m);
   const auto& c = lens.calibration();
   const double width_m = c.width_m(), height_m = c.height_m();
   const int h = options.height_px;
   const int w = std::max(1, int(std::lround(h * width_m / height_m)));
   const double angle = eye.angle_deg * std::numbers::pi / 180.0;
-  const glm::dvec3 eye_m(eye.distance_m * std::sin(angle), eye.height_m, eye.distance_m * std::cos(angle));
-  const display::PhaseKernel kernel = display::LensOptics::make_kernel(lens, options.psf_sigma_phase);
-  const display::LensOptics optics(lens, panel, kernel);
+  const Point3 eye_m{eye.distance_m * std::sin(angle), eye.height_m, eye.distance_m * std::cos(angle)};
+  const PhaseKernel kernel = LensOptics::make_kernel(lens, options.psf_sigma_phase);
+  const LensOptics optics(lens, panel, kernel);
 
   // Toward one eye a whole lens shows one seen point Q (the phase that sends light there), and
   // each channel emits from a third of a pixel: a lens shows a channel fully or not at all, and
@@ -91,7 +88,7 @@ ImageF seen_from_preview(const display::LensModel& lens, const ImageF& panel, co
           // Screen coordinates as Looking Glass's: u right, v up (row 0 at the top).
           const double u = (panel_x + 0.5) / c.screen_w;
           const double v = 1.0 - (panel_row + 0.5) / c.screen_h;
-          const glm::dvec3 on_panel((u - 0.5) * width_m, (v - 0.5) * height_m, 0.0);
+          const Point3 on_panel{(u - 0.5) * width_m, (v - 0.5) * height_m, 0.0};
           const std::array<float, 3> light = light_toward_eye(optics, u, v, on_panel, eye_m);
           for (int ch = 0; ch < 3; ++ch) sum[ch] += light[ch];
         }
@@ -102,4 +99,11 @@ ImageF seen_from_preview(const display::LensModel& lens, const ImageF& panel, co
   return out;
 }
 
-}  // namespace lfd::viewer
+double seen_from_view_angle_deg(const LensModel& lens, double view, int views) {
+  if (views < 1 || !(view >= -0.5 && view <= views - 0.5))
+    throw_input_error("seen from: view {} of {} (expected -0.5 to {}, within the cone)", view, views, views - 0.5);
+  const double tan_theta = tan_of_seen_fraction((view + 0.5) / views, lens.calibration().view_cone_deg);
+  return std::atan(tan_theta) * 180.0 / std::numbers::pi;
+}
+
+}  // namespace lfd::display
