@@ -40,7 +40,7 @@
 # LFD_GPU_TABLE_SMOKE=zink proves the script on the CPU before a loan is spent on it: the same
 # steps and options on Mesa's zink over lavapipe (EGL surfaceless, no NVIDIA parts), at toy sizes
 # (1-6 thousand Gaussians, 5 views of 64 pixels, voxel levels 4 and 5, the direct steps on the Go
-# with planes 64 pixels high, one timed frame). Its
+# at 16 planes 64 pixels high, one timed frame). Its
 # figures measure nothing (docs/gpu.md "What zink found"); its exit codes say every step runs.
 set -uo pipefail
 out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
@@ -61,13 +61,14 @@ if [ -z "$smoke" ]; then
   sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
   million=1000000 direct_sizes=100000,1000000 raster_sizes=100000,1000000 large_sizes=3000000,6000000
   views=45 size=512 size_910=512x910 voxel_level=7 voxel_level_1m=10
-  direct_extra=()
+  direct_extra=() direct_chunks=16,64,256 shader_chunks=16,64
 else
   runs=${LFD_GPU_TABLE_RUNS:-1}
   sizes=${LFD_GPU_TABLE_SIZES:-1000,2000}
   million=2000 direct_sizes=1000,2000 raster_sizes=1000,2000 large_sizes=3000,6000
   views=5 size=64 size_910=64x114 voxel_level=4 voxel_level_1m=5
   direct_extra=(--calibration data/displays/go.visual.json --view-height 64)  # one panel, small planes
+  direct_chunks=16 shader_chunks=16  # the direct pass walks the whole panel per plane: slow on a CPU
 fi
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
@@ -165,13 +166,13 @@ for s in "${steps[@]}"; do
       step voxels-gl-1m "$run" bench voxels --backend gl --raster hardware,compute --level "$voxel_level_1m" --views "$views" --size "$size" --runs "$runs" \
         --json "$out/voxels-gl-1m.json" ;;
     direct-gl)
-      step direct-gl "$run" bench direct --backend gl --generated "$direct_sizes" --chunks 16,64,256 --runs "$runs" \
+      step direct-gl "$run" bench direct --backend gl --generated "$direct_sizes" --chunks "$direct_chunks" --runs "$runs" \
         --reference-views 0 --plane-major ${direct_extra[@]+"${direct_extra[@]}"} --json "$out/direct-gl.json" ;;
     direct-gl-shader)
-      step direct-gl-shader "$run" bench direct --backend gl --generated "$million" --chunks 16,64 --runs "$runs" \
+      step direct-gl-shader "$run" bench direct --backend gl --generated "$million" --chunks "$shader_chunks" --runs "$runs" \
         --reference-views 0 --direct-sampler shader ${direct_extra[@]+"${direct_extra[@]}"} --json "$out/direct-gl-shader.json" ;;
     direct-v2lf-gl)
-      step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level "$voxel_level,$voxel_level_1m" --chunks 16,64,256 \
+      step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level "$voxel_level,$voxel_level_1m" --chunks "$direct_chunks" \
         --runs "$runs" --reference-views 0 ${direct_extra[@]+"${direct_extra[@]}"} --json "$out/direct-v2lf-gl.json" ;;
     gpu-probe)
       step gpu-probe "$run" bench gpu-probe --runs "$runs" --json "$out/gpu-probe.json" ;;
