@@ -55,6 +55,7 @@ case "$smoke" in
   *) echo "gpu-table: LFD_GPU_TABLE_SMOKE must be zink or unset, not '$smoke'" >&2; exit 2 ;;
 esac
 limit=${LFD_GPU_TABLE_LIMIT:-150}
+[ -n "$smoke" ] && limit=${LFD_GPU_TABLE_LIMIT:-600}  # lavapipe compiles the voxel passes for minutes
 # The sizes each step runs at: the table's, or the smoke run's toy ones (same options otherwise).
 if [ -z "$smoke" ]; then
   runs=${LFD_GPU_TABLE_RUNS:-10}
