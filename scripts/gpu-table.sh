@@ -40,7 +40,7 @@
 # LFD_GPU_TABLE_SMOKE=zink proves the script on the CPU before a loan is spent on it: the same
 # steps and options on Mesa's zink over lavapipe (EGL surfaceless, no NVIDIA parts), at toy sizes
 # (1-6 thousand Gaussians, 5 views of 64 pixels, voxel levels 4 and 5, the direct steps on the Go
-# at 16 planes 64 pixels high, one timed frame). Its
+# at 16 planes 64 pixels high, one timed frame; 600 s a step unless LFD_GPU_TABLE_LIMIT). Its
 # figures measure nothing (docs/gpu.md "What zink found"); its exit codes say every step runs.
 set -uo pipefail
 out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
