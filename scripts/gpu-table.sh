@@ -37,32 +37,67 @@
 # The script's mechanics are tested without a GPU on a stub bundle (tests/scripts/gpu_table_test.sh).
 # LFD_GPU_TABLE_LIMIT (seconds, default 150) bounds each step; LFD_GPU_TABLE_RUNS (default 10) is
 # the timed frames per row, LFD_GPU_TABLE_SIZES (default 100000,1000000,3000000) render-gl's scenes.
+# LFD_GPU_TABLE_SMOKE=zink proves the script on the CPU before a loan is spent on it: the same
+# steps and options on Mesa's zink over lavapipe (EGL surfaceless, no NVIDIA parts), at toy sizes
+# (1-6 thousand Gaussians, 5 views of 64 pixels, voxel levels 4 and 5, the direct steps on the Go
+# at 16 planes 64 pixels high, one timed frame; 600 s a step unless LFD_GPU_TABLE_LIMIT). Its
+# figures measure nothing (docs/gpu.md "What zink found"); its exit codes say every step runs.
 set -uo pipefail
 out=${1:?usage: scripts/gpu-table.sh OUT_DIR [STEP...]}
 shift
 steps=("$@")
 [ ${#steps[@]} -gt 0 ] || steps=(tests render-gl gpu-frame gpu-sort voxels-gl voxels-gl-1m direct-gl direct-gl-shader direct-v2lf-gl \
   gpu-probe raster-gl raster-gl-910 raster-gl-large raster-gl-large-910)
+smoke=${LFD_GPU_TABLE_SMOKE:-}
+case "$smoke" in
+  "") ;;
+  zink) ;;
+  *) echo "gpu-table: LFD_GPU_TABLE_SMOKE must be zink or unset, not '$smoke'" >&2; exit 2 ;;
+esac
 limit=${LFD_GPU_TABLE_LIMIT:-150}
-runs=${LFD_GPU_TABLE_RUNS:-10}
-sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
+[ -n "$smoke" ] && limit=${LFD_GPU_TABLE_LIMIT:-600}  # lavapipe compiles the voxel passes for minutes
+# The sizes each step runs at: the table's, or the smoke run's toy ones (same options otherwise).
+if [ -z "$smoke" ]; then
+  runs=${LFD_GPU_TABLE_RUNS:-10}
+  sizes=${LFD_GPU_TABLE_SIZES:-100000,1000000,3000000}
+  million=1000000 direct_sizes=100000,1000000 raster_sizes=100000,1000000 large_sizes=3000000,6000000
+  views=45 size=512 size_910=512x910 voxel_level=7 voxel_level_1m=10
+  direct_extra=() direct_chunks=16,64,256 shader_chunks=16,64
+else
+  runs=${LFD_GPU_TABLE_RUNS:-1}
+  sizes=${LFD_GPU_TABLE_SIZES:-1000,2000}
+  million=2000 direct_sizes=1000,2000 raster_sizes=1000,2000 large_sizes=3000,6000
+  views=5 size=64 size_910=64x114 voxel_level=4 voxel_level_1m=5
+  direct_extra=(--calibration data/displays/go.visual.json --view-height 64)  # one panel, small planes
+  direct_chunks=16 shader_chunks=16  # the direct pass walks the whole panel per plane: slow on a CPU
+fi
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
 bundle=${LFD_BUNDLE_DIR:-bundle/lfd-renderer}  # another bundle folder (tests/scripts: a stub)
 run=$bundle/run.sh
 [ -x "$run" ] || { echo "gpu-table: $run missing: run scripts/bundle-renderer.sh first" >&2; exit 2; }
+if [ -n "$smoke" ]; then
+  # zink over lavapipe on Mesa's headless EGL (mesa-vulkan-drivers; scripts/install-test-deps.sh).
+  export EGL_PLATFORM=surfaceless LIBGL_ALWAYS_SOFTWARE=1 MESA_LOADER_DRIVER_OVERRIDE=zink
+  export XDG_RUNTIME_DIR=${XDG_RUNTIME_DIR:-/tmp}
 # grep reads all of ldconfig's output (no -q): under pipefail, grep -q leaving early would let
 # ldconfig die of SIGPIPE and the test fail at random.
-if ! ldconfig -p | grep 'libEGL.so.1 ' > /dev/null; then
+elif ! ldconfig -p | grep 'libEGL.so.1 ' > /dev/null; then
   ls .gl/*.deb >/dev/null 2>&1 || { echo "gpu-table: no libEGL and no .gl/*.deb (docs/performance.md)" >&2; exit 2; }
   for f in .gl/*.deb; do dpkg -x "$f" /; done
   ldconfig
 fi
-vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
-if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; fi
-unset EGL_PLATFORM  # the EGL device platform (the GPU), not Mesa's surfaceless one
+if [ -z "$smoke" ]; then
+  vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+  if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ -f "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; fi
+  unset EGL_PLATFORM  # the EGL device platform (the GPU), not Mesa's surfaceless one
+fi
 "$run" version | tee "$out/version.txt"
-nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv | tee "$out/gpu.txt" || true
+if [ -z "$smoke" ]; then
+  nvidia-smi --query-gpu=name,driver_version,memory.total --format=csv | tee "$out/gpu.txt" || true
+else
+  echo "smoke run on $smoke (no GPU; the figures measure nothing)" | tee "$out/gpu.txt"
+fi
 
 # One step: its command under the time limit (step_limit when set, else LFD_GPU_TABLE_LIMIT), its
 # output in OUT/STEP.md, a line in steps.txt.
@@ -97,17 +132,17 @@ export bundle
 # 45 views of SIZE (512 or the paper's 512x910). raster_step NAME SIZE SCENES RUNS.
 raster_step() {
   local step_limit=${LFD_GPU_TABLE_RASTER_LIMIT:-420}
-  step "$1" "$run" bench render --backend gl --raster hardware,compute --generated "$3" --views 45 --size "$2" \
+  step "$1" "$run" bench render --backend gl --raster hardware,compute --generated "$3" --views "$views" --size "$2" \
     --configs table1,chunks --chunks 64,256,512 --plane-scale 1 --runs "$4" --warmup 1 --png-runs 0 \
     --json "$out/$1.json"
 }
 raster_steps() {
   local large_runs=$(( runs < 3 ? runs : 3 ))
   case "$1" in
-    raster-gl) raster_step raster-gl 512 100000,1000000 "$runs" ;;
-    raster-gl-910) raster_step raster-gl-910 512x910 100000,1000000 "$runs" ;;
-    raster-gl-large) raster_step raster-gl-large 512 3000000,6000000 "$large_runs" ;;
-    raster-gl-large-910) raster_step raster-gl-large-910 512x910 3000000,6000000 "$large_runs" ;;
+    raster-gl) raster_step raster-gl "$size" "$raster_sizes" "$runs" ;;
+    raster-gl-910) raster_step raster-gl-910 "$size_910" "$raster_sizes" "$runs" ;;
+    raster-gl-large) raster_step raster-gl-large "$size" "$large_sizes" "$large_runs" ;;
+    raster-gl-large-910) raster_step raster-gl-large-910 "$size_910" "$large_sizes" "$large_runs" ;;
     *) return 1 ;;
   esac
 }
@@ -117,29 +152,29 @@ for s in "${steps[@]}"; do
     tests)
       if [ -d "$bundle/tests" ]; then step tests bash -c bundled_tests; else echo "== tests: none in the bundle"; fi ;;
     render-gl)
-      step render-gl "$run" bench render --backend gl --generated "$sizes" --views 45 --size 512 \
+      step render-gl "$run" bench render --backend gl --generated "$sizes" --views "$views" --size "$size" \
         --runs "$runs" --png-runs 0 --json "$out/render-gl.json" ;;
     gpu-frame)
-      step gpu-frame "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs "$runs" --warmup 2 \
+      step gpu-frame "$run" bench gpu-frame --generated "$million" --views "$views" --size "$size" --runs "$runs" --warmup 2 \
         --batch 8 --swizzle-views 1,4,8 --json "$out/gpu-frame.json" ;;
     gpu-sort)
-      step gpu-sort "$run" bench gpu-frame --generated 1000000 --views 45 --size 512 --runs "$runs" --warmup 2 \
+      step gpu-sort "$run" bench gpu-frame --generated "$million" --views "$views" --size "$size" --runs "$runs" --warmup 2 \
         --sort-only --zoom 2 --json "$out/gpu-sort.json" ;;
     voxels-gl)
-      step voxels-gl "$run" bench voxels --backend gl --raster hardware,compute --level 7 --views 45 --size 512 --runs "$runs" \
+      step voxels-gl "$run" bench voxels --backend gl --raster hardware,compute --level "$voxel_level" --views "$views" --size "$size" --runs "$runs" \
         --json "$out/voxels-gl.json" ;;
     voxels-gl-1m)
-      step voxels-gl-1m "$run" bench voxels --backend gl --raster hardware,compute --level 10 --views 45 --size 512 --runs "$runs" \
+      step voxels-gl-1m "$run" bench voxels --backend gl --raster hardware,compute --level "$voxel_level_1m" --views "$views" --size "$size" --runs "$runs" \
         --json "$out/voxels-gl-1m.json" ;;
     direct-gl)
-      step direct-gl "$run" bench direct --backend gl --generated 100000,1000000 --chunks 16,64,256 --runs "$runs" \
-        --reference-views 0 --plane-major --json "$out/direct-gl.json" ;;
+      step direct-gl "$run" bench direct --backend gl --generated "$direct_sizes" --chunks "$direct_chunks" --runs "$runs" \
+        --reference-views 0 --plane-major ${direct_extra[@]+"${direct_extra[@]}"} --json "$out/direct-gl.json" ;;
     direct-gl-shader)
-      step direct-gl-shader "$run" bench direct --backend gl --generated 1000000 --chunks 16,64 --runs "$runs" \
-        --reference-views 0 --direct-sampler shader --json "$out/direct-gl-shader.json" ;;
+      step direct-gl-shader "$run" bench direct --backend gl --generated "$million" --chunks "$shader_chunks" --runs "$runs" \
+        --reference-views 0 --direct-sampler shader ${direct_extra[@]+"${direct_extra[@]}"} --json "$out/direct-gl-shader.json" ;;
     direct-v2lf-gl)
-      step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level 7,10 --chunks 16,64,256 \
-        --runs "$runs" --reference-views 0 --json "$out/direct-v2lf-gl.json" ;;
+      step direct-v2lf-gl "$run" bench direct --backend gl --method v2lf --voxel-level "$voxel_level,$voxel_level_1m" --chunks "$direct_chunks" \
+        --runs "$runs" --reference-views 0 ${direct_extra[@]+"${direct_extra[@]}"} --json "$out/direct-v2lf-gl.json" ;;
     gpu-probe)
       step gpu-probe "$run" bench gpu-probe --runs "$runs" --json "$out/gpu-probe.json" ;;
     raster-gl|raster-gl-910|raster-gl-large|raster-gl-large-910) raster_steps "$s" ;;

@@ -1,5 +1,6 @@
 #include "gpu/gl/gl_context.hpp"
 
+#include "gpu/gl/driver_workarounds.hpp"
 #include "gpu/gl/gl_debug.hpp"
 #include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/gl_program.hpp"
@@ -146,6 +147,7 @@ GlInfo query_gl_info(const std::string& platform) {
 
 HeadlessContext::HeadlessContext(GlRequest request) {
   if (!epoxy_has_egl()) throw GlUnavailable("no GL: libEGL could not be loaded");
+  apply_driver_workarounds();
   const char* env = std::getenv("EGL_PLATFORM");
   const bool surfaceless_first = env && std::string(env) == "surfaceless";
 

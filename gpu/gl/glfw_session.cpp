@@ -5,6 +5,7 @@
 
 #include <iostream>
 
+#include "gpu/gl/driver_workarounds.hpp"
 #include "util/error.hpp"
 
 namespace lfd::gpu {
@@ -33,6 +34,7 @@ GlfwSession::GlfwSession(const std::string& hint) {
   glfwSetErrorCallback(remember_error);
   owns_glfw_ = !glfw_already_initialized();
   last_glfw_error().clear();
+  apply_driver_workarounds();
   if (!glfwInit())
     throw_input_error("no display: {}; {}",
                       last_error().empty() ? "GLFW could not start" : last_error(), hint);

@@ -12,6 +12,7 @@ mkdir -p "$bundle/tests" "$bundle/lib"
 cat > "$bundle/run.sh" <<'EOF'
 #!/usr/bin/env bash
 echo "stub lfd $*"
+echo "stub driver ${MESA_LOADER_DRIVER_OVERRIDE:-default}"
 previous=""
 for a in "$@"; do
   [ "$previous" = --json ] && echo '{}' > "$a"
@@ -83,4 +84,23 @@ LFD_BUNDLE_DIR=$work/none bash "$root/scripts/gpu-table.sh" "$out" > /dev/null 2
 rc=$?
 set -e
 [ "$rc" = 2 ] && grep -q "missing" "$work/err" || fail "a missing bundle exited $rc: $(cat "$work/err")"
-echo "gpu_table_test: every step ran under its limit (exit codes 0, 124, 3 as planted), named and unknown steps, no bundle"
+
+# The zink smoke run: the same steps on zink at toy sizes, one timed frame; a bad value is refused.
+rm -rf "$out"
+LFD_BUNDLE_DIR=$bundle LFD_GPU_TABLE_SMOKE=zink LFD_GPU_TABLE_LIMIT=2 bash "$root/scripts/gpu-table.sh" "$out" \
+  > "$work/log" 2>&1 || fail "the smoke run exited $?: $(tail -3 "$work/log")"
+[ "$(grep -c '^== .*: exit' "$out/steps.txt")" = 14 ] || fail "the smoke run did not run every step: $(cat "$out/steps.txt")"
+grep -q "stub driver zink" "$out/render-gl.md" || fail "the smoke run's lfd was not on zink: $(cat "$out/render-gl.md")"
+grep -q -- "bench render --backend gl --generated 1000,2000 --views 5 --size 64 --runs 1 " "$out/render-gl.md" \
+  || fail "the smoke run's render-gl was not at toy sizes: $(head -1 "$out/render-gl.md")"
+grep -q -- "--generated 3000,6000 --views 5 --size 64x114 " "$out/raster-gl-large-910.md" \
+  || fail "the smoke run's raster-gl-large-910: $(head -1 "$out/raster-gl-large-910.md")"
+grep -q -- "--method v2lf --voxel-level 4,5 .*--calibration data/displays/go.visual.json --view-height 64 " \
+  "$out/direct-v2lf-gl.md" || fail "the smoke run's direct-v2lf-gl: $(head -1 "$out/direct-v2lf-gl.md")"
+grep -q "smoke run on zink" "$out/gpu.txt" || fail "gpu.txt: $(cat "$out/gpu.txt")"
+set +e
+LFD_BUNDLE_DIR=$bundle LFD_GPU_TABLE_SMOKE=nvidia bash "$root/scripts/gpu-table.sh" "$out" > /dev/null 2> "$work/err"
+rc=$?
+set -e
+[ "$rc" = 2 ] && grep -q "LFD_GPU_TABLE_SMOKE" "$work/err" || fail "LFD_GPU_TABLE_SMOKE=nvidia exited $rc: $(cat "$work/err")"
+echo "gpu_table_test: every step ran under its limit (exit codes 0, 124, 3 as planted), named and unknown steps, no bundle, the zink smoke run"
