@@ -2,6 +2,8 @@
 // (docs/bridge-inproc.md "How clients find it"). Thin: bridge_inproc/ does the work.
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -106,9 +108,9 @@ int RunBridgeStatus(int argc, char** argv) {
   for (const auto& e : entries)
     fmt::print("  {} {} {}{}  ({})\n", e.lfd ? "lfd   " : "other ", e.version.empty() ? "-" : e.version, e.path,
                e.library_present ? "" : " [no libbridge_inproc.so there]", e.file);
-  fmt::print("displays: {}{}, gl {}  (settings {})\n",
-             settings.calibrations.empty() ? "" : fmt::format("{} ", fmt::join(settings.calibrations, ", ")),
-             settings.device.empty() ? "" : "device " + settings.device, settings.gl, settings_path.string());
+  std::vector<std::string> shown = settings.calibrations;
+  if (!settings.device.empty()) shown.push_back("device " + settings.device);
+  fmt::print("displays: {}; gl {}  (settings {})\n", fmt::join(shown, ", "), settings.gl, settings_path.string());
   return 0;
 }
 
