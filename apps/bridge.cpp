@@ -2,10 +2,13 @@
 // (docs/bridge-inproc.md "How clients find it"). Thin: bridge_inproc/ does the work.
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "apps/backend.hpp"
 #include "apps/cli.hpp"
 #include "apps/commands.hpp"
 #include "bridge_inproc/bridge_registration.hpp"
@@ -27,19 +30,22 @@ int RunBridgeRegister(int argc, char** argv) {
                "\nExamples:\n"
                "  lfd bridge register --device auto\n"
                "  lfd bridge register --calibration visual.json --monitor HDMI-1\n"
+               "  lfd bridge register --device auto --gl es      # OpenGL ES 3.1 (a Raspberry Pi; docs/arm.md)\n"
                "  lfd bridge register --calibration calibration.json --library /opt/lfd/lib/lfd/lfd-bridge-2.6.2",
                "bridge register"};
-  std::string calibration, device, monitor = "LKG", library;
+  std::string calibration, device, monitor = "LKG", library, gl;
   auto* file_option = app.add_option("--calibration", calibration, "calibration.json or visual.json of the display");
   app.add_option("--device", device, "an attached Looking Glass: auto or its serial (the default: auto)")
       ->excludes(file_option);
   app.add_option("--monitor", monitor, "start of the display's monitor name")->capture_default_str();
   app.add_option("--library", library, "the folder holding libbridge_inproc.so (default: the one built or "
                                        "installed with this program)");
+  add_gl_option(app, gl);  // the library's own contexts; LFD_GL in a client's environment overrides it
   if (auto code = parse(app, argc, argv)) return *code;
 
   bridge::LfdBridgeSettings settings;
   settings.monitor = monitor;
+  settings.gl = gl;
   if (!calibration.empty()) {
     display::read_calibration(calibration);  // a file that cannot be read is refused now
     settings.calibrations.push_back(fs::absolute(calibration).string());
@@ -53,10 +59,10 @@ int RunBridgeRegister(int argc, char** argv) {
   bridge::register_library(files, library_dir);
   const fs::path settings_path = bridge::lfd_settings_path();
   bridge::write_lfd_settings(settings_path, settings);
-  fmt::print("registered {} as Bridge {}\n  in {}\n  in {}\n  in {}\ndisplay: {} (settings {})\n",
+  fmt::print("registered {} as Bridge {}\n  in {}\n  in {}\n  in {}\ndisplay: {}, gl {} (settings {})\n",
              library_dir.string(), bridge::bridge_version_text(), files.python_settings.string(),
              files.legacy_list.string(), files.native_settings.string(),
-             calibration.empty() ? "device " + settings.device : settings.calibrations.front(),
+             calibration.empty() ? "device " + settings.device : settings.calibrations.front(), settings.gl,
              settings_path.string());
   return 0;
 }
@@ -94,7 +100,7 @@ int RunBridgeStatus(int argc, char** argv) {
       j["entries"].push_back({{"file", e.file}, {"version", e.version}, {"path", e.path}, {"lfd", e.lfd},
                               {"library_present", e.library_present}});
     j["settings"] = {{"file", settings_path.string()}, {"calibrations", settings.calibrations},
-                     {"device", settings.device}, {"monitor", settings.monitor}};
+                     {"device", settings.device}, {"monitor", settings.monitor}, {"gl", settings.gl}};
     std::cout << j.dump(2) << "\n";
     return 0;
   }
@@ -102,9 +108,9 @@ int RunBridgeStatus(int argc, char** argv) {
   for (const auto& e : entries)
     fmt::print("  {} {} {}{}  ({})\n", e.lfd ? "lfd   " : "other ", e.version.empty() ? "-" : e.version, e.path,
                e.library_present ? "" : " [no libbridge_inproc.so there]", e.file);
-  fmt::print("displays: {}{}  (settings {})\n",
-             settings.calibrations.empty() ? "" : fmt::format("{} ", fmt::join(settings.calibrations, ", ")),
-             settings.device.empty() ? "" : "device " + settings.device, settings_path.string());
+  std::vector<std::string> shown = settings.calibrations;
+  if (!settings.device.empty()) shown.push_back("device " + settings.device);
+  fmt::print("displays: {}; gl {}  (settings {})\n", fmt::join(shown, ", "), settings.gl, settings_path.string());
   return 0;
 }
 
@@ -115,7 +121,7 @@ int RunBridge(int argc, char** argv) {
       "Bridge SDK clients on lfd (docs/bridge-inproc.md): lfd's libbridge_inproc where the vendor's\n"
       "Python SDK and native samples look for Bridge.\n"
       "\nUsage:\n"
-      "  lfd bridge register [--calibration C.json | --device auto] [--monitor NAME] [--library DIR]\n"
+      "  lfd bridge register [--calibration C.json | --device auto] [--monitor NAME] [--gl auto|desktop|es] [--library DIR]\n"
       "  lfd bridge unregister\n"
       "  lfd bridge status [--json]\n";
   static constexpr Subcommand kSubcommands[] = {{"register", RunBridgeRegister}, {"unregister", RunBridgeUnregister}, {"status", RunBridgeStatus}};

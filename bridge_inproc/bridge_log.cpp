@@ -8,11 +8,14 @@ namespace lfd::bridge {
 
 void refuse(const std::string& reason) { throw BadCall(reason); }
 
-void log_line(const std::string& call, const std::string& reason) {
-  static std::mutex mutex;
-  const std::string line = "bridge_inproc: " + call + ": " + reason + "\n";
-  std::lock_guard lock(mutex);
-  std::fputs(line.c_str(), stderr);
+namespace {
+
+std::mutex log_mutex;
+
+void write_line(const std::string& call, const std::string& text, bool to_stderr) {
+  const std::string line = "bridge_inproc: " + call + ": " + text + "\n";
+  std::lock_guard lock(log_mutex);
+  if (to_stderr) std::fputs(line.c_str(), stderr);
   if (const char* path = std::getenv("LFD_BRIDGE_LOG"); path && *path) {
     if (std::FILE* f = std::fopen(path, "a")) {
       std::fputs(line.c_str(), f);
@@ -20,5 +23,11 @@ void log_line(const std::string& call, const std::string& reason) {
     }
   }
 }
+
+}  // namespace
+
+void log_line(const std::string& call, const std::string& reason) { write_line(call, reason, true); }
+
+void log_detail(const std::string& call, const std::string& text) { write_line(call, text, false); }
 
 }  // namespace lfd::bridge

@@ -17,5 +17,8 @@ class BadCall : public std::runtime_error {
 
 // "bridge_inproc: <call>: <reason>" on stderr and in LFD_BRIDGE_LOG. Thread-safe.
 void log_line(const std::string& call, const std::string& reason);
+// The same line in LFD_BRIDGE_LOG only: what the library did that a client need not see on its
+// stderr (which GL a window's context speaks). Thread-safe.
+void log_detail(const std::string& call, const std::string& text);
 
 }  // namespace lfd::bridge

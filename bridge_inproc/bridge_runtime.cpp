@@ -1,5 +1,7 @@
 #include "bridge_inproc/bridge_runtime.hpp"
 
+#include <utility>
+
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
 
@@ -27,7 +29,10 @@ void Runtime::initialize(const std::string& app_name) {
   std::lock_guard lock(mutex_);
   if (initialized_) return;  // a second call changes nothing, as Bridge's
   const std::filesystem::path settings_path = lfd_settings_path();
-  displays_ = find_displays(read_lfd_settings(settings_path));
+  const LfdBridgeSettings settings = read_lfd_settings(settings_path);
+  gl_request_ = library_gl_request(settings);
+  es_notice_given_ = false;
+  displays_ = find_displays(settings);
   app_name_ = app_name;
   gl_thread_ = std::make_unique<GlThread>();
   initialized_ = true;
@@ -128,8 +133,8 @@ unsigned long Runtime::make_window(unsigned long display_index, bool offscreen) 
   record.gl = thread->call([&] {
     if (!offscreen && !glfw_)
       glfw_ = std::make_unique<gpu::GlfwSession>("the Bridge window needs the desktop session the display is on");
-    return std::make_shared<BridgeWindow>(offscreen ? nullptr : glfw_.get(), record.display.calibration,
-                                          record.display.monitor_prefix);
+    return open_window(offscreen ? nullptr : glfw_.get(), record.display,
+                       offscreen ? "instance_offscreen_window_gl" : "instance_window_gl");
   });
   record.placement = record.gl->placement();
   return add_window(std::move(record));
@@ -151,9 +156,20 @@ unsigned long Runtime::make_offscreen_window(int width, int height, const std::s
     require_initialized();
     thread = gl_thread_.get();
   }
-  record.gl = thread->call([&] { return std::make_shared<BridgeWindow>(nullptr, record.display.calibration, ""); });
+  record.gl = thread->call([&] { return open_window(nullptr, record.display, "instance_offscreen_window"); });
   record.placement = record.gl->placement();
   return add_window(std::move(record));
+}
+
+std::shared_ptr<BridgeWindow> Runtime::open_window(const gpu::GlfwSession* session, const BridgeDisplay& display,
+                                                  const std::string& call) {
+  // gl_request_ is set once by initialize, before the drawing thread exists.
+  auto window = std::make_shared<BridgeWindow>(session, display.calibration, session ? display.monitor_prefix : "",
+                                               gl_request_);
+  if (!window->desktop_unavailable().empty() && !std::exchange(es_notice_given_, true))
+    log_line(call, gpu::es_fallback_notice(window->desktop_unavailable()));
+  log_detail(call, "gl: " + window->gl_summary());
+  return window;
 }
 
 WindowRecord Runtime::window(unsigned long handle) const {

@@ -74,10 +74,15 @@ class Runtime {
   void require_initialized() const;
   std::shared_ptr<BridgeWindow> gl_window(unsigned long handle) const;
   unsigned long add_window(WindowRecord record);
+  // On the drawing thread: the window, its GL said in the log (the ES fallback notice on stderr).
+  std::shared_ptr<BridgeWindow> open_window(const gpu::GlfwSession* session, const BridgeDisplay& display,
+                                            const std::string& call);
 
   mutable std::mutex mutex_;
   bool initialized_ = false;
   std::string app_name_;
+  gpu::GlRequest gl_request_ = gpu::GlRequest::kAuto;  // lfd's settings' "gl", LFD_GL over it
+  bool es_notice_given_ = false;  // the ES fallback notice, once per initialize (drawing thread)
   std::vector<BridgeDisplay> displays_;
   std::map<unsigned long, WindowRecord> windows_;
   unsigned long next_handle_ = 1;

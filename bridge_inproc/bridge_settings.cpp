@@ -26,6 +26,8 @@ LfdBridgeSettings parse_lfd_settings(const std::string& text, const std::string&
   };
   string_field("device", s.device);
   string_field("monitor", s.monitor);
+  string_field("gl", s.gl);
+  gpu::parse_gl_request(s.gl, name + ": gl");  // refused here, not at the first window
   if (root.contains("calibrations")) {
     const auto& list = root["calibrations"];
     if (!list.is_array()) throw_input_error("{}: calibrations: not an array", name);
@@ -42,11 +44,17 @@ LfdBridgeSettings read_lfd_settings(const std::filesystem::path& path) {
   return parse_lfd_settings(read_text_file(path), path.string());
 }
 
+gpu::GlRequest library_gl_request(const LfdBridgeSettings& settings) {
+  if (const char* env = std::getenv("LFD_GL"); env && *env) return gpu::gl_request_from_env();
+  return gpu::parse_gl_request(settings.gl, "gl");
+}
+
 void write_lfd_settings(const std::filesystem::path& path, const LfdBridgeSettings& settings) {
   nlohmann::ordered_json root;
   root["calibrations"] = settings.calibrations;
   root["device"] = settings.device;
   root["monitor"] = settings.monitor;
+  root["gl"] = settings.gl;
   write_text_atomic(path, root.dump(2) + "\n");
 }
 

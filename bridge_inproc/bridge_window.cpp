@@ -34,27 +34,31 @@ class BridgeWindow::Current {
 };
 
 BridgeWindow::BridgeWindow(const gpu::GlfwSession* session, const display::Calibration& calibration,
-                           const std::string& monitor_prefix)
+                           const std::string& monitor_prefix, gpu::GlRequest gl)
     : calibration_(calibration) {
   const int w = calibration.display.screen_w, h = calibration.display.screen_h;
   placement_.width = w;
   placement_.height = h;
   if (session) {
     GLFWmonitor* monitor = session->display_monitor_or_none(monitor_prefix, w, h);
-    window_ = std::make_unique<gpu::DisplayWindow>(*session, monitor, w, h, std::max(w, h));
+    window_ = std::make_unique<gpu::DisplayWindow>(*session, monitor, w, h, std::max(w, h), gl);
+    desktop_unavailable_ = window_->desktop_unavailable();
     placement_.on_display = window_->on_display();
     glfwGetWindowPos(window_->handle(), &placement_.x, &placement_.y);
     glfwSetWindowTitle(window_->handle(), "lfd bridge");
   } else {
-    headless_ = std::make_unique<gpu::HeadlessContext>();
+    headless_ = std::make_unique<gpu::HeadlessContext>(gl);
+    desktop_unavailable_ = headless_->info().desktop_unavailable;
   }
   Current current(*this);
+  gl_summary_ = gpu::query_gl_info(window_ ? "GLFW window" : "EGL headless").summary();
+  if (gpu::current_gl_is_es()) gl_summary_ += " [OpenGL ES path]";
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &placement_.max_texture_size);
   panel_ = gpu::Texture(GL_RGBA8, w, h);
   const std::vector<uint8_t> black(size_t(w) * h * 4, 0);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glTextureSubImage2D(panel_.id(), 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, black.data());
+  gpu::upload_texture_2d(panel_, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, black.data());
 }
 
 BridgeWindow::~BridgeWindow() {
@@ -70,8 +74,8 @@ void BridgeWindow::upload(gpu::Texture& texture, const RgbaPixels& pixels) {
   if (texture.width() != pixels.width || texture.height() != pixels.height)
     texture = gpu::Texture(GL_RGBA8, pixels.width, pixels.height);
   texture.set_filter(GL_LINEAR);
-  glTextureSubImage2D(texture.id(), 0, 0, 0, pixels.width, pixels.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                      pixels.bytes.data());
+  gpu::upload_texture_2d(texture, 0, 0, pixels.width, pixels.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                         pixels.bytes.data());
 }
 
 void BridgeWindow::interlace_and_show(const render::QuiltLayout& layout) {
@@ -123,9 +127,11 @@ RgbaPixels BridgeWindow::read_panel() {
   RgbaPixels out;
   out.width = panel_.width();
   out.height = panel_.height();
-  out.bytes.resize(size_t(out.width) * out.height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(panel_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(out.bytes.size()), out.bytes.data());
+  // Read as floats (both GLs have the wrapper); an RGBA8 texel's k/255 comes back to k exactly.
+  const std::vector<float> texels = gpu::read_texture_rgba(panel_);
+  out.bytes.resize(texels.size());
+  for (size_t i = 0; i < texels.size(); ++i)
+    out.bytes[i] = uint8_t(std::lround(std::clamp(texels[i], 0.0f, 1.0f) * 255.0f));
   return out;
 }
 

@@ -29,13 +29,18 @@ struct WindowPlacement {
 class BridgeWindow {
  public:
   // `session` null: an offscreen window. InputError when no GL context or window can be made.
+  // `gl`: the OpenGL of its context (docs/arm.md): desktop 4.5, ES 3.1, or auto (desktop, else ES).
   BridgeWindow(const gpu::GlfwSession* session, const display::Calibration& calibration,
-               const std::string& monitor_prefix);
+               const std::string& monitor_prefix, gpu::GlRequest gl);
   ~BridgeWindow();
   BridgeWindow(const BridgeWindow&) = delete;
   BridgeWindow& operator=(const BridgeWindow&) = delete;
 
   const WindowPlacement& placement() const { return placement_; }
+  // Which GL the context speaks ("llvmpipe (...) (OpenGL ES 3.2 Mesa ...) [OpenGL ES path]"), and
+  // why desktop OpenGL 4.5 could not be made when auto took ES ("" otherwise).
+  const std::string& gl_summary() const { return gl_summary_; }
+  const std::string& desktop_unavailable() const { return desktop_unavailable_; }
 
   // `quilt`: RGBA8, rows bottom-up, of layout.width x layout.height. `zoom` != 1 magnifies (or
   // shrinks) each view about its centre first.
@@ -56,6 +61,7 @@ class BridgeWindow {
   std::unique_ptr<gpu::DisplayWindow> window_;
   std::unique_ptr<gpu::HeadlessContext> headless_;
   WindowPlacement placement_;
+  std::string gl_summary_, desktop_unavailable_;
   std::unique_ptr<gpu::GlInterlacer> interlacer_;
   render::QuiltLayout interlacer_layout_;
   std::unique_ptr<rgbd::GlRgbdViews> rgbd_views_;

@@ -2,6 +2,7 @@
 // against the published test vector, the C API's strings, the vendor clients' settings files, the
 // drawing thread's newest-frame rule.
 #include <atomic>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <future>
@@ -127,14 +128,40 @@ TEST(LfdSettings, RoundTripAndBadFieldsNamed) {
   s.calibrations = {"/a/visual.json"};
   s.device = "";
   s.monitor = "HDMI";
+  s.gl = "es";
   write_lfd_settings(dir / "bridge.json", s);
   const LfdBridgeSettings back = read_lfd_settings(dir / "bridge.json");
   EXPECT_EQ(back.calibrations, s.calibrations);
   EXPECT_EQ(back.device, "");
   EXPECT_EQ(back.monitor, "HDMI");
+  EXPECT_EQ(back.gl, "es");
   EXPECT_EQ(read_lfd_settings(dir / "absent.json").device, "auto");
+  EXPECT_EQ(read_lfd_settings(dir / "absent.json").gl, "auto");
   EXPECT_THROW(parse_lfd_settings(R"({"calibrations": "x"})", "f"), InputError);
   EXPECT_THROW(parse_lfd_settings(R"({"device": 3})", "f"), InputError);
+  try {
+    parse_lfd_settings(R"({"gl": "vulkan"})", "f.json");
+    ADD_FAILURE() << "a gl that is not auto, desktop or es was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("f.json: gl: 'vulkan'"), std::string::npos) << e.what();
+  }
+}
+
+// docs/arm.md: the library's contexts follow LFD_GL when it is set, else the settings' "gl".
+TEST(LfdSettings, LfdGlOverridesTheSettingsGl) {
+  const char* saved = std::getenv("LFD_GL");
+  const std::string before = saved ? saved : "";
+  LfdBridgeSettings s;
+  s.gl = "es";
+  unsetenv("LFD_GL");
+  EXPECT_EQ(library_gl_request(s), gpu::GlRequest::kEs);
+  setenv("LFD_GL", "desktop", 1);
+  EXPECT_EQ(library_gl_request(s), gpu::GlRequest::kDesktop);
+  setenv("LFD_GL", "", 1);
+  EXPECT_EQ(library_gl_request(s), gpu::GlRequest::kEs);
+  setenv("LFD_GL", "metal", 1);
+  EXPECT_THROW(library_gl_request(s), InputError);
+  if (saved) setenv("LFD_GL", before.c_str(), 1); else unsetenv("LFD_GL");
 }
 
 TEST(GlThread, TheNewestWaitingFrameReplacesAnOlderOne) {
