@@ -141,9 +141,12 @@ void HoloPlayServer::serve(const std::shared_ptr<Connection>& c) {
     if (!admitted) {
       reply = HoloPlayProtocol::busy_reply("busy: the service is handling as much content as it holds; try again");
     } else {
+      // The service's own work (a decode behind others) is not held to the client's deadline.
+      c->no_deadline();
       reply = handle_in_lane(content ? *content_lane_ : *small_lane_, std::move(message), *header, std::move(held));
       if (content) --content_in_flight_;
       if (reply.empty()) return;  // stopping
+      c->expire_after(limits_.io_timeout_s);
     }
     const std::array<asio::const_buffer, 2> out{asio::buffer(id), asio::buffer(reply)};
     ws.write(out, ec);

@@ -19,8 +19,9 @@ struct HoloPlayServer::Connection {
   boost::asio::ip::tcp::socket socket;
   bool closed = false;  // set under the server's connections mutex before the socket closes
 
-  // A deadline while a handshake, a message or a reply is under way; none while idle between
-  // requests (holoplay-core keeps its connection for the app's life).
+  // A deadline while a handshake, a message or a reply is on the wire; none while idle between
+  // requests (holoplay-core keeps its connection for the app's life) or while the service
+  // handles one (a decode may wait behind others).
   void expire_after(int seconds) {
     deadline_ms_ = now_ms() + std::int64_t{seconds} * 1000;
   }
