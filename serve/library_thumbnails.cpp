@@ -21,24 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string png_bytes(const Image8& image) {
-  char* data = nullptr;
-  std::size_t size = 0;
-  std::FILE* memory = open_memstream(&data, &size);
-  if (!memory) throw std::runtime_error("thumbnail: no memory stream for the PNG");
-  try {
-    png::encode(memory, "thumbnail", image);
-  } catch (...) {
-    std::fclose(memory);
-    std::free(data);
-    throw;
-  }
-  std::fclose(memory);
-  std::string bytes(data, size);
-  std::free(data);
-  return bytes;
-}
-
 // The part of `picture` at (x, y) of w x h.
 Image8 crop(const Image8& picture, int x, int y, int w, int h) {
   Image8 out(w, h, picture.channels);
@@ -138,11 +120,11 @@ std::string LibraryThumbnails::make(const LibraryItem& item) {
     media::VideoDecoder video(item.path, {.try_hardware = false, .threads = 1});
     const auto frame = video.next_frame();
     if (!frame) throw_input_error("{}: no frame to make a thumbnail of", item.name);
-    return png_bytes(shrink_to_thumbnail(centre_view(media::yuv_to_rgb(*frame), item)));
+    return png::encode_to_bytes("thumbnail", shrink_to_thumbnail(centre_view(media::yuv_to_rgb(*frame), item)));
   }
   const Image8 picture = media::decode_image(media::read_file_bytes(item.path), item.name);
-  if (item.kind == "quilt") return png_bytes(shrink_to_thumbnail(centre_view(picture, item)));
-  return png_bytes(shrink_to_thumbnail(picture));  // an RGB-D photo: colour and depth side by side
+  if (item.kind == "quilt") return png::encode_to_bytes("thumbnail", shrink_to_thumbnail(centre_view(picture, item)));
+  return png::encode_to_bytes("thumbnail", shrink_to_thumbnail(picture));  // an RGB-D photo: colour and depth side by side
 }
 
 }  // namespace lfd::serve

@@ -21,24 +21,6 @@ struct RenderingTurn {
   ~RenderingTurn() { flag = false; }
 };
 
-std::string png_bytes(const Image8& image) {
-  char* data = nullptr;
-  std::size_t size = 0;
-  std::FILE* memory = open_memstream(&data, &size);
-  if (!memory) throw std::runtime_error("seen from: no memory stream for the PNG");
-  try {
-    png::encode(memory, "seen from", image);
-  } catch (...) {
-    std::fclose(memory);
-    std::free(data);
-    throw;
-  }
-  std::fclose(memory);  // sets data and size
-  std::string bytes(data, size);
-  std::free(data);
-  return bytes;
-}
-
 }  // namespace
 
 SeenFromRenderer::SeenFromRenderer(DisplayService& displays, MemoryBudget& budget)
@@ -93,7 +75,7 @@ std::string SeenFromRenderer::png(int display, double angle_deg, int height_px) 
   options.psf_sigma_phase = d.calibration.phase_blur_sigma.value_or(display::kDefaultPhaseBlurSigma);
   display::SeenFromEye eye;
   eye.angle_deg = angle_deg;
-  return png_bytes(to_uint8(display::seen_from_preview(lens, to_float(*panel), eye, options)));
+  return png::encode_to_bytes("seen from", to_uint8(display::seen_from_preview(lens, to_float(*panel), eye, options)));
 }
 
 }  // namespace lfd::serve

@@ -8,6 +8,7 @@
 
 #include <csetjmp>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <vector>
 
@@ -185,6 +186,24 @@ void encode(std::FILE* file, const std::string& name, const Image8& image) {
   if (!s.info) throw std::runtime_error(name + ": cannot initialise libpng");
   if (!write_image(s.png, s.info, file, image, kColorType[image.channels - 1]))
     throw std::runtime_error(name + ": cannot write PNG (" + error.text + ")");
+}
+
+std::string encode_to_bytes(const std::string& name, const Image8& image) {
+  char* data = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = open_memstream(&data, &size);
+  if (!memory) throw std::runtime_error(name + ": no memory stream for the PNG");
+  try {
+    encode(memory, name, image);
+  } catch (...) {
+    std::fclose(memory);
+    std::free(data);
+    throw;
+  }
+  std::fclose(memory);  // sets data and size
+  std::string bytes(data, size);
+  std::free(data);
+  return bytes;
 }
 
 }  // namespace lfd::png

@@ -24,5 +24,7 @@ Image8 decode(std::FILE* file, const std::string& name, int channels);
 // chosen for speed: zlib level 1, every row Up-filtered. Throws std::runtime_error naming `name`
 // when libpng fails (e.g. a write error).
 void encode(std::FILE* file, const std::string& name, const Image8& image);
+// The same PNG as bytes in memory (what a service sends as a reply body).
+std::string encode_to_bytes(const std::string& name, const Image8& image);
 
 }  // namespace lfd::png

@@ -41,15 +41,7 @@ TEST(HoloPlayReception, ContentTheBudgetRefusesIsNotHeldWhileItArrives) {
   options.listen = {"127.0.0.1", test::free_port(), test::free_port(), test::free_port()};
   Service service(fake, options);
   service.start();
-  const std::size_t rss_start = resident_bytes();
-  std::atomic<bool> done{false};
-  std::atomic<std::size_t> rss_peak{rss_start};
-  std::thread sampler([&] {
-    while (!done) {
-      rss_peak = std::max<std::size_t>(rss_peak, resident_bytes());
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  });
+  test::ResidentGrowth growth;
   const std::string command = std::string(LFD_SERVE_FLOOD_CHILD) + " " + std::to_string(options.listen.holoplay_port) +
                               " " + std::to_string(kClients) + " " + std::to_string(kContentBytes);
   FILE* child = ::popen(command.c_str(), "r");
@@ -57,8 +49,7 @@ TEST(HoloPlayReception, ContentTheBudgetRefusesIsNotHeldWhileItArrives) {
   char line[256] = {};
   const bool read = std::fgets(line, sizeof line, child) != nullptr;
   const int status = ::pclose(child);
-  done = true;
-  sampler.join();
+  const double grown_mib = growth.stop();
   ASSERT_TRUE(read) << command;
   EXPECT_EQ(status, 0);
   int ok = -1, busy = -1, other = -1, none = -1, info = -1;
@@ -66,7 +57,6 @@ TEST(HoloPlayReception, ContentTheBudgetRefusesIsNotHeldWhileItArrives) {
   EXPECT_EQ(busy, kClients) << line;  // every show answered busy, at once
   EXPECT_EQ(none, 0) << line;
   EXPECT_EQ(info, kClients) << line;  // and each connection still answers after its refused show
-  const double grown_mib = (double(rss_peak) - double(rss_start)) / (1 << 20);
   std::printf("%d clients sent %zu MiB each at once: resident memory grew by %.1f MiB at most\n", kClients,
               kContentBytes >> 20, grown_mib);
   // Read whole before a decision (as NNG's REP socket did) they would be 288 MiB, twice over

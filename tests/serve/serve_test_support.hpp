@@ -5,7 +5,11 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <optional>
+#include <thread>
 
 #include <nng/nng.h>
 #include <nng/protocol/reqrep0/req.h>
@@ -18,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "serve/memory_budget.hpp"
 #include "serve/served_display.hpp"
 #include "tests/test_data.hpp"
 #include "util/image.hpp"
@@ -104,6 +109,30 @@ struct HoloPlayClient {
     nng_msg_free(m);
     return reply;
   }
+};
+
+// This process's resident memory sampled every 2 ms from construction to stop(): how much it
+// grew at most (MiB), for the tests that bound what the service holds.
+class ResidentGrowth {
+ public:
+  ResidentGrowth() : start_(resident_bytes()), peak_(start_), sampler_([this] {
+    while (!done_) {
+      peak_ = std::max<std::size_t>(peak_, resident_bytes());
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }) {}
+  ~ResidentGrowth() { stop(); }
+  double stop() {
+    done_ = true;
+    if (sampler_.joinable()) sampler_.join();
+    return (double(peak_) - double(start_)) / (1 << 20);
+  }
+
+ private:
+  std::size_t start_;
+  std::atomic<std::size_t> peak_;
+  std::atomic<bool> done_{false};
+  std::thread sampler_;
 };
 
 }  // namespace lfd::serve::test

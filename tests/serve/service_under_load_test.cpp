@@ -87,24 +87,14 @@ TEST_F(ServiceUnderLoadTest, ShowsOverTheBudgetAreAnsweredBusyAndMemoryStaysUnde
   limits.decoded_quilts_kept = 1;
   start(limits);
   const auto quilts = distinct_quilts(8, tmp.path);
-  const std::size_t rss_start = resident_bytes();
-  std::atomic<bool> done{false};
-  std::atomic<std::size_t> rss_peak{rss_start};
-  std::thread sampler([&] {
-    while (!done) {
-      rss_peak = std::max<std::size_t>(rss_peak, resident_bytes());
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  });
+  test::ResidentGrowth growth;
   Replies replies;
   flood(quilts, 8, Clock::now(), 4, replies);
-  done = true;
-  sampler.join();
+  const double grown_mib = growth.stop();
   EXPECT_EQ(replies.none.load(), 0);   // every show answered
   EXPECT_EQ(replies.other.load(), 0);  // shown or busy, nothing else
   EXPECT_GT(replies.busy.load(), 0);
   EXPECT_GT(replies.ok.load(), 0);
-  const double grown_mib = (double(rss_peak) - double(rss_start)) / (1 << 20);
   std::printf("busy %d, shown %d; resident memory grew by %.1f MiB at most (budget %zu MiB)\n", replies.busy.load(),
               replies.ok.load(), grown_mib, kBudget >> 20);
   EXPECT_LT(grown_mib, kBudget / double(1 << 20) + 48) << "resident memory grew by " << grown_mib << " MiB";
