@@ -330,9 +330,11 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME lfd)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION science)
 # GL for the live calibration window comes through libglfw3 (which depends on libgl1); EGL for
-# headless GL is loaded at run time by libepoxy, which dpkg-shlibdeps cannot see; gnuplot draws
-# the report figures when present.
-set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl1, libgl1-mesa-dri, gnuplot-nox")
+# headless GL, and libGLESv2 for OpenGL ES contexts (the display side on a Raspberry Pi:
+# docs/arm.md), are loaded at run time by libepoxy, which dpkg-shlibdeps cannot see (without
+# libGLESv2 the first GL call on ES aborts inside libepoxy); gnuplot draws the report figures
+# when present.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "libegl1, libgles2, libgl1-mesa-dri, gnuplot-nox")
 # The Python package (import lfd) runs on Debian's python3 with numpy; dpkg-shlibdeps sees
 # neither (the interpreter loads the extension).
 if(TARGET lfd_python)

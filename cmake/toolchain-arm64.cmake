@@ -16,8 +16,13 @@ set(CMAKE_FIND_ROOT_PATH_MODE_PACKAGE BOTH)
 # pkg-config reads the arm64 .pc files only.
 set(ENV{PKG_CONFIG_LIBDIR} /usr/lib/aarch64-linux-gnu/pkgconfig:/usr/share/pkgconfig)
 set(ENV{PKG_CONFIG_PATH} "")
-# What is built runs under qemu-user (test discovery, tests); -L: the arm64 loader and libraries.
-set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64-static;-L;/usr/aarch64-linux-gnu)
+# What is built runs under qemu-user (test discovery, tests). -L /: the program's loader is
+# /lib/ld-linux-aarch64.so.1 of libc6:arm64, the same build as the libc.so.6 every :arm64
+# library is found beside. Not the cross toolchain's /usr/aarch64-linux-gnu: its loader is
+# libc6-arm64-cross's point release (2.36-8cross1), and a loader and libc of different releases
+# disagree on glibc's private structures: the first pthread_create then walks a stack-cache list
+# that never ends, at 100 % of a core (docs/arm.md "Under qemu-user").
+set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64-static;-L;/)
 # The .deb's architecture and its Depends (dpkg-shlibdeps reads the arm64 libraries' symbols).
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE arm64)
 # Debian's multiarch library folder, as the host's .deb has (GNUInstallDirs picks it only when not

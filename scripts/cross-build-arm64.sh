@@ -43,8 +43,9 @@ ARM64_PACKAGES=(
   # Boost.Beast (lfd serve's HoloPlay endpoint): header-only, but its CMake package is per architecture
   libboost-dev
   libgtest-dev libgmock-dev
-  # what the tests draw with under qemu: Mesa's EGL and llvmpipe
-  libegl-mesa0 libgl1-mesa-dri
+  # what the tests draw with under qemu: Mesa's EGL and llvmpipe, and libGLESv2, which libepoxy
+  # loads for OpenGL ES contexts
+  libegl-mesa0 libgl1-mesa-dri libgles2
 )
 # Architecture-independent headers, and the host tools: the cross compilers and qemu.
 HOST_PACKAGES=(crossbuild-essential-arm64 qemu-user-static binfmt-support dpkg-dev file
@@ -118,7 +119,8 @@ make_deb() {
 
 run_suites() {
   # The suites of the display side, each binary under qemu-user; GL on arm64 llvmpipe.
-  local qemu=(qemu-aarch64-static -L /usr/aarch64-linux-gnu)
+  # -L /: libc6:arm64's loader, not the cross toolchain's (cmake/toolchain-arm64.cmake says why).
+  local qemu=(qemu-aarch64-static -L /)
   export EGL_PLATFORM=surfaceless LFD_GL_CHECKS=strict
   "${qemu[@]}" "$BUILD_DIR/apps/lfd" --version
   # A suite that starts `lfd` or a helper program gets a script that starts it through qemu

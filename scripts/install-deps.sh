@@ -16,7 +16,7 @@ PACKAGES=(
   libhidapi-dev libusb-1.0-0-dev
   # graphics: GL loading (desktop OpenGL 4.5 and OpenGL ES 3.1, docs/arm.md), headless EGL on
   # Mesa, windows, UI
-  libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev libglm-dev libimgui-dev
+  libepoxy-dev libegl-dev libegl-mesa0 libgles2 libgl1-mesa-dri libglfw3-dev libglm-dev libimgui-dev
   # formats and utilities
   nlohmann-json3-dev libcli11-dev libspdlog-dev libfmt-dev libstb-dev libpng-dev libzstd-dev zlib1g-dev
   libtbb-dev

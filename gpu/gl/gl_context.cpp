@@ -5,6 +5,7 @@
 #include "gpu/gl/gl_limits.hpp"
 #include "gpu/gl/gl_program.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <utility>
@@ -85,15 +86,24 @@ EGLContext create_context(EGLDisplay display, const Flavour& flavour, std::strin
     return EGL_NO_CONTEXT;
   }
   // A debug context under strict checks (the tests), so the driver reports misuse (gl_debug.hpp).
-  const EGLint debug = strict_gl_checks() ? EGL_TRUE : EGL_FALSE;
-  const EGLint desktop_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, flavour.major, EGL_CONTEXT_MINOR_VERSION,
-                                       flavour.minor, EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                       EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_CONTEXT_OPENGL_DEBUG, debug,
-                                       EGL_NONE};
-  const EGLint es_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, flavour.major, EGL_CONTEXT_MINOR_VERSION,
-                                  flavour.minor, EGL_CONTEXT_OPENGL_DEBUG, debug, EGL_NONE};
-  EGLContext context = eglCreateContext(display, no_config ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT,
-                                        flavour.api == EGL_OPENGL_API ? desktop_attributes : es_attributes);
+  // EGL_CONTEXT_OPENGL_DEBUG is EGL 1.5; an EGL 1.4 display (Mesa's softpipe, which the arm64
+  // suites run on under qemu-user: docs/arm.md) refuses the whole context over it
+  // (EGL_BAD_ATTRIBUTE), so there the debug bit goes through EGL_KHR_create_context's flags.
+  std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION, flavour.major, EGL_CONTEXT_MINOR_VERSION, flavour.minor};
+  if (flavour.api == EGL_OPENGL_API)
+    attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});
+  if (strict_gl_checks()) {
+    const char* version = eglQueryString(display, EGL_VERSION);
+    int major = 0, minor = 0;
+    if (version) std::sscanf(version, "%d.%d", &major, &minor);
+    if (major > 1 || (major == 1 && minor >= 5))
+      attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_DEBUG, EGL_TRUE});
+    else if (epoxy_has_egl_extension(display, "EGL_KHR_create_context"))
+      attributes.insert(attributes.end(), {EGL_CONTEXT_FLAGS_KHR, EGL_CONTEXT_OPENGL_DEBUG_BIT_KHR});
+  }
+  attributes.push_back(EGL_NONE);
+  EGLContext context =
+      eglCreateContext(display, no_config ? EGL_NO_CONFIG_KHR : config, EGL_NO_CONTEXT, attributes.data());
   if (context == EGL_NO_CONTEXT) {
     why += fmt::format("{}{}: no {} context ({})", sep, platform, flavour.name, egl_error_name(eglGetError()));
     return EGL_NO_CONTEXT;

@@ -154,6 +154,21 @@ TEST_F(InterlaceBackendCli, CappedDesktopGlAskedForIsOneLineAndExit2) {
   EXPECT_FALSE(fs::exists(dir_ / "desktop.png"));
 }
 
+// An EGL 1.4 driver (Mesa's softpipe: ES 3.1, no desktop 4.5; what the arm64 suites met under
+// qemu-user) under strict checks: the debug context is asked for through EGL_KHR_create_context's
+// flags, not EGL 1.5's attribute the driver refuses with the whole context (gl_context.cpp), and
+// auto lands on ES with the CPU's panel.
+TEST_F(InterlaceBackendCli, AnEgl14DriverGivesAStrictContext) {
+  ASSERT_EQ(test::run_lfd(interlace_args("cpu.png", "--backend cpu")).exit_code, 0);
+  const auto r = test::run_command("GALLIUM_DRIVER=softpipe LFD_GL_CHECKS=strict " + std::string(LFD_EXE) + " " +
+                                   interlace_args("softpipe.png", "--backend gl"));
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  if (r.output.find("softpipe") == std::string::npos)
+    GTEST_SKIP() << "not Mesa's softpipe (GALLIUM_DRIVER is Mesa's): " << r.output;
+  EXPECT_NE(r.output.find("backend: gl on "), std::string::npos) << r.output;
+  EXPECT_GE(fraction_within_one("softpipe.png", "cpu.png"), 0.999);
+}
+
 // What needs desktop GL 4.5 (Gaussian rendering) on a capped context, or with LFD_GL=es: one line
 // saying so, exit 2.
 TEST_F(InterlaceBackendCli, RenderingOnACappedContextIsOneLineAndExit2) {

@@ -1,7 +1,8 @@
 // The GPU's YUV -> RGB conversion (play/shaders/quilt_convert.frag.glsl) against the CPU
 // reference media::yuv_to_rgb on a decoded frame, and an RGB picture blitted in strips (426 rows:
 // a strip of 256 and one of 170): the quilt texture holds the picture exactly (rows flipped to
-// GL's order and back).
+// GL's order and back). The context is the one LFD_GL asks for (auto: desktop OpenGL 4.5, else
+// OpenGL ES 3.1, as on a Raspberry Pi or under qemu-user with softpipe; docs/arm.md).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -32,7 +33,7 @@ int max_difference(const Image8& a, const ImageF& b) {
 }
 
 TEST(QuiltTexture, RgbPictureIsExact) {
-  gpu::HeadlessContext context;
+  gpu::HeadlessContext context(gpu::gl_request_from_env());
   QuiltTexture texture;
   const Image8 picture = media::synthetic_quilt(layout(), 2);
   texture.upload(picture);
@@ -48,7 +49,7 @@ TEST(QuiltTexture, YuvFrameMatchesTheCpuConversion) {
   decoder.next_frame();
   const auto frame = decoder.next_frame();
   ASSERT_TRUE(frame);
-  gpu::HeadlessContext context;
+  gpu::HeadlessContext context(gpu::gl_request_from_env());
   QuiltTexture texture;
   texture.upload(*frame);
   // The same coefficients and the same bilinear chroma. GL lets the linear filter work at low

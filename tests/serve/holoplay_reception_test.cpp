@@ -60,8 +60,12 @@ TEST(HoloPlayReception, ContentTheBudgetRefusesIsNotHeldWhileItArrives) {
   std::printf("%d clients sent %zu MiB each at once: resident memory grew by %.1f MiB at most\n", kClients,
               kContentBytes >> 20, grown_mib);
   // Read whole before a decision (as NNG's REP socket did) they would be 288 MiB, twice over
-  // while frames are joined; in chunks, 64 KiB a connection.
-  EXPECT_LT(grown_mib, 32) << "resident memory grew by " << grown_mib << " MiB";
+  // while frames are joined (the old endpoint grew 248.8 MiB here); in chunks, 64 KiB a
+  // connection. What grows besides is the service's threads and allocator at work: 15-18 MiB on
+  // x86-64, about 38 MiB under qemu-user, whose translated code counts in the process's resident
+  // memory (docs/arm.md). The bound is a quarter of what the clients send.
+  const double sent_mib = double(kClients) * double(kContentBytes >> 20);
+  EXPECT_LT(grown_mib, sent_mib / 4) << "resident memory grew by " << grown_mib << " MiB of " << sent_mib << " sent";
 }
 
 }  // namespace
