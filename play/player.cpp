@@ -174,12 +174,10 @@ struct Player::Impl final : TransportOutput {
   void update_picture() {
     if (!content) return;
     if (content->still) {
-      if (!has_picture) {
-        quilt->upload(*content->still);
-        panel_dirty = true;
-      }
-      has_picture = true;
-      return transport.end_if_due(false);
+      // An image that ran its course gives way before this frame's picture is chosen, so the frame
+      // shows the next entry's picture (or the same image again, looping), not black between them.
+      transport.end_if_due(false);
+      return upload_new_still();
     }
     VideoStream& video = *content->video;
     try {
@@ -196,6 +194,14 @@ struct Player::Impl final : TransportOutput {
       return transport.skip_rest(e.what());
     }
     transport.end_if_due(video.finished());
+    upload_new_still();  // a video that ended gave way to an image: shown in this frame
+  }
+
+  void upload_new_still() {
+    if (!content || !content->still || has_picture) return;
+    quilt->upload(*content->still);
+    has_picture = true;
+    panel_dirty = true;
   }
 
   // The quilt the interlacer reads: the picture itself, or the views an RGB-D frame makes.

@@ -247,6 +247,16 @@ TEST(PlayWindow, NotAVideoIsOneLineExit2) {
   expect_bad_file(junk);
 }
 
+// An image shorter than a frame restarts (loops) at every frame: each frame still shows it, no
+// black frame while the entry gives way to the next (here itself). Also what keeps frames that
+// take seconds (llvmpipe under qemu-user, docs/arm.md) on the picture.
+TEST(PlayWindow, ALoopingImageShowsNoBlackFrameAtItsRestart) {
+  const fs::path quilt = write_quilt_png("image", layout(8, 6, 96, 128, 0.75));
+  const ImageF shown = play_screenshot(quilt.string(), "--duration 0.001", "restart");
+  ASSERT_FALSE(shown.empty());
+  EXPECT_GE(render::psnr(shown, interlace_reference(quilt)), 40.0);
+}
+
 TEST(PlayWindow, PlaylistSkipsBadEntryWithNotice) {
   const fs::path good = write_quilt_png("image", layout(8, 6, 96, 128, 0.75));
   const fs::path junk = kDir / "junk_qs8x6a0.75.mp4";
