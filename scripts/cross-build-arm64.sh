@@ -12,7 +12,7 @@
 #   LFD_ARM64_STEPS="deps build" bash scripts/cross-build-arm64.sh
 # Options: BUILD_DIR (default build-arm64), JOBS (default: all cores), LFD_ARM64_STEPS (any of
 # plan deps build deb test; default all), LFD_ARM64_SUITES (the test suites built and run;
-# default the interlace, play and serve suites; add lfd_gpu_tests for the GL interlacer's tests on
+# default the interlace, play, play window (Xvfb) and serve suites; add lfd_gpu_tests for the GL interlacer's tests on
 # ES and desktop GL). ccache is used when installed. Each step prints its time.
 #
 # `plan` adds the arm64 architecture and simulates the install: how many packages, and which of
@@ -26,7 +26,7 @@ cd "$(dirname "$0")/.."
 BUILD_DIR=${BUILD_DIR:-build-arm64}
 JOBS=${JOBS:-$(nproc)}
 STEPS=${LFD_ARM64_STEPS:-plan deps build deb test}
-read -r -a SUITES <<<"${LFD_ARM64_SUITES:-lfd_interlace_tests lfd_play_tests lfd_serve_tests}"
+read -r -a SUITES <<<"${LFD_ARM64_SUITES:-lfd_interlace_tests lfd_play_tests lfd_play_window_tests lfd_serve_tests}"
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 
@@ -49,7 +49,9 @@ ARM64_PACKAGES=(
 )
 # Architecture-independent headers, and the host tools: the cross compilers and qemu.
 HOST_PACKAGES=(crossbuild-essential-arm64 qemu-user-static binfmt-support dpkg-dev file
-  nlohmann-json3-dev libcli11-dev libglm-dev libeigen3-dev)
+  nlohmann-json3-dev libcli11-dev libglm-dev libeigen3-dev
+  # the play window suite's virtual screen
+  xvfb xauth)
 
 step() { case " $STEPS " in *" $1 "*) return 0 ;; *) return 1 ;; esac; }
 timed() {  # timed LABEL COMMAND...: runs it and prints how long it took
@@ -127,10 +129,15 @@ run_suites() {
   # (tests/CMakeLists.txt, lfd_test_program): no binfmt_misc is needed.
   local failed=0
   for suite in "${SUITES[@]}"; do
-    local filter=()
+    local filter=() screen=() binary="$BUILD_DIR/tests/$suite"
     # The GL suite: the interlacer on OpenGL ES 3.1 and desktop GL (the renderers' tests are long).
     if [ "$suite" = lfd_gpu_tests ]; then filter=(--gtest_filter='*Interlace*:GlslEsSource.*'); fi
-    timed "$suite under qemu" "${qemu[@]}" "$BUILD_DIR/tests/$suite" --gtest_brief=1 "${filter[@]}" || failed=1
+    # `lfd play` in real windows: on a virtual screen of the test display's size.
+    if [ "$suite" = lfd_play_window_tests ]; then
+      binary="$BUILD_DIR/tests/play/window/$suite"
+      screen=(xvfb-run -a -s "-screen 0 1536x2048x24")
+    fi
+    timed "$suite under qemu" "${screen[@]}" "${qemu[@]}" "$binary" --gtest_brief=1 "${filter[@]}" || failed=1
   done
   return $failed
 }
