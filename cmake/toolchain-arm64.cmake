@@ -26,5 +26,6 @@ set(CMAKE_CROSSCOMPILING_EMULATOR qemu-aarch64-static;-L;/)
 # The .deb's architecture and its Depends (dpkg-shlibdeps reads the arm64 libraries' symbols).
 set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE arm64)
 # Debian's multiarch library folder, as the host's .deb has (GNUInstallDirs picks it only when not
-# cross-compiling): /usr/lib/aarch64-linux-gnu/lfd/lfd-bridge-*/libbridge_inproc.so.
-set(CMAKE_INSTALL_LIBDIR lib/aarch64-linux-gnu CACHE PATH "object code libraries (Debian multiarch)")
+# cross-compiling): /usr/lib/aarch64-linux-gnu/lfd/lfd-bridge-*/libbridge_inproc.so. FORCE: a
+# build folder configured before keeps GNUInstallDirs' "lib" in its cache otherwise.
+set(CMAKE_INSTALL_LIBDIR lib/aarch64-linux-gnu CACHE PATH "object code libraries (Debian multiarch)" FORCE)
