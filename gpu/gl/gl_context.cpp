@@ -86,9 +86,9 @@ EGLContext create_context(EGLDisplay display, const Flavour& flavour, std::strin
     return EGL_NO_CONTEXT;
   }
   // A debug context under strict checks (the tests), so the driver reports misuse (gl_debug.hpp).
-  // EGL_CONTEXT_OPENGL_DEBUG is EGL 1.5; an EGL 1.4 display (Mesa's softpipe, which the arm64
-  // suites run on under qemu-user: docs/arm.md) refuses the whole context over it
-  // (EGL_BAD_ATTRIBUTE), so there the debug bit goes through EGL_KHR_create_context's flags.
+  // EGL_CONTEXT_OPENGL_DEBUG is EGL 1.5; an EGL 1.4 display (Mesa's softpipe: docs/arm.md
+  // "Under qemu-user") refuses the whole context over it (EGL_BAD_ATTRIBUTE), so there the debug
+  // bit goes through EGL_KHR_create_context's flags.
   std::vector<EGLint> attributes = {EGL_CONTEXT_MAJOR_VERSION, flavour.major, EGL_CONTEXT_MINOR_VERSION, flavour.minor};
   if (flavour.api == EGL_OPENGL_API)
     attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});

@@ -154,8 +154,8 @@ TEST_F(InterlaceBackendCli, CappedDesktopGlAskedForIsOneLineAndExit2) {
   EXPECT_FALSE(fs::exists(dir_ / "desktop.png"));
 }
 
-// An EGL 1.4 driver (Mesa's softpipe: ES 3.1, no desktop 4.5; what the arm64 suites met under
-// qemu-user) under strict checks: the debug context is asked for through EGL_KHR_create_context's
+// An EGL 1.4 driver (Mesa's softpipe: ES 3.1, no desktop 4.5; tried while the arm64 suites
+// stalled under qemu-user, docs/arm.md) under strict checks: the debug context is asked for through EGL_KHR_create_context's
 // flags, not EGL 1.5's attribute the driver refuses with the whole context (gl_context.cpp), and
 // auto lands on ES with the CPU's panel.
 TEST_F(InterlaceBackendCli, AnEgl14DriverGivesAStrictContext) {

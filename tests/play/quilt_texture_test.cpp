@@ -2,7 +2,7 @@
 // reference media::yuv_to_rgb on a decoded frame, and an RGB picture blitted in strips (426 rows:
 // a strip of 256 and one of 170): the quilt texture holds the picture exactly (rows flipped to
 // GL's order and back). The context is the one LFD_GL asks for (auto: desktop OpenGL 4.5, else
-// OpenGL ES 3.1, as on a Raspberry Pi or under qemu-user with softpipe; docs/arm.md).
+// OpenGL ES 3.1, as on a Raspberry Pi; docs/arm.md).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
